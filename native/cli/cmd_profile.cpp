@@ -1,0 +1,102 @@
+// fracterra profile: a Voss 1D midpoint-displacement profile as CSV/NPY.
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_util.hpp"
+#include "cli/command.hpp"
+#include "core/buffer.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/npy.hpp"
+#include "io/polyline_io.hpp"
+#include "terrain/terrain.hpp"
+
+namespace ft::cli {
+namespace {
+
+const std::map<std::string, int> kRefScales = {
+    {"sigma", FT_REFSCALE_SIGMA}, {"mean", FT_REFSCALE_MEAN}, {"std", FT_REFSCALE_STD}};
+
+struct ProfileOptions {
+  ft_profile_params p = default_profile_params();
+  std::string reference, out;
+  bool stats = false;
+};
+
+std::vector<float> read_reference(const std::string& path) {
+  if (extension_of(path) == ".npy") {
+    NpyArray a = read_npy(path);
+    if (a.shape.size() != 1) invalid("the reference '" + path + "' must be a 1D array");
+    return a.values;
+  }
+  // A CSV polyline: its y values are the reference heights.
+  PolylineSet s = read_polylines(path);
+  std::vector<float> v;
+  for (const Vec3& q : s.points) v.push_back(float(q[1]));
+  return v;
+}
+
+int run(const ProfileOptions& o) {
+  ft_profile_params p = o.p;
+  std::vector<float> ref;
+  if (!o.reference.empty()) {
+    ref = read_reference(o.reference);
+    p.reference = ref.data();
+    p.reference_size = int32_t(ref.size());
+  }
+  validate_profile_params(p);
+  const size_t n = (size_t(1) << p.levels) + 1;
+  std::vector<float> x(n);
+  Stopwatch clock;
+  generate_profile(p, x.data(), n);
+  const double seconds = clock.seconds();
+  if (!o.out.empty()) {
+    const std::string ext = extension_of(o.out);
+    if (ext == ".npy") {
+      write_npy(o.out, {int64_t(n)}, x.data());
+    } else if (ext == ".csv" || ext == ".json") {
+      // As a polyline on t in [0, 1]: x = t, y = X(t).
+      PolylineSet s;
+      for (size_t i = 0; i < n; ++i) s.add({double(i) / double(n - 1), double(x[i]), 0.0});
+      s.end_line();
+      write_polylines(s, o.out);
+    } else {
+      invalid("'" + o.out + "': unsupported profile format (use .csv, .json or .npy)");
+    }
+  }
+  if (o.stats) {
+    double lo = x[0], hi = x[0], sum = 0;
+    for (float v : x) lo = std::min<double>(lo, v), hi = std::max<double>(hi, v), sum += v;
+    nlohmann::json j = {{"seconds", seconds}, {"samples", n}, {"min", lo}, {"max", hi}, {"mean", sum / double(n)}};
+    std::printf("%s\n", j.dump().c_str());
+  }
+  return 0;
+}
+
+Registration reg({"profile", "Generate a Voss 1D fractal profile (a horizon)",
+                  [](CLI::App& app) -> std::function<int()> {
+                    auto o = std::make_shared<ProfileOptions>();
+                    auto& p = o->p;
+                    app.add_option("--levels", p.levels, "refinement steps n: 2^n + 1 samples")
+                        ->check(CLI::Range(1, 28))->capture_default_str();
+                    app.add_option("--hurst", p.hurst, "Hurst exponent H")->check(CLI::Range(0.0, 1.0))
+                        ->capture_default_str();
+                    app.add_option("--sigma", p.sigma, "vertical scale (> 0)")->capture_default_str();
+                    app.add_option("--seed", p.seed, "random seed (64-bit)")->capture_default_str();
+                    app.add_option("--reference", o->reference,
+                                   "2^m + 1 reference values: a 1D .npy, or a .csv whose y column is used")
+                        ->check(CLI::ExistingFile);
+                    app.add_option("--reference-scale", p.reference_scale, "displacement scale from references")
+                        ->transform(choice(kRefScales))->capture_default_str();
+                    app.add_option("--out", o->out, "output .csv (x = t in [0,1], y = height), .json or .npy");
+                    app.add_flag("--stats", o->stats, "print a JSON object with seconds, min, max, mean");
+                    return [o] {
+                      if (o->out.empty() && !o->stats) invalid("give --out FILE and/or --stats");
+                      return run(*o);
+                    };
+                  },
+                  20});
+
+}  // namespace
+}  // namespace ft::cli

@@ -1,0 +1,47 @@
+// The fracterra command-line tool: every generator, measure and exporter of
+// the library without Blender.
+#include <algorithm>
+#include <cstdio>
+
+#include "cli/command.hpp"
+#include "core/error.hpp"
+
+namespace ft::cli {
+std::vector<Command>& registry() {
+  static std::vector<Command> commands;
+  return commands;
+}
+}  // namespace ft::cli
+
+int main(int argc, char** argv) {
+  using namespace ft::cli;
+  CLI::App app{"fracterra: fractal terrains and polylines for Blender and POV-Ray"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("fracterra 0.1.0"));
+  auto& commands = registry();
+  std::stable_sort(commands.begin(), commands.end(),
+                   [](const Command& a, const Command& b) { return a.order < b.order; });
+  std::function<int()> action;
+  for (auto& c : commands) {
+    CLI::App* sub = app.add_subcommand(c.name, c.description);
+    auto run = c.setup(*sub);
+    sub->callback([&action, run] { action = run; });
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return action ? action() : 0;
+  } catch (const ft::Error& e) {
+    std::fprintf(stderr, "fracterra: error: %s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "fracterra: error: out of memory\n");
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "fracterra: internal error: %s\n", e.what());
+    return 3;
+  }
+}

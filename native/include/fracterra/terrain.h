@@ -1,0 +1,114 @@
+/// @file fracterra/terrain.h
+/// Terrain heightfields and 1D profiles: Voss midpoint displacement, Feder's
+/// successive random additions, and (see the method list) fBm octave noise,
+/// spectral synthesis and the interpolated (lacunarity) variant.
+#ifndef FRACTERRA_TERRAIN_H
+#define FRACTERRA_TERRAIN_H
+
+#include "core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// Terrain methods (ft_terrain_params.method).
+enum {
+  FT_TERRAIN_MIDPOINT = 0,     ///< Voss diamond-square, (2^levels + 1)^2 samples
+  FT_TERRAIN_ADDITIONS = 1,    ///< Feder/Voss successive random additions, (2^levels + 1)^2
+  FT_TERRAIN_FBM = 2,          ///< sum of noise octaves (Quilez), any width x height
+  FT_TERRAIN_SPECTRAL = 3,     ///< inverse-FFT spectral synthesis, any width x height, periodic
+  FT_TERRAIN_INTERPOLATED = 4  ///< Saupe's InterpolatedFM, scale factor `lacunarity` per cycle
+};
+
+/// Noise bases for FT_TERRAIN_FBM (ft_terrain_params.basis).
+enum {
+  FT_BASIS_VALUE = 0,
+  FT_BASIS_GRADIENT = 1,       ///< Perlin gradient noise
+  FT_BASIS_SIMPLEX = 2,
+  FT_BASIS_CELLULAR_F1 = 3,    ///< Voronoi distance to the nearest feature point
+  FT_BASIS_CELLULAR_F2F1 = 4   ///< Voronoi F2 - F1
+};
+
+/// Octave combinations for FT_TERRAIN_FBM (ft_terrain_params.variant).
+enum {
+  FT_FBM_STANDARD = 0,
+  FT_FBM_RIDGED = 1,
+  FT_FBM_HYBRID = 2,           ///< Musgrave's hybrid multifractal
+  FT_FBM_HETERO = 3            ///< Musgrave's heterogeneous terrain
+};
+
+/// How the displacement scale is chosen when refining from reference points.
+enum {
+  FT_REFSCALE_SIGMA = 0,       ///< use `sigma` as given
+  FT_REFSCALE_MEAN = 1,        ///< use the mean of |reference values| (seed 000, fig. 7b)
+  FT_REFSCALE_STD = 2          ///< use the standard deviation of the reference values
+};
+
+/// Parameters of ft_terrain_generate. Fill with ft_terrain_params_init, then
+/// change what you need. Fields a method does not use are ignored.
+typedef struct ft_terrain_params {
+  uint32_t struct_size;      ///< sizeof(ft_terrain_params); set by _init
+  int32_t method;            ///< FT_TERRAIN_*; default FT_TERRAIN_MIDPOINT
+  int32_t levels;            ///< midpoint/additions: size is 2^levels + 1 per side; 1..15, default 9
+  int32_t width;             ///< other methods: samples in x; 2..65536, default 513
+  int32_t height;            ///< other methods: samples in y; 2..65536, default 513
+  double hurst;              ///< Hurst exponent H in [0, 1]; default 0.8
+  double sigma;              ///< vertical scale (std of the first displacement), > 0; default 1
+  uint64_t seed;             ///< any 64-bit value; default 1
+  int32_t periodic;          ///< non-zero: wrap-around neighbours, the terrain tiles; default 0
+  int32_t threads;           ///< 0: all cores; otherwise 1..1024. Output never depends on it.
+  /* Reference points (midpoint and additions): a coarse (2^m + 1)^2 grid,
+     row-major, taken as steps 1..m; the values survive exactly at their nodes. */
+  const float* reference;    ///< NULL: none
+  int32_t reference_size;    ///< 2^m + 1 with 1 <= m <= levels; ignored when reference is NULL
+  int32_t reference_scale;   ///< FT_REFSCALE_*; default FT_REFSCALE_SIGMA
+  /* fBm (FT_TERRAIN_FBM) and the interpolated variant. */
+  int32_t octaves;           ///< 1..30; default 8
+  double lacunarity;         ///< frequency ratio between octaves (> 1; default 2), or the
+                             ///< scale factor 1/r per cycle of FT_TERRAIN_INTERPOLATED
+  double gain;               ///< amplitude ratio G between octaves; <= 0 means 2^-H (default 0)
+  int32_t basis;             ///< FT_BASIS_*; default FT_BASIS_GRADIENT
+  int32_t variant;           ///< FT_FBM_*; default FT_FBM_STANDARD
+  double frequency;          ///< base frequency in cycles across the width; default 4
+  double offset;             ///< ridged/hybrid/hetero offset; default 1
+  double rotation;           ///< domain rotation per octave in radians; default 0.5
+  double warp;               ///< domain-warp strength (0 = off); default 0
+  /* Progress and cancellation; both may be NULL. */
+  ft_progress_fn progress;
+  void* progress_user;
+} ft_terrain_params;
+
+/// Fills `p` with the defaults documented above. `p` must not be NULL.
+FT_API ft_status ft_terrain_params_init(ft_terrain_params* p);
+/// Generates a terrain. On success `*out` owns a new heightfield (free with
+/// ft_heightfield_free); on failure `*out` is NULL and ft_last_error() says why.
+FT_API ft_status ft_terrain_generate(const ft_terrain_params* p, ft_heightfield** out);
+/// Samples per side of a midpoint/additions terrain of `levels` levels
+/// (2^levels + 1), or -1 when levels is out of range.
+FT_API int32_t ft_terrain_side(int32_t levels);
+
+/// Parameters of ft_profile_generate: Voss 1D midpoint displacement.
+typedef struct ft_profile_params {
+  uint32_t struct_size;      ///< sizeof(ft_profile_params); set by _init
+  int32_t levels;            ///< 2^levels + 1 samples; 1..28, default 10
+  double hurst;              ///< H in [0, 1]; default 0.8
+  double sigma;              ///< vertical scale, > 0; default 1
+  uint64_t seed;             ///< default 1
+  const float* reference;    ///< NULL or 2^m + 1 values taken as steps 1..m
+  int32_t reference_size;    ///< 2^m + 1 with 1 <= m <= levels
+  int32_t reference_scale;   ///< FT_REFSCALE_*; default FT_REFSCALE_SIGMA
+  ft_progress_fn progress;
+  void* progress_user;
+} ft_profile_params;
+
+FT_API ft_status ft_profile_params_init(ft_profile_params* p);
+/// Generates a profile X(k / 2^levels), k = 0..2^levels, into `dst`, which
+/// holds `count` floats (at least 2^levels + 1; see ft_profile_length).
+FT_API ft_status ft_profile_generate(const ft_profile_params* p, float* dst, size_t count);
+/// 2^levels + 1, or -1 when levels is out of range.
+FT_API int64_t ft_profile_length(int32_t levels);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

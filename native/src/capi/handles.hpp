@@ -1,0 +1,13 @@
+// The opaque C handles are thin wrappers around the C++ results.
+#pragma once
+
+#include "core/heightfield.hpp"
+#include "core/polyline_set.hpp"
+
+struct ft_heightfield {
+  ft::Heightfield hf;
+};
+
+struct ft_polylines {
+  ft::PolylineSet set;
+};

@@ -1,0 +1,49 @@
+#include "capi/guard.hpp"
+#include "capi/handles.hpp"
+#include "fracterra/fracterra.h"
+#include "terrain/terrain.hpp"
+
+using ft::capi::guarded;
+
+extern "C" {
+
+FT_API ft_status ft_terrain_params_init(ft_terrain_params* p) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    *p = ft::default_terrain_params();
+  });
+}
+
+FT_API ft_status ft_terrain_generate(const ft_terrain_params* p, ft_heightfield** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("params", p);
+    auto h = std::make_unique<ft_heightfield>();
+    h->hf = ft::generate_terrain(*p);
+    *out = h.release();
+  });
+}
+
+FT_API int32_t ft_terrain_side(int32_t levels) {
+  return levels >= 1 && levels <= ft::kMaxLevels ? (1 << levels) + 1 : -1;
+}
+
+FT_API ft_status ft_profile_params_init(ft_profile_params* p) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    *p = ft::default_profile_params();
+  });
+}
+
+FT_API ft_status ft_profile_generate(const ft_profile_params* p, float* dst, size_t count) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    ft::generate_profile(*p, dst, count);
+  });
+}
+
+FT_API int64_t ft_profile_length(int32_t levels) {
+  return levels >= 1 && levels <= ft::kMaxProfileLevels ? (int64_t(1) << levels) + 1 : -1;
+}
+
+}  // extern "C"

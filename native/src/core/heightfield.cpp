@@ -1,0 +1,45 @@
+#include "core/heightfield.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/memory.hpp"
+
+namespace ft {
+
+Heightfield::Heightfield(int32_t width, int32_t height) : width_(width), height_(height) {
+  check_int_range("width", width, 1, 1 << 20);
+  check_int_range("height", height, 1, 1 << 20);
+  check_allocation(checked_bytes(uint64_t(width), uint64_t(height), sizeof(float)),
+                   "a " + std::to_string(width) + " x " + std::to_string(height) + " heightfield");
+  samples_ = Buffer<float>(size_t(width) * size_t(height));
+}
+
+HeightStats Heightfield::stats() const {
+  HeightStats s;
+  const size_t n = size();
+  if (n == 0) return s;
+  double lo = samples_[0], hi = samples_[0], sum = 0;
+#pragma omp parallel for reduction(min : lo) reduction(max : hi) reduction(+ : sum)
+  for (size_t i = 0; i < n; ++i) {
+    const double v = samples_[i];
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+    sum += v;
+  }
+  const double mean = sum / double(n);
+  double ss = 0;
+#pragma omp parallel for reduction(+ : ss)
+  for (size_t i = 0; i < n; ++i) {
+    const double d = samples_[i] - mean;
+    ss += d * d;
+  }
+  s.min = lo;
+  s.max = hi;
+  s.mean = mean;
+  s.std = std::sqrt(ss / double(n));
+  return s;
+}
+
+}  // namespace ft

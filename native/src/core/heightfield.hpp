@@ -1,0 +1,37 @@
+// A float32 heightfield, row-major: sample (x, y) is at y * width + x.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/buffer.hpp"
+
+namespace ft {
+
+struct HeightStats {
+  double min = 0, max = 0, mean = 0, std = 0;
+};
+
+class Heightfield {
+ public:
+  Heightfield() = default;
+  // Checks the size against the memory cap before allocating; samples are
+  // left uninitialised (every generator writes all of them).
+  Heightfield(int32_t width, int32_t height);
+
+  int32_t width() const noexcept { return width_; }
+  int32_t height() const noexcept { return height_; }
+  size_t size() const noexcept { return samples_.size(); }
+  float* data() noexcept { return samples_.data(); }
+  const float* data() const noexcept { return samples_.data(); }
+  float& at(int32_t x, int32_t y) noexcept { return samples_[size_t(y) * width_ + x]; }
+  float at(int32_t x, int32_t y) const noexcept { return samples_[size_t(y) * width_ + x]; }
+
+  HeightStats stats() const;
+
+ private:
+  int32_t width_ = 0, height_ = 0;
+  Buffer<float> samples_;
+};
+
+}  // namespace ft

@@ -1,0 +1,162 @@
+#include "core/rng.hpp"
+
+#include <bit>
+#include <cmath>
+
+namespace ft {
+namespace {
+
+// Natural log for x in (0, 1]: x = m * 2^e with m in [sqrt(1/2), sqrt(2)),
+// log m = 2 atanh(t), t = (m - 1) / (m + 1), |t| <= 0.172 (series to t^9).
+inline float log_unit(float x) {
+  uint32_t bits = std::bit_cast<uint32_t>(x);
+  int32_t e = int32_t((bits >> 23) & 0xff) - 127;
+  uint32_t mbits = (bits & 0x007fffffu) | 0x3f800000u;  // m in [1, 2)
+  float m = std::bit_cast<float>(mbits);
+  // Move m into [sqrt(1/2), sqrt(2)) so the series converges fast.
+  const bool big = m > 1.41421356f;
+  m = big ? m * 0.5f : m;
+  e = big ? e + 1 : e;
+  const float t = (m - 1.0f) / (m + 1.0f);
+  const float t2 = t * t;
+  const float series =
+      t * (2.0f + t2 * (2.0f / 3.0f + t2 * (2.0f / 5.0f + t2 * (2.0f / 7.0f + t2 * (2.0f / 9.0f)))));
+  return series + float(e) * 0.693147180559945f;
+}
+
+// sin and cos of 2 pi u for u in (0, 1): quadrant from 4u, then the angle
+// within the quadrant is centred on pi/4 so the Taylor series are short.
+inline void sincos_turn(float u, float& s, float& c) {
+  const float q4 = u * 4.0f;
+  const int32_t q = int32_t(q4);  // 0..3
+  const float a = (q4 - float(q) - 0.5f) * 1.57079632679f;  // in [-pi/4, pi/4)
+  const float a2 = a * a;
+  const float sa = a * (1.0f + a2 * (-1.0f / 6 + a2 * (1.0f / 120 + a2 * (-1.0f / 5040 + a2 * (1.0f / 362880)))));
+  const float ca = 1.0f + a2 * (-0.5f + a2 * (1.0f / 24 + a2 * (-1.0f / 720 + a2 * (1.0f / 40320 + a2 * (-1.0f / 3628800)))));
+  const float k = 0.70710678118f;
+  const float s0 = (ca + sa) * k;  // sin(pi/4 + a)
+  const float c0 = (ca - sa) * k;  // cos(pi/4 + a)
+  // Rotate by q quarter turns.
+  s = q == 0 ? s0 : q == 1 ? c0 : q == 2 ? -s0 : -c0;
+  c = q == 0 ? c0 : q == 1 ? -s0 : q == 2 ? -c0 : s0;
+}
+
+inline void philox_rounds(uint32_t& c0, uint32_t& c1, uint32_t& c2, uint32_t& c3, uint32_t k0,
+                          uint32_t k1) {
+  // Philox4x32-10 exactly as Random123 defines it (constants from philox.h).
+  for (int r = 0; r < 10; ++r) {
+    if (r > 0) {
+      k0 += PHILOX_W32_0;
+      k1 += PHILOX_W32_1;
+    }
+    const uint64_t p0 = uint64_t(PHILOX_M4x32_0) * c0;
+    const uint64_t p1 = uint64_t(PHILOX_M4x32_1) * c2;
+    const uint32_t hi0 = uint32_t(p0 >> 32), lo0 = uint32_t(p0);
+    const uint32_t hi1 = uint32_t(p1 >> 32), lo1 = uint32_t(p1);
+    const uint32_t n0 = hi1 ^ c1 ^ k0;
+    const uint32_t n1 = lo1;
+    const uint32_t n2 = hi0 ^ c3 ^ k1;
+    const uint32_t n3 = lo0;
+    c0 = n0;
+    c1 = n1;
+    c2 = n2;
+    c3 = n3;
+  }
+}
+
+inline void box_muller_inline(float u1, float u2, float& z0, float& z1) {
+  const float r = std::sqrt(-2.0f * log_unit(u1));
+  float s, c;
+  sincos_turn(u2, s, c);
+  z0 = r * c;
+  z1 = r * s;
+}
+
+constexpr size_t kChunk = 64;  // blocks per inner batch (256 variates)
+
+template <bool kGaussian>
+inline void fill_blocks(uint64_t seed, const Counter& c, uint32_t first_block, size_t blocks,
+                        float* out) {
+  const uint32_t k0 = uint32_t(seed), k1 = uint32_t(seed >> 32);
+  // Struct-of-arrays batches so the compiler vectorises across blocks.
+  alignas(64) uint32_t b0[kChunk], b1[kChunk], b2[kChunk], b3[kChunk];
+  for (size_t start = 0; start < blocks; start += kChunk) {
+    const size_t m = blocks - start < kChunk ? blocks - start : kChunk;
+    for (size_t i = 0; i < m; ++i) {
+      uint32_t x0 = first_block + uint32_t(start + i), x1 = c.row, x2 = c.level,
+               x3 = uint32_t(c.stream);
+      philox_rounds(x0, x1, x2, x3, k0, k1);
+      b0[i] = x0;
+      b1[i] = x1;
+      b2[i] = x2;
+      b3[i] = x3;
+    }
+    float* o = out + start * 4;
+    for (size_t i = 0; i < m; ++i) {
+      const float u0 = bits_to_unit_open(b0[i]), u1 = bits_to_unit_open(b1[i]);
+      const float u2 = bits_to_unit_open(b2[i]), u3 = bits_to_unit_open(b3[i]);
+      if constexpr (kGaussian) {
+        float z0, z1, z2, z3;
+        box_muller_inline(u0, u1, z0, z1);
+        box_muller_inline(u2, u3, z2, z3);
+        o[4 * i + 0] = z0;
+        o[4 * i + 1] = z1;
+        o[4 * i + 2] = z2;
+        o[4 * i + 3] = z3;
+      } else {
+        o[4 * i + 0] = u0;
+        o[4 * i + 1] = u1;
+        o[4 * i + 2] = u2;
+        o[4 * i + 3] = u3;
+      }
+    }
+  }
+}
+
+template <bool kGaussian>
+inline void fill_any(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+  // Unaligned head and tail go through a 4-wide scratch block.
+  while (n > 0 && (first & 3) != 0) {
+    float tmp[4];
+    fill_blocks<kGaussian>(seed, c, uint32_t(first >> 2), 1, tmp);
+    *out++ = tmp[first & 3];
+    ++first;
+    --n;
+  }
+  const size_t blocks = n / 4;
+  fill_blocks<kGaussian>(seed, c, uint32_t(first >> 2), blocks, out);
+  first += blocks * 4;
+  out += blocks * 4;
+  n -= blocks * 4;
+  if (n > 0) {
+    float tmp[4];
+    fill_blocks<kGaussian>(seed, c, uint32_t(first >> 2), 1, tmp);
+    for (size_t i = 0; i < n; ++i) out[i] = tmp[i];
+  }
+}
+
+}  // namespace
+
+namespace detail {
+void box_muller(float u1, float u2, float& z0, float& z1) { box_muller_inline(u1, u2, z0, z1); }
+}  // namespace detail
+
+__attribute__((target_clones("avx2", "default")))
+void gaussian_fill(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+  fill_any<true>(seed, c, first, n, out);
+}
+
+__attribute__((target_clones("avx2", "default")))
+void uniform_fill(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+  fill_any<false>(seed, c, first, n, out);
+}
+
+float gaussian_at(uint64_t seed, const Counter& c, uint64_t index) {
+  const auto r = philox_block(seed, c, uint32_t(index >> 2));
+  const unsigned pair = (index & 3) >> 1;
+  float z0, z1;
+  box_muller_inline(bits_to_unit_open(r.v[2 * pair]), bits_to_unit_open(r.v[2 * pair + 1]), z0, z1);
+  return (index & 1) ? z1 : z0;
+}
+
+}  // namespace ft

@@ -1,0 +1,85 @@
+#include "io/heightfield_io.hpp"
+
+#include <cmath>
+#include <cstring>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/npy.hpp"
+#include "io/pgm.hpp"
+
+namespace ft {
+namespace {
+
+Heightfield from_npy(const NpyArray& a, const std::string& name) {
+  if (a.shape.size() != 2 || a.shape[0] < 1 || a.shape[1] < 1)
+    fail(FT_ERR_FORMAT, "'" + name + "' must hold a 2D array for a heightfield");
+  Heightfield hf(int32_t(a.shape[1]), int32_t(a.shape[0]));
+  std::memcpy(hf.data(), a.values.data(), hf.size() * sizeof(float));
+  return hf;
+}
+
+std::string unsupported(const std::string& path) {
+  return "'" + path + "': unsupported heightfield format (use .png, .pgm or .npy)";
+}
+
+}  // namespace
+
+GrayImage heightfield_to_image(const Heightfield& hf) {
+  const HeightStats s = hf.stats();
+  if (!std::isfinite(s.min) || !std::isfinite(s.max)) invalid("the heightfield holds NaN or infinite samples");
+  GrayImage img;
+  img.width = hf.width();
+  img.height = hf.height();
+  img.bit_depth = 16;
+  img.pixels.resize(hf.size());
+  const double range = s.max - s.min;
+  const double k = range > 0 ? 65535.0 / range : 0.0;
+  const float* z = hf.data();
+  for (size_t i = 0; i < hf.size(); ++i) img.pixels[i] = uint16_t(std::lround((z[i] - s.min) * k));
+  img.text["fracterra:min"] = format_number(s.min);
+  img.text["fracterra:max"] = format_number(s.max);
+  img.text["Software"] = "fracterra";
+  return img;
+}
+
+Heightfield image_to_heightfield(const GrayImage& image) {
+  double lo = 0.0, hi = 1.0;
+  auto a = image.text.find("fracterra:min"), b = image.text.find("fracterra:max");
+  if (a != image.text.end() && b != image.text.end()) {
+    char* end = nullptr;
+    const double l = std::strtod(a->second.c_str(), &end);
+    const double h = std::strtod(b->second.c_str(), &end);
+    if (std::isfinite(l) && std::isfinite(h) && h >= l) lo = l, hi = h;
+  }
+  const double full = image.bit_depth == 16 ? 65535.0 : 255.0;
+  Heightfield hf(image.width, image.height);
+  float* z = hf.data();
+  for (size_t i = 0; i < hf.size(); ++i) z[i] = float(lo + (hi - lo) * (image.pixels[i] / full));
+  return hf;
+}
+
+void write_heightfield(const Heightfield& hf, const std::string& path) {
+  const std::string ext = extension_of(path);
+  if (ext == ".png") write_png(path, heightfield_to_image(hf));
+  else if (ext == ".pgm") write_pgm(path, heightfield_to_image(hf));
+  else if (ext == ".npy") write_npy(path, {hf.height(), hf.width()}, hf.data());
+  else invalid(unsupported(path));
+}
+
+Heightfield decode_heightfield(const std::string& bytes, const std::string& extension) {
+  if (extension == ".png") return image_to_heightfield(decode_png(bytes));
+  if (extension == ".pgm") return image_to_heightfield(decode_pgm(bytes));
+  if (extension == ".npy") return from_npy(decode_npy(bytes), "<memory>");
+  invalid(unsupported(extension));
+}
+
+Heightfield read_heightfield(const std::string& path) {
+  const std::string ext = extension_of(path);
+  if (ext == ".png") return image_to_heightfield(read_png(path));
+  if (ext == ".pgm") return image_to_heightfield(read_pgm(path));
+  if (ext == ".npy") return from_npy(read_npy(path), path);
+  fail(FT_ERR_FORMAT, unsupported(path));
+}
+
+}  // namespace ft

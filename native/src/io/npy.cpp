@@ -1,0 +1,119 @@
+#include "io/npy.hpp"
+
+#include <cstring>
+#include <regex>
+
+#include "core/error.hpp"
+#include "core/memory.hpp"
+#include "io/atomic_file.hpp"
+
+namespace ft {
+namespace {
+
+template <class T>
+void convert(const char* src, size_t n, float* dst) {
+  for (size_t i = 0; i < n; ++i) {
+    T v;
+    std::memcpy(&v, src + i * sizeof(T), sizeof(T));
+    dst[i] = float(v);
+  }
+}
+
+}  // namespace
+
+NpyArray decode_npy(const std::string& bytes, const std::string& name) {
+  auto bad = [&](const std::string& why) { fail(FT_ERR_FORMAT, "'" + name + "' is not a usable .npy file: " + why); };
+  if (bytes.size() < 10 || bytes.compare(0, 6, "\x93NUMPY") != 0) bad("missing the \\x93NUMPY magic");
+  const int major = uint8_t(bytes[6]);
+  size_t header_len, header_start;
+  if (major == 1) {
+    header_len = uint8_t(bytes[8]) | (size_t(uint8_t(bytes[9])) << 8);
+    header_start = 10;
+  } else if (major == 2 || major == 3) {
+    if (bytes.size() < 12) bad("truncated header");
+    header_len = 0;
+    for (int i = 0; i < 4; ++i) header_len |= size_t(uint8_t(bytes[8 + i])) << (8 * i);
+    header_start = 12;
+  } else {
+    bad("unknown format version " + std::to_string(major));
+  }
+  if (header_len > 65536 || header_start + header_len > bytes.size()) bad("truncated header");
+  const std::string header = bytes.substr(header_start, header_len);
+  std::smatch m;
+  if (!std::regex_search(header, m, std::regex("'descr'\\s*:\\s*'([<>|=])([fiu])(\\d+)'"))) bad("no 'descr'");
+  const char order = m[1].str()[0];
+  const char kind = m[2].str()[0];
+  const int width = std::stoi(m[3].str().substr(0, 3));
+  if (order == '>' && width > 1) bad("big-endian data is not supported");
+  const bool fortran = std::regex_search(header, std::regex("'fortran_order'\\s*:\\s*True"));
+  if (!std::regex_search(header, m, std::regex("'shape'\\s*:\\s*\\(([^)]*)\\)"))) bad("no 'shape'");
+  NpyArray a;
+  const std::string dims = m[1].str();
+  std::regex num("\\d+");
+  uint64_t count = 1;
+  for (auto it = std::sregex_iterator(dims.begin(), dims.end(), num); it != std::sregex_iterator(); ++it) {
+    const std::string d = it->str();
+    if (d.size() > 9) bad("dimension too large");
+    a.shape.push_back(std::stoll(d));
+    count = checked_bytes(count, uint64_t(a.shape.back()));
+  }
+  if (a.shape.empty() || a.shape.size() > 2) bad("expected a 1D or 2D array");
+  size_t elem = 0;
+  if (kind == 'f' && (width == 4 || width == 8)) elem = width;
+  else if ((kind == 'i' || kind == 'u') && (width == 1 || width == 2 || width == 4 || width == 8)) elem = width;
+  else bad("unsupported element type " + m[2].str() + std::to_string(width));
+  const size_t data_start = header_start + header_len;
+  if (count > (bytes.size() - data_start) / elem) bad("the data is shorter than its shape says");
+  check_allocation(checked_bytes(count, sizeof(float)), "reading '" + name + "'");
+  a.values.resize(count);
+  const char* src = bytes.data() + data_start;
+  float* dst = a.values.data();
+  if (kind == 'f') {
+    if (width == 4) convert<float>(src, count, dst); else convert<double>(src, count, dst);
+  } else if (kind == 'i') {
+    if (width == 1) convert<int8_t>(src, count, dst);
+    else if (width == 2) convert<int16_t>(src, count, dst);
+    else if (width == 4) convert<int32_t>(src, count, dst);
+    else convert<int64_t>(src, count, dst);
+  } else {
+    if (width == 1) convert<uint8_t>(src, count, dst);
+    else if (width == 2) convert<uint16_t>(src, count, dst);
+    else if (width == 4) convert<uint32_t>(src, count, dst);
+    else convert<uint64_t>(src, count, dst);
+  }
+  if (fortran && a.shape.size() == 2) {
+    const size_t rows = size_t(a.shape[0]), cols = size_t(a.shape[1]);
+    std::vector<float> c(a.values.size());
+    for (size_t r = 0; r < rows; ++r)
+      for (size_t col = 0; col < cols; ++col) c[r * cols + col] = a.values[col * rows + r];
+    a.values.swap(c);
+  }
+  return a;
+}
+
+NpyArray read_npy(const std::string& path) { return decode_npy(read_file(path), path); }
+
+void write_npy(const std::string& path, const std::vector<int64_t>& shape, const float* values) {
+  std::string dims;
+  size_t count = 1;
+  for (int64_t d : shape) {
+    dims += std::to_string(d) + ", ";
+    count *= size_t(d);
+  }
+  if (shape.size() == 2) dims.resize(dims.size() - 2);  // (h, w) but (n,) for 1D
+  std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (" + dims + "), }";
+  // Pad so the data starts on a 64-byte boundary, as NumPy does.
+  const size_t total = 10 + header.size() + 1;
+  header.append((64 - total % 64) % 64, ' ');
+  header.push_back('\n');
+  std::string out = "\x93NUMPY";
+  out.push_back('\x01');
+  out.push_back('\x00');
+  out.push_back(char(header.size() & 0xff));
+  out.push_back(char(header.size() >> 8));
+  out += header;
+  out.append(reinterpret_cast<const char*>(values), count * sizeof(float));
+  write_file_atomically(path, out);
+}
+
+}  // namespace ft

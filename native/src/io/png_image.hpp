@@ -1,0 +1,27 @@
+// Grayscale PNG through libpng: 8- or 16-bit, with tEXt key/value pairs
+// (fracterra records the real height range there).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ft {
+
+struct GrayImage {
+  int32_t width = 0, height = 0;
+  int bit_depth = 16;             // 8 or 16
+  std::vector<uint16_t> pixels;   // row-major, row 0 = top of the image
+  std::map<std::string, std::string> text;
+};
+
+// Writes atomically; 8-bit images use the low byte range 0..255 of `pixels`.
+void write_png(const std::string& path, const GrayImage& image);
+// Reads gray, gray+alpha, palette or RGB(A) PNGs of any depth; colour is
+// turned into luma. 8-bit images come back with bit_depth 8 (values 0..255).
+GrayImage read_png(const std::string& path);
+// Same from bytes in memory (for fuzzing and tests).
+GrayImage decode_png(const std::string& bytes, const std::string& name = "<memory>");
+
+}  // namespace ft

@@ -1,0 +1,21 @@
+// Polyline sets as text:
+//   .csv   one vertex per line "x,y,z[,radius]" (or "x,y"), a blank line
+//          between polylines, '#' comment lines allowed; written with 17
+//          significant digits so a round trip is exact.
+//   .json  {"polylines": [{"points": [[x, y, z], ...], "radii": [...]}, ...]}
+#pragma once
+
+#include <string>
+
+#include "core/polyline_set.hpp"
+
+namespace ft {
+
+void write_polylines(const PolylineSet& set, const std::string& path);
+PolylineSet read_polylines(const std::string& path);
+PolylineSet decode_polylines_csv(const std::string& text, const std::string& name = "<memory>");
+PolylineSet decode_polylines_json(const std::string& text, const std::string& name = "<memory>");
+std::string encode_polylines_csv(const PolylineSet& set);
+std::string encode_polylines_json(const PolylineSet& set);
+
+}  // namespace ft

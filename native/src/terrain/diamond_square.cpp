@@ -1,0 +1,203 @@
+#include "terrain/diamond_square.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "core/parallel.hpp"
+#include "core/rng.hpp"
+
+namespace ft {
+namespace {
+
+// One grid being refined; the stage methods are the steps of MidPointFM2D.
+class Refiner {
+ public:
+  Refiner(const DiamondSquareConfig& c, Heightfield& hf)
+      : c_(c), n_(1 << c.levels), w_(n_ + 1), x_(hf.data()), threads_(resolve_threads(c.threads)) {
+    ref_step_ = c.reference ? n_ >> c.ref_levels : 0;
+  }
+
+  void run() {
+    int first_stage = 1;
+    if (c_.reference) {
+      place_reference();
+      first_stage = c_.ref_levels + 1;
+    } else {
+      place_corners();
+    }
+    // delta before stage s's square step is sigma 2^(-(2s - 1) H / 2); the
+    // stages a reference grid stands for are skipped, not re-run.
+    double delta = c_.sigma * std::pow(0.5, 0.5 * c_.hurst * 2.0 * (first_stage - 1));
+    const double shrink = std::pow(0.5, 0.5 * c_.hurst);
+    for (int s = first_stage; s <= c_.levels; ++s) {
+      const int big = n_ >> (s - 1), half = big / 2;
+      delta *= shrink;
+      square_step(s, big, half, float(delta));
+      if (c_.additions) add_to_grid(s, 0, big, float(delta), Stream::kTerrainAddOld);
+      delta *= shrink;
+      diamond_step(s, big, half, float(delta));
+      if (c_.additions) {
+        add_to_grid(s, 0, big, float(delta), Stream::kTerrainAddNew);
+        add_to_grid(s + 1000, half, big, float(delta), Stream::kTerrainAddNew);
+      }
+      c_.progress.report(double(s) / c_.levels);
+    }
+  }
+
+ private:
+  float& at(int x, int y) { return x_[size_t(y) * w_ + x]; }
+
+  void place_corners() {
+    float g[4];
+    gaussian_fill(c_.seed, Counter{0, 0, Stream::kTerrainCorners}, 0, 4, g);
+    const float s = float(c_.sigma);
+    if (c_.periodic) {
+      at(0, 0) = at(n_, 0) = at(0, n_) = at(n_, n_) = s * g[0];
+    } else {
+      at(0, 0) = s * g[0];
+      at(n_, 0) = s * g[1];
+      at(0, n_) = s * g[2];
+      at(n_, n_) = s * g[3];
+    }
+  }
+
+  void place_reference() {
+    const int m = (1 << c_.ref_levels) + 1;
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) at(i * ref_step_, j * ref_step_) = c_.reference[size_t(j) * m + i];
+  }
+
+  bool pinned(int x, int y) const {
+    return ref_step_ != 0 && x % ref_step_ == 0 && y % ref_step_ == 0;
+  }
+
+  // Square step: centres of the squares of side `big`.
+  void square_step(int s, int big, int half, float delta) {
+    const int cells = n_ / big;
+#pragma omp parallel num_threads(threads_)
+    {
+      std::vector<float> g(size_t(cells) + 4);
+#pragma omp for schedule(static)
+      for (int j = 0; j < cells; ++j) {
+        const int y = half + j * big;
+        gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(s), Stream::kTerrainSquare}, 0, cells, g.data());
+        const float* up = x_ + size_t(y - half) * w_;
+        const float* dn = x_ + size_t(y + half) * w_;
+        float* row = x_ + size_t(y) * w_;
+        for (int i = 0, x = half; i < cells; ++i, x += big)
+          row[x] = 0.25f * ((up[x - half] + up[x + half]) + (dn[x - half] + dn[x + half])) + delta * g[i];
+      }
+    }
+  }
+
+  // Diamond step: the edge midpoints, from their 4 axis neighbours (3 on a
+  // border, or wrapped around when periodic).
+  void diamond_step(int s, int big, int half, float delta) {
+    const int cells = n_ / big;
+    const int rows = 2 * cells + 1;
+#pragma omp parallel num_threads(threads_)
+    {
+      std::vector<float> g(size_t(cells) + 5);
+#pragma omp for schedule(static)
+      for (int r = 0; r < rows; ++r) {
+        const int y = r * half;
+        if (c_.periodic && y == n_) continue;  // copied from row 0 below
+        const bool on_grid_row = (r % 2) == 0;  // y is a multiple of `big`
+        const int x0 = on_grid_row ? half : 0;
+        const int count = on_grid_row ? cells : cells + 1;
+        gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(s), Stream::kTerrainDiamond}, 0, count, g.data());
+        diamond_row(y, x0, count, big, half, delta, g.data());
+      }
+    }
+    if (c_.periodic) wrap_edges();
+  }
+
+  void diamond_row(int y, int x0, int count, int big, int half, float delta, const float* g) {
+    float* row = x_ + size_t(y) * w_;
+    const bool interior_row = y - half >= 0 && y + half <= n_;
+    const float* up = interior_row ? x_ + size_t(y - half) * w_ : nullptr;
+    const float* dn = interior_row ? x_ + size_t(y + half) * w_ : nullptr;
+    int i = 0;
+    // Interior points of an interior row: 4 neighbours, the hot loop.
+    if (interior_row) {
+      const int lo = x0 == 0 ? 1 : 0;
+      const int hi = (x0 + (count - 1) * big == n_) ? count - 1 : count;
+      for (i = lo; i < hi; ++i) {
+        const int x = x0 + i * big;
+        row[x] = 0.25f * ((row[x - half] + row[x + half]) + (up[x] + dn[x])) + delta * g[i];
+      }
+      if (lo == 1) row[x0] = edge_point(x0, y, half) + delta * g[0];
+      if (hi == count - 1) {
+        const int x = x0 + (count - 1) * big;
+        if (!(c_.periodic && x == n_)) row[x] = edge_point(x, y, half) + delta * g[count - 1];
+      }
+      return;
+    }
+    for (i = 0; i < count; ++i) {
+      const int x = x0 + i * big;
+      if (c_.periodic && x == n_) continue;
+      row[x] = edge_point(x, y, half) + delta * g[i];
+    }
+  }
+
+  // Mean of the neighbours of a border point: the 3 that exist, or all 4
+  // with wrap-around when periodic.
+  float edge_point(int x, int y, int half) {
+    if (c_.periodic) {
+      auto wrap = [this](int v) { return v < 0 ? v + n_ : (v >= n_ ? v - n_ : v); };
+      return 0.25f * ((at(wrap(x - half), y) + at(wrap(x + half), y)) +
+                      (at(x, wrap(y - half)) + at(x, wrap(y + half))));
+    }
+    float sum = 0.0f;
+    int k = 0;
+    if (x - half >= 0) sum += at(x - half, y), ++k;
+    if (x + half <= n_) sum += at(x + half, y), ++k;
+    if (y - half >= 0) sum += at(x, y - half), ++k;
+    if (y + half <= n_) sum += at(x, y + half), ++k;
+    return sum / float(k);
+  }
+
+  // Feder's additions: every point of the grid with spacing `step` starting
+  // at `origin` gets delta g (reference nodes stay as given).
+  void add_to_grid(int level, int origin, int step, float delta, Stream stream) {
+    const int limit = c_.periodic ? n_ - 1 : n_;
+    const int count = origin > limit ? 0 : (limit - origin) / step + 1;
+#pragma omp parallel num_threads(threads_)
+    {
+      std::vector<float> g(size_t(count) + 4);
+#pragma omp for schedule(static)
+      for (int j = 0; j < count; ++j) {
+        const int y = origin + j * step;
+        gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(level), stream}, 0, count, g.data());
+        float* row = x_ + size_t(y) * w_;
+        for (int i = 0; i < count; ++i) {
+          const int x = origin + i * step;
+          if (!pinned(x, y)) row[x] += delta * g[i];
+        }
+      }
+    }
+    if (c_.periodic) wrap_edges();
+  }
+
+  void wrap_edges() {
+    for (int x = 0; x < n_; ++x) at(x, n_) = at(x, 0);
+    for (int y = 0; y <= n_; ++y) at(n_, y) = at(0, y);
+  }
+
+  const DiamondSquareConfig& c_;
+  const int n_, w_;
+  float* x_;
+  int threads_;
+  int ref_step_ = 0;
+};
+
+}  // namespace
+
+Heightfield diamond_square(const DiamondSquareConfig& config) {
+  const int side = (1 << config.levels) + 1;
+  Heightfield hf(side, side);
+  Refiner(config, hf).run();
+  return hf;
+}
+
+}  // namespace ft

@@ -1,0 +1,193 @@
+#include "terrain/terrain.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/memory.hpp"
+#include "terrain/diamond_square.hpp"
+#include "terrain/profile.hpp"
+
+namespace ft {
+namespace {
+
+void check_struct_size(uint32_t got, size_t want, const char* name) {
+  if (got < want)
+    invalid(std::string(name) + ".struct_size is " + std::to_string(got) + ", expected " +
+            std::to_string(want) + " (call " + name + "_init first)");
+}
+
+// The displacement scale when refining from reference values (seed 000 tried
+// sigma = 1 and the mean of the reference values).
+double reference_scale(int mode, double sigma, const float* ref, size_t n) {
+  if (mode == FT_REFSCALE_SIGMA) return sigma;
+  double sum = 0, sum2 = 0;
+  for (size_t i = 0; i < n; ++i) sum += std::fabs(ref[i]), sum2 += double(ref[i]) * ref[i];
+  double mean_abs = sum / double(n);
+  double mean = 0;
+  for (size_t i = 0; i < n; ++i) mean += ref[i];
+  mean /= double(n);
+  const double scale = mode == FT_REFSCALE_MEAN ? mean_abs : std::sqrt(std::max(0.0, sum2 / double(n) - mean * mean));
+  if (!(scale > 0))
+    invalid(std::string("reference_scale ") + (mode == FT_REFSCALE_MEAN ? "'mean'" : "'std'") +
+            " gives 0 for these reference values; use reference_scale 'sigma' with a sigma > 0");
+  return scale;
+}
+
+void check_reference(const float* ref, int32_t size, int levels, bool periodic) {
+  const int m = dyadic_levels(size);
+  if (m < 1 || m > levels)
+    invalid("reference_size must be 2^m + 1 with 1 <= m <= levels (" + std::to_string(levels) +
+            "), i.e. one of 3, 5, 9, ..., " + std::to_string((1 << levels) + 1) + "; got " +
+            std::to_string(size));
+  const size_t n = size_t(size) * size_t(size);
+  for (size_t i = 0; i < n; ++i)
+    if (!std::isfinite(ref[i]))
+      invalid("reference value " + std::to_string(i) + " is " + format_number(ref[i]) + "; all must be finite");
+  if (periodic) {
+    for (int k = 0; k < size; ++k)
+      if (ref[k] != ref[size_t(size - 1) * size + k] || ref[size_t(k) * size] != ref[size_t(k) * size + size - 1])
+        invalid("a periodic terrain needs a periodic reference grid: its last row and column must equal its first");
+  }
+}
+
+}  // namespace
+
+int dyadic_levels(int64_t size) {
+  if (size < 3) return -1;
+  const int64_t n = size - 1;
+  if ((n & (n - 1)) != 0) return -1;
+  int m = 0;
+  while ((int64_t(1) << m) < n) ++m;
+  return m;
+}
+
+ft_terrain_params default_terrain_params() {
+  ft_terrain_params p{};
+  p.struct_size = sizeof(ft_terrain_params);
+  p.method = FT_TERRAIN_MIDPOINT;
+  p.levels = 9;
+  p.width = 513;
+  p.height = 513;
+  p.hurst = 0.8;
+  p.sigma = 1.0;
+  p.seed = 1;
+  p.periodic = 0;
+  p.threads = 0;
+  p.reference = nullptr;
+  p.reference_size = 0;
+  p.reference_scale = FT_REFSCALE_SIGMA;
+  p.octaves = 8;
+  p.lacunarity = 2.0;
+  p.gain = 0.0;
+  p.basis = FT_BASIS_GRADIENT;
+  p.variant = FT_FBM_STANDARD;
+  p.frequency = 4.0;
+  p.offset = 1.0;
+  p.rotation = 0.5;
+  p.warp = 0.0;
+  return p;
+}
+
+void validate_terrain_params(const ft_terrain_params& p) {
+  check_struct_size(p.struct_size, sizeof(ft_terrain_params), "ft_terrain_params");
+  check_int_range("method", p.method, FT_TERRAIN_MIDPOINT, FT_TERRAIN_INTERPOLATED);
+  check_range("hurst", p.hurst, 0.0, 1.0);
+  check_positive("sigma", p.sigma);
+  check_int_range("threads", p.threads, 0, 1024);
+  check_int_range("reference_scale", p.reference_scale, FT_REFSCALE_SIGMA, FT_REFSCALE_STD);
+  if (p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS) {
+    check_int_range("levels", p.levels, 1, kMaxLevels);
+    const uint64_t side = (uint64_t(1) << p.levels) + 1;
+    check_allocation(checked_bytes(side, side, sizeof(float)),
+                     "a terrain of levels " + std::to_string(p.levels) + " (" + std::to_string(side) +
+                         " x " + std::to_string(side) + " samples)");
+    if (p.reference) check_reference(p.reference, p.reference_size, p.levels, p.periodic != 0);
+  } else {
+    check_int_range("width", p.width, 2, 65536);
+    check_int_range("height", p.height, 2, 65536);
+    check_allocation(checked_bytes(uint64_t(p.width), uint64_t(p.height), sizeof(float)),
+                     "a " + std::to_string(p.width) + " x " + std::to_string(p.height) + " terrain");
+    if (p.reference) invalid("reference points are supported by the midpoint and additions methods only");
+  }
+}
+
+Heightfield generate_terrain(const ft_terrain_params& p) {
+  validate_terrain_params(p);
+  switch (p.method) {
+    case FT_TERRAIN_MIDPOINT:
+    case FT_TERRAIN_ADDITIONS: {
+      DiamondSquareConfig c;
+      c.levels = p.levels;
+      c.hurst = p.hurst;
+      c.seed = p.seed;
+      c.periodic = p.periodic != 0;
+      c.additions = p.method == FT_TERRAIN_ADDITIONS;
+      c.threads = p.threads;
+      c.progress = Progress(p.progress, p.progress_user);
+      c.sigma = p.sigma;
+      if (p.reference) {
+        c.reference = p.reference;
+        c.ref_levels = dyadic_levels(p.reference_size);
+        c.sigma = reference_scale(p.reference_scale, p.sigma, p.reference,
+                                  size_t(p.reference_size) * size_t(p.reference_size));
+      }
+      return diamond_square(c);
+    }
+    default:
+      fail(FT_ERR_UNSUPPORTED, "terrain method " + std::to_string(p.method) + " is not available in this build");
+  }
+}
+
+ft_profile_params default_profile_params() {
+  ft_profile_params p{};
+  p.struct_size = sizeof(ft_profile_params);
+  p.levels = 10;
+  p.hurst = 0.8;
+  p.sigma = 1.0;
+  p.seed = 1;
+  p.reference = nullptr;
+  p.reference_size = 0;
+  p.reference_scale = FT_REFSCALE_SIGMA;
+  return p;
+}
+
+void validate_profile_params(const ft_profile_params& p) {
+  check_struct_size(p.struct_size, sizeof(ft_profile_params), "ft_profile_params");
+  check_int_range("levels", p.levels, 1, kMaxProfileLevels);
+  check_range("hurst", p.hurst, 0.0, 1.0);
+  check_positive("sigma", p.sigma);
+  check_int_range("reference_scale", p.reference_scale, FT_REFSCALE_SIGMA, FT_REFSCALE_STD);
+  if (p.reference) {
+    const int m = dyadic_levels(p.reference_size);
+    if (m < 1 || m > p.levels)
+      invalid("reference_size must be 2^m + 1 with 1 <= m <= levels (" + std::to_string(p.levels) + "); got " +
+              std::to_string(p.reference_size));
+    for (int32_t i = 0; i < p.reference_size; ++i)
+      if (!std::isfinite(p.reference[i]))
+        invalid("reference value " + std::to_string(i) + " is " + format_number(p.reference[i]) + "; all must be finite");
+  }
+}
+
+void generate_profile(const ft_profile_params& p, float* dst, size_t count) {
+  validate_profile_params(p);
+  check_not_null("dst", dst);
+  const size_t need = (size_t(1) << p.levels) + 1;
+  if (count < need)
+    invalid("dst holds " + std::to_string(count) + " floats but levels " + std::to_string(p.levels) + " needs " +
+            std::to_string(need));
+  ProfileConfig c;
+  c.levels = p.levels;
+  c.hurst = p.hurst;
+  c.seed = p.seed;
+  c.progress = Progress(p.progress, p.progress_user);
+  c.sigma = p.sigma;
+  if (p.reference) {
+    c.reference = p.reference;
+    c.ref_levels = dyadic_levels(p.reference_size);
+    c.sigma = reference_scale(p.reference_scale, p.sigma, p.reference, size_t(p.reference_size));
+  }
+  midpoint_profile(c, dst);
+}
+
+}  // namespace ft

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs the Debian packages fracterra needs to build, test and run its
+# demo. Packages already present are skipped, so a second run costs nothing.
+# Usage: scripts/install-deps.sh [build|test|demo]   (default: test, the superset)
+set -euo pipefail
+
+build_pkgs=(cmake make g++ pkg-config libpng-dev libfftw3-dev librandom123-dev libcli11-dev
+            nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libosd-dev
+            libtinyobjloader-dev libnoise-dev)
+run_pkgs=(povray povray-includes blender python3)
+test_pkgs=(python3-pytest clang libclang-rt-14-dev python3-numpy)
+
+case "${1:-test}" in
+  build) want=("${build_pkgs[@]}") ;;
+  demo) want=("${build_pkgs[@]}" "${run_pkgs[@]}") ;;
+  test) want=("${build_pkgs[@]}" "${run_pkgs[@]}" "${test_pkgs[@]}") ;;
+  *) echo "usage: $0 [build|test|demo]" >&2; exit 2 ;;
+esac
+
+missing=()
+for p in "${want[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "installing: ${missing[*]}" >&2
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi

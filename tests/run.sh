@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Runs every fracterra test: installs what it needs, builds, and runs ctest
+# (native GoogleTest suites, Python ctypes tests, real Blender and POV-Ray).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh test
+scripts/build.sh
+cd build
+ctest --output-on-failure -j"$(nproc)" --timeout 600
