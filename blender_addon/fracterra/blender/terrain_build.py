@@ -37,7 +37,7 @@ def reference_from_object(name):
     if size * size != n or _dyadic_levels(size) < 1:
         raise SettingsError(
             f"Reference object '{obj.name}' has {n} vertices; a reference grid needs (2^m + 1)^2 vertices "
-            f"(9, 25, 81, 289, 1089, ...), e.g. Add > Mesh > Grid with 9 x 9 vertices")
+            f"(9, 25, 81, 289, 1089, ...), e.g. Add > Mesh > Grid with 8 x 8 subdivisions (9 x 9 vertices)")
     co = array.array("f", [0.0]) * (3 * n)
     mesh.vertices.foreach_get("co", co)
     order = sorted(range(n), key=lambda i: (co[3 * i + 1], co[3 * i]))
