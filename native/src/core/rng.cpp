@@ -2,13 +2,15 @@
 
 #include <bit>
 #include <cmath>
+#include <cstdlib>
+#include <string_view>
 
 namespace ft {
 namespace {
 
 // Natural log for x in (0, 1]: x = m * 2^e with m in [sqrt(1/2), sqrt(2)),
 // log m = 2 atanh(t), t = (m - 1) / (m + 1), |t| <= 0.172 (series to t^9).
-inline float log_unit(float x) {
+__attribute__((always_inline)) inline float log_unit(float x) {
   uint32_t bits = std::bit_cast<uint32_t>(x);
   int32_t e = int32_t((bits >> 23) & 0xff) - 127;
   uint32_t mbits = (bits & 0x007fffffu) | 0x3f800000u;  // m in [1, 2)
@@ -26,7 +28,7 @@ inline float log_unit(float x) {
 
 // sin and cos of 2 pi u for u in (0, 1): quadrant from 4u, then the angle
 // within the quadrant is centred on pi/4 so the Taylor series are short.
-inline void sincos_turn(float u, float& s, float& c) {
+__attribute__((always_inline)) inline void sincos_turn(float u, float& s, float& c) {
   const float q4 = u * 4.0f;
   const int32_t q = int32_t(q4);  // 0..3
   const float a = (q4 - float(q) - 0.5f) * 1.57079632679f;  // in [-pi/4, pi/4)
@@ -41,7 +43,7 @@ inline void sincos_turn(float u, float& s, float& c) {
   c = q == 0 ? c0 : q == 1 ? -s0 : q == 2 ? -c0 : s0;
 }
 
-inline void philox_rounds(uint32_t& c0, uint32_t& c1, uint32_t& c2, uint32_t& c3, uint32_t k0,
+__attribute__((always_inline)) inline void philox_rounds(uint32_t& c0, uint32_t& c1, uint32_t& c2, uint32_t& c3, uint32_t k0,
                           uint32_t k1) {
   // Philox4x32-10 exactly as Random123 defines it (constants from philox.h).
   for (int r = 0; r < 10; ++r) {
@@ -64,7 +66,7 @@ inline void philox_rounds(uint32_t& c0, uint32_t& c1, uint32_t& c2, uint32_t& c3
   }
 }
 
-inline void box_muller_inline(float u1, float u2, float& z0, float& z1) {
+__attribute__((always_inline)) inline void box_muller_inline(float u1, float u2, float& z0, float& z1) {
   const float r = std::sqrt(-2.0f * log_unit(u1));
   float s, c;
   sincos_turn(u2, s, c);
@@ -75,7 +77,7 @@ inline void box_muller_inline(float u1, float u2, float& z0, float& z1) {
 constexpr size_t kChunk = 64;  // blocks per inner batch (256 variates)
 
 template <bool kGaussian>
-inline void fill_blocks(uint64_t seed, const Counter& c, uint32_t first_block, size_t blocks,
+__attribute__((always_inline)) inline void fill_blocks(uint64_t seed, const Counter& c, uint32_t first_block, size_t blocks,
                         float* out) {
   const uint32_t k0 = uint32_t(seed), k1 = uint32_t(seed >> 32);
   // Struct-of-arrays batches so the compiler vectorises across blocks.
@@ -114,7 +116,7 @@ inline void fill_blocks(uint64_t seed, const Counter& c, uint32_t first_block, s
 }
 
 template <bool kGaussian>
-inline void fill_any(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+__attribute__((always_inline)) inline void fill_any(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
   // Unaligned head and tail go through a 4-wide scratch block.
   while (n > 0 && (first & 3) != 0) {
     float tmp[4];
@@ -141,15 +143,53 @@ namespace detail {
 void box_muller(float u1, float u2, float& z0, float& z1) { box_muller_inline(u1, u2, z0, z1); }
 }  // namespace detail
 
-__attribute__((target_clones("avx2", "default")))
-void gaussian_fill(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+// Runtime dispatch: the same kernel compiled for AVX2 and for baseline
+// x86-64. -ffp-contract=off and libm-free math make both give the same bits;
+// FT_DISPATCH=baseline forces the baseline path (tests compare the two).
+namespace {
+using FillFn = void (*)(uint64_t, const Counter&, uint64_t, size_t, float*);
+
+__attribute__((target("avx2"))) void gaussian_fill_avx2(uint64_t seed, const Counter& c, uint64_t first, size_t n,
+                                                        float* out) {
   fill_any<true>(seed, c, first, n, out);
 }
-
-__attribute__((target_clones("avx2", "default")))
-void uniform_fill(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+void gaussian_fill_baseline(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+  fill_any<true>(seed, c, first, n, out);
+}
+__attribute__((target("avx2"))) void uniform_fill_avx2(uint64_t seed, const Counter& c, uint64_t first, size_t n,
+                                                       float* out) {
   fill_any<false>(seed, c, first, n, out);
 }
+void uniform_fill_baseline(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+  fill_any<false>(seed, c, first, n, out);
+}
+
+bool use_avx2() {
+  static const bool yes = [] {
+    const char* force = std::getenv("FT_DISPATCH");
+    if (force && std::string_view(force) == "baseline") return false;
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return yes;
+}
+}  // namespace
+
+void gaussian_fill(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+  (use_avx2() ? gaussian_fill_avx2 : gaussian_fill_baseline)(seed, c, first, n, out);
+}
+
+void uniform_fill(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+  (use_avx2() ? uniform_fill_avx2 : uniform_fill_baseline)(seed, c, first, n, out);
+}
+
+namespace detail {
+const char* dispatch_path() { return use_avx2() ? "avx2" : "baseline"; }
+void gaussian_fill_on_path(bool avx2, uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+  if (avx2 && __builtin_cpu_supports("avx2")) gaussian_fill_avx2(seed, c, first, n, out);
+  else gaussian_fill_baseline(seed, c, first, n, out);
+}
+}  // namespace detail
 
 float gaussian_at(uint64_t seed, const Counter& c, uint64_t index) {
   const auto r = philox_block(seed, c, uint32_t(index >> 2));
