@@ -10,15 +10,14 @@ namespace {
 
 // Natural log for x in (0, 1]: x = m * 2^e with m in [sqrt(1/2), sqrt(2)),
 // log m = 2 atanh(t), t = (m - 1) / (m + 1), |t| <= 0.172 (series to t^9).
+// Selects are integer arithmetic, not branches, so the loop vectorises.
 __attribute__((always_inline)) inline float log_unit(float x) {
-  uint32_t bits = std::bit_cast<uint32_t>(x);
-  int32_t e = int32_t((bits >> 23) & 0xff) - 127;
+  const uint32_t bits = std::bit_cast<uint32_t>(x);
   uint32_t mbits = (bits & 0x007fffffu) | 0x3f800000u;  // m in [1, 2)
-  float m = std::bit_cast<float>(mbits);
-  // Move m into [sqrt(1/2), sqrt(2)) so the series converges fast.
-  const bool big = m > 1.41421356f;
-  m = big ? m * 0.5f : m;
-  e = big ? e + 1 : e;
+  const uint32_t big = mbits > 0x3fb504f3u;             // m > sqrt(2): halve it
+  mbits -= big << 23;
+  const int32_t e = int32_t((bits >> 23) & 0xff) - 127 + int32_t(big);
+  const float m = std::bit_cast<float>(mbits);
   const float t = (m - 1.0f) / (m + 1.0f);
   const float t2 = t * t;
   const float series =
@@ -26,21 +25,25 @@ __attribute__((always_inline)) inline float log_unit(float x) {
   return series + float(e) * 0.693147180559945f;
 }
 
-// sin and cos of 2 pi u for u in (0, 1): quadrant from 4u, then the angle
-// within the quadrant is centred on pi/4 so the Taylor series are short.
+// sin and cos of 2 pi u for u in (0, 1): quadrant q from 4u, the angle within
+// the quadrant centred on pi/4 so the Taylor series are short, then the
+// quarter turns as a swap and sign flips on the bits (exact, branch-free).
 __attribute__((always_inline)) inline void sincos_turn(float u, float& s, float& c) {
   const float q4 = u * 4.0f;
-  const int32_t q = int32_t(q4);  // 0..3
+  const uint32_t q = uint32_t(q4);  // 0..3
   const float a = (q4 - float(q) - 0.5f) * 1.57079632679f;  // in [-pi/4, pi/4)
   const float a2 = a * a;
   const float sa = a * (1.0f + a2 * (-1.0f / 6 + a2 * (1.0f / 120 + a2 * (-1.0f / 5040 + a2 * (1.0f / 362880)))));
   const float ca = 1.0f + a2 * (-0.5f + a2 * (1.0f / 24 + a2 * (-1.0f / 720 + a2 * (1.0f / 40320 + a2 * (-1.0f / 3628800)))));
   const float k = 0.70710678118f;
-  const float s0 = (ca + sa) * k;  // sin(pi/4 + a)
-  const float c0 = (ca - sa) * k;  // cos(pi/4 + a)
-  // Rotate by q quarter turns.
-  s = q == 0 ? s0 : q == 1 ? c0 : q == 2 ? -s0 : -c0;
-  c = q == 0 ? c0 : q == 1 ? -s0 : q == 2 ? -c0 : s0;
+  const uint32_t s0 = std::bit_cast<uint32_t>((ca + sa) * k);  // sin(pi/4 + a)
+  const uint32_t c0 = std::bit_cast<uint32_t>((ca - sa) * k);  // cos(pi/4 + a)
+  // q = 0: (s0, c0); 1: (c0, -s0); 2: (-s0, -c0); 3: (-c0, s0).
+  const uint32_t swap = 0u - (q & 1u);
+  const uint32_t sb = (s0 & ~swap) | (c0 & swap);
+  const uint32_t cb = (c0 & ~swap) | (s0 & swap);
+  s = std::bit_cast<float>(sb ^ ((q & 2u) << 30));
+  c = std::bit_cast<float>(cb ^ (((q + 1u) & 2u) << 30));
 }
 
 __attribute__((always_inline)) inline void philox_rounds(uint32_t& c0, uint32_t& c1, uint32_t& c2, uint32_t& c3, uint32_t k0,
