@@ -1,0 +1,273 @@
+// Fractalization on OpenSubdiv, level by level:
+//
+//   1. Far::TopologyRefiner refines the base topology uniformly to L levels.
+//   2. For k = 1..L, Far::PrimvarRefiner interpolates the (already displaced)
+//      positions of level k-1 to level k, then the level's vertex normals are
+//      computed, and the vertices new at level k (Voss) or all vertices
+//      (additions) move along the normal by sigma 2^(-kH) s g.
+//
+// Vertex identity for the random numbers: (seed, level k, vertex index at
+// level k) -> Counter{0, k, Stream::kSubdiv}, index = vertex index. OpenSubdiv
+// numbers refined vertices deterministically from the base topology (children
+// of vertices first, then of faces, then of edges, each in parent order), so
+// the same mesh and seed give the same numbers on any machine and thread
+// count, and a run with L - 1 levels is exactly the level L - 1 stage of a
+// run with L levels (the tests use this to measure the displacement added at
+// each level). The key changes when the base topology changes; that is the
+// price of a key without hashing parent chains.
+#include "subdiv/fractalize.hpp"
+
+#include <opensubdiv/far/error.h>
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/memory.hpp"
+#include "core/parallel.hpp"
+#include "core/progress.hpp"
+#include "core/rng.hpp"
+#include "subdiv/mesh_validation.hpp"
+
+namespace ft {
+
+using namespace OpenSubdiv;
+
+ft_fractalize_params default_fractalize_params() {
+  ft_fractalize_params p{};
+  p.struct_size = sizeof(ft_fractalize_params);
+  p.levels = 4;
+  p.hurst = 0.8;
+  p.sigma = 0.1;
+  p.seed = 1;
+  p.scheme = FT_SCHEME_CATMARK;
+  p.mode = FT_FRACTALIZE_VOSS;
+  return p;
+}
+
+namespace detail {
+
+// OpenSubdiv reports through global callbacks (printf by default); route
+// them to a per-thread message that becomes part of our error.
+thread_local std::string t_osd_message;
+void osd_error(Far::ErrorType, const char* message) { t_osd_message = message; }
+void osd_warning(const char* message) { t_osd_message = message; }
+
+// A primvar of N floats: xyz, plus (N = 4) the displacement scale factor.
+template <int N>
+struct Primvar {
+  float v[N];
+  void Clear(void* = nullptr) {
+    for (float& x : v) x = 0.0f;
+  }
+  void AddWithWeight(const Primvar& src, float w) {
+    for (int i = 0; i < N; ++i) v[i] += w * src.v[i];
+  }
+};
+
+std::unique_ptr<Far::TopologyRefiner> make_refiner(const Mesh& m, int scheme) {
+  const Sdc::SchemeType type = scheme == FT_SCHEME_LOOP       ? Sdc::SCHEME_LOOP
+                               : scheme == FT_SCHEME_BILINEAR ? Sdc::SCHEME_BILINEAR
+                                                              : Sdc::SCHEME_CATMARK;
+  Sdc::Options options;
+  // Boundaries follow the smooth boundary curve and corners stay put, so an
+  // open terrain patch keeps its outline.
+  options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  Far::TopologyDescriptor d;
+  d.numVertices = int(m.vertex_count());
+  d.numFaces = int(m.face_count());
+  d.numVertsPerFace = m.face_sizes.data();
+  d.vertIndicesPerFace = m.face_indices.data();
+  d.numCreases = int(m.crease_sharpness.size());
+  d.creaseVertexIndexPairs = m.crease_pairs.data();
+  d.creaseWeights = m.crease_sharpness.data();
+  d.numCorners = int(m.corner_sharpness.size());
+  d.cornerVertexIndices = m.corner_vertices.data();
+  d.cornerWeights = m.corner_sharpness.data();
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  Far::SetErrorCallback(osd_error);
+  Far::SetWarningCallback(osd_warning);
+  t_osd_message.clear();
+  std::unique_ptr<Far::TopologyRefiner> r(Factory::Create(d, Factory::Options(type, options)));
+  if (!r) invalid("OpenSubdiv cannot refine this mesh: " + t_osd_message);
+  return r;
+}
+
+// Bytes a uniform refinement to `levels` needs, roughly: OpenSubdiv keeps
+// about 9 ints of topology per face corner of the last level (face-vertex,
+// face-edge, vertex-face and vertex-edge relations and their local indices),
+// a third more for the earlier levels, plus our primvars and normals.
+uint64_t estimate_bytes(const Mesh& m, int scheme, int levels, uint64_t* last_corners) {
+  uint64_t corners = 0;  // face corners at level 1
+  for (int32_t n : m.face_sizes) corners += scheme == FT_SCHEME_LOOP ? 12 : 4 * uint64_t(n);
+  for (int k = 1; k < levels; ++k) corners = corners > (UINT64_MAX >> 3) ? UINT64_MAX : corners * 4;
+  *last_corners = corners;
+  return checked_bytes(corners, 4 * 9 * 4 / 3 + 24);
+}
+
+template <int N>
+class Fractalizer {
+ public:
+  Fractalizer(const Mesh& m, const ft_fractalize_params& p, const Far::TopologyRefiner& r)
+      : m_(m), p_(p), r_(r), threads_(resolve_threads(p.threads)) {}
+
+  Mesh run() {
+    const Progress progress(p_.progress, p_.progress_user);
+    std::vector<Primvar<N>> cur(m_.vertex_count()), next;
+    for (size_t i = 0; i < cur.size(); ++i) {
+      for (int c = 0; c < 3; ++c) cur[i].v[c] = m_.positions[3 * i + c];
+      if constexpr (N == 4) cur[i].v[3] = base_scale(i);
+    }
+    const Far::PrimvarRefiner primvar(r_);
+    progress.report(0.0);
+    for (int k = 1; k <= p_.levels; ++k) {
+      next.resize(size_t(r_.GetLevel(k).GetNumVertices()));
+      primvar.Interpolate(k, cur, next);
+      if (p_.sigma > 0) displace(k, next);
+      cur.swap(next);
+      progress.report(double(k) / p_.levels);
+    }
+    return output(cur);
+  }
+
+ private:
+  // Weight times (optionally) the mean length of the base edges at vertex i.
+  float base_scale(size_t i) {
+    if (edge_length_.empty() && p_.scale_by_edge_length) {
+      const Far::TopologyLevel& base = r_.GetLevel(0);
+      std::vector<double> sum(m_.vertex_count(), 0.0);
+      std::vector<int> count(m_.vertex_count(), 0);
+      for (int e = 0; e < base.GetNumEdges(); ++e) {
+        const auto ev = base.GetEdgeVertices(e);
+        const auto a = m_.vertex(size_t(ev[0])), b = m_.vertex(size_t(ev[1]));
+        const double len = std::sqrt(double(a[0] - b[0]) * (a[0] - b[0]) + double(a[1] - b[1]) * (a[1] - b[1]) +
+                                     double(a[2] - b[2]) * (a[2] - b[2]));
+        for (int j = 0; j < 2; ++j) sum[size_t(ev[j])] += len, ++count[size_t(ev[j])];
+      }
+      edge_length_.resize(m_.vertex_count());
+      for (size_t v = 0; v < sum.size(); ++v) edge_length_[v] = count[v] ? float(sum[v] / count[v]) : 0.0f;
+    }
+    float s = p_.weights ? p_.weights[i] : 1.0f;
+    if (p_.scale_by_edge_length) s *= edge_length_[i];
+    return s;
+  }
+
+  void displace(int k, std::vector<Primvar<N>>& x) {
+    const Far::TopologyLevel& level = r_.GetLevel(k);
+    const int nf = level.GetNumFaces(), nv = level.GetNumVertices();
+    // Which vertices are children of vertices (not new at this level).
+    std::vector<uint8_t> old(size_t(nv), 0);
+    const Far::TopologyLevel& parent = r_.GetLevel(k - 1);
+    for (int v = 0; v < parent.GetNumVertices(); ++v) old[size_t(parent.GetVertexChildVertex(v))] = 1;
+
+    face_normal_.resize(3 * size_t(nf));
+    float* fn = face_normal_.data();
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (int f = 0; f < nf; ++f) {
+      const auto fv = level.GetFaceVertices(f);
+      float nx = 0, ny = 0, nz = 0;  // Newell's vector area
+      for (int i = 0, n = fv.size(); i < n; ++i) {
+        const float* a = x[size_t(fv[i])].v;
+        const float* b = x[size_t(fv[(i + 1) % n])].v;
+        nx += (a[1] - b[1]) * (a[2] + b[2]);
+        ny += (a[2] - b[2]) * (a[0] + b[0]);
+        nz += (a[0] - b[0]) * (a[1] + b[1]);
+      }
+      fn[3 * size_t(f)] = nx, fn[3 * size_t(f) + 1] = ny, fn[3 * size_t(f) + 2] = nz;
+    }
+
+    const float amp = float(p_.sigma * std::pow(2.0, -k * p_.hurst));
+    const bool voss = p_.mode == FT_FRACTALIZE_VOSS;
+    const bool fix_boundary = p_.fix_boundary != 0;
+    const Counter counter{0, uint32_t(k), Stream::kSubdiv};
+    // Chunks of a fixed size, so the random numbers are drawn in batches
+    // whose addresses do not depend on the thread count.
+    constexpr int kChunk = 4096;
+    const int chunks = (nv + kChunk - 1) / kChunk;
+#pragma omp parallel num_threads(threads_)
+    {
+      std::vector<float> g(kChunk);
+#pragma omp for schedule(static)
+      for (int c = 0; c < chunks; ++c) {
+        const int v0 = c * kChunk, v1 = std::min(nv, v0 + kChunk);
+        gaussian_fill(p_.seed, counter, uint64_t(v0), size_t(v1 - v0), g.data());
+        for (int v = v0; v < v1; ++v) {
+          if ((voss && old[size_t(v)]) || (fix_boundary && level.IsVertexBoundary(v))) continue;
+          float nx = 0, ny = 0, nz = 0;
+          for (int f : level.GetVertexFaces(v)) {
+            nx += fn[3 * size_t(f)], ny += fn[3 * size_t(f) + 1], nz += fn[3 * size_t(f) + 2];
+          }
+          const float len = std::sqrt(nx * nx + ny * ny + nz * nz);
+          if (!(len > 0)) continue;  // no faces or a flat fan that cancels: no direction
+          float d = amp * g[size_t(v - v0)] / len;
+          if constexpr (N == 4) d *= x[size_t(v)].v[3];
+          x[size_t(v)].v[0] += d * nx, x[size_t(v)].v[1] += d * ny, x[size_t(v)].v[2] += d * nz;
+        }
+      }
+    }
+  }
+
+  Mesh output(const std::vector<Primvar<N>>& x) const {
+    const Far::TopologyLevel& last = r_.GetLevel(p_.levels);
+    Mesh out;
+    out.positions.resize(3 * x.size());
+    for (size_t i = 0; i < x.size(); ++i)
+      for (int c = 0; c < 3; ++c) out.positions[3 * i + c] = x[i].v[c];
+    const int nf = last.GetNumFaces();
+    const int size = p_.scheme == FT_SCHEME_LOOP ? 3 : 4;
+    out.face_sizes.assign(size_t(nf), size);
+    out.face_indices.resize(size_t(nf) * size);
+    for (int f = 0; f < nf; ++f) {
+      const auto fv = last.GetFaceVertices(f);
+      std::copy(fv.begin(), fv.end(), out.face_indices.begin() + size_t(f) * size);
+    }
+    return out;
+  }
+
+  const Mesh& m_;
+  const ft_fractalize_params& p_;
+  const Far::TopologyRefiner& r_;
+  const int threads_;
+  std::vector<float> edge_length_, face_normal_;
+};
+
+}  // namespace detail
+
+Mesh fractalize(const Mesh& mesh, const ft_fractalize_params& p) {
+  if (p.struct_size < sizeof(ft_fractalize_params))
+    invalid("params.struct_size is " + std::to_string(p.struct_size) + "; fill the struct with ft_fractalize_params_init");
+  check_int_range("levels", p.levels, 1, kMaxSubdivLevels);
+  check_range("hurst", p.hurst, 0.0, 1.0);
+  if (!(p.sigma >= 0.0) || !std::isfinite(p.sigma))
+    invalid("sigma must be a finite number >= 0, got " + format_number(p.sigma));
+  check_int_range("scheme (0 catmark, 1 loop, 2 bilinear)", p.scheme, FT_SCHEME_CATMARK, FT_SCHEME_BILINEAR);
+  check_int_range("mode (0 voss, 1 additions)", p.mode, FT_FRACTALIZE_VOSS, FT_FRACTALIZE_ADDITIONS);
+  resolve_threads(p.threads);
+  validate_mesh(mesh);
+  if (p.scheme == FT_SCHEME_LOOP) validate_triangles(mesh);
+  if (p.weights)
+    for (size_t i = 0; i < mesh.vertex_count(); ++i)
+      if (!std::isfinite(p.weights[i]))
+        invalid("weights[" + std::to_string(i) + "] is " + format_number(p.weights[i]) + "; weights must be finite");
+
+  uint64_t corners = 0;
+  check_allocation(detail::estimate_bytes(mesh, p.scheme, p.levels, &corners), "fractalizing to " +
+                   std::to_string(p.levels) + " levels");
+  if (corners > uint64_t(INT32_MAX))
+    fail(FT_ERR_TOO_LARGE, std::to_string(p.levels) + " levels would make " + std::to_string(corners) +
+                               " face corners; OpenSubdiv allows at most 2^31 - 1: use fewer levels");
+
+  auto refiner = detail::make_refiner(mesh, p.scheme);
+  Far::TopologyRefiner::UniformOptions options(p.levels);
+  options.fullTopologyInLastLevel = true;  // normals and boundary tags at the last level too
+  refiner->RefineUniform(options);
+  if (p.weights || p.scale_by_edge_length) return detail::Fractalizer<4>(mesh, p, *refiner).run();
+  return detail::Fractalizer<3>(mesh, p, *refiner).run();
+}
+
+}  // namespace ft
