@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -98,16 +99,16 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const Mesh& m, int scheme) {
   return r;
 }
 
-// Bytes a uniform refinement to `levels` needs, roughly: OpenSubdiv keeps
-// about 9 ints of topology per face corner of the last level (face-vertex,
-// face-edge, vertex-face and vertex-edge relations and their local indices),
-// a third more for the earlier levels, plus our primvars and normals.
+// Bytes a fractalization to `levels` needs at its peak, estimated from the
+// face corners of the last level: OpenSubdiv's topology of all levels, two
+// primvar buffers, normals and the output mesh. Measured peak: 52 bytes per
+// last-level corner (cube, 9 levels, 6.3M corners, 326 MB); we assume 72.
 uint64_t estimate_bytes(const Mesh& m, int scheme, int levels, uint64_t* last_corners) {
   uint64_t corners = 0;  // face corners at level 1
   for (int32_t n : m.face_sizes) corners += scheme == FT_SCHEME_LOOP ? 12 : 4 * uint64_t(n);
   for (int k = 1; k < levels; ++k) corners = corners > (UINT64_MAX >> 3) ? UINT64_MAX : corners * 4;
   *last_corners = corners;
-  return checked_bytes(corners, 4 * 9 * 4 / 3 + 24);
+  return checked_bytes(corners, 72);
 }
 
 template <int N>
@@ -159,32 +160,46 @@ class Fractalizer {
 
   void displace(int k, std::vector<Primvar<N>>& x) {
     const Far::TopologyLevel& level = r_.GetLevel(k);
-    const int nf = level.GetNumFaces(), nv = level.GetNumVertices();
-    // Which vertices are children of vertices (not new at this level).
-    std::vector<uint8_t> old(size_t(nv), 0);
     const Far::TopologyLevel& parent = r_.GetLevel(k - 1);
-    for (int v = 0; v < parent.GetNumVertices(); ++v) old[size_t(parent.GetVertexChildVertex(v))] = 1;
+    const int nf = level.GetNumFaces(), nv = level.GetNumVertices();
 
-    face_normal_.resize(3 * size_t(nf));
-    float* fn = face_normal_.data();
-#pragma omp parallel for schedule(static) num_threads(threads_)
+    // Vertex normals: each face's Newell vector (its vector area, so larger
+    // faces weigh more) scattered to its corners, serially in face order so
+    // the sums do not depend on threads. A parallel gather would need the
+    // vertex-face relations, which OpenSubdiv only builds for the last level
+    // at a higher cost than this loop (fullTopologyInLastLevel).
+    normal_.assign(3 * size_t(nv), 0.0f);
+    float* nrm = normal_.data();
     for (int f = 0; f < nf; ++f) {
       const auto fv = level.GetFaceVertices(f);
-      float nx = 0, ny = 0, nz = 0;  // Newell's vector area
+      float nx = 0, ny = 0, nz = 0;
       for (int i = 0, n = fv.size(); i < n; ++i) {
         const float* a = x[size_t(fv[i])].v;
-        const float* b = x[size_t(fv[(i + 1) % n])].v;
+        const float* b = x[size_t(fv[i + 1 < n ? i + 1 : 0])].v;
         nx += (a[1] - b[1]) * (a[2] + b[2]);
         ny += (a[2] - b[2]) * (a[0] + b[0]);
         nz += (a[0] - b[0]) * (a[1] + b[1]);
       }
-      fn[3 * size_t(f)] = nx, fn[3 * size_t(f) + 1] = ny, fn[3 * size_t(f) + 2] = nz;
+      for (int v : fv) {
+        float* o = nrm + 3 * size_t(v);
+        o[0] += nx, o[1] += ny, o[2] += nz;
+      }
     }
 
+    // Vertices that stay: children of vertices (Voss moves only the new
+    // ones), and with fix_boundary the children of boundary vertices and
+    // edges of the parent level (a face's child is never on a boundary).
+    skip_.assign(size_t(nv), 0);
+    for (int v = 0; v < parent.GetNumVertices(); ++v)
+      if (p_.mode == FT_FRACTALIZE_VOSS || (p_.fix_boundary && parent.IsVertexBoundary(v)))
+        skip_[size_t(parent.GetVertexChildVertex(v))] = 1;
+    if (p_.fix_boundary)
+      for (int e = 0; e < parent.GetNumEdges(); ++e)
+        if (parent.IsEdgeBoundary(e)) skip_[size_t(parent.GetEdgeChildVertex(e))] = 1;
+
     const float amp = float(p_.sigma * std::pow(2.0, -k * p_.hurst));
-    const bool voss = p_.mode == FT_FRACTALIZE_VOSS;
-    const bool fix_boundary = p_.fix_boundary != 0;
     const Counter counter{0, uint32_t(k), Stream::kSubdiv};
+    const uint8_t* skip = skip_.data();
     // Chunks of a fixed size, so the random numbers are drawn in batches
     // whose addresses do not depend on the thread count.
     constexpr int kChunk = 4096;
@@ -197,16 +212,14 @@ class Fractalizer {
         const int v0 = c * kChunk, v1 = std::min(nv, v0 + kChunk);
         gaussian_fill(p_.seed, counter, uint64_t(v0), size_t(v1 - v0), g.data());
         for (int v = v0; v < v1; ++v) {
-          if ((voss && old[size_t(v)]) || (fix_boundary && level.IsVertexBoundary(v))) continue;
-          float nx = 0, ny = 0, nz = 0;
-          for (int f : level.GetVertexFaces(v)) {
-            nx += fn[3 * size_t(f)], ny += fn[3 * size_t(f) + 1], nz += fn[3 * size_t(f) + 2];
-          }
-          const float len = std::sqrt(nx * nx + ny * ny + nz * nz);
-          if (!(len > 0)) continue;  // no faces or a flat fan that cancels: no direction
+          if (skip[v]) continue;
+          const float* n = nrm + 3 * size_t(v);
+          const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+          if (!(len > 0)) continue;  // no faces or a fan that cancels: no direction
           float d = amp * g[size_t(v - v0)] / len;
           if constexpr (N == 4) d *= x[size_t(v)].v[3];
-          x[size_t(v)].v[0] += d * nx, x[size_t(v)].v[1] += d * ny, x[size_t(v)].v[2] += d * nz;
+          float* q = x[size_t(v)].v;
+          q[0] += d * n[0], q[1] += d * n[1], q[2] += d * n[2];
         }
       }
     }
@@ -216,8 +229,13 @@ class Fractalizer {
     const Far::TopologyLevel& last = r_.GetLevel(p_.levels);
     Mesh out;
     out.positions.resize(3 * x.size());
-    for (size_t i = 0; i < x.size(); ++i)
-      for (int c = 0; c < 3; ++c) out.positions[3 * i + c] = x[i].v[c];
+    if constexpr (N == 3) {
+      static_assert(sizeof(Primvar<3>) == 3 * sizeof(float));
+      std::memcpy(out.positions.data(), x.data(), out.positions.size() * sizeof(float));
+    } else {
+      for (size_t i = 0; i < x.size(); ++i)
+        for (int c = 0; c < 3; ++c) out.positions[3 * i + c] = x[i].v[c];
+    }
     const int nf = last.GetNumFaces();
     const int size = p_.scheme == FT_SCHEME_LOOP ? 3 : 4;
     out.face_sizes.assign(size_t(nf), size);
@@ -233,7 +251,8 @@ class Fractalizer {
   const ft_fractalize_params& p_;
   const Far::TopologyRefiner& r_;
   const int threads_;
-  std::vector<float> edge_length_, face_normal_;
+  std::vector<float> edge_length_, normal_;
+  std::vector<uint8_t> skip_;
 };
 
 }  // namespace detail
@@ -263,9 +282,7 @@ Mesh fractalize(const Mesh& mesh, const ft_fractalize_params& p) {
                                " face corners; OpenSubdiv allows at most 2^31 - 1: use fewer levels");
 
   auto refiner = detail::make_refiner(mesh, p.scheme);
-  Far::TopologyRefiner::UniformOptions options(p.levels);
-  options.fullTopologyInLastLevel = true;  // normals and boundary tags at the last level too
-  refiner->RefineUniform(options);
+  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(p.levels));
   if (p.weights || p.scale_by_edge_length) return detail::Fractalizer<4>(mesh, p, *refiner).run();
   return detail::Fractalizer<3>(mesh, p, *refiner).run();
 }
