@@ -45,8 +45,9 @@ typedef struct ft_mesh ft_mesh;
 /// @param crease_pairs    2 * crease_count vertex indices naming edges of the
 ///                        mesh (NULL when crease_count is 0); copied.
 /// @param crease_sharpness crease_count sharpness values in [0, 10]
-///                        (10 = infinitely sharp; Blender's crease c in [0, 1]
-///                        maps to 10 c); copied.
+///                        (10 = infinitely sharp; Blender's edge crease c in
+///                        [0, 1] maps to 10 c^2, as in Blender's own
+///                        BKE_subdiv_crease_to_sharpness_f); copied.
 /// @param crease_count    0 or more
 /// @param out             receives the handle (free with ft_mesh_free); NULL on failure.
 FT_API ft_status ft_mesh_create(const float* positions, int64_t vertex_count,
@@ -94,9 +95,10 @@ typedef struct ft_fractalize_params {
   uint32_t struct_size;      ///< sizeof(ft_fractalize_params); set by _init
   int32_t levels;            ///< refinement steps L; 1..10, default 4 (faces grow 4^L)
   double hurst;              ///< Hurst exponent H in [0, 1]; default 0.8
-  double sigma;              ///< displacement scale at level 0 in mesh units (or, with
-                             ///< scale_by_edge_length, as a fraction of the local base
-                             ///< edge length); >= 0 (0: plain subdivision); default 0.1
+  double sigma;              ///< displacement scale in mesh units: level k moves by
+                             ///< sigma 2^(-kH) g (with scale_by_edge_length: a fraction of
+                             ///< the local base edge length); >= 0 (0: plain subdivision);
+                             ///< default 0.1
   uint64_t seed;             ///< any 64-bit value; default 1
   int32_t scheme;            ///< FT_SCHEME_*; default FT_SCHEME_CATMARK
   int32_t mode;              ///< FT_FRACTALIZE_*; default FT_FRACTALIZE_VOSS

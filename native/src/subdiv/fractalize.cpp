@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -91,8 +92,11 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const Mesh& m, int scheme) {
   d.cornerVertexIndices = m.corner_vertices.data();
   d.cornerWeights = m.corner_sharpness.data();
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  Far::SetErrorCallback(osd_error);
-  Far::SetWarningCallback(osd_warning);
+  static std::once_flag once;  // the setters are not thread-safe: call them once
+  std::call_once(once, [] {
+    Far::SetErrorCallback(osd_error);
+    Far::SetWarningCallback(osd_warning);
+  });
   t_osd_message.clear();
   std::unique_ptr<Far::TopologyRefiner> r(Factory::Create(d, Factory::Options(type, options)));
   if (!r) invalid("OpenSubdiv cannot refine this mesh: " + t_osd_message);
