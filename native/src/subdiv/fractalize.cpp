@@ -124,9 +124,11 @@ class Fractalizer {
   Mesh run() {
     const Progress progress(p_.progress, p_.progress_user);
     std::vector<Primvar<N>> cur(m_.vertex_count()), next;
-    for (size_t i = 0; i < cur.size(); ++i) {
+    for (size_t i = 0; i < cur.size(); ++i)
       for (int c = 0; c < 3; ++c) cur[i].v[c] = m_.positions[3 * i + c];
-      if constexpr (N == 4) cur[i].v[3] = base_scale(i);
+    if constexpr (N == 4) {
+      const std::vector<float> s = base_scales();
+      for (size_t i = 0; i < cur.size(); ++i) cur[i].v[3] = s[i];
     }
     const Far::PrimvarRefiner primvar(r_);
     progress.report(0.0);
@@ -141,24 +143,23 @@ class Fractalizer {
   }
 
  private:
-  // Weight times (optionally) the mean length of the base edges at vertex i.
-  float base_scale(size_t i) {
-    if (edge_length_.empty() && p_.scale_by_edge_length) {
-      const Far::TopologyLevel& base = r_.GetLevel(0);
-      std::vector<double> sum(m_.vertex_count(), 0.0);
-      std::vector<int> count(m_.vertex_count(), 0);
-      for (int e = 0; e < base.GetNumEdges(); ++e) {
-        const auto ev = base.GetEdgeVertices(e);
-        const auto a = m_.vertex(size_t(ev[0])), b = m_.vertex(size_t(ev[1]));
-        const double len = std::sqrt(double(a[0] - b[0]) * (a[0] - b[0]) + double(a[1] - b[1]) * (a[1] - b[1]) +
-                                     double(a[2] - b[2]) * (a[2] - b[2]));
-        for (int j = 0; j < 2; ++j) sum[size_t(ev[j])] += len, ++count[size_t(ev[j])];
-      }
-      edge_length_.resize(m_.vertex_count());
-      for (size_t v = 0; v < sum.size(); ++v) edge_length_[v] = count[v] ? float(sum[v] / count[v]) : 0.0f;
+  // Per base vertex: the weight (1 without weights) times, optionally, the
+  // mean length of the base edges at the vertex.
+  std::vector<float> base_scales() const {
+    std::vector<float> s(m_.vertex_count(), 1.0f);
+    if (p_.weights) s.assign(p_.weights, p_.weights + s.size());
+    if (!p_.scale_by_edge_length) return s;
+    const Far::TopologyLevel& base = r_.GetLevel(0);
+    std::vector<double> sum(s.size(), 0.0);
+    std::vector<int> count(s.size(), 0);
+    for (int e = 0; e < base.GetNumEdges(); ++e) {
+      const auto ev = base.GetEdgeVertices(e);
+      const auto a = m_.vertex(size_t(ev[0])), b = m_.vertex(size_t(ev[1]));
+      double len2 = 0;
+      for (int c = 0; c < 3; ++c) len2 += (double(a[c]) - b[c]) * (double(a[c]) - b[c]);
+      for (int j = 0; j < 2; ++j) sum[size_t(ev[j])] += std::sqrt(len2), ++count[size_t(ev[j])];
     }
-    float s = p_.weights ? p_.weights[i] : 1.0f;
-    if (p_.scale_by_edge_length) s *= edge_length_[i];
+    for (size_t v = 0; v < s.size(); ++v) s[v] *= count[v] ? float(sum[v] / count[v]) : 0.0f;
     return s;
   }
 
@@ -255,7 +256,7 @@ class Fractalizer {
   const ft_fractalize_params& p_;
   const Far::TopologyRefiner& r_;
   const int threads_;
-  std::vector<float> edge_length_, normal_;
+  std::vector<float> normal_;
   std::vector<uint8_t> skip_;
 };
 
