@@ -10,5 +10,6 @@
 #include "core.h"
 #include "terrain.h"
 #include "analysis.h"
+#include "subdiv.h"
 
 #endif
