@@ -11,5 +11,6 @@
 #include "terrain.h"
 #include "analysis.h"
 #include "subdiv.h"
+#include "mesh.h"
 
 #endif
