@@ -68,6 +68,8 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                                    "displacement scale when refining references: sigma as given, or the mean "
                                    "|value| or std of the references")
                         ->transform(choice(kRefScales))->capture_default_str();
+                    app.add_option("--world-size", p.world_size, "extent along x in scene units (> 0); heights share the unit")
+                        ->capture_default_str();
                     app.add_option("--threads", p.threads, "worker threads, 0 = all cores (output never depends on it)")
                         ->check(CLI::Range(0, 1024))->capture_default_str();
                     app.add_option("--out", o->out, "output .png (16-bit), .pgm (16-bit) or .npy (float32)");

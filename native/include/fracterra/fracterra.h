@@ -9,6 +9,8 @@
 
 #include "core.h"
 #include "terrain.h"
+#include "analysis.h"
+#include "subdiv.h"
 #include "mesh.h"
 
 #endif

@@ -86,6 +86,7 @@ ft_terrain_params default_terrain_params() {
   p.offset = 1.0;
   p.rotation = 0.5;
   p.warp = 0.0;
+  p.world_size = 10.0;
   return p;
 }
 
@@ -94,6 +95,7 @@ void validate_terrain_params(const ft_terrain_params& p) {
   check_int_range("method", p.method, FT_TERRAIN_MIDPOINT, FT_TERRAIN_INTERPOLATED);
   check_range("hurst", p.hurst, 0.0, 1.0);
   check_positive("sigma", p.sigma);
+  check_positive("world_size", p.world_size);
   check_int_range("threads", p.threads, 0, 1024);
   check_int_range("reference_scale", p.reference_scale, FT_REFSCALE_SIGMA, FT_REFSCALE_STD);
   if (p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS) {
@@ -132,7 +134,9 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
         c.sigma = reference_scale(p.reference_scale, p.sigma, p.reference,
                                   size_t(p.reference_size) * size_t(p.reference_size));
       }
-      return diamond_square(c);
+      Heightfield hf = diamond_square(c);
+      hf.set_world_size(p.world_size);
+      return hf;
     }
     default:
       fail(FT_ERR_UNSUPPORTED, "terrain method " + std::to_string(p.method) + " is not available in this build");
