@@ -193,3 +193,19 @@ def test_a_file_that_is_not_a_library_is_refused(monkeypatch, tmp_path):
             lib_mod.library()
     finally:
         lib_mod._library = saved
+
+
+def test_params_structs_are_sized_by_the_library(core):
+    lib = core.library()
+    for struct_type, init in ((lib.terrain_params_type, lib.ft_terrain_params_init),
+                              (lib.profile_params_type, lib.ft_profile_params_init)):
+        p = struct_type()
+        lib.check(init(ctypes.byref(p)))
+        assert p.struct_size == ctypes.sizeof(p)
+
+
+def test_world_size_reaches_the_heightfield(core):
+    with core.generate_terrain(levels=3, world_size=42.0) as hf:
+        assert hf.world_size == 42.0
+    with pytest.raises(core.InvalidArgumentError, match="world_size"):
+        core.generate_terrain(levels=3, world_size=0.0)

@@ -17,6 +17,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 1
+ABI_MINOR_MIN = 1  # ft_terrain_params.world_size arrived in 1.1
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -58,6 +59,8 @@ class TerrainParams(Structure):
         ("warp", c_double),
         ("progress", PROGRESS_FN),
         ("progress_user", c_void_p),
+        # ABI 1.1
+        ("world_size", c_double),
     ]
 
 
@@ -103,6 +106,8 @@ SIGNATURES = {
     "ft_heightfield_data_mut": (_F32P, [_HF]),
     "ft_heightfield_copy": (c_int32, [_HF, _F32P, c_size_t]),
     "ft_heightfield_stats": (c_int32, [_HF, _F64P, _F64P, _F64P, _F64P]),
+    "ft_heightfield_world_size": (c_double, [_HF]),
+    "ft_heightfield_set_world_size": (c_int32, [_HF, c_double]),
     "ft_heightfield_free": (None, [_HF]),
     "ft_polylines_create": (c_int32, [_F64P, _F64P, c_int64, POINTER(c_int64), c_int64, POINTER(_PL)]),
     "ft_polylines_line_count": (c_int64, [_PL]),
@@ -149,20 +154,34 @@ class Library:
             raise LibraryNotFoundError(f"{self.path} is not a fracterra library (no ft_abi_version). {HOW_TO_FIX}")
         abi = self.ft_abi_version()
         self.abi_major, self.abi_minor = abi >> 16, abi & 0xFFFF
-        if self.abi_major != ABI_MAJOR:
+        if self.abi_major != ABI_MAJOR or self.abi_minor < ABI_MINOR_MIN:
             raise LibraryNotFoundError(
                 f"{self.path} has ABI version {self.abi_major}.{self.abi_minor}; this add-on needs "
-                f"{ABI_MAJOR}.x. {HOW_TO_FIX}")
+                f"{ABI_MAJOR}.{ABI_MINOR_MIN} or a later {ABI_MAJOR}.x. {HOW_TO_FIX}")
         if missing:
             raise LibraryNotFoundError(
                 f"{self.path} lacks {', '.join(missing)} (an older build?). {HOW_TO_FIX}")
         self.version = self.ft_version_string().decode()
-        init = TerrainParams()
-        self.ft_terrain_params_init(ctypes.byref(init))
-        if init.struct_size != ctypes.sizeof(TerrainParams):
+        # A later 1.x library may have appended fields to its params structs: let its
+        # _init write into a roomy buffer first, then size ours to match, so the
+        # library never reads or writes past the end of what we pass.
+        self.terrain_params_type = self._sized(TerrainParams, self.ft_terrain_params_init)
+        self.profile_params_type = self._sized(ProfileParams, self.ft_profile_params_init)
+
+    def _sized(self, struct_type, init):
+        probe = (ctypes.c_char * 4096)()
+        self.check(init(ctypes.cast(probe, POINTER(struct_type))))
+        size = c_uint32.from_buffer(probe).value
+        ours = ctypes.sizeof(struct_type)
+        if size < ours:
             raise LibraryNotFoundError(
-                f"{self.path}: ft_terrain_params is {init.struct_size} bytes, the binding expects "
-                f"{ctypes.sizeof(TerrainParams)}; rebuild the add-on and the library together.")
+                f"{self.path}: {struct_type.__name__} is {size} bytes, the binding expects at least {ours}. "
+                f"{HOW_TO_FIX}")
+        if size == ours:
+            return struct_type
+        # Newer library: same leading fields, trailing ones left at their defaults. A
+        # subclass, so byref() of it still passes the POINTER(struct_type) argtypes.
+        return type(struct_type.__name__, (struct_type,), {"_fields_": [("_newer_fields", ctypes.c_char * (size - ours))]})
 
     def has(self, name):
         """True when the loaded library exports `name` (for optional capabilities)."""
