@@ -58,6 +58,7 @@ class TerrainParams(Structure):
         ("warp", c_double),
         ("progress", PROGRESS_FN),
         ("progress_user", c_void_p),
+        ("world_size", c_double),  # ABI 1.1
     ]
 
 
@@ -104,6 +105,8 @@ SIGNATURES = {
     "ft_heightfield_copy": (c_int32, [_HF, _F32P, c_size_t]),
     "ft_heightfield_stats": (c_int32, [_HF, _F64P, _F64P, _F64P, _F64P]),
     "ft_heightfield_free": (None, [_HF]),
+    "ft_heightfield_world_size": (c_double, [_HF]),
+    "ft_heightfield_set_world_size": (c_int32, [_HF, c_double]),
     "ft_polylines_create": (c_int32, [_F64P, _F64P, c_int64, POINTER(c_int64), c_int64, POINTER(_PL)]),
     "ft_polylines_line_count": (c_int64, [_PL]),
     "ft_polylines_vertex_count": (c_int64, [_PL]),

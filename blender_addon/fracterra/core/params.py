@@ -100,7 +100,7 @@ TERRAIN_PARAMS = (
           field="periodic"),
     Param("world_size", "float", 20.0, "World Size", "Extent of the terrain along X in scene units "
           "(Y follows from the sample spacing)", min=1e-4, max=1e7, soft_max=10000.0,
-          subtype="DISTANCE", unit="LENGTH", geometry=False),
+          subtype="DISTANCE", unit="LENGTH", geometry=False, field="world_size"),
     Param("use_sea_level", "bool", False, "Sea Level", "Flatten everything below the sea level"),
     Param("sea_level", "float", 0.0, "Sea Level Height", "Heights below this become flat sea",
           soft_min=-100.0, soft_max=100.0, subtype="DISTANCE", unit="LENGTH"),
