@@ -132,23 +132,24 @@ void validate_polyline_params(const ft_polyline_params& p) {
         invalid(point_name(i) + " coincides with " + point_name(i - 1) +
                 "; consecutive base points must differ (a zero-length segment has no direction)");
     }
-    if (p.method == FT_POLYLINE_FPL3D &&
-        (p.plane_normal[0] != 0 || p.plane_normal[1] != 0 || p.plane_normal[2] != 0)) {
-      const Vec3 n{p.plane_normal[0], p.plane_normal[1], p.plane_normal[2]};
-      for (size_t i = 1; i < b.size(); ++i) {
-        const Vec3 v{b[i][0] - b[i - 1][0], b[i][1] - b[i - 1][1], b[i][2] - b[i - 1][2]};
-        const Vec3 x{n[1] * v[2] - n[2] * v[1], n[2] * v[0] - n[0] * v[2], n[0] * v[1] - n[1] * v[0]};
-        const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        const double vv = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        if (std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) <= 1e-9 * nn * vv)
-          invalid("base segment " + std::to_string(i) + " is parallel to plane_normal; the displacement "
-                  "plane must contain every base segment's direction");
-      }
-    }
   } else if (p.base_count != 0) {
     invalid("base is NULL but base_count is " + std::to_string(p.base_count) + " (NULL means the unit segment, count 0)");
   }
   for (double v : p.plane_normal) check_finite("plane_normal", v);
+  if (p.method == FT_POLYLINE_FPL3D &&
+      (p.plane_normal[0] != 0 || p.plane_normal[1] != 0 || p.plane_normal[2] != 0)) {
+    const Vec3 n{p.plane_normal[0], p.plane_normal[1], p.plane_normal[2]};
+    const std::vector<Vec3> b = base_points(p);
+    for (size_t i = 1; i < b.size(); ++i) {
+      const Vec3 v{b[i][0] - b[i - 1][0], b[i][1] - b[i - 1][1], b[i][2] - b[i - 1][2]};
+      const Vec3 x{n[1] * v[2] - n[2] * v[1], n[2] * v[0] - n[0] * v[2], n[0] * v[1] - n[1] * v[0]};
+      const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const double vv = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      if (std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) <= 1e-9 * nn * vv)
+        invalid("base segment " + std::to_string(i) + " is parallel to plane_normal, so no "
+                "displacement direction is defined (unit(n x V)); the normal must not be parallel to a base segment");
+    }
+  }
   check_int_range("rng", p.rng, FT_POLYLINE_RNG_UNIFORM, FT_POLYLINE_RNG_NORMAL);
   if (!(p.spread >= 0) || !std::isfinite(p.spread))
     invalid("spread must be a finite number >= 0, got " + format_number(p.spread));
