@@ -12,5 +12,6 @@
 #include "analysis.h"
 #include "subdiv.h"
 #include "mesh.h"
+#include "polyline.h"
 
 #endif
