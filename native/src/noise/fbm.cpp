@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -121,11 +122,17 @@ FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v,
   const uint32_t key = o.key;
   const int32_t px = o.px, py = o.py;
   const float ipx = o.ipx, ipy = o.ipy;
+  // The lattice coordinates first, in their own loop: the noise loop below
+  // then needs fewer live constants (AVX2 has 16 vector registers).
+  float xs[kChunk], ys[kChunk];
+  for (int i = 0; i < n; ++i) {
+    xs[i] = (a11 * u[i] + a12 * v[i]) + ox;
+    ys[i] = (a21 * u[i] + a22 * v[i]) + oy;
+  }
   if constexpr (kBasis == FT_BASIS_CELLULAR_F1 || kBasis == FT_BASIS_CELLULAR_F2F1) {
     float f2[kChunk];
     for (int i = 0; i < n; ++i) {
-      const float x = (a11 * u[i] + a12 * v[i]) + ox, y = (a21 * u[i] + a22 * v[i]) + oy;
-      const F12 f = cellular_noise<kPeriodic>(key, x, y, px, py, ipx, ipy);
+      const F12 f = cellular_noise<kPeriodic>(key, xs[i], ys[i], px, py, ipx, ipy);
       out[i] = f.f1;
       f2[i] = f.f2;
     }
@@ -135,13 +142,12 @@ FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v,
     }
   } else {
     for (int i = 0; i < n; ++i) {
-      const float x = (a11 * u[i] + a12 * v[i]) + ox, y = (a21 * u[i] + a22 * v[i]) + oy;
       if constexpr (kBasis == FT_BASIS_VALUE)
-        out[i] = value_noise<kPeriodic>(key, x, y, px, py, ipx, ipy);
+        out[i] = value_noise<kPeriodic>(key, xs[i], ys[i], px, py, ipx, ipy);
       else if constexpr (kBasis == FT_BASIS_GRADIENT)
-        out[i] = gradient_noise<kPeriodic>(key, x, y, px, py, ipx, ipy);
+        out[i] = gradient_noise<kPeriodic>(key, xs[i], ys[i], px, py, ipx, ipy);
       else
-        out[i] = simplex_noise(key, x, y);  // periodic simplex is refused by validate_fbm
+        out[i] = simplex_noise(key, xs[i], ys[i]);  // periodic simplex is refused by validate_fbm
     }
   }
 }
@@ -308,14 +314,33 @@ Heightfield fbm(const FbmConfig& c) {
   Heightfield hf(c.width, c.height);
   const RowFn row_fn = pick_row_fn();
   const int threads = resolve_threads(c.threads);
-  // Bands of rows between progress reports (the callback runs on this thread only).
-  const int32_t band = std::max<int32_t>(1, (c.height + 15) / 16);
-  for (int32_t y0 = 0; y0 < c.height; y0 += band) {
-    const int32_t y1 = std::min(c.height, y0 + band);
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-    for (int32_t y = y0; y < y1; ++y) row_fn(plan, c.width, c.height, y, hf.data() + size_t(y) * c.width);
-    c.progress.report(double(y1) / c.height);
+  // One parallel region, rows handed out dynamically: a single barrier at
+  // the end (barriers per band cost dearly when the cores are shared). The
+  // calling thread (OpenMP's thread 0) reports progress between its rows;
+  // a cancellation stops the others at their next row and is rethrown here.
+  std::atomic<int32_t> done{0};
+  std::atomic<bool> stop{false};
+  std::exception_ptr error;
+#pragma omp parallel num_threads(threads)
+  {
+    const bool caller = omp_get_thread_num() == 0;
+#pragma omp for schedule(dynamic, 2)
+    for (int32_t y = 0; y < c.height; ++y) {
+      if (stop.load(std::memory_order_relaxed)) continue;
+      row_fn(plan, c.width, c.height, y, hf.data() + size_t(y) * c.width);
+      const int32_t d = done.fetch_add(1, std::memory_order_relaxed) + 1;
+      if (caller) {
+        try {
+          c.progress.report(double(d) / c.height);
+        } catch (...) {
+          error = std::current_exception();
+          stop.store(true);
+        }
+      }
+    }
   }
+  if (error) std::rethrow_exception(error);
+  c.progress.report(1.0);
   return hf;
 }
 
