@@ -349,11 +349,12 @@ TEST(Fbm, PeriodicFbmAndSpectralTile) {
 // Interpolated (Saupe / Feder lacunarity variant)
 
 TEST(Interpolated, IncrementsScaleAsLagToTheH) {
-  // Var[z(x + t) - z(x)] ~ t^(2H) for fBm. Lags 2..32 of a 513^2 field,
-  // 2 fields: the log-log slope of the structure function estimates 2H.
-  // The grids' interpolation smooths the smallest lags and the finite
-  // domain bends the largest; 0.15 on H covers both (measured spread of a
-  // few hundredths across seeds).
+  // Var[z(x + t) - z(x)] ~ t^(2H) for fBm. Lags 2..32 of a 513^2 field
+  // (every 4th row), 2 fields: half the log-log slope of the structure
+  // function estimates H. The interpolation smooths the smallest lags and
+  // the finite domain bends the largest; these seeds give 0.50, 0.54
+  // (H = 0.5) and 0.76, 0.81 (H = 0.8) for lacunarity 2 and 1.5. 0.1 allows
+  // for that bias plus the scatter of two fields.
   for (double H : {0.5, 0.8}) {
     for (double lac : {2.0, 1.5}) {
       ft_terrain_params p = params(FT_TERRAIN_INTERPOLATED, 513);
@@ -368,7 +369,7 @@ TEST(Interpolated, IncrementsScaleAsLagToTheH) {
           const int t = 2 << li;
           double s = 0;
           size_t n = 0;
-          for (int y = 0; y < hf.height(); y += 2)
+          for (int y = 0; y < hf.height(); y += 4)
             for (int x = 0; x + t < hf.width(); ++x) {
               const double d = hf.at(x + t, y) - hf.at(x, y);
               s += d * d, ++n;
@@ -377,7 +378,7 @@ TEST(Interpolated, IncrementsScaleAsLagToTheH) {
         }
       }
       for (int li = 0; li < 5; ++li) lags.push_back(2 << li), var.push_back(acc[size_t(li)]);
-      EXPECT_NEAR(0.5 * loglog_slope(lags, var), H, 0.15) << "H = " << H << ", lacunarity " << lac;
+      EXPECT_NEAR(0.5 * loglog_slope(lags, var), H, 0.1) << "H = " << H << ", lacunarity " << lac;
     }
   }
 }
@@ -392,6 +393,19 @@ TEST(Interpolated, IsDeterministicAndTilesWhenPeriodic) {
   EXPECT_TRUE(same_bits(a, generate_terrain(p)));
   p.periodic = 1;
   EXPECT_LT(seam_ratio(generate_terrain(p)), 1.3);
+}
+
+TEST(Fbm, ProgressCallbackCanCancel) {
+  for (int method : {FT_TERRAIN_FBM, FT_TERRAIN_SPECTRAL, FT_TERRAIN_INTERPOLATED}) {
+    ft_terrain_params p = params(method, 128);
+    p.progress = [](void*, double fraction) { return fraction > 0.2 ? 1 : 0; };
+    try {
+      generate_terrain(p);
+      ADD_FAILURE() << "method " << method << " ignored the cancel";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.status(), FT_ERR_CANCELLED) << e.what();
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------
