@@ -63,9 +63,11 @@ std::vector<Octave> make_octaves(const FbmConfig& c, int count, double lacunarit
       o.a11 = float(o.px);
       o.a22 = float(o.py);
       o.a12 = o.a21 = 0.0f;
-      // Whole-cell offsets keep the lattice periodic.
-      o.ox = float(r.v[1] % uint32_t(o.px));
-      o.oy = float(r.v[2] % uint32_t(o.py));
+      // Any shift keeps the noise periodic (the lattice wraps, not the
+      // shift); a fractional one keeps the octaves' cell edges, which nest
+      // when the periods double, from lining up.
+      o.ox = float(double(r.v[1] >> 8) * (double(o.px) / 16777216.0));
+      o.oy = float(double(r.v[2] >> 8) * (double(o.py) / 16777216.0));
     } else {
       const double t = c.rotation * i, cs = std::cos(t), sn = std::sin(t);
       o.a11 = float(f * cs);
