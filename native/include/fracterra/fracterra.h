@@ -9,5 +9,6 @@
 
 #include "core.h"
 #include "terrain.h"
+#include "povray.h"
 
 #endif
