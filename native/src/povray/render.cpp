@@ -46,8 +46,15 @@ RenderResult render_scene(const std::string& pov_path, const std::string& out_pn
   if (program.empty()) program = std::getenv("FT_POVRAY") ? std::getenv("FT_POVRAY") : "povray";
 
   const fs::path scene = fs::absolute(pov_path);
+  // POV-Ray splits options at spaces unless the value is in double quotes,
+  // and has no escape for a quote inside them.
+  auto quote = [](const std::string& v) {
+    if (v.find('"') != std::string::npos)
+      invalid("povray cannot be given a path containing a double quote: '" + v + "'");
+    return "\"" + v + "\"";
+  };
   std::vector<std::string> args = {program,
-                                   "+I" + scene.filename().string(),
+                                   "+I" + quote(scene.filename().string()),
                                    "+O-",  // the image comes to us on stdout
                                    "+FN",
                                    "-D",
@@ -60,7 +67,7 @@ RenderResult render_scene(const std::string& pov_path, const std::string& out_pn
   } else {
     args.push_back("-A");
   }
-  for (const auto& dir : o.include_paths) args.push_back("+L" + fs::absolute(dir).string());
+  for (const auto& dir : o.include_paths) args.push_back("+L" + quote(fs::absolute(dir).string()));
 
   AtomicFile image(out_png);  // the rendered image goes to its temporary file
   int err_pipe[2];

@@ -18,20 +18,6 @@ struct Vertex {
 
 Vertex make_vertex(const Vec3& p, double r) { return {p, r, vec(p)}; }
 
-// The cubic Bezier control points of the Catmull-Rom piece from b to c
-// (neighbours a, d): POV-Ray's cubic_spline sweep is Catmull-Rom, and a
-// Bezier curve stays inside the hull of its control points, so their box
-// (grown by the largest radius) bounds the sweep.
-void grow_bounds(const Vertex& a, const Vertex& b, const Vertex& c, const Vertex& d, Vec3& lo, Vec3& hi,
-                 double& rmax) {
-  for (int k = 0; k < 3; ++k) {
-    const double q[4] = {b.p[k], b.p[k] + (c.p[k] - a.p[k]) / 6, c.p[k] - (d.p[k] - b.p[k]) / 6, c.p[k]};
-    for (double v : q) lo[k] = std::min(lo[k], v), hi[k] = std::max(hi[k], v);
-  }
-  const double r[4] = {b.r, b.r + (c.r - a.r) / 6, c.r - (d.r - b.r) / 6, c.r};
-  for (double v : r) rmax = std::max(rmax, std::abs(v));
-}
-
 void write_point(std::string& s, const Vertex& v) { s += "  " + v.text + ", " + number(v.r) + "\n"; }
 
 }  // namespace
@@ -93,14 +79,8 @@ std::string sweeps_sdl(const PolylineSet& set, const SweepOptions& o, const std:
         for (int64_t k = a; k <= b; ++k) write_point(s, line[size_t(k)]);
       } else {
         s = "sphere_sweep { cubic_spline " + std::to_string(b - a + 3) + ",\n";
-        Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-        double rmax = 0;
         for (int64_t k = a - 1; k <= b + 1; ++k) write_point(s, at(k));
-        for (int64_t k = a; k < b; ++k) grow_bounds(at(k - 1), at(k), at(k + 1), at(k + 2), lo, hi, rmax);
-        const double grow = rmax * 1.01 + 1e-9 * (1 + std::abs(lo[0]) + std::abs(lo[1]) + std::abs(lo[2]));
-        for (int k = 0; k < 3; ++k) lo[k] -= grow, hi[k] += grow;
         s += "  tolerance " + number(o.tolerance) + "\n";
-        s += "  bounded_by { box { " + vec(lo) + ", " + vec(hi) + " } }\n";
       }
       s += "}\n";
       pieces.push_back(std::move(s));

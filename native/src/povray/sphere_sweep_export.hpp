@@ -38,8 +38,9 @@ void validate_sweep_options(const SweepOptions& o);
 // Repeated consecutive points (equal once written with 9 digits) are
 // dropped; a polyline that shrinks to one point becomes a sphere. Linear
 // sweeps have >= 2 points; cubic sweeps get one control point beyond each
-// end of their piece (mirrored at the polyline's ends), so have >= 4, with
-// `tolerance` and an explicit `bounded_by` box.
+// end of their piece (mirrored at the polyline's ends), so have >= 4, and
+// `tolerance`. No `bounded_by`: POV-Ray 3.7 bounds each piece of a cubic
+// sweep tightly itself, and removes a larger box with a warning.
 std::string sweeps_sdl(const PolylineSet& set, const SweepOptions& options,
                        const std::string& modifiers = "", SweepStats* stats = nullptr);
 
