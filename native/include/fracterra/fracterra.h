@@ -13,5 +13,6 @@
 #include "subdiv.h"
 #include "mesh.h"
 #include "polyline.h"
+#include "povray.h"
 
 #endif
