@@ -25,7 +25,7 @@ NpyArray decode_npy(const std::string& bytes, const std::string& name) {
   auto bad = [&](const std::string& why) { fail(FT_ERR_FORMAT, "'" + name + "' is not a usable .npy file: " + why); };
   if (bytes.size() < 10 || bytes.compare(0, 6, "\x93NUMPY") != 0) bad("missing the \\x93NUMPY magic");
   const int major = uint8_t(bytes[6]);
-  size_t header_len, header_start;
+  size_t header_len = 0, header_start = 0;
   if (major == 1) {
     header_len = uint8_t(bytes[8]) | (size_t(uint8_t(bytes[9])) << 8);
     header_start = 10;
@@ -112,8 +112,12 @@ void write_npy(const std::string& path, const std::vector<int64_t>& shape, const
   out.push_back(char(header.size() & 0xff));
   out.push_back(char(header.size() >> 8));
   out += header;
-  out.append(reinterpret_cast<const char*>(values), count * sizeof(float));
-  write_file_atomically(path, out);
+  // The samples go straight from the caller's array: no second copy of a
+  // possibly multi-GiB array in memory.
+  AtomicFile file(path);
+  file.write(out);
+  file.write(std::string_view(reinterpret_cast<const char*>(values), count * sizeof(float)));
+  file.commit();
 }
 
 }  // namespace ft
