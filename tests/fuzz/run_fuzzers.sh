@@ -25,10 +25,9 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
 fi
 cmake --build "$build" -j2 --target "${harnesses[@]/#/fuzz_}" >/dev/null
 
-# Leaks count as failures; libgomp's thread pool is not a leak (see docs/hardening.md).
+# Leaks count as failures.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:print_stacktrace=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
-export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/sanitizers/lsan.supp}
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}
 
 failed=0
