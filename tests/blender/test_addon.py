@@ -204,6 +204,39 @@ class TerrainAddTest(unittest.TestCase):
         self.assertEqual(len(bpy.data.objects), 0)
 
 
+class RecordingLayout:
+    """Stands in for a UILayout (there is no window in background mode): records
+    every prop()/prop_search() so the test can check the drawn properties exist."""
+
+    def __init__(self, log):
+        self.log = log
+
+    def __getattr__(self, name):
+        def call(*args, **kw):
+            if name in ("prop", "prop_search"):
+                self.log.append((args[0], args[1]))
+            return RecordingLayout(self.log)
+        return call
+
+
+class DrawTest(unittest.TestCase):
+    def test_settings_ui_draws_only_existing_properties_for_every_method(self):
+        from fracterra.blender import panels, props
+        clear_scene()
+        obj = add_terrain(levels=3)
+        settings = obj.fracterra_terrain
+        for method in ("MIDPOINT", "ADDITIONS", "FBM", "SPECTRAL", "INTERPOLATED"):
+            for source in ("NONE", "OBJECT", "IMAGE"):
+                settings.method, settings.reference_source = method, source
+                log = []
+                props.draw_settings(RecordingLayout(log), settings)
+                fake_panel = type("P", (), {"layout": RecordingLayout(log)})()
+                panels.FRACTERRA_PT_terrain.draw(fake_panel, bpy.context)
+                self.assertTrue(log)
+                for data, name in log:
+                    self.assertIn(name, data.bl_rna.properties.keys(), f"{method}/{source}: {name}")
+
+
 class RegenerateTest(unittest.TestCase):
     def setUp(self):
         clear_scene()

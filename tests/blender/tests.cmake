@@ -21,3 +21,26 @@ if(FT_BLENDER)
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_missing_library)
   set_tests_properties(blender_scratch_clean PROPERTIES FIXTURES_SETUP blender_scratch LABELS blender)
 endif()
+
+# The headless demo script, run from the source tree with the built library
+# (a tiny render keeps it to a few seconds).
+if(FT_BLENDER)
+  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_example)
+  add_test(NAME blender_example_scene
+    COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch} FRACTERRA_LIBRARY=$<TARGET_FILE:fracterra>
+            ${FT_BLENDER} -b --factory-startup --python ${PROJECT_SOURCE_DIR}/examples/20_blender_scene.py
+            -- --out ${CMAKE_CURRENT_BINARY_DIR}/example_scene --levels 6 --resolution 96x54 --samples 2)
+  set_tests_properties(blender_example_scene PROPERTIES LABELS blender TIMEOUT 120)
+endif()
+
+# Undo needs a window (background Blender keeps no undo stack): run it under Xvfb.
+find_program(FT_XVFB_RUN xvfb-run)
+if(FT_BLENDER AND FT_XVFB_RUN)
+  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_undo)
+  add_test(NAME blender_undo
+    COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch} --unset=FRACTERRA_LIBRARY
+            ${FT_XVFB_RUN} -a -s "-screen 0 1024x768x24"
+            ${FT_BLENDER} --factory-startup --python-exit-code 1
+            --python ${CMAKE_CURRENT_LIST_DIR}/test_undo.py -- --zip ${FT_BLENDER_ZIP})
+  set_tests_properties(blender_undo PROPERTIES LABELS blender TIMEOUT 180)
+endif()

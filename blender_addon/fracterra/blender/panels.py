@@ -52,7 +52,19 @@ class FRACTERRA_PT_terrain(bpy.types.Panel):
 class FracterraPreferences(bpy.types.AddonPreferences):
     bl_idname = ROOT_PACKAGE
 
+    threads: bpy.props.IntProperty(
+        name="Threads", default=0, min=0, max=1024,
+        description="Threads the library uses for generation (0: all cores). Results never depend on it; "
+                    "1 can be faster when other programs keep every core busy")
+
     def draw(self, context):
         layout = self.layout
         if not draw_library_problem(layout):
             draw_wrapped(layout, core.status()[1], icon="CHECKMARK")
+        layout.prop(self, "threads")
+
+
+def preferences(context):
+    """The add-on's preferences, or None when it runs unregistered from a script."""
+    addon = context.preferences.addons.get(ROOT_PACKAGE)
+    return addon.preferences if addon else None

@@ -118,9 +118,12 @@ class WindowProgress:
 
 def generate(values, context):
     """A core.Heightfield for the settings (caller closes it)."""
+    from .panels import preferences  # late import: panels imports the operators
     reference = reference_for(values)
+    prefs = preferences(context)
     with WindowProgress(context) as progress:
-        return core.generate_terrain(values, reference=reference, progress=progress)
+        return core.generate_terrain(values, reference=reference, progress=progress,
+                                     threads=prefs.threads if prefs else 0)
 
 
 def new_terrain_mesh(values, context, name="Fractal Terrain"):
