@@ -111,3 +111,28 @@ TEST(SubdivCapi, CornersAreValidatedAndABadCallKeepsTheMesh) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(SubdivCapi, ProgressIsReportedPerLevelAndCanCancel) {
+  ft_mesh* cube = make_cube();
+  ft_fractalize_params p;
+  ft_fractalize_params_init(&p);
+  p.levels = 3;
+  std::vector<double> seen;
+  p.progress = [](void* user, double f) -> int32_t {
+    static_cast<std::vector<double>*>(user)->push_back(f);
+    return 0;
+  };
+  p.progress_user = &seen;
+  ft_mesh* out = nullptr;
+  ASSERT_EQ(ft_fractalize(cube, &p, &out), FT_OK);
+  EXPECT_EQ(seen, (std::vector<double>{0.0, 1.0 / 3, 2.0 / 3, 1.0}));
+  ft_mesh_free(out);
+  p.progress = [](void*, double f) -> int32_t { return f > 0.5; };
+  EXPECT_EQ(ft_fractalize(cube, &p, &out), FT_ERR_CANCELLED);
+  EXPECT_EQ(out, nullptr);
+  ft_mesh_free(cube);
+}
+
+}  // namespace

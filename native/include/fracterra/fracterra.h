@@ -12,5 +12,7 @@
 #include "analysis.h"
 #include "subdiv.h"
 #include "mesh.h"
+#include "polyline.h"
+#include "povray.h"
 
 #endif

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "io/atomic_file.hpp"
 #include "io/npy.hpp"
 #include "io/pgm.hpp"
@@ -28,6 +29,7 @@ std::string unsupported(const std::string& path) {
 GrayImage heightfield_to_image(const Heightfield& hf) {
   const HeightStats s = hf.stats();
   if (!std::isfinite(s.min) || !std::isfinite(s.max)) invalid("the heightfield holds NaN or infinite samples");
+  check_allocation(checked_bytes(hf.size(), sizeof(uint16_t)), "the 16-bit image of a heightfield");
   GrayImage img;
   img.width = hf.width();
   img.height = hf.height();

@@ -17,7 +17,6 @@
 // price of a key without hashing parent chains.
 #include "subdiv/fractalize.hpp"
 
-#include <opensubdiv/far/error.h>
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 
@@ -25,7 +24,6 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -53,12 +51,6 @@ ft_fractalize_params default_fractalize_params() {
 }
 
 namespace detail {
-
-// OpenSubdiv reports through global callbacks (printf by default); route
-// them to a per-thread message that becomes part of our error.
-thread_local std::string t_osd_message;
-void osd_error(Far::ErrorType, const char* message) { t_osd_message = message; }
-void osd_warning(const char* message) { t_osd_message = message; }
 
 // A primvar of N floats: xyz, plus (N = 4) the displacement scale factor.
 template <int N>
@@ -92,14 +84,11 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const Mesh& m, int scheme) {
   d.cornerVertexIndices = m.corner_vertices.data();
   d.cornerWeights = m.corner_sharpness.data();
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  static std::once_flag once;  // the setters are not thread-safe: call them once
-  std::call_once(once, [] {
-    Far::SetErrorCallback(osd_error);
-    Far::SetWarningCallback(osd_warning);
-  });
-  t_osd_message.clear();
+  // OpenSubdiv reports problems through process-wide callbacks, which we
+  // leave alone: in Blender the library is shared with Blender's own
+  // OpenSubdiv. validate_mesh() catches what OpenSubdiv would refuse first.
   std::unique_ptr<Far::TopologyRefiner> r(Factory::Create(d, Factory::Options(type, options)));
-  if (!r) invalid("OpenSubdiv cannot refine this mesh: " + t_osd_message);
+  if (!r) invalid("OpenSubdiv cannot refine this mesh (its message went to the standard output)");
   return r;
 }
 

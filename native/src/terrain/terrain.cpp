@@ -5,8 +5,11 @@
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "noise/fbm.hpp"
 #include "terrain/diamond_square.hpp"
+#include "terrain/interpolated.hpp"
 #include "terrain/profile.hpp"
+#include "terrain/spectral_synthesis.hpp"
 
 namespace ft {
 namespace {
@@ -49,6 +52,16 @@ void check_reference(const float* ref, int32_t size, int levels, bool periodic) 
       if (ref[k] != ref[size_t(size - 1) * size + k] || ref[size_t(k) * size] != ref[size_t(k) * size + size - 1])
         invalid("a periodic terrain needs a periodic reference grid: its last row and column must equal its first");
   }
+}
+
+FbmConfig fbm_config(const ft_terrain_params& p) {
+  FbmConfig c;
+  c.width = p.width, c.height = p.height, c.octaves = p.octaves, c.lacunarity = p.lacunarity;
+  c.gain = p.gain, c.hurst = p.hurst, c.basis = p.basis, c.variant = p.variant;
+  c.frequency = p.frequency, c.offset = p.offset, c.rotation = p.rotation, c.warp = p.warp;
+  c.sigma = p.sigma, c.periodic = p.periodic != 0, c.seed = p.seed, c.threads = p.threads;
+  c.progress = Progress(p.progress, p.progress_user);
+  return c;
 }
 
 }  // namespace
@@ -111,6 +124,8 @@ void validate_terrain_params(const ft_terrain_params& p) {
     check_allocation(checked_bytes(uint64_t(p.width), uint64_t(p.height), sizeof(float)),
                      "a " + std::to_string(p.width) + " x " + std::to_string(p.height) + " terrain");
     if (p.reference) invalid("reference points are supported by the midpoint and additions methods only");
+    if (p.method == FT_TERRAIN_FBM) validate_fbm(fbm_config(p));
+    if (p.method == FT_TERRAIN_INTERPOLATED) check_interpolated_lacunarity(p.lacunarity);
   }
 }
 
@@ -138,6 +153,14 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
       hf.set_world_size(p.world_size);
       return hf;
     }
+    case FT_TERRAIN_FBM:
+      return fbm(fbm_config(p));
+    case FT_TERRAIN_SPECTRAL:
+      return spectral_synthesis({p.width, p.height, p.hurst, p.sigma, p.seed, p.threads,
+                                 Progress(p.progress, p.progress_user)});
+    case FT_TERRAIN_INTERPOLATED:
+      return interpolated_fm({p.width, p.height, p.lacunarity, p.hurst, p.sigma, p.seed, p.periodic != 0,
+                              p.threads, Progress(p.progress, p.progress_user)});
     default:
       fail(FT_ERR_UNSUPPORTED, "terrain method " + std::to_string(p.method) + " is not available in this build");
   }
