@@ -126,7 +126,7 @@ def add_polylines(args, top):
     emit.inputs["Strength"].default_value = 30.0
     glow.node_tree.links.new(emit.outputs["Emission"], nodes["Material Output"].inputs["Surface"])
     s = args.size
-    bpy.ops.curve.fracterra_polyline_add(method="FPL3D", start=(0.15 * s, 0.2 * s, top + 0.6 * s),
+    bpy.ops.curve.fracterra_polyline_add(method="FPL3D", start=(0.15 * s, 0.25 * s, top + 0.3 * s),
                                          end=(0.1 * s, 0.15 * s, top), depth=9, spread=0.12, seed=args.seed,
                                          branch_prob=0.6, radius=0.004 * s)
     bolt = bpy.context.active_object
@@ -171,6 +171,7 @@ def main():
     terrain.data.materials.append(mat)
     if args.sea_level is not None:
         water(args.size, args.sea_level)
+        bpy.context.view_layer.objects.active = terrain
         bpy.ops.curve.fracterra_coastline_add(use_quantile=False, level=args.sea_level + 1e-3,
                                               radius=0.002 * args.size)
         bpy.context.view_layer.objects.active = terrain

@@ -137,7 +137,9 @@ class FRACTERRA_OT_polyline_add(bpy.types.Operator):
         except REPORTED as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
-        link_new_object(context, data.name, data, matrix)
+        obj = link_new_object(context, data.name, data, matrix)
+        # How exporters should show it (POV-Ray: glowing lightning or a plain tube).
+        obj["fracterra_kind"] = "LIGHTNING" if values["method"] == "FPL3D" else "LINE"
         self.report({"INFO"}, f"Fractal polyline: {lines} line(s), {vertices} vertices")
         return {"FINISHED"}
 
@@ -207,6 +209,7 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
         obj = link_new_object(context, f"{terrain.name} Coastline", curve, terrain.matrix_world.copy())
         obj.parent = terrain
         obj.matrix_parent_inverse = terrain.matrix_world.inverted()
+        obj["fracterra_kind"] = "COASTLINE"
         self.report({"INFO"}, f"Coastline: {lines} line(s)")
         return {"FINISHED"}
 

@@ -83,7 +83,8 @@ class FRACTERRA_OT_export_pov(bpy.types.Operator, ExportHelper):
                     if obj.type == "CURVE":
                         pl = _curve_polylines(obj, frame @ obj.matrix_world, shift)
                         if pl is not None:
-                            kind = "COASTLINE" if "Coastline" in obj.name else "LINE"
+                            kind = obj.get("fracterra_kind", "LINE")
+                            kind = kind if kind in povray.LINE_KINDS else "LINE"
                             line_sets.append((pl, kind, 0.0))
             if hf is None and not line_sets:
                 raise SettingsError("nothing to export: no fractal terrain and no curves are visible")
