@@ -152,6 +152,8 @@ Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch
                                    "y' = c x + d y + f, probability p")
                         ->check(CLI::ExistingFile);
                     app.add_option("--points", p.ifs_points, "ifs: number of points, 1..268435456")->capture_default_str();
+                    app.add_option("--threads", p.threads, "FPL worker threads, 0 = all cores (output never depends on it)")
+                        ->check(CLI::Range(0, 1024))->capture_default_str();
                     app.add_option("--out", o->out, "output .csv (x,y,z,radius; blank line between polylines) or .json");
                     app.add_option("--svg", o->svg, "also draw the x,y projection into this .svg");
                     app.add_flag("--stats", o->stats,

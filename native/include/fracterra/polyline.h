@@ -67,7 +67,7 @@ typedef struct ft_polyline_params {
                                ///< (a, b, c, d, e, f, p): x' = a x + b y + e, y' = c x + d y + f,
                                ///< chosen with probability p (p >= 0, normalised by their sum)
   int32_t ifs_maps;            ///< rows in ifs_table, 1..64
-  int32_t reserved0;           ///< must be 0
+  int32_t threads;             ///< FPL worker threads, 0 = all cores, 1..1024; output never depends on it
   int64_t ifs_points;          ///< IFS points to return, 1..2^28; default 100000
   ft_progress_fn progress;     ///< may be NULL
   void* progress_user;

@@ -42,6 +42,7 @@ struct FplConfig {
   uint64_t seed = 1;
   bool three_d = false;
   Vec3 plane_normal{0, 0, 0};  // 3D only; all zero: random direction per midpoint
+  int threads = 0;             // 0: all cores; the output never depends on it
   Progress progress;
 };
 
