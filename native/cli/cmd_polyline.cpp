@@ -128,7 +128,7 @@ Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch
                                    "s or sigma: displacement per unit segment length, >= 0 (profile: sigma > 0)")
                         ->capture_default_str();
                     app.add_option("--depth", p.depth,
-                                   "recursion depth r: fpl/dragon 0..40 (2^r segments per base segment, memory "
+                                   "recursion depth r: fpl/dragon 0..34 (2^r segments per base segment, memory "
                                    "permitting), koch 0..15, sierpinski 0..19, profile 1..28")
                         ->capture_default_str();
                     app.add_option("--min-length", p.min_length, "delta: do not split segments shorter than this, >= 0")

@@ -368,7 +368,7 @@ TEST(PolylineValidation, RejectsBadInputWithClearErrors) {
   EXPECT_EQ(status_of(p), FT_ERR_INVALID_ARGUMENT);
   p = fpl(0.1, -1);
   EXPECT_EQ(status_of(p), FT_ERR_INVALID_ARGUMENT);
-  p = fpl(0.1, 41);
+  p = fpl(0.1, 35);
   EXPECT_EQ(status_of(p), FT_ERR_INVALID_ARGUMENT);
   p = fpl(0.1, 4);
   p.method = 99;

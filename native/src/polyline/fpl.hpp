@@ -31,7 +31,8 @@ namespace ft {
 enum class FplRng : int { kUniform = 0, kNormal = 1 };
 enum class FplRule : int { kRandom = 0, kDragon = 1 };
 
-inline constexpr int kMaxFplDepth = 40;
+// Node j of level l uses Philox block j / 4 (32 bits): j < 2^34, so levels 0..33.
+inline constexpr int kMaxFplDepth = 34;
 
 struct FplConfig {
   FplRng rng = FplRng::kUniform;
