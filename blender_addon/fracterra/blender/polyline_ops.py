@@ -126,9 +126,12 @@ class FRACTERRA_OT_polyline_add(bpy.types.Operator):
     def execute(self, context):
         values = params.values_of(self, params.POLYLINE_PARAMS)
         try:
+            from .panels import preferences
+            prefs = preferences(context)
             base, matrix = base_polyline(values, context)
             with WindowProgress(context) as progress, \
-                    core.generate_polylines(values, base=base, progress=progress) as pl:
+                    core.generate_polylines(values, base=base, progress=progress,
+                                            threads=prefs.threads if prefs else 0) as pl:
                 if values["method"] == "IFS":
                     data = point_cloud_from_polylines("Fractal Points", pl)
                 else:

@@ -101,7 +101,7 @@ class PolylineParams(Structure):
         ("hurst", c_double),
         ("ifs_table", POINTER(c_double)),
         ("ifs_maps", c_int32),
-        ("reserved0", c_int32),
+        ("threads", c_int32),
         ("ifs_points", c_int64),
         ("progress", PROGRESS_FN),
         ("progress_user", c_void_p),

@@ -93,7 +93,7 @@ class Polylines:
             pass
 
 
-def generate_polylines(values=None, base=None, plane_normal=None, progress=None, **overrides):
+def generate_polylines(values=None, base=None, plane_normal=None, progress=None, threads=0, **overrides):
     """Generates polylines; returns a Polylines (close it, or use `with`).
 
     values/overrides: settings by name (params.POLYLINE_PARAMS): method='FPL',
@@ -106,6 +106,7 @@ def generate_polylines(values=None, base=None, plane_normal=None, progress=None,
     merged = dict(values or {})
     merged.update(overrides)
     params_mod.fill_struct(p, merged, params_mod.POLYLINE_PARAMS)
+    p.threads = threads
     base_buf = None
     if base is not None:
         base_buf = array.array("d", [c for pt in base for c in pt[:3]])
