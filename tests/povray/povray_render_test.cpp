@@ -250,6 +250,15 @@ TEST_F(PovTest, TerrainSceneWithCoastAndLightningRendersCleanly) {
   EXPECT_TRUE(fs::exists(path("scene with space.terrain.png")));
 }
 
+TEST_F(PovTest, PolylineSceneRendersForEveryKind) {
+  const PolylineSet line = wiggle(257);
+  for (auto kind : {pov::LineKind::kGeneric, pov::LineKind::kLightning, pov::LineKind::kCoastline}) {
+    const std::string f = path("line" + std::to_string(int(kind)) + ".pov");
+    pov::write_polyline_scene(line, f, kind);
+    expect_not_blank(render(f), "polyline scene of kind " + std::to_string(int(kind)));
+  }
+}
+
 TEST_F(PovTest, SceneToUnwritablePlaceFailsCleanlyWithNoPartialFile) {
   Heightfield hf(9, 9);
   for (size_t i = 0; i < hf.size(); ++i) hf.data()[i] = float(i % 7);
