@@ -178,7 +178,11 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
          number(sum.terrain.z_max) + ", " + number(zw) + ")\n}\n\n";
   } else {
     // Polylines alone: a ground to catch their shadows, just below them.
-    s += "plane { y, " + number(lo[1] - 0.02 * extent) + " texture { FT_Ground_Tex } }\n\n";
+    // Coastlines alone lie on a sea, where their white reads best.
+    bool coast = false;
+    for (const auto& l : p.lines) coast = coast || l.kind == LineKind::kCoastline;
+    s += "plane { y, " + number(lo[1] - 0.02 * extent) + " texture { " +
+         (coast ? "FT_Sea_Tex" : "FT_Ground_Tex") + " } }\n\n";
   }
 
   for (size_t i = 0; i < p.lines.size(); ++i) {
