@@ -17,7 +17,10 @@ std::string number(double v) {
 }
 
 std::string vec(const Vec3& v) {
-  return "<" + number(v[0]) + ", " + number(v[1]) + ", " + number(v[2]) + ">";
+  // Appended piece by piece: GCC 12's -Wrestrict misfires on the chained "+".
+  std::string s = "<";
+  s.append(number(v[0])).append(", ").append(number(v[1])).append(", ").append(number(v[2]));
+  return s.append(">");
 }
 
 std::string quoted(const std::string& text) {
