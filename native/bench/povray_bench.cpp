@@ -75,7 +75,7 @@ const char* kHeader =
 std::string mesh2(const Heightfield& hf, const pov::TerrainPlacement& pl) {
   // What Blender's exporter writes for a grid: every vertex and triangle.
   std::string s = "mesh2 {\n vertex_vectors { " + std::to_string(hf.size()) + ",\n";
-  char buf[128];
+  char buf[160];
   for (int y = 0; y < hf.height(); ++y)
     for (int x = 0; x < hf.width(); ++x) {
       std::snprintf(buf, sizeof buf, "  <%.6f, %.6f, %.6f>,\n", x * pl.size_x / (hf.width() - 1),

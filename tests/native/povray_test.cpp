@@ -30,7 +30,7 @@ TEST(PovSdl, QuotedStringsCannotBreakOut) {
   EXPECT_EQ(quoted("a.png"), "\"a.png\"");
   EXPECT_EQ(quoted("x\" } sphere { 0, 1 } #declare A = \"y"),
             "\"x\\\" } sphere { 0, 1 } #declare A = \\\"y\"");
-  EXPECT_EQ(quoted("dir\\file.png"), "\"dir\\\\file.png\"");
+  EXPECT_THROW(quoted("dir\\file.png"), Error);
   EXPECT_THROW(quoted("a\nb"), Error);
   EXPECT_THROW(quoted(std::string("a\0b", 3)), Error);
 }

@@ -245,9 +245,11 @@ TEST_F(PovTest, TerrainSceneWithCoastAndLightningRendersCleanly) {
   pov::set_scene_terrain(p, hf, 1, 0, 0.4);
   p.lines = {{&coast, pov::LineKind::kCoastline, 0}, {&bolt, pov::LineKind::kLightning, 0}};
   p.camera.aspect = 160.0 / 120.0;
+  // A space and a quote in the names: the PNG's path is quoted and escaped.
+  p.image_path = path("the \"island\" } sphere { 0, 1 }.png");
   pov::write_scene(p, path("scene with space.pov"));
   expect_not_blank(render(path("scene with space.pov"), 160, 120, 0.3), "terrain scene");
-  EXPECT_TRUE(fs::exists(path("scene with space.terrain.png")));
+  EXPECT_TRUE(fs::exists(p.image_path));
 }
 
 TEST_F(PovTest, PolylineSceneRendersForEveryKind) {

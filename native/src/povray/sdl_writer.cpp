@@ -29,7 +29,12 @@ std::string quoted(const std::string& text) {
     if (c < 0x20 || c == 0x7f)
       invalid("text written into a POV-Ray scene must not contain control characters: '" +
               comment_text(text) + "'");
-    if (c == '"' || c == '\\') out += '\\';
+    // POV-Ray 3.7 turns \" into " in file names but keeps \\ as two
+    // backslashes, so a backslash cannot be written faithfully: refuse it
+    // (and with it any way to pair our escapes with one of the caller's).
+    if (c == '\\')
+      invalid("a path written into a POV-Ray scene must not contain a backslash: '" + comment_text(text) + "'");
+    if (c == '"') out += '\\';
     out += char(c);
   }
   return out + "\"";
