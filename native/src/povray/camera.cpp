@@ -64,7 +64,8 @@ Camera frame_points(const std::vector<Vec3>& points, const CameraOptions& o) {
     // The view axis is raised by `tilt` from the line to the centre.
     const double pitch = std::clamp(-el + tilt, -kPi / 2 + 1e-6, kPi / 2 - 1e-6);
     c.direction = {flat[0] * std::cos(pitch), std::sin(pitch), flat[2] * std::cos(pitch)};
-    const Vec3 sky = o.elevation_deg > 89.9 ? Vec3{-flat[0], 0, -flat[2]} : Vec3{0, 1, 0};
+    // Straight down, "up" in the picture is still the way the camera faces.
+    const Vec3 sky = o.elevation_deg > 89.9 ? Vec3{flat[0], 0, flat[2]} : Vec3{0, 1, 0};
     c.right = unit(cross(sky, c.direction));
     c.up = cross(c.direction, c.right);
     c.location = {centre[0] + to_camera[0] * d, centre[1] + to_camera[1] * d, centre[2] + to_camera[2] * d};
@@ -100,7 +101,7 @@ Camera frame_points(const std::vector<Vec3>& points, const CameraOptions& o) {
     dist = far;
     fits(dist, tilt);
     const double shift = row_angle((vmin + vmax) / 2) - row_angle(o.center_v);
-    if (std::abs(shift) < 1e-4) break;
+    if (std::abs(shift) < 1e-4 || round == 5) break;  // keep the tilt the distance was fitted for
     tilt -= shift;
   }
   place(std::max(dist, 1e-3 * size) * o.distance_scale, tilt);
