@@ -22,7 +22,7 @@ struct CameraOptions {
 struct Camera {
   Vec3 location{}, look_at{};    // POV axes
   Vec3 right{}, up{}, direction{};  // unit vectors (POV axes, left-handed)
-  double fov_deg = 45, aspect = 4.0 / 3.0;
+  double fov_deg = 50, aspect = 4.0 / 3.0;
   // Image position of a POV point in 0..1 (u right, v down from the top);
   // false when it is behind the camera.
   bool project(const Vec3& p, double& u, double& v) const;
