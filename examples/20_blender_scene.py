@@ -182,9 +182,9 @@ def main():
     scene = bpy.context.scene
     bpy.ops.object.light_add(type="SUN", rotation=(math.radians(50), 0, math.radians(35)))
     bpy.context.active_object.data.energy = 4.0
-    bpy.ops.object.camera_add(location=(0.0, -1.35 * args.size, 0.75 * args.size))
+    bpy.ops.object.camera_add(location=(0.0, -1.5 * args.size, 0.8 * args.size))
     camera = bpy.context.active_object
-    look_at(camera, (0, 0, 0.5 * (min(zs) + max(zs)) - 0.1 * args.size))
+    look_at(camera, (0, 0.05 * args.size, 0.5 * (min(zs) + max(zs))))
     scene.camera = camera
     world = scene.world or bpy.data.worlds.new("World")
     scene.world = world
