@@ -106,9 +106,7 @@ FplConfig fpl_config(const ft_polyline_params& p) {
 }
 
 void validate_polyline_params(const ft_polyline_params& p) {
-  if (p.struct_size != sizeof(ft_polyline_params))
-    invalid("struct_size must be sizeof(ft_polyline_params) = " + std::to_string(sizeof(ft_polyline_params)) +
-            ", got " + std::to_string(p.struct_size) + " (fill the struct with ft_polyline_params_init)");
+  check_struct_size(p.struct_size, sizeof(ft_polyline_params), "ft_polyline_params");
   check_int_range("method", p.method, FT_POLYLINE_FPL, FT_POLYLINE_PROFILE);
   check_int_range("threads", p.threads, 0, 1024);
   if (p.method == FT_POLYLINE_IFS) {
