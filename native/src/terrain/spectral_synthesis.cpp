@@ -24,6 +24,16 @@ struct FftwFree {
 template <class T>
 using FftwBuffer = std::unique_ptr<T, FftwFree>;
 
+// The plan is destroyed on every path, including a cancellation between
+// planning and execution (the planner lock covers destruction too).
+struct PlanDeleter {
+  void operator()(fftwf_plan_s* plan) const {
+    std::lock_guard<std::mutex> lock(g_fftw_planner);
+    fftwf_destroy_plan(plan);
+  }
+};
+using Plan = std::unique_ptr<fftwf_plan_s, PlanDeleter>;
+
 template <class T>
 FftwBuffer<T> fftw_alloc(size_t count) {
   T* p = static_cast<T*>(fftwf_malloc(sizeof(T) * count));
@@ -40,12 +50,12 @@ Heightfield spectral_synthesis(const SpectralConfig& c) {
                    "spectral synthesis of a " + std::to_string(w) + " x " + std::to_string(h) + " terrain");
   auto coef = fftw_alloc<fftwf_complex>(ncoef);
   auto real = fftw_alloc<float>(size_t(w) * size_t(h));
-  fftwf_plan plan;
+  Plan plan;
   {
     std::lock_guard<std::mutex> lock(g_fftw_planner);
     // FFTW_ESTIMATE: the plan (and so every bit of the output) does not
     // depend on timing measurements, and the arrays are not touched.
-    plan = fftwf_plan_dft_c2r_2d(h, w, coef.get(), real.get(), FFTW_ESTIMATE);
+    plan.reset(fftwf_plan_dft_c2r_2d(h, w, coef.get(), real.get(), FFTW_ESTIMATE));
   }
   if (!plan) fail(FT_ERR_INTERNAL, "FFTW could not plan a " + std::to_string(w) + " x " + std::to_string(h) + " c2r transform");
 
@@ -105,11 +115,8 @@ Heightfield spectral_synthesis(const SpectralConfig& c) {
   for (size_t i = 0; i < 2 * ncoef; ++i) base[i] *= scale;
   c.progress.report(0.5);
 
-  fftwf_execute(plan);
-  {
-    std::lock_guard<std::mutex> lock(g_fftw_planner);
-    fftwf_destroy_plan(plan);
-  }
+  fftwf_execute(plan.get());
+  plan.reset();
   Heightfield hf(w, h);
   std::copy(real.get(), real.get() + size_t(w) * size_t(h), hf.data());
   c.progress.report(1.0);
