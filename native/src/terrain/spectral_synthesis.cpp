@@ -6,6 +6,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
@@ -67,17 +68,28 @@ Heightfield spectral_synthesis(const SpectralConfig& c) {
   const double exponent = -0.5 * (c.hurst + 1.0);  // applied to f^2
   const int threads = resolve_threads(c.threads);
   float* base = &coef.get()[0][0];
+  // Expected variance of the output = sum over the full spectrum of
+  // E|X|^2 (FFTW's c2r is unnormalised): 2 amp^2 per complex coefficient,
+  // amp^2 per real one; the half spectrum stands for both halves except in
+  // the self-mirrored columns kx = 0 and w / 2. Summed per row, then the rows
+  // in order, so the total (and the output) does not depend on the threads.
+  std::vector<double> row_variance(size_t(h), 0.0);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (int32_t ky = 0; ky < h; ++ky) {
     float* row = base + size_t(ky) * hw * 2;
     gaussian_fill(c.seed, Counter{uint32_t(ky), 0, Stream::kSpectral}, 0, size_t(hw) * 2, row);
     const double fy = double(ky <= h / 2 ? ky : ky - h) / h;
+    const bool real_row = ky == 0 || (h % 2 == 0 && ky == h / 2);
+    double var = 0;
     for (int32_t kx = 0; kx < hw; ++kx) {
       const double fx = double(kx) / w, f2 = fx * fx + fy * fy;
-      const float amp = f2 > 0 ? float(std::pow(f2, exponent)) : 0.0f;
-      row[2 * kx] *= amp;
-      row[2 * kx + 1] *= amp;
+      const double amp = f2 > 0 ? std::pow(f2, exponent) : 0.0;
+      row[2 * kx] *= float(amp);
+      row[2 * kx + 1] *= float(amp);
+      const bool mirrored = kx == 0 || (w % 2 == 0 && kx == w / 2);
+      var += (mirrored ? 1.0 : 2.0) * (mirrored && real_row ? 1.0 : 2.0) * amp * amp;
     }
+    row_variance[size_t(ky)] = var;
   }
   // Columns kx = 0 and (w even) kx = w / 2 hold their own mirror images:
   // Hermitian symmetry X(-ky) = conj X(ky) there, and real values where
@@ -95,22 +107,8 @@ Heightfield spectral_synthesis(const SpectralConfig& c) {
     coef_at(kx, 0)[1] = 0.0f;
     if (h % 2 == 0) coef_at(kx, h / 2)[1] = 0.0f;
   }
-  // Expected variance of the output = sum over the full spectrum of
-  // E|X|^2 (FFTW's c2r is unnormalised): 2 amp^2 per complex coefficient,
-  // amp^2 per real one; the half spectrum stands for both halves except in
-  // the self-mirrored columns. Scale to sigma^2, independently of the draws.
   double total = 0;
-  for (int32_t ky = 0; ky < h; ++ky) {
-    const double fy = double(ky <= h / 2 ? ky : ky - h) / h;
-    const bool real_row = ky == 0 || (h % 2 == 0 && ky == h / 2);
-    for (int32_t kx = 0; kx < hw; ++kx) {
-      const double fx = double(kx) / w, f2 = fx * fx + fy * fy;
-      if (f2 == 0) continue;
-      const bool mirrored = kx == 0 || (w % 2 == 0 && kx == w / 2);
-      const double a2 = std::pow(f2, 2 * exponent);
-      total += (mirrored ? 1.0 : 2.0) * (mirrored && real_row ? 1.0 : 2.0) * a2;
-    }
-  }
+  for (double v : row_variance) total += v;
   const float scale = float(c.sigma / std::sqrt(total));
   for (size_t i = 0; i < 2 * ncoef; ++i) base[i] *= scale;
   c.progress.report(0.5);
