@@ -7,6 +7,7 @@
 #include "cli/command.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
+#include "povray/scene.hpp"
 #include "terrain/terrain.hpp"
 
 namespace ft::cli {
@@ -44,7 +45,7 @@ const std::map<std::string, int> kRefScales = {
 
 struct TerrainOptions {
   ft_terrain_params p = default_terrain_params();
-  std::string reference, out, size;
+  std::string reference, out, size, pov;
   bool stats = false;
 };
 
@@ -64,6 +65,7 @@ int run(const TerrainOptions& o) {
   Heightfield hf = generate_terrain(p);
   const double seconds = clock.seconds();
   if (!o.out.empty()) write_heightfield(hf, o.out);
+  if (!o.pov.empty()) pov::write_terrain_scene(hf, o.pov);  // PNG beside it
   if (o.stats) {
     const HeightStats s = hf.stats();
     nlohmann::json j = {{"seconds", seconds}, {"width", hf.width()}, {"height", hf.height()},
@@ -124,12 +126,15 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                                    "displacement scale when refining references: sigma as given, or the mean "
                                    "|value| or std of the references")
                         ->transform(choice(kRefScales))->default_str(name_of(kRefScales, p.reference_scale));
+                    app.add_option("--world-size", p.world_size, "extent along x in scene units (> 0); heights share the unit")
+                        ->capture_default_str();
                     app.add_option("--threads", p.threads, "worker threads, 0 = all cores (output never depends on it)")
                         ->check(CLI::Range(0, 1024))->capture_default_str();
                     app.add_option("--out", o->out, "output .png (16-bit), .pgm (16-bit) or .npy (float32)");
+                    app.add_option("--pov", o->pov, "also write a POV-Ray scene (.pov, with its PNG beside it)");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, min, max, mean, std");
                     return [o] {
-                      if (o->out.empty() && !o->stats) invalid("give --out FILE and/or --stats");
+                      if (o->out.empty() && o->pov.empty() && !o->stats) invalid("give --out FILE, --pov FILE and/or --stats");
                       return run(*o);
                     };
                   },

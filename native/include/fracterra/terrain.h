@@ -80,6 +80,9 @@ typedef struct ft_terrain_params {
   /* Progress and cancellation; both may be NULL. */
   ft_progress_fn progress;
   void* progress_user;
+  /* Added in ABI 1.1 (trailing fields). */
+  double world_size;         ///< extent of the terrain along x in scene units (> 0; default 10);
+                             ///< y follows the aspect ratio; heights are in the same units
 } ft_terrain_params;
 
 /// Fills `p` with the defaults documented above. `p` must not be NULL.

@@ -99,6 +99,7 @@ ft_terrain_params default_terrain_params() {
   p.offset = 1.0;
   p.rotation = 0.5;
   p.warp = 0.0;
+  p.world_size = 10.0;
   return p;
 }
 
@@ -107,6 +108,7 @@ void validate_terrain_params(const ft_terrain_params& p) {
   check_int_range("method", p.method, FT_TERRAIN_MIDPOINT, FT_TERRAIN_INTERPOLATED);
   check_range("hurst", p.hurst, 0.0, 1.0);
   check_positive("sigma", p.sigma);
+  check_positive("world_size", p.world_size);
   check_int_range("threads", p.threads, 0, 1024);
   check_int_range("reference_scale", p.reference_scale, FT_REFSCALE_SIGMA, FT_REFSCALE_STD);
   if (p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS) {
@@ -147,7 +149,9 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
         c.sigma = reference_scale(p.reference_scale, p.sigma, p.reference,
                                   size_t(p.reference_size) * size_t(p.reference_size));
       }
-      return diamond_square(c);
+      Heightfield hf = diamond_square(c);
+      hf.set_world_size(p.world_size);
+      return hf;
     }
     case FT_TERRAIN_FBM:
       return fbm(fbm_config(p));
