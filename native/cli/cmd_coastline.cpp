@@ -21,7 +21,18 @@ namespace {
 
 struct CoastlineCli {
   std::string in, level = "q0.5", out, preview;
+  bool world = false;
 };
+
+// Grid coordinates (column, row) to the world units the terrain was made in
+// (x = column / (width - 1) * world size), as scenes place terrains.
+PolylineSet in_world_units(PolylineSet set, const Heightfield& hf) {
+  if (!(hf.world_size() > 0))
+    invalid("the terrain file records no world size; write it with fracterra terrain --world-size, or drop --world");
+  const double k = hf.world_size() / double(hf.width() - 1);
+  for (Vec3& p : set.points) p[0] *= k, p[1] *= k;
+  return set;
+}
 
 // Draws the chains onto an RGB image of the heightfield's size: islands red,
 // lakes blue, chains ending on the border yellow (1-pixel lines, DDA).
@@ -47,7 +58,7 @@ int run(const CoastlineCli& c) {
   const Heightfield hf = read_heightfield(c.in);
   const double level = resolve_level(hf, parse_level(c.level, "--level"));
   const PolylineSet set = marching_squares(hf, level);
-  if (!c.out.empty()) write_polylines(set, c.out);
+  if (!c.out.empty()) write_polylines(c.world ? in_world_units(set, hf) : set, c.out);
   if (!c.preview.empty()) {
     ReliefOptions ro;
     const HeightStats s = hf.stats();
@@ -79,6 +90,9 @@ Registration reg({"coastline",
                     app.add_option("--out", c->out,
                                    "output polylines .csv (x,y,z,radius; blank line between chains) or .json; "
                                    "x = column, y = row, z = level; closed loops repeat their first vertex");
+                    app.add_flag("--world", c->world,
+                                 "write x and y in the terrain's world units (its recorded world size) instead of "
+                                 "columns and rows");
                     app.add_option("--preview", c->preview,
                                    "also draw the chains over a shaded relief to this RGB .png (islands red, lakes "
                                    "blue, border chains yellow)");
