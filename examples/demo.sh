@@ -12,26 +12,28 @@ out="$(mkdir -p "${1:-demo-out}" && cd "${1:-demo-out}" && pwd)"
 ft="$root/build/native/fracterra"
 step() { printf '\n== %s\n' "$*"; }
 
-step "terrain: Voss midpoint displacement, 1025^2, H = 0.8"
-"$ft" terrain --method midpoint --levels 10 --hurst 0.8 --sigma 1 --seed 7 --world-size 10 \
-  --out "$out/terrain.png" --stats | tee "$out/terrain-stats.json"
+step "terrain: Voss midpoint displacement from 5 x 5 reference points (an island), 1025^2, H = 0.75"
+"$ft" terrain --method midpoint --levels 10 --hurst 0.75 --sigma 2.2 --seed 9 --world-size 10 \
+  --reference "$root/examples/island_reference.pgm" --out "$out/terrain.png" --stats | tee "$out/terrain-stats.json"
 "$ft" relief --in "$out/terrain.png" --out "$out/terrain-relief.png"
 
-step "coastline at the 45% quantile, in world units"
-"$ft" coastline --in "$out/terrain.png" --level q0.45 --world --out "$out/coast.csv"
+step "coastline at the 60% quantile (the sea level), in world units"
+"$ft" coastline --in "$out/terrain.png" --level q0.6 --world --out "$out/coast.csv" \
+  --preview "$out/coast-preview.png"
 
 step "lightning: a 3D fractal polyline with branches, striking the highest peak"
+vscale=0.35  # the scene's vertical scale: heights are samples times this
 # The peak's grid position from --stats, turned into world units.
 read -r px py pz < <(python3 -c '
 import json, sys
 s = json.load(open(sys.argv[1])); p = s["peak"]; k = s["world_size"] / (s["width"] - 1)
-print(p["column"] * k, p["row"] * k, p["height"])' "$out/terrain-stats.json")
-top="$(python3 -c "print(f'{$px + 1.2},{$py - 0.8},{$pz + 5.0}')")"
-"$ft" polyline --method fpl3d --base "$top;$px,$py,$pz" --spread 0.12 --depth 9 \
-  --branch-prob 0.015 --radius 0.035 --seed 11 --out "$out/bolt.csv" --stats
+print(p["column"] * k, p["row"] * k, p["height"] * float(sys.argv[2]))' "$out/terrain-stats.json" "$vscale")
+top="$(python3 -c "print(f'{$px + 1.5},{$py - 1.0},{$pz + 5.0}')")"
+"$ft" polyline --method fpl3d --base "$top;$px,$py,$pz" --spread 0.2 --depth 9 \
+  --branch-prob 0.01 --radius 0.03 --seed 11 --out "$out/bolt.csv" --stats
 
 step "POV-Ray: height_field + coastline sweeps + lightning, rendered"
-"$ft" scene --terrain "$out/terrain.png" --vertical-scale 1 --sea-fraction 0.45 \
+"$ft" scene --terrain "$out/terrain.png" --vertical-scale "$vscale" --sea-fraction 0.6 \
   --polyline "$out/coast.csv" --kind coastline --polyline "$out/bolt.csv" --kind lightning \
   --pov "$out/scene.pov" --render "$out/scene.png" --width 800 --height 600
 
