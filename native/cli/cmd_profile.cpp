@@ -7,6 +7,7 @@
 #include "cli/command.hpp"
 #include "core/buffer.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "io/atomic_file.hpp"
 #include "io/npy.hpp"
 #include "io/polyline_io.hpp"
@@ -47,15 +48,20 @@ int run(const ProfileOptions& o) {
   }
   validate_profile_params(p);
   const size_t n = (size_t(1) << p.levels) + 1;
+  // The samples, plus a polyline copy (xyz + radius, 32 bytes a vertex) for
+  // .csv/.json: refused up front, with the size, when above the memory cap.
+  const std::string ext = extension_of(o.out);
+  const bool as_polyline = ext == ".csv" || ext == ".json";
+  check_allocation(checked_bytes(n, sizeof(float) + (as_polyline ? sizeof(Vec3) + sizeof(double) : 0)),
+                   "a profile of levels " + std::to_string(p.levels) + " (" + std::to_string(n) + " samples)");
   std::vector<float> x(n);
   Stopwatch clock;
   generate_profile(p, x.data(), n);
   const double seconds = clock.seconds();
   if (!o.out.empty()) {
-    const std::string ext = extension_of(o.out);
     if (ext == ".npy") {
       write_npy(o.out, {int64_t(n)}, x.data());
-    } else if (ext == ".csv" || ext == ".json") {
+    } else if (as_polyline) {
       // As a polyline on t in [0, 1]: x = t, y = X(t).
       PolylineSet s;
       for (size_t i = 0; i < n; ++i) s.add({double(i) / double(n - 1), double(x[i]), 0.0});

@@ -10,5 +10,9 @@
 #include "core.h"
 #include "terrain.h"
 #include "analysis.h"
+#include "subdiv.h"
+#include "mesh.h"
+#include "polyline.h"
+#include "povray.h"
 
 #endif

@@ -71,21 +71,20 @@ void walk_segment(double u0, double v0, double u1, double v1, std::vector<uint64
   }
 }
 
-}  // namespace
-
-int64_t count_boxes(const PolylineSet& set, double eps, double ox, double oy) {
-  check_positive("box size", eps);
-  const double inv = 1.0 / eps;
-  // Reserve for the cells the walk will visit so the count is one allocation.
-  double visits = 0;
+// Upper bound of the cells the walks visit at box size eps (the key buffer).
+double visit_bound(const PolylineSet& set, double eps) {
+  double visits = double(set.line_count());
   for (int64_t i = 0; i < set.line_count(); ++i)
     for (int64_t v = set.line_begin(i) + 1; v < set.line_end(i); ++v) {
       const Vec3& a = set.points[size_t(v - 1)];
       const Vec3& b = set.points[size_t(v)];
-      visits += (std::fabs(b[0] - a[0]) + std::fabs(b[1] - a[1])) * inv + 1.0;
+      visits += (std::fabs(b[0] - a[0]) + std::fabs(b[1] - a[1])) / eps + 1.0;
     }
-  visits += double(set.line_count());
-  check_allocation(uint64_t(visits) * sizeof(uint64_t), "box counting at this box size");
+  return visits;
+}
+
+int64_t count_unchecked(const PolylineSet& set, double eps, double ox, double oy, double visits) {
+  const double inv = 1.0 / eps;
   std::vector<uint64_t> keys;
   keys.reserve(size_t(visits));
   for (int64_t i = 0; i < set.line_count(); ++i) {
@@ -102,6 +101,15 @@ int64_t count_boxes(const PolylineSet& set, double eps, double ox, double oy) {
   }
   std::sort(keys.begin(), keys.end());
   return int64_t(std::unique(keys.begin(), keys.end()) - keys.begin());
+}
+
+}  // namespace
+
+int64_t count_boxes(const PolylineSet& set, double eps, double ox, double oy) {
+  check_positive("box size", eps);
+  const double visits = visit_bound(set, eps);
+  check_allocation(uint64_t(visits) * sizeof(uint64_t), "box counting at this box size");
+  return count_unchecked(set, eps, ox, oy, visits);
 }
 
 SlopeFit fit_slope(const std::vector<double>& x, const std::vector<double>& y) {
@@ -144,6 +152,9 @@ BoxCountResult box_counting_dimension(const PolylineSet& set, const BoxCountOpti
     invalid("min_size " + format_number(r.min_size) + " is too small for the extent " + format_number(extent) +
             " (at most 2^30 boxes across)");
 
+  // One memory check for the finest size; the key buffer is largest there.
+  const double finest = visit_bound(set, r.min_size);
+  check_allocation(uint64_t(finest) * sizeof(uint64_t), "box counting at box size " + format_number(r.min_size));
   std::vector<double> x, y;
   for (int k = 0;; ++k) {
     const double eps = r.max_size * std::exp2(-double(k) / o.sizes_per_octave);
@@ -152,7 +163,7 @@ BoxCountResult box_counting_dimension(const PolylineSet& set, const BoxCountOpti
     for (int s = 0; s < o.grid_shifts; ++s) {
       // The origin sits one box below/left of the set so cells are >= 0.
       const double shift = eps * (1.0 + double(s) / o.grid_shifts);
-      best = std::min(best, count_boxes(set, eps, b.x0 - shift, b.y0 - shift));
+      best = std::min(best, count_unchecked(set, eps, b.x0 - shift, b.y0 - shift, visit_bound(set, eps)));
     }
     r.sizes.push_back(eps);
     r.counts.push_back(best);

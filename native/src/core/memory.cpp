@@ -14,7 +14,12 @@ std::atomic<uint64_t> g_cap{kDefaultMemoryCap};
 std::string human(uint64_t bytes) {
   char buf[64];
   if (bytes == std::numeric_limits<uint64_t>::max()) return "more than 16 EiB";
-  std::snprintf(buf, sizeof buf, "%.2f GiB", double(bytes) / double(uint64_t{1} << 30));
+  if (bytes >= uint64_t{1} << 30)
+    std::snprintf(buf, sizeof buf, "%.2f GiB", double(bytes) / double(uint64_t{1} << 30));
+  else if (bytes >= uint64_t{1} << 20)
+    std::snprintf(buf, sizeof buf, "%.2f MiB", double(bytes) / double(uint64_t{1} << 20));
+  else
+    std::snprintf(buf, sizeof buf, "%llu bytes", static_cast<unsigned long long>(bytes));
   return buf;
 }
 }  // namespace

@@ -1,5 +1,7 @@
 #include "core/rng.hpp"
 
+#include <immintrin.h>
+
 #include <bit>
 #include <cmath>
 #include <cstdlib>
@@ -79,22 +81,65 @@ __attribute__((always_inline)) inline void box_muller_inline(float u1, float u2,
 
 constexpr size_t kChunk = 64;  // blocks per inner batch (256 variates)
 
-template <bool kGaussian>
-__attribute__((always_inline)) inline void fill_blocks(uint64_t seed, const Counter& c, uint32_t first_block, size_t blocks,
-                        float* out) {
+// Philox4x32-10 on 8 counters at once with AVX2. The compiler's own
+// vectorisation of philox_rounds spends most of its time on the 32x32->64
+// multiplies; _mm256_mul_epu32 on even and odd lanes does them in 6
+// instructions. Same bits as philox_rounds (the tests compare both paths).
+__attribute__((target("avx2"))) void philox_batch_avx2(uint32_t first_block, size_t m, const Counter& c,
+                                                       uint32_t k0, uint32_t k1, uint32_t* b0, uint32_t* b1,
+                                                       uint32_t* b2, uint32_t* b3) {
+  const __m256i m0 = _mm256_set1_epi32(int(PHILOX_M4x32_0)), m1 = _mm256_set1_epi32(int(PHILOX_M4x32_1));
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  size_t i = 0;
+  for (; i + 8 <= m; i += 8) {
+    __m256i x0 = _mm256_add_epi32(_mm256_set1_epi32(int(first_block + uint32_t(i))), lane);
+    __m256i x1 = _mm256_set1_epi32(int(c.row)), x2 = _mm256_set1_epi32(int(c.level));
+    __m256i x3 = _mm256_set1_epi32(int(uint32_t(c.stream)));
+    uint32_t key0 = k0, key1 = k1;
+    for (int r = 0; r < 10; ++r) {
+      if (r > 0) key0 += PHILOX_W32_0, key1 += PHILOX_W32_1;
+      // Products of even lanes, then of odd lanes (shifted down).
+      const __m256i pe0 = _mm256_mul_epu32(x0, m0), po0 = _mm256_mul_epu32(_mm256_srli_epi64(x0, 32), m0);
+      const __m256i pe1 = _mm256_mul_epu32(x2, m1), po1 = _mm256_mul_epu32(_mm256_srli_epi64(x2, 32), m1);
+      const __m256i lo0 = _mm256_blend_epi32(pe0, _mm256_slli_epi64(po0, 32), 0xAA);
+      const __m256i hi0 = _mm256_blend_epi32(_mm256_srli_epi64(pe0, 32), po0, 0xAA);
+      const __m256i lo1 = _mm256_blend_epi32(pe1, _mm256_slli_epi64(po1, 32), 0xAA);
+      const __m256i hi1 = _mm256_blend_epi32(_mm256_srli_epi64(pe1, 32), po1, 0xAA);
+      const __m256i n0 = _mm256_xor_si256(_mm256_xor_si256(hi1, x1), _mm256_set1_epi32(int(key0)));
+      const __m256i n2 = _mm256_xor_si256(_mm256_xor_si256(hi0, x3), _mm256_set1_epi32(int(key1)));
+      x0 = n0;
+      x1 = lo1;
+      x2 = n2;
+      x3 = lo0;
+    }
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(b0 + i), x0);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(b1 + i), x1);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(b2 + i), x2);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(b3 + i), x3);
+  }
+  for (; i < m; ++i) {
+    uint32_t x0 = first_block + uint32_t(i), x1 = c.row, x2 = c.level, x3 = uint32_t(c.stream);
+    philox_rounds(x0, x1, x2, x3, k0, k1);
+    b0[i] = x0, b1[i] = x1, b2[i] = x2, b3[i] = x3;
+  }
+}
+
+template <bool kGaussian, bool kAvx2>
+__attribute__((always_inline)) inline void fill_blocks(uint64_t seed, const Counter& c, uint32_t first_block,
+                                                       size_t blocks, float* out) {
   const uint32_t k0 = uint32_t(seed), k1 = uint32_t(seed >> 32);
   // Struct-of-arrays batches so the compiler vectorises across blocks.
   alignas(64) uint32_t b0[kChunk], b1[kChunk], b2[kChunk], b3[kChunk];
   for (size_t start = 0; start < blocks; start += kChunk) {
     const size_t m = blocks - start < kChunk ? blocks - start : kChunk;
-    for (size_t i = 0; i < m; ++i) {
-      uint32_t x0 = first_block + uint32_t(start + i), x1 = c.row, x2 = c.level,
-               x3 = uint32_t(c.stream);
-      philox_rounds(x0, x1, x2, x3, k0, k1);
-      b0[i] = x0;
-      b1[i] = x1;
-      b2[i] = x2;
-      b3[i] = x3;
+    if constexpr (kAvx2) {
+      philox_batch_avx2(first_block + uint32_t(start), m, c, k0, k1, b0, b1, b2, b3);
+    } else {
+      for (size_t i = 0; i < m; ++i) {
+        uint32_t x0 = first_block + uint32_t(start + i), x1 = c.row, x2 = c.level, x3 = uint32_t(c.stream);
+        philox_rounds(x0, x1, x2, x3, k0, k1);
+        b0[i] = x0, b1[i] = x1, b2[i] = x2, b3[i] = x3;
+      }
     }
     float* o = out + start * 4;
     for (size_t i = 0; i < m; ++i) {
@@ -118,24 +163,24 @@ __attribute__((always_inline)) inline void fill_blocks(uint64_t seed, const Coun
   }
 }
 
-template <bool kGaussian>
+template <bool kGaussian, bool kAvx2>
 __attribute__((always_inline)) inline void fill_any(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
   // Unaligned head and tail go through a 4-wide scratch block.
   while (n > 0 && (first & 3) != 0) {
     float tmp[4];
-    fill_blocks<kGaussian>(seed, c, uint32_t(first >> 2), 1, tmp);
+    fill_blocks<kGaussian, kAvx2>(seed, c, uint32_t(first >> 2), 1, tmp);
     *out++ = tmp[first & 3];
     ++first;
     --n;
   }
   const size_t blocks = n / 4;
-  fill_blocks<kGaussian>(seed, c, uint32_t(first >> 2), blocks, out);
+  fill_blocks<kGaussian, kAvx2>(seed, c, uint32_t(first >> 2), blocks, out);
   first += blocks * 4;
   out += blocks * 4;
   n -= blocks * 4;
   if (n > 0) {
     float tmp[4];
-    fill_blocks<kGaussian>(seed, c, uint32_t(first >> 2), 1, tmp);
+    fill_blocks<kGaussian, kAvx2>(seed, c, uint32_t(first >> 2), 1, tmp);
     for (size_t i = 0; i < n; ++i) out[i] = tmp[i];
   }
 }
@@ -154,17 +199,17 @@ using FillFn = void (*)(uint64_t, const Counter&, uint64_t, size_t, float*);
 
 __attribute__((target("avx2"))) void gaussian_fill_avx2(uint64_t seed, const Counter& c, uint64_t first, size_t n,
                                                         float* out) {
-  fill_any<true>(seed, c, first, n, out);
+  fill_any<true, true>(seed, c, first, n, out);
 }
 void gaussian_fill_baseline(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
-  fill_any<true>(seed, c, first, n, out);
+  fill_any<true, false>(seed, c, first, n, out);
 }
 __attribute__((target("avx2"))) void uniform_fill_avx2(uint64_t seed, const Counter& c, uint64_t first, size_t n,
                                                        float* out) {
-  fill_any<false>(seed, c, first, n, out);
+  fill_any<false, true>(seed, c, first, n, out);
 }
 void uniform_fill_baseline(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
-  fill_any<false>(seed, c, first, n, out);
+  fill_any<false, false>(seed, c, first, n, out);
 }
 
 bool use_avx2() {

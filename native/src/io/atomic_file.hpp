@@ -1,7 +1,9 @@
 // Files are never written in place: the content goes to a temporary file in
 // the destination's folder and is renamed over the destination only once it
 // is complete and flushed, so a failed or interrupted write leaves the old
-// file untouched and no partial file behind.
+// file untouched and no partial file behind. The temporary file is
+// ".<name>.tmp.<pid>.XXXXXX"; one left by a writer that was killed is
+// removed by the next write of the same file (see atomic_file.cpp).
 #pragma once
 
 #include <cstdio>

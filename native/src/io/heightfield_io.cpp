@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "io/atomic_file.hpp"
 #include "io/npy.hpp"
 #include "io/pgm.hpp"
@@ -28,6 +29,7 @@ std::string unsupported(const std::string& path) {
 GrayImage heightfield_to_image(const Heightfield& hf) {
   const HeightStats s = hf.stats();
   if (!std::isfinite(s.min) || !std::isfinite(s.max)) invalid("the heightfield holds NaN or infinite samples");
+  check_allocation(checked_bytes(hf.size(), sizeof(uint16_t)), "the 16-bit image of a heightfield");
   GrayImage img;
   img.width = hf.width();
   img.height = hf.height();
@@ -40,6 +42,7 @@ GrayImage heightfield_to_image(const Heightfield& hf) {
   img.text["fracterra:min"] = format_number(s.min);
   img.text["fracterra:max"] = format_number(s.max);
   img.text["Software"] = "fracterra";
+  if (hf.world_size() > 0) img.text["fracterra:world_size"] = format_number(hf.world_size());
   return img;
 }
 
@@ -56,6 +59,10 @@ Heightfield image_to_heightfield(const GrayImage& image) {
   Heightfield hf(image.width, image.height);
   float* z = hf.data();
   for (size_t i = 0; i < hf.size(); ++i) z[i] = float(lo + (hi - lo) * (image.pixels[i] / full));
+  if (auto ws = image.text.find("fracterra:world_size"); ws != image.text.end()) {
+    const double v = std::strtod(ws->second.c_str(), nullptr);
+    if (std::isfinite(v) && v > 0) hf.set_world_size(v);
+  }
   return hf;
 }
 

@@ -1,7 +1,8 @@
 #include "io/npy.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstring>
-#include <regex>
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
@@ -19,13 +20,28 @@ void convert(const char* src, size_t n, float* dst) {
   }
 }
 
+// The header is a Python dict literal. Its values are found by hand: the
+// std::regex this replaced recursed once per character matched and overflowed
+// the stack on a long (crafted) shape tuple.
+// Position of the value of `key` (after "key" : and spaces), or npos.
+size_t value_of(const std::string& h, const char* key) {
+  size_t i = h.find(key);
+  if (i == std::string::npos) return i;
+  i += std::strlen(key);
+  while (i < h.size() && std::isspace(uint8_t(h[i]))) ++i;
+  if (i >= h.size() || h[i] != ':') return std::string::npos;
+  ++i;
+  while (i < h.size() && std::isspace(uint8_t(h[i]))) ++i;
+  return i < h.size() ? i : std::string::npos;
+}
+
 }  // namespace
 
 NpyArray decode_npy(const std::string& bytes, const std::string& name) {
   auto bad = [&](const std::string& why) { fail(FT_ERR_FORMAT, "'" + name + "' is not a usable .npy file: " + why); };
   if (bytes.size() < 10 || bytes.compare(0, 6, "\x93NUMPY") != 0) bad("missing the \\x93NUMPY magic");
   const int major = uint8_t(bytes[6]);
-  size_t header_len, header_start;
+  size_t header_len = 0, header_start = 0;
   if (major == 1) {
     header_len = uint8_t(bytes[8]) | (size_t(uint8_t(bytes[9])) << 8);
     header_start = 10;
@@ -39,29 +55,42 @@ NpyArray decode_npy(const std::string& bytes, const std::string& name) {
   }
   if (header_len > 65536 || header_start + header_len > bytes.size()) bad("truncated header");
   const std::string header = bytes.substr(header_start, header_len);
-  std::smatch m;
-  if (!std::regex_search(header, m, std::regex("'descr'\\s*:\\s*'([<>|=])([fiu])(\\d+)'"))) bad("no 'descr'");
-  const char order = m[1].str()[0];
-  const char kind = m[2].str()[0];
-  const int width = std::stoi(m[3].str().substr(0, 3));
+  // 'descr': '<f4' (byte order, kind, width in bytes).
+  size_t i = value_of(header, "'descr'");
+  size_t j = i == std::string::npos ? i : i + 3;
+  while (j < header.size() && std::isdigit(uint8_t(header[j]))) ++j;
+  if (i == std::string::npos || j >= header.size() || header[i] != '\'' || j == i + 3 || header[j] != '\'' ||
+      !std::strchr("<>|=", header[i + 1]) || !std::strchr("fiu", header[i + 2]))
+    bad("no 'descr'");
+  const char order = header[i + 1];
+  const char kind = header[i + 2];
+  const int width = std::stoi(header.substr(i + 3, std::min<size_t>(j - i - 3, 3)));
   if (order == '>' && width > 1) bad("big-endian data is not supported");
-  const bool fortran = std::regex_search(header, std::regex("'fortran_order'\\s*:\\s*True"));
-  if (!std::regex_search(header, m, std::regex("'shape'\\s*:\\s*\\(([^)]*)\\)"))) bad("no 'shape'");
+  i = value_of(header, "'fortran_order'");
+  const bool fortran = i != std::string::npos && header.compare(i, 4, "True") == 0;
+  // 'shape': (h, w) or (n,): the digit runs between the parentheses.
+  i = value_of(header, "'shape'");
+  const size_t close = i == std::string::npos ? i : header.find(')', i);
+  if (close == std::string::npos || header[i] != '(') bad("no 'shape'");
   NpyArray a;
-  const std::string dims = m[1].str();
-  std::regex num("\\d+");
   uint64_t count = 1;
-  for (auto it = std::sregex_iterator(dims.begin(), dims.end(), num); it != std::sregex_iterator(); ++it) {
-    const std::string d = it->str();
-    if (d.size() > 9) bad("dimension too large");
-    a.shape.push_back(std::stoll(d));
+  for (size_t k = i + 1; k < close;) {
+    if (!std::isdigit(uint8_t(header[k]))) {
+      ++k;
+      continue;
+    }
+    size_t e = k;
+    while (e < close && std::isdigit(uint8_t(header[e]))) ++e;
+    if (e - k > 9) bad("dimension too large");
+    a.shape.push_back(std::stoll(header.substr(k, e - k)));
     count = checked_bytes(count, uint64_t(a.shape.back()));
+    k = e;
   }
   if (a.shape.empty() || a.shape.size() > 2) bad("expected a 1D or 2D array");
   size_t elem = 0;
   if (kind == 'f' && (width == 4 || width == 8)) elem = width;
   else if ((kind == 'i' || kind == 'u') && (width == 1 || width == 2 || width == 4 || width == 8)) elem = width;
-  else bad("unsupported element type " + m[2].str() + std::to_string(width));
+  else bad(std::string("unsupported element type ") + kind + std::to_string(width));
   const size_t data_start = header_start + header_len;
   if (count > (bytes.size() - data_start) / elem) bad("the data is shorter than its shape says");
   check_allocation(checked_bytes(count, sizeof(float)), "reading '" + name + "'");
@@ -112,8 +141,12 @@ void write_npy(const std::string& path, const std::vector<int64_t>& shape, const
   out.push_back(char(header.size() & 0xff));
   out.push_back(char(header.size() >> 8));
   out += header;
-  out.append(reinterpret_cast<const char*>(values), count * sizeof(float));
-  write_file_atomically(path, out);
+  // The samples go straight from the caller's array: no second copy of a
+  // possibly multi-GiB array in memory.
+  AtomicFile file(path);
+  file.write(out);
+  file.write(std::string_view(reinterpret_cast<const char*>(values), count * sizeof(float)));
+  file.commit();
 }
 
 }  // namespace ft

@@ -15,6 +15,12 @@ namespace {
 // libpng reports errors by longjmp to the setjmp in the calling function; we
 // throw only after the jump has landed there, outside any libpng frame.
 void on_warning(png_structp, png_const_charp) {}
+// Keeps libpng's reason for the error message (instead of printing it on
+// stderr) and jumps back to the setjmp.
+void on_error(png_structp png, png_const_charp message) {
+  if (auto* reason = static_cast<std::string*>(png_get_error_ptr(png))) *reason = message;
+  png_longjmp(png, 1);
+}
 
 struct MemoryReader {
   const std::string* bytes;
@@ -28,6 +34,14 @@ void read_from_memory(png_structp png, png_bytep out, png_size_t n) {
   r->pos += n;
 }
 
+// Owns libpng's read structs, so that every way out of decode_png (our own
+// errors included, thrown after png_read_info) frees them.
+struct ReadStructs {
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  ~ReadStructs() { png_destroy_read_struct(&png, &info, nullptr); }
+};
+
 }  // namespace
 
 void write_png(const std::string& path, const GrayImage& image) {
@@ -36,7 +50,8 @@ void write_png(const std::string& path, const GrayImage& image) {
       image.pixels.size() != size_t(image.width) * size_t(image.height))
     invalid("PNG image size does not match its pixel count");
   AtomicFile out(path);
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, on_warning);
+  std::string reason;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &reason, on_error, on_warning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!info) {
     png_destroy_write_struct(&png, nullptr);
@@ -53,7 +68,7 @@ void write_png(const std::string& path, const GrayImage& image) {
   }
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    fail(FT_ERR_IO, "libpng failed writing '" + path + "'");
+    fail(FT_ERR_IO, "writing '" + path + "' failed: " + reason);
   }
   png_init_io(png, out.file());
   // Heightmaps compress poorly at high levels; level 3 is ~3x faster than 6
@@ -108,20 +123,18 @@ void write_png_rgb(const std::string& path, int32_t width, int32_t height, const
 GrayImage decode_png(const std::string& bytes, const std::string& name) {
   if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0)
     fail(FT_ERR_FORMAT, "'" + name + "' is not a PNG file");
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, on_warning);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!info) {
-    png_destroy_read_struct(&png, nullptr, nullptr);
-    fail(FT_ERR_OUT_OF_MEMORY, "libpng could not start a reader");
-  }
+  ReadStructs rs;
+  std::string reason;
+  rs.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reason, on_error, on_warning);
+  if (rs.png) rs.info = png_create_info_struct(rs.png);
+  if (!rs.info) fail(FT_ERR_OUT_OF_MEMORY, "libpng could not start a reader");
+  png_structp png = rs.png;
+  png_infop info = rs.info;
   GrayImage img;
   std::vector<png_bytep> rows;
   std::vector<uint8_t> raw;
   MemoryReader reader{&bytes, 0};
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    fail(FT_ERR_FORMAT, "'" + name + "' is a damaged PNG file");
-  }
+  if (setjmp(png_jmpbuf(png))) fail(FT_ERR_FORMAT, "'" + name + "' is a damaged PNG file: " + reason);
   png_set_read_fn(png, &reader, read_from_memory);
   png_set_user_limits(png, 1 << 20, 1 << 20);
   png_read_info(png, info);
@@ -139,10 +152,7 @@ GrayImage decode_png(const std::string& bytes, const std::string& name) {
   png_read_update_info(png, info);
   depth = png_get_bit_depth(png, info);
   const size_t rowbytes = png_get_rowbytes(png, info);
-  if (png_get_channels(png, info) != 1) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    fail(FT_ERR_FORMAT, "'" + name + "': unsupported PNG channel layout");
-  }
+  if (png_get_channels(png, info) != 1) fail(FT_ERR_FORMAT, "'" + name + "': unsupported PNG channel layout");
   check_allocation(checked_bytes(rowbytes, h, 3), "reading '" + name + "'");
   raw.resize(rowbytes * h);
   rows.resize(h);
@@ -154,7 +164,6 @@ GrayImage decode_png(const std::string& bytes, const std::string& name) {
   png_get_text(png, info, &text, &ntext);
   for (int i = 0; i < ntext; ++i)
     if (text[i].key && text[i].text) img.text[text[i].key] = text[i].text;
-  png_destroy_read_struct(&png, &info, nullptr);
 
   img.width = int32_t(w);
   img.height = int32_t(h);

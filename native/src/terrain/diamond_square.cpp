@@ -1,5 +1,6 @@
 #include "terrain/diamond_square.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -8,6 +9,13 @@
 
 namespace ft {
 namespace {
+
+// Each step runs over its rows in bands of about this many samples, with a
+// progress report between bands: a level-14 terrain's last stage is ~2.7e8
+// samples (seconds of work), a band a few milliseconds, so a cancel lands
+// within a fraction of a second. Bands only split a row loop, and no row
+// reads what another row of the same step writes, so the output is the same.
+constexpr int64_t kBandSamples = int64_t(1) << 20;
 
 // One grid being refined; the stage methods are the steps of MidPointFM2D.
 class Refiner {
@@ -25,6 +33,8 @@ class Refiner {
     } else {
       place_corners();
     }
+    // Progress: samples visited over samples to visit (the bands' sizes).
+    for (int s = first_stage; s <= c_.levels; ++s) total_ += stage_samples(s);
     // delta before stage s's square step is sigma 2^(-(2s - 1) H / 2); the
     // stages a reference grid stands for are skipped, not re-run.
     double delta = c_.sigma * std::pow(0.5, 0.5 * c_.hurst * 2.0 * (first_stage - 1));
@@ -40,8 +50,8 @@ class Refiner {
         add_to_grid(s, 0, big, float(delta), Stream::kTerrainAddNew);
         add_to_grid(s + 1000, half, big, float(delta), Stream::kTerrainAddNew);
       }
-      c_.progress.report(double(s) / c_.levels);
     }
+    c_.progress.report(1.0);
   }
 
  private:
@@ -67,6 +77,35 @@ class Refiner {
       for (int i = 0; i < m; ++i) at(i * ref_step_, j * ref_step_) = c_.reference[size_t(j) * m + i];
   }
 
+  // Samples the bands of stage s visit, in the same (rows x per_row) units.
+  double stage_samples(int s) const {
+    const int big = n_ >> (s - 1), half = big / 2, cells = n_ / big;
+    double sum = double(cells) * cells + double(2 * cells + 1) * (cells + 1);
+    if (c_.additions) {
+      const double a = addition_count(0, big), b = addition_count(half, big);
+      sum += 2 * a * a + b * b;
+    }
+    return sum;
+  }
+
+  int addition_count(int origin, int step) const {
+    const int limit = c_.periodic ? n_ - 1 : n_;
+    return origin > limit ? 0 : (limit - origin) / step + 1;
+  }
+
+  // Calls rows_fn(r0, r1) for consecutive row ranges covering 0..rows-1,
+  // each about kBandSamples samples, reporting progress after each.
+  template <class RowsFn>
+  void in_bands(int rows, int per_row, RowsFn&& rows_fn) {
+    const int band = int(std::max<int64_t>(1, kBandSamples / std::max(1, per_row)));
+    for (int r0 = 0; r0 < rows; r0 += band) {
+      const int r1 = std::min(rows, r0 + band);
+      rows_fn(r0, r1);
+      done_ += double(r1 - r0) * double(per_row);
+      c_.progress.report(std::min(1.0, done_ / total_));
+    }
+  }
+
   bool pinned(int x, int y) const {
     return ref_step_ != 0 && x % ref_step_ == 0 && y % ref_step_ == 0;
   }
@@ -74,20 +113,22 @@ class Refiner {
   // Square step: centres of the squares of side `big`.
   void square_step(int s, int big, int half, float delta) {
     const int cells = n_ / big;
+    in_bands(cells, cells, [&](int j0, int j1) {
 #pragma omp parallel num_threads(threads_)
-    {
-      std::vector<float> g(size_t(cells) + 4);
+      {
+        std::vector<float> g(size_t(cells) + 4);
 #pragma omp for schedule(static)
-      for (int j = 0; j < cells; ++j) {
-        const int y = half + j * big;
-        gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(s), Stream::kTerrainSquare}, 0, cells, g.data());
-        const float* up = x_ + size_t(y - half) * w_;
-        const float* dn = x_ + size_t(y + half) * w_;
-        float* row = x_ + size_t(y) * w_;
-        for (int i = 0, x = half; i < cells; ++i, x += big)
-          row[x] = 0.25f * ((up[x - half] + up[x + half]) + (dn[x - half] + dn[x + half])) + delta * g[i];
+        for (int j = j0; j < j1; ++j) {
+          const int y = half + j * big;
+          gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(s), Stream::kTerrainSquare}, 0, cells, g.data());
+          const float* up = x_ + size_t(y - half) * w_;
+          const float* dn = x_ + size_t(y + half) * w_;
+          float* row = x_ + size_t(y) * w_;
+          for (int i = 0, x = half; i < cells; ++i, x += big)
+            row[x] = 0.25f * ((up[x - half] + up[x + half]) + (dn[x - half] + dn[x + half])) + delta * g[i];
+        }
       }
-    }
+    });
   }
 
   // Diamond step: the edge midpoints, from their 4 axis neighbours (3 on a
@@ -95,20 +136,22 @@ class Refiner {
   void diamond_step(int s, int big, int half, float delta) {
     const int cells = n_ / big;
     const int rows = 2 * cells + 1;
+    in_bands(rows, cells + 1, [&](int r0, int r1) {
 #pragma omp parallel num_threads(threads_)
-    {
-      std::vector<float> g(size_t(cells) + 5);
+      {
+        std::vector<float> g(size_t(cells) + 5);
 #pragma omp for schedule(static)
-      for (int r = 0; r < rows; ++r) {
-        const int y = r * half;
-        if (c_.periodic && y == n_) continue;  // copied from row 0 below
-        const bool on_grid_row = (r % 2) == 0;  // y is a multiple of `big`
-        const int x0 = on_grid_row ? half : 0;
-        const int count = on_grid_row ? cells : cells + 1;
-        gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(s), Stream::kTerrainDiamond}, 0, count, g.data());
-        diamond_row(y, x0, count, big, half, delta, g.data());
+        for (int r = r0; r < r1; ++r) {
+          const int y = r * half;
+          if (c_.periodic && y == n_) continue;  // copied from row 0 below
+          const bool on_grid_row = (r % 2) == 0;  // y is a multiple of `big`
+          const int x0 = on_grid_row ? half : 0;
+          const int count = on_grid_row ? cells : cells + 1;
+          gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(s), Stream::kTerrainDiamond}, 0, count, g.data());
+          diamond_row(y, x0, count, big, half, delta, g.data());
+        }
       }
-    }
+    });
     if (c_.periodic) wrap_edges();
   }
 
@@ -160,22 +203,23 @@ class Refiner {
   // Feder's additions: every point of the grid with spacing `step` starting
   // at `origin` gets delta g (reference nodes stay as given).
   void add_to_grid(int level, int origin, int step, float delta, Stream stream) {
-    const int limit = c_.periodic ? n_ - 1 : n_;
-    const int count = origin > limit ? 0 : (limit - origin) / step + 1;
+    const int count = addition_count(origin, step);
+    in_bands(count, count, [&](int j0, int j1) {
 #pragma omp parallel num_threads(threads_)
-    {
-      std::vector<float> g(size_t(count) + 4);
+      {
+        std::vector<float> g(size_t(count) + 4);
 #pragma omp for schedule(static)
-      for (int j = 0; j < count; ++j) {
-        const int y = origin + j * step;
-        gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(level), stream}, 0, count, g.data());
-        float* row = x_ + size_t(y) * w_;
-        for (int i = 0; i < count; ++i) {
-          const int x = origin + i * step;
-          if (!pinned(x, y)) row[x] += delta * g[i];
+        for (int j = j0; j < j1; ++j) {
+          const int y = origin + j * step;
+          gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(level), stream}, 0, count, g.data());
+          float* row = x_ + size_t(y) * w_;
+          for (int i = 0; i < count; ++i) {
+            const int x = origin + i * step;
+            if (!pinned(x, y)) row[x] += delta * g[i];
+          }
         }
       }
-    }
+    });
     if (c_.periodic) wrap_edges();
   }
 
@@ -189,6 +233,7 @@ class Refiner {
   float* x_;
   int threads_;
   int ref_step_ = 0;
+  double done_ = 0, total_ = 0;
 };
 
 }  // namespace

@@ -1,0 +1,129 @@
+// Fuzzes the C ABI the way ctypes callers can get it wrong: raw bytes become
+// the fields of ft_terrain_params / ft_profile_params (struct_size included),
+// with an optional reference grid of the claimed size and a progress callback
+// that cancels after a few reports. Every call must return a known status
+// with a message, hand back either a complete result or NULL, and never
+// crash, leak or hang (the memory cap keeps accepted sizes small).
+#include <memory>
+#include <vector>
+
+#include "fracterra/fracterra.h"
+#include "fuzz_util.hpp"
+
+namespace {
+
+using ft::fuzz::bug;
+using ft::fuzz::Bytes;
+
+struct CancelAfter {
+  int32_t reports_left;
+};
+
+int32_t cancel_after(void* user, double fraction) {
+  if (!(fraction >= 0.0 && fraction <= 1.0)) bug("progress fraction outside [0, 1]");
+  auto* c = static_cast<CancelAfter*>(user);
+  return c->reports_left-- <= 0 ? 1 : 0;
+}
+
+void check_status(ft_status s) {
+  if (s < FT_OK || s > FT_ERR_INTERNAL) bug("unknown status " + std::to_string(s));
+  if (s == FT_ERR_INTERNAL) bug(std::string("FT_ERR_INTERNAL: ") + ft_last_error());
+  if (s != FT_OK && ft_last_error()[0] == '\0') bug("a failure without a message");
+  if (s == FT_OK && ft_last_error()[0] != '\0') bug("a success with an error message");
+}
+
+// Decides the pointer fields: they cannot be random bytes, but whether they
+// are set, how big the reference really is and when to cancel can.
+struct Pointers {
+  std::vector<float> reference;
+  CancelAfter cancel{0};
+  bool use_reference = false, use_progress = false;
+
+  void take(Bytes& in, int64_t claimed_values) {
+    const uint8_t flags = in.take<uint8_t>();
+    use_reference = flags & 1;
+    use_progress = flags & 2;
+    cancel.reports_left = in.take<uint8_t>() % 16;
+    // The reference holds exactly the values its size claims (a caller
+    // passing a shorter array is outside the contract), from the input.
+    if (use_reference && claimed_values >= 0 && claimed_values <= 65 * 65) {
+      reference.resize(size_t(claimed_values));
+      for (float& v : reference) v = in.left() >= 4 ? in.take<float>() : float(in.take<uint8_t>());
+    } else {
+      use_reference = false;
+    }
+  }
+};
+
+void fuzz_terrain(Bytes& in) {
+  ft_terrain_params p;
+  in.take_into(&p, sizeof p);
+  const uint8_t fixups = in.take<uint8_t>();
+  // Mostly a valid struct_size, or the checks behind it are never reached.
+  if (fixups & 1) p.struct_size = sizeof p;
+  // Up to 1024 threads is valid, but starting a thousand threads per call
+  // would make the fuzzer crawl: valid counts are folded to 0..2.
+  if (p.threads >= 0 && p.threads <= 1024) p.threads %= 3;
+  Pointers ptr;
+  const int64_t side = p.reference_size;
+  ptr.take(in, side >= 0 && side <= 65 ? side * side : -1);
+  p.reference = ptr.use_reference ? ptr.reference.data() : nullptr;
+  p.progress = ptr.use_progress ? cancel_after : nullptr;
+  p.progress_user = &ptr.cancel;
+
+  ft_heightfield* hf = reinterpret_cast<ft_heightfield*>(&p);  // must be overwritten
+  const ft_status s = ft_terrain_generate(&p, &hf);
+  check_status(s);
+  if (s != FT_OK) {
+    if (hf != nullptr) bug("failed call left a handle behind");
+    return;
+  }
+  if (!hf) bug("FT_OK without a heightfield");
+  const int32_t w = ft_heightfield_width(hf), h = ft_heightfield_height(hf);
+  if (w < 2 || h < 2 || !ft_heightfield_data(hf)) bug("bad heightfield shape");
+  if ((p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS) &&
+      (w != ft_terrain_side(p.levels) || h != w))
+    bug("midpoint terrain of the wrong side");
+  double mn, mx, mean, sd;
+  check_status(ft_heightfield_stats(hf, &mn, &mx, &mean, &sd));
+  std::vector<float> copy(size_t(w) * size_t(h));
+  check_status(ft_heightfield_copy(hf, copy.data(), copy.size()));
+  if (ft_heightfield_copy(hf, copy.data(), copy.size() - 1) != FT_ERR_INVALID_ARGUMENT)
+    bug("a short copy buffer was accepted");
+  ft_heightfield_free(hf);
+}
+
+void fuzz_profile(Bytes& in) {
+  ft_profile_params p;
+  in.take_into(&p, sizeof p);
+  const uint8_t fixups = in.take<uint8_t>();
+  if (fixups & 1) p.struct_size = sizeof p;
+  Pointers ptr;
+  ptr.take(in, p.reference_size);
+  p.reference = ptr.use_reference ? ptr.reference.data() : nullptr;
+  p.progress = ptr.use_progress ? cancel_after : nullptr;
+  p.progress_user = &ptr.cancel;
+  // The caller's buffer: the documented length (while small), sometimes one short.
+  const int64_t len = ft_profile_length(p.levels);
+  size_t count = len > 0 && len <= (int64_t(1) << 16) + 1 ? size_t(len) : 17;
+  if ((fixups & 2) && count > 0) --count;
+  std::vector<float> dst(count);
+  const ft_status s = ft_profile_generate(&p, (fixups & 4) ? nullptr : dst.data(), count);
+  check_status(s);
+  if (s == FT_OK && (len < 0 || size_t(len) > count)) bug("profile written past the buffer it was given");
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  ft_set_memory_cap(ft::fuzz::kFuzzMemoryCap);
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  Bytes in(data, size);
+  const uint8_t which = in.take<uint8_t>();
+  if (which & 1) fuzz_profile(in);
+  else fuzz_terrain(in);
+  return 0;
+}

@@ -1,0 +1,208 @@
+#!/usr/bin/python3
+"""Writes the seed corpora in tests/fuzz/corpus/<harness>/: one small valid
+file per format and variant the readers accept, plus edge cases they must
+refuse cleanly. Deterministic; rerun after changing it and commit the files.
+Usage: /usr/bin/python3 tests/fuzz/make_corpus.py"""
+import ctypes
+import io
+import json
+import os
+import struct
+import zlib
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CORPUS = os.path.join(HERE, "corpus")
+
+
+def put(harness, name, data):
+    d = os.path.join(CORPUS, harness)
+    os.makedirs(d, exist_ok=True)
+    with open(os.path.join(d, name), "wb") as f:
+        f.write(data if isinstance(data, bytes) else data.encode())
+
+
+# ---------------------------------------------------------------- PNG
+def png(width, height, color_type, depth, rows, text=None, interlace=0, palette=None, trns=None):
+    def chunk(kind, body):
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+    out = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, depth, color_type, 0, 0, interlace))
+    if palette:
+        out += chunk(b"PLTE", palette)
+    if trns:
+        out += chunk(b"tRNS", trns)
+    for k, v in (text or {}).items():
+        out += chunk(b"tEXt", k.encode() + b"\0" + v.encode())
+    raw = b"".join(b"\0" + r for r in rows)  # filter type 0 on every row
+    return out + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b"")
+
+
+def gray16(w, h):
+    return [b"".join(struct.pack(">H", (x * 4099 + y * 977) & 0xFFFF) for x in range(w)) for y in range(h)]
+
+
+def gray8(w, h):
+    return [bytes(((x * 37 + y * 11) & 0xFF) for x in range(w)) for y in range(h)]
+
+
+pngs = {
+    "gray16_5x5_range.png": png(5, 5, 0, 16, gray16(5, 5), {"fracterra:min": "-1.5", "fracterra:max": "2.25"}),
+    "gray8_3x3.png": png(3, 3, 0, 8, gray8(3, 3)),
+    "gray1_9x2.png": png(9, 2, 0, 1, [b"\xa5\x80", b"\x5a\x00"]),
+    "rgb8_3x3.png": png(3, 3, 2, 8, [bytes(range(y * 9, y * 9 + 9)) for y in range(3)]),
+    "rgba16_2x2.png": png(2, 2, 6, 16, [bytes(range(16)), bytes(range(16, 32))]),
+    "gray_alpha8_2x2.png": png(2, 2, 4, 8, [b"\x10\xff\x20\x80", b"\x30\x00\x40\x7f"]),
+    "palette_3x3.png": png(3, 3, 3, 8, [b"\0\1\2", b"\2\1\0", b"\1\1\1"], palette=b"\0\0\0\x80\x80\x80\xff\xff\xff",
+                           trns=b"\xff\x80"),
+    "interlaced16_5x5.png": png(5, 5, 0, 16, gray16(5, 5), interlace=1),
+    "bad_range_text.png": png(3, 3, 0, 16, gray16(3, 3), {"fracterra:min": "nan", "fracterra:max": "-1e400"}),
+    "truncated.png": png(5, 5, 0, 16, gray16(5, 5))[:60],
+    "huge_header.png": png(1 << 20, 1 << 20, 0, 16, gray16(2, 2)),
+    "zero_width.png": png(0, 4, 0, 8, gray8(1, 4)),
+}
+# A stored (uncompressed) 9 x 9 grid is the reference a terrain refines.
+ref16 = png(9, 9, 0, 16, gray16(9, 9), {"fracterra:min": "0", "fracterra:max": "100"})
+pngs["reference_9x9.png"] = ref16
+for k, v in pngs.items():
+    put("png", k, v)
+
+# ---------------------------------------------------------------- PGM
+pgms = {
+    "p5_16_range.pgm": b"P5\n# fracterra-range -1 3\n3 2\n65535\n" + b"".join(struct.pack(">H", v) for v in (0, 1000, 65535, 3, 4, 5)),
+    "p5_8.pgm": b"P5 4 2 255\n" + bytes(range(0, 80, 10)),
+    "p2_plain.pgm": b"P2\n# comment\n3 3\n15\n0 1 2\n3 4 5\n6 7 15\n",
+    "p2_exceeds_maxval.pgm": b"P2 2 1 3 1 9\n",
+    "p5_truncated.pgm": b"P5 100 100 65535\n\0\0",
+    "p5_huge.pgm": b"P5 1048576 1048576 255\n\0",
+    "p5_zero_maxval.pgm": b"P5 2 2 0\n\0\0\0\0",
+    "p2_long_number.pgm": b"P2 1 1 65535 123456789012\n",
+    "comment_no_newline.pgm": b"P5 # fracterra-range 0",
+}
+for k, v in pgms.items():
+    put("pgm", k, v)
+
+
+# ---------------------------------------------------------------- NPY
+def npy(arr, version=1, fortran=False):
+    b = io.BytesIO()
+    np.lib.format.write_array(b, np.asfortranarray(arr) if fortran else arr, version=(version, 0))
+    return b.getvalue()
+
+
+grid = np.arange(25, dtype=np.float32).reshape(5, 5) / 7.0
+npys = {
+    "f4_5x5.npy": npy(grid),
+    "f8_3x4.npy": npy(np.linspace(-1, 1, 12).reshape(3, 4)),
+    "i2_2x3.npy": npy(np.array([[-5, 0, 7], [1, 2, 32767]], dtype=np.int16)),
+    "u1_2x2.npy": npy(np.array([[0, 255], [7, 9]], dtype=np.uint8)),
+    "u8_2x2.npy": npy(np.array([[0, 2**64 - 1], [7, 9]], dtype=np.uint64)),
+    "fortran_f4_2x3.npy": npy(np.arange(6, dtype=np.float32).reshape(2, 3), fortran=True),
+    "v2_f4_3x3.npy": npy(np.ones((3, 3), dtype=np.float32), version=2),
+    "1d_f4_9.npy": npy(np.linspace(0, 1, 9).astype(np.float32)),
+    "3d.npy": npy(np.zeros((2, 2, 2), dtype=np.float32)),
+    "big_endian.npy": npy(np.ones((2, 2), dtype=">f4")),
+    "complex.npy": npy(np.ones((2, 2), dtype=np.complex64)),
+    "short_data.npy": npy(np.ones((4, 4), dtype=np.float32))[:-8],
+    "zero_dim.npy": npy(np.zeros((0, 3), dtype=np.float32)),
+    "nan_inf.npy": npy(np.array([[np.nan, np.inf], [-np.inf, 1]], dtype=np.float32)),
+}
+for k, v in npys.items():
+    put("npy", k, v)
+
+# ---------------------------------------------------------------- polylines
+csvs = {
+    "two_lines.csv": "# x,y,z,radius\n0,0,0,1\n1,0.5,0,0.5\n\n2,2,2,0\n3,3,3,0.25\n",
+    "xy_only.csv": "0,0\n1e-300,-1e300\r\n  2 , 3\n",
+    "bad_nan.csv": "0,0,0\nnan,1,2\n",
+    "bad_fields.csv": "1,2,3,4,5\n",
+    "hex_and_blank.csv": "\n\n0x1p3,1\n\n\n# c\n4,5,6\n",
+    "trailing_garbage.csv": "1,2,3x\n",
+}
+for k, v in csvs.items():
+    put("polyline_csv", k, v)
+jsons = {
+    "two_lines.json": json.dumps({"polylines": [{"points": [[0, 0, 0], [1, 2, 3]], "radii": [1, 0.5]},
+                                                {"points": [[4, 5], [6, 7]]}]}),
+    "empty.json": '{"polylines": []}',
+    "bad_radii.json": '{"polylines": [{"points": [[0, 0]], "radii": [1, 2]}]}',
+    "bad_point.json": '{"polylines": [{"points": [[0]]}]}',
+    "strings.json": '{"polylines": [{"points": [["1", 2]]}]}',
+    "huge_int.json": '{"polylines": [{"points": [[18446744073709551615, -9223372036854775808, 1e400]]}]}',
+    "deep.json": "[" * 200 + "]" * 200,
+    "not_object.json": "[1, 2, 3]",
+}
+for k, v in jsons.items():
+    put("polyline_json", k, v)
+
+# ---------------------------------------------------------------- reference grids
+# byte 0: format (0 png, 1 pgm, 2 npy, 3 1D npy -> profile); byte 1: knobs.
+put("reference_grid", "png_9x9_levels3", bytes([0, 0x20]) + ref16)
+put("reference_grid", "png_9x9_additions_periodic", bytes([0, 0x23]) + ref16)
+put("reference_grid", "pgm_3x3_mean", bytes([1, 0x14]) + pgms["p2_plain.pgm"])
+put("reference_grid", "npy_5x5_std", bytes([2, 0x38]) + npys["f4_5x5.npy"])
+put("reference_grid", "npy_not_square", bytes([2, 0x30]) + npys["f8_3x4.npy"])
+put("reference_grid", "npy_profile_9", bytes([3, 0x10]) + npys["1d_f4_9.npy"])
+put("reference_grid", "npy_periodic_grid", bytes([2, 0x12]) + npy(np.zeros((3, 3), dtype=np.float32)))
+put("reference_grid", "npy_nan_grid", bytes([2, 0x10]) + npys["nan_inf.npy"])
+
+
+# ---------------------------------------------------------------- C ABI params
+# The structs as ctypes lays them out (mirrors native/include/fracterra/terrain.h).
+class TerrainParams(ctypes.Structure):
+    _fields_ = [("struct_size", ctypes.c_uint32), ("method", ctypes.c_int32), ("levels", ctypes.c_int32),
+                ("width", ctypes.c_int32), ("height", ctypes.c_int32), ("hurst", ctypes.c_double),
+                ("sigma", ctypes.c_double), ("seed", ctypes.c_uint64), ("periodic", ctypes.c_int32),
+                ("threads", ctypes.c_int32), ("reference", ctypes.c_void_p), ("reference_size", ctypes.c_int32),
+                ("reference_scale", ctypes.c_int32), ("octaves", ctypes.c_int32), ("lacunarity", ctypes.c_double),
+                ("gain", ctypes.c_double), ("basis", ctypes.c_int32), ("variant", ctypes.c_int32),
+                ("frequency", ctypes.c_double), ("offset", ctypes.c_double), ("rotation", ctypes.c_double),
+                ("warp", ctypes.c_double), ("progress", ctypes.c_void_p), ("progress_user", ctypes.c_void_p)]
+
+
+class ProfileParams(ctypes.Structure):
+    _fields_ = [("struct_size", ctypes.c_uint32), ("levels", ctypes.c_int32), ("hurst", ctypes.c_double),
+                ("sigma", ctypes.c_double), ("seed", ctypes.c_uint64), ("reference", ctypes.c_void_p),
+                ("reference_size", ctypes.c_int32), ("reference_scale", ctypes.c_int32),
+                ("progress", ctypes.c_void_p), ("progress_user", ctypes.c_void_p)]
+
+
+def terrain(**kw):
+    p = TerrainParams(struct_size=ctypes.sizeof(TerrainParams), method=0, levels=4, width=9, height=9, hurst=0.8,
+                      sigma=1.0, seed=1, reference_scale=0, octaves=8, lacunarity=2.0, basis=1, frequency=4.0,
+                      offset=1.0, rotation=0.5)
+    for k, v in kw.items():
+        setattr(p, k, v)
+    return p
+
+
+def profile(**kw):
+    p = ProfileParams(struct_size=ctypes.sizeof(ProfileParams), levels=6, hurst=0.8, sigma=1.0, seed=1)
+    for k, v in kw.items():
+        setattr(p, k, v)
+    return p
+
+
+# Layout of an input: [which: even = terrain, odd = profile] [struct bytes]
+# [fixups: 1 = set struct_size, 2 = buffer one short, 4 = NULL dst]
+# [flags: 1 = reference, 2 = progress] [cancel after N reports] [reference floats...]
+def capi(name, which, params, fixups=1, flags=0, cancel=0, ref=()):
+    put("capi_params", name, bytes([which]) + bytes(params) + bytes([fixups, flags, cancel]) +
+        b"".join(struct.pack("<f", v) for v in ref))
+
+
+capi("terrain_default", 0, terrain())
+capi("terrain_additions_periodic", 0, terrain(method=1, periodic=1, threads=2))
+capi("terrain_fbm_unavailable", 0, terrain(method=2))
+capi("terrain_too_large", 0, terrain(levels=12))
+capi("terrain_nan_hurst", 0, terrain(hurst=float("nan")))
+capi("terrain_struct_size_0", 0, terrain(struct_size=0), fixups=0)
+capi("terrain_cancel_at_2", 0, terrain(levels=6), flags=2, cancel=2)
+capi("terrain_reference_3", 0, terrain(reference_size=3, reference_scale=1), flags=1, ref=[1, 2, 3, 4, 5, 6, 7, 8, 9])
+capi("terrain_reference_bad_size", 0, terrain(reference_size=4), flags=1, ref=[0] * 16)
+capi("profile_default", 1, profile())
+capi("profile_reference", 1, profile(reference_size=5, reference_scale=2), flags=3, cancel=9, ref=[0, 1, 0, -1, 0])
+capi("profile_short_buffer", 1, profile(), fixups=3)
+capi("profile_null_dst", 1, profile(), fixups=5)
+capi("profile_levels_28", 1, profile(levels=28))
+print("corpus written to", CORPUS)

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (clang, ASan + UBSan, FT_FUZZ=ON) in
+# build-fuzz/ and runs each for SECONDS, one after the other, printing the
+# executions each survived. New interesting inputs collect in
+# build-fuzz/fuzz-work/<harness>/ (not committed); a crash is saved under
+# build-fuzz/fuzz-artifacts/<harness>/: copy it to
+# tests/fuzz/regressions/<harness>/ once fixed, and ctest replays it forever.
+# Usage: tests/fuzz/run_fuzzers.sh SECONDS [harness ...]   (default: all)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+secs=${1:?usage: tests/fuzz/run_fuzzers.sh SECONDS [harness ...]}
+shift
+build=${FT_FUZZ_BUILD_DIR:-build-fuzz}
+if (($#)); then
+  harnesses=("$@")
+else
+  harnesses=()
+  for f in tests/fuzz/fuzz_*.cpp; do h=$(basename "$f" .cpp); harnesses+=("${h#fuzz_}"); done
+fi
+
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S . -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+    -DFT_FUZZ=ON -DFT_BUILD_BENCH=OFF >/dev/null
+fi
+cmake --build "$build" -j2 --target "${harnesses[@]/#/fuzz_}" >/dev/null
+
+# Leaks count as failures.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:print_stacktrace=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}
+
+failed=0
+printf '%-18s %8s %12s  %s\n' harness seconds executions result
+for h in "${harnesses[@]}"; do
+  work="$build/fuzz-work/$h" art="$build/fuzz-artifacts/$h/" log="$build/fuzz-logs/$h.log"
+  mkdir -p "$work" "$art" "$(dirname "$log")"
+  dirs=("$work" "tests/fuzz/corpus/$h")
+  [ -d "tests/fuzz/regressions/$h" ] && dirs+=("tests/fuzz/regressions/$h")
+  result=ok
+  "$build/tests/fuzz_$h" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    -artifact_prefix="$art" "${dirs[@]}" >"$log" 2>&1 || { result="FAILED (see $log, $art)"; failed=1; }
+  execs=$(awk '/stat::number_of_executed_units/ {print $2}' "$log" | tail -1)
+  printf '%-18s %8s %12s  %s\n' "$h" "$secs" "${execs:-?}" "$result"
+done
+exit $failed
