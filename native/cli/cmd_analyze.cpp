@@ -81,17 +81,24 @@ json hurst_report(const float* profile, size_t n, const Heightfield* surface, co
     run(hurst_method_name(m), o);
   }
   // The recommendation: the dyadic-aligned variogram on 2^n + 1 grids (exact
-  // for the midpoint and additions generators, which build those grids),
-  // else the plain variogram (all pairs: the most data for a stationary field).
-  // The transect median uses the same.
+  // for the midpoint and additions generators, which build those grids);
+  // otherwise the spectral slope when there are >= 256 samples (5 octaves in
+  // its default band): on spectral-synthesis fields the plain variogram's
+  // small lags see the spectrum's cut-off at Nyquist and read H = 0.3 as
+  // 0.38; below that the plain variogram. The transect median uses the
+  // aligned variogram on dyadic grids, the plain one otherwise.
   const bool grid = surface ? dyadic(surface->width()) && dyadic(surface->height()) : dyadic(int64_t(n));
+  const int64_t shortest = surface ? std::min(surface->width(), surface->height()) : int64_t(n);
   if (surface) {
     HurstOptions o = c.band;
     o.method = grid ? HurstMethod::kVariogramAligned : HurstMethod::kVariogram;
     o.transects = true;
     run("transect_median", o);
   }
-  std::string pick = c.method != "auto" ? c.method : grid ? "variogram_aligned" : "variogram";
+  std::string pick = c.method != "auto" ? c.method
+                     : grid             ? "variogram_aligned"
+                     : shortest >= 256  ? "spectral"
+                                        : "variogram";
   if (!methods.contains(pick)) invalid("--method '" + pick + "' is not one of the estimators run on this input");
   json report;
   if (methods[pick].contains("error")) {
@@ -265,7 +272,7 @@ Registration reg({"analyze",
                         ->required();
                     app.add_option("--method", c->method,
                                    "estimate reported as top-level hurst/dimension: auto (variogram_aligned on "
-                                   "2^n + 1 grids, else variogram), variogram, madogram, variogram_aligned, "
+                                   "2^n + 1 grids, else spectral from 256 samples, else variogram), variogram, madogram, variogram_aligned, "
                                    "madogram_aligned, spectral, transect_median")
                         ->capture_default_str();
                     app.add_option("--lag-min", c->band.lag_min, "smallest lag in samples (0 = 1)")
