@@ -265,6 +265,14 @@ TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
   EXPECT_EQ(j["islands"].get<int>() + j["lakes"].get<int>() + j["open_chains"].get<int>(), s.line_count());
   EXPECT_EQ(j["islands"].get<int>(), count_kind(s, ChainKind::kIsland));
   EXPECT_TRUE(std::filesystem::exists(png));
+  // The coastline file read back by analyze: a curve, D by box counting.
+  ASSERT_EQ(run_cli("analyze " + csv + " --json", &out), 0) << out;
+  const nlohmann::json a = nlohmann::json::parse(out);
+  EXPECT_EQ(a["kind"], "polylines");
+  EXPECT_EQ(a["recommended"], "box_counting");
+  EXPECT_GT(a["dimension"].get<double>(), 1.0);
+  EXPECT_LT(a["dimension"].get<double>(), 1.6);
+  EXPECT_DOUBLE_EQ(a["hurst"].get<double>(), 2 - a["dimension"].get<double>());
   EXPECT_EQ(run_cli("coastline --in " + t + " --level qhalf --out " + csv, &out), 1);
   EXPECT_NE(out.find("--level"), std::string::npos) << out;
   EXPECT_EQ(run_cli("coastline --in " + (dir / "none.npy").string() + " --out " + csv, &out), 1);
