@@ -4,9 +4,11 @@
 
 Builds a terrain with the fracterra add-on (installed, or straight from this
 source tree with the library from build/native), gives it a height-graded
-material, a sea plane, a sun and a camera, saves scene.blend and renders
-preview.png with Cycles (small and few samples: seconds on a CPU). Exits
-non-zero with a message on any error.
+material, a sea plane, a sun and a camera, adds a branching fractal
+lightning bolt and a river-like fractal polyline over it, saves scene.blend,
+renders preview.png with Cycles (small and few samples: seconds on a CPU) and
+exports the POV-Ray scene (scene.pov; --pov-render renders it with povray).
+Exits non-zero with a message on any error.
 """
 
 import argparse
@@ -34,11 +36,14 @@ def parse_args():
     p.add_argument("--seed", type=int, default=7, help="random seed, 0..2^31-1 (default 7)")
     p.add_argument("--size", type=float, default=20.0, help="terrain extent in metres (default 20)")
     p.add_argument("--sea-level", type=float, default=None, help="flatten below this height and add water")
-    p.add_argument("--resolution", default="480x270", help="preview size WxH (default 480x270)")
+    p.add_argument("--resolution", default="480x270", help="preview size WxH, also for --pov-render (default 480x270)")
     p.add_argument("--samples", type=int, default=16, help="Cycles samples (default 16)")
     p.add_argument("--engine", default="CYCLES", choices=["CYCLES", "BLENDER_EEVEE"],
                    help="renderer (default CYCLES: works without a GPU)")
-    p.add_argument("--no-render", action="store_true", help="only build and save the scene")
+    p.add_argument("--no-polylines", action="store_true", help="terrain only")
+    p.add_argument("--no-render", action="store_true", help="do not render the Blender preview")
+    p.add_argument("--no-pov", action="store_true", help="do not export the POV-Ray scene")
+    p.add_argument("--pov-render", action="store_true", help="also render scene.pov with povray (pov.png)")
     p.add_argument("--library", help="libfracterra.so to use when the add-on is run from the source tree")
     args = p.parse_args(argv)
     # Blender clamps operator properties silently; a script should refuse instead.
@@ -50,6 +55,10 @@ def parse_args():
         p.error(f"--sigma must be > 0, got {args.sigma}")
     if not args.size > 0:
         p.error(f"--size must be > 0, got {args.size}")
+    try:
+        args.width, args.height = (int(v) for v in args.resolution.lower().split("x"))
+    except ValueError:
+        p.error(f"--resolution must be WIDTHxHEIGHT, e.g. 480x270; got {args.resolution!r}")
     return args
 
 
@@ -106,6 +115,29 @@ def water(size, level):
     return plane
 
 
+def add_polylines(args, top):
+    """A branching lightning bolt from the sky and a winding line across the terrain."""
+    glow = bpy.data.materials.new("Lightning")
+    glow.use_nodes = True
+    nodes = glow.node_tree.nodes
+    nodes.remove(nodes["Principled BSDF"])
+    emit = nodes.new("ShaderNodeEmission")
+    emit.inputs["Color"].default_value = (0.6, 0.75, 1.0, 1)
+    emit.inputs["Strength"].default_value = 30.0
+    glow.node_tree.links.new(emit.outputs["Emission"], nodes["Material Output"].inputs["Surface"])
+    s = args.size
+    bpy.ops.curve.fracterra_polyline_add(method="FPL3D", start=(0.15 * s, 0.25 * s, top + 0.3 * s),
+                                         end=(0.1 * s, 0.15 * s, top), depth=9, spread=0.12, seed=args.seed,
+                                         branch_prob=0.6, radius=0.004 * s)
+    bolt = bpy.context.active_object
+    bolt.name = "Lightning"
+    bolt.data.materials.append(glow)
+    bpy.ops.curve.fracterra_polyline_add(method="FPL", start=(-0.45 * s, -0.3 * s, top + 0.05 * s),
+                                         end=(0.45 * s, 0.1 * s, top + 0.05 * s), depth=8, spread=0.25,
+                                         seed=args.seed + 1, radius=0.003 * s)
+    bpy.context.active_object.name = "Horizon Line"
+
+
 def look_at(obj, target):
     obj.rotation_euler = (Vector(target) - obj.location).to_track_quat("-Z", "Y").to_euler()
 
@@ -139,13 +171,20 @@ def main():
     terrain.data.materials.append(mat)
     if args.sea_level is not None:
         water(args.size, args.sea_level)
+        bpy.context.view_layer.objects.active = terrain
+        bpy.ops.curve.fracterra_coastline_add(use_quantile=False, level=args.sea_level + 1e-3,
+                                              radius=0.002 * args.size)
+        bpy.context.view_layer.objects.active = terrain
+
+    if not args.no_polylines:
+        add_polylines(args, max(zs))
 
     scene = bpy.context.scene
     bpy.ops.object.light_add(type="SUN", rotation=(math.radians(50), 0, math.radians(35)))
     bpy.context.active_object.data.energy = 4.0
-    bpy.ops.object.camera_add(location=(0.0, -1.35 * args.size, 0.75 * args.size))
+    bpy.ops.object.camera_add(location=(0.0, -1.5 * args.size, 0.8 * args.size))
     camera = bpy.context.active_object
-    look_at(camera, (0, 0, 0.5 * (min(zs) + max(zs)) - 0.1 * args.size))
+    look_at(camera, (0, 0.05 * args.size, 0.5 * (min(zs) + max(zs))))
     scene.camera = camera
     world = scene.world or bpy.data.worlds.new("World")
     scene.world = world
@@ -155,8 +194,8 @@ def main():
     blend = out / "scene.blend"
     bpy.ops.wm.save_as_mainfile(filepath=str(blend), check_existing=False)
     print(f"20_blender_scene: wrote {blend}")
+    w, h = args.width, args.height
     if not args.no_render:
-        w, h = (int(v) for v in args.resolution.lower().split("x"))
         scene.render.engine = args.engine
         scene.render.resolution_x, scene.render.resolution_y = w, h
         scene.render.resolution_percentage = 100
@@ -170,6 +209,14 @@ def main():
         if not Path(scene.render.filepath).is_file():
             raise RuntimeError(f"the render did not write {scene.render.filepath}")
         print(f"20_blender_scene: rendered {scene.render.filepath} in {time.perf_counter() - t0:.1f} s")
+    if not args.no_pov:
+        bpy.context.view_layer.objects.active = terrain
+        pov = out / "scene.pov"
+        result = bpy.ops.export_scene.fracterra_pov(filepath=str(pov), render=args.pov_render,
+                                                    width=w, height=h)
+        if result != {"FINISHED"}:
+            raise RuntimeError(f"POV-Ray export returned {result}")
+        print(f"20_blender_scene: wrote {pov}" + (f" and {out / 'scene.png'}" if args.pov_render else ""))
 
 
 if __name__ == "__main__":

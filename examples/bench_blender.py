@@ -31,7 +31,8 @@ def parse_args():
     p.add_argument("--levels", type=int, default=10, help="fracterra levels: 2^levels + 1 per side (default 10)")
     p.add_argument("--ant-subdivisions", type=int, default=1024, help="A.N.T. vertices per side (default 1024)")
     p.add_argument("--skip-ant", action="store_true", help="time fracterra only")
-    p.add_argument("--threads", type=int, default=0, help="fracterra's Threads preference (0: all cores)")
+    p.add_argument("--threads", type=int, default=None,
+                   help="fracterra's Threads preference (0: all cores; default: the preference, 1)")
     p.add_argument("--library", help="libfracterra.so when running from the source tree")
     return p.parse_args(argv)
 
@@ -114,8 +115,9 @@ def main():
         raise RuntimeError(status)
     from fracterra.blender.panels import preferences
     prefs = preferences(bpy.context)
-    if prefs is not None:
+    if prefs is not None and args.threads is not None:
         prefs.threads = args.threads
+    threads = prefs.threads if prefs is not None else 0
     v, add, regen, own_add, own_regen = bench_fracterra(args)
     rows = [line("fracterra Add Fractal Terrain", v, add), line("fracterra Regenerate (in place)", v, regen),
             line("  fracterra work only: add", v, own_add), line("  fracterra work only: regenerate", v, own_regen)]
@@ -127,7 +129,7 @@ def main():
         for what, ours, theirs in (("add", add, aadd), ("refresh", regen, arefresh)):
             rows.append(f"ratio {what:<8} A.N.T. / fracterra = {best(theirs, 0) / best(ours, 0):6.1f}x wall, "
                         f"{best(theirs, 1) / best(ours, 1):6.1f}x cpu")
-    print(f"bench: Blender {bpy.app.version_string}, {status}, threads {args.threads or 'all'}, "
+    print(f"bench: Blender {bpy.app.version_string}, {status}, threads {threads or 'all'}, "
           f"best of {args.repeat}")
     for r in rows:
         print("bench:", r)

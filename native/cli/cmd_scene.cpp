@@ -23,7 +23,7 @@ struct SceneOptions {
   std::vector<std::string> polylines;
   std::vector<int> kinds;
   std::vector<double> radii;
-  double size = 1, vertical_scale = 0, sea_fraction = NAN, water = NAN;
+  double size = 0, vertical_scale = 0, sea_fraction = NAN, water = NAN;
   pov::CameraOptions camera;
   double sun_azimuth = 235, sun_elevation = 35;
   pov::RenderOptions r;
@@ -36,7 +36,9 @@ int run(SceneOptions& o) {
   if (!o.terrain.empty()) {
     hf = read_heightfield(o.terrain);
     if (!std::isnan(o.sea_fraction) && !std::isnan(o.water)) invalid("give --sea-fraction or --water, not both");
-    pov::set_scene_terrain(p, hf, o.size, o.vertical_scale, o.sea_fraction);
+    // The terrain's own world size (recorded by fracterra) unless --size says otherwise.
+    const double size = o.size > 0 ? o.size : hf.world_size() > 0 ? hf.world_size() : 1.0;
+    pov::set_scene_terrain(p, hf, size, o.vertical_scale, o.sea_fraction);
     if (!std::isnan(o.water)) p.has_water = true, p.water_level = o.water;
   } else if (!std::isnan(o.water)) {
     p.has_water = true, p.water_level = o.water;
@@ -78,8 +80,10 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                                    "sweep radius of the polyline set at the same position where its vertices have "
                                    "none; 0 = by kind and scene size (default)");
                     app.add_option("--pov", o->pov, "scene to write (.pov); the terrain PNG goes beside it")->required();
-                    app.add_option("--size", o->size, "terrain width in world units (x); depth follows the grid")
-                        ->check(CLI::PositiveNumber)->capture_default_str();
+                    app.add_option("--size", o->size,
+                                   "terrain width in world units (x); depth follows the grid; default: the world "
+                                   "size recorded in the terrain file, else 1")
+                        ->check(CLI::NonNegativeNumber);
                     app.add_option("--vertical-scale", o->vertical_scale,
                                    "height multiplier; 0 = relief of 20% of --size")
                         ->check(CLI::NonNegativeNumber)->capture_default_str();
@@ -90,7 +94,8 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                     app.add_option("--azimuth", o->camera.azimuth_deg,
                                    "camera direction seen from the content, degrees from +y towards +x")
                         ->check(CLI::Range(-360.0, 360.0))->capture_default_str();
-                    app.add_option("--elevation", o->camera.elevation_deg, "camera elevation, degrees 1..90")
+                    app.add_option("--elevation", o->camera.elevation_deg,
+                                   "camera elevation, degrees 1..90 (without terrain: 70, or 12 for lightning)")
                         ->check(CLI::Range(1.0, 90.0))->capture_default_str();
                     app.add_option("--fov", o->camera.fov_deg, "horizontal field of view, degrees 5..150")
                         ->check(CLI::Range(5.0, 150.0))->capture_default_str();
@@ -108,8 +113,17 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                         ->capture_default_str();
                     app.add_option("--antialias", o->r.antialias, "anti-aliasing threshold (povray +A), 0 = off")
                         ->check(CLI::Range(0.0, 3.0))->capture_default_str();
-                    return [o] {
+                    auto* elevation = app.get_option("--elevation");
+                    return [o, elevation] {
                       if (o->terrain.empty() && o->polylines.empty()) invalid("give --terrain and/or --polyline");
+                      // Polylines alone are seen from high above unless told otherwise.
+                      if (o->terrain.empty() && elevation->count() == 0) {
+                        bool all_lightning = !o->kinds.empty() && o->kinds.size() == o->polylines.size();
+                        for (int k : o->kinds) all_lightning = all_lightning && k == int(pov::LineKind::kLightning);
+                        o->camera.elevation_deg =
+                            pov::polyline_camera(all_lightning ? pov::LineKind::kLightning : pov::LineKind::kGeneric)
+                                .elevation_deg;
+                      }
                       return run(*o);
                     };
                   },

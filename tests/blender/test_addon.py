@@ -143,6 +143,8 @@ class TerrainAddTest(unittest.TestCase):
             exec(compile(body, str(preset), "exec"), {"bpy": bpy, "op": op})
             values = dict(vars(op))
             values["levels"] = min(values.get("levels", 5), 5)  # keep the test fast
+            for name in ("width", "height"):
+                values[name] = min(values.get(name, 33), 33)
             obj = add_terrain(**values)
             for name, value in values.items():
                 got = getattr(obj.fracterra_terrain, name)
@@ -289,6 +291,153 @@ class RegenerateTest(unittest.TestCase):
     def test_regenerate_needs_a_terrain(self):
         bpy.ops.mesh.primitive_cube_add()
         self.assertFalse(bpy.ops.object.fracterra_terrain_regenerate.poll())
+
+
+def spline_points(obj):
+    out = []
+    for spline in obj.data.splines:
+        co = array.array("f", [0.0]) * (4 * len(spline.points))
+        spline.points.foreach_get("co", co)
+        out.append([tuple(co[4 * i:4 * i + 3]) for i in range(len(spline.points))])
+    return out
+
+
+def as_f32(points):
+    return [tuple(array.array("f", p)) for p in points]
+
+
+class PolylineTest(unittest.TestCase):
+    def setUp(self):
+        clear_scene()
+
+    def add(self, **kw):
+        self.assertEqual(bpy.ops.curve.fracterra_polyline_add(**kw), {"FINISHED"})
+        return bpy.context.active_object
+
+    def test_fpl_between_two_points_matches_the_library(self):
+        kw = dict(method="FPL", rng="NORMAL", spread=0.2, depth=5, seed=3, radius=0.05)
+        obj = self.add(start=(0, 0, 0), end=(4, 2, 0), **kw)
+        self.assertEqual(set(bpy.ops.curve.fracterra_polyline_add.bl_options), {"REGISTER", "UNDO", "PRESET"})
+        lines = spline_points(obj)
+        self.assertEqual(len(lines), 1)
+        self.assertEqual(len(lines[0]), 2 ** 5 + 1)
+        with core().generate_polylines({k: f32(v) if isinstance(v, float) else v for k, v in kw.items()},
+                                       base=[(0, 0, 0), (4, 2, 0)]) as pl:
+            expected, radii = pl.lines()[0]
+        self.assertEqual(lines[0], as_f32(expected))
+        self.assertEqual(lines[0][0], (0.0, 0.0, 0.0))
+        self.assertEqual(lines[0][-1], (4.0, 2.0, 0.0))
+        self.assertAlmostEqual(obj.data.splines[0].points[0].radius, radii[0], places=6)
+        self.assertEqual(obj.data.bevel_depth, 1.0)
+
+    def test_branching_fpl3d_gives_one_spline_per_line(self):
+        obj = self.add(method="FPL3D", depth=6, seed=2, branch_prob=0.8, spread=0.1)
+        with core().generate_polylines(method="FPL3D", depth=6, seed=2, branch_prob=f32(0.8), spread=f32(0.1),
+                                       base=[(0, 0, 0), (10, 0, 0)]) as pl:
+            expected = [line for line, _ in pl.lines() if len(line) >= 2]
+        self.assertGreater(len(expected), 1)
+        self.assertEqual(spline_points(obj), [as_f32(line) for line in expected])
+
+    def test_koch_and_ifs(self):
+        koch = self.add(method="KOCH", depth=2)
+        self.assertEqual(len(spline_points(koch)[0]), 4 ** 2 + 1)
+        ifs = self.add(method="IFS", ifs_points=500, seed=1)
+        self.assertEqual(ifs.type, "MESH")
+        self.assertEqual(len(ifs.data.vertices), 500)
+
+    def test_active_curve_is_the_base_and_its_nodes_survive(self):
+        curve = bpy.data.curves.new("base", "CURVE")
+        spline = curve.splines.new("POLY")
+        spline.points.add(2)
+        nodes = [(0.0, 0.0, 0.0), (3.0, 1.0, 0.0), (5.0, -2.0, 1.0)]
+        for p, xyz in zip(spline.points, nodes):
+            p.co = (*xyz, 1.0)
+        base = bpy.data.objects.new("Base", curve)
+        bpy.context.scene.collection.objects.link(base)
+        base.location = (1.0, 2.0, 3.0)
+        bpy.context.view_layer.objects.active = base
+        obj = self.add(base_source="ACTIVE", depth=3, seed=4)
+        line = spline_points(obj)[0]
+        self.assertEqual(len(line), 2 * 2 ** 3 + 1)
+        self.assertEqual([line[0], line[8], line[16]], nodes)
+        self.assertEqual(tuple(obj.location), (1.0, 2.0, 3.0))
+
+    def test_active_mesh_edge_chain_is_the_base(self):
+        mesh = bpy.data.meshes.new("chain")
+        mesh.from_pydata([(0, 0, 0), (2, 0, 0), (1, 1, 0)], [(0, 2), (2, 1)], [])
+        base = bpy.data.objects.new("Chain", mesh)
+        bpy.context.scene.collection.objects.link(base)
+        bpy.context.view_layer.objects.active = base
+        line = spline_points(self.add(base_source="ACTIVE", depth=2))[0]
+        self.assertEqual([line[0], line[4], line[8]], [(0, 0, 0), (1, 1, 0), (2, 0, 0)])
+
+    def test_bad_bases_are_error_reports(self):
+        expect_report(self, lambda: bpy.ops.curve.fracterra_polyline_add(start=(1, 1, 1), end=(1, 1, 1)),
+                      "same point")
+        bpy.ops.mesh.primitive_cube_add()
+        expect_report(self, lambda: bpy.ops.curve.fracterra_polyline_add(base_source="ACTIVE"), "chain")
+
+
+class TerrainToolsTest(unittest.TestCase):
+    def setUp(self):
+        clear_scene()
+
+    def test_coastline_of_a_terrain_matches_the_library(self):
+        terrain = add_terrain(levels=5, seed=3, world_size=8.0)
+        self.assertEqual(bpy.ops.curve.fracterra_coastline_add(use_quantile=True, quantile=0.5), {"FINISHED"})
+        coast = bpy.context.active_object
+        self.assertEqual(coast.parent, terrain)
+        with core().Heightfield.from_values(33, 33, coords(terrain.data)[2::3]) as hf, \
+                core().coastline(hf, 0.5, quantile=True) as pl:
+            expected = [line for line, _ in pl.lines() if len(line) >= 2]
+        lines = spline_points(coast)
+        self.assertEqual(len(lines), len(expected))
+        self.assertGreater(len(lines), 0)
+        x, y, _ = expected[0][0]
+        self.assertAlmostEqual(lines[0][0][0], (x / 32 - 0.5) * 8.0, places=5)
+        self.assertAlmostEqual(lines[0][0][1], (y / 32 - 0.5) * 8.0, places=5)
+
+    def test_measures_of_a_terrain_and_a_curve(self):
+        add_terrain(levels=7, seed=1, hurst=0.7)
+        self.assertEqual(bpy.ops.object.fracterra_measure(), {"FINISHED"})
+        m = bpy.context.active_object.fracterra_measures
+        self.assertEqual(m.kind, "terrain")
+        self.assertAlmostEqual(m.hurst, 0.7, delta=0.15)  # one realisation of 129^2: a loose check
+        self.assertAlmostEqual(m.dimension, 3 - m.hurst, places=5)
+        bpy.ops.curve.fracterra_polyline_add(depth=8, spread=0.2, seed=5, end=(1, 0, 0))
+        self.assertEqual(bpy.ops.object.fracterra_measure(), {"FINISHED"})
+        m = bpy.context.active_object.fracterra_measures
+        self.assertEqual(m.kind, "polylines")
+        self.assertGreater(m.gamma, 1.0)
+        self.assertGreater(m.eta, m.chi)
+
+    def test_pov_export_writes_and_renders_the_scene(self):
+        import tempfile
+        add_terrain(levels=5, seed=2, use_sea_level=True, sea_level=0.0)
+        bpy.ops.curve.fracterra_polyline_add(start=(-5, 0, 2), end=(5, 0, 2), depth=4)
+        bpy.ops.object.camera_add(location=(0, -20, 10))
+        bpy.context.scene.camera = bpy.context.active_object
+        bpy.ops.object.light_add(type="SUN")
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "scene.pov")
+            self.assertEqual(bpy.ops.export_scene.fracterra_pov(filepath=path, render=True, width=64, height=48),
+                             {"FINISHED"})
+            text = Path(path).read_text()
+            self.assertIn("height_field", text)
+            self.assertIn("sphere_sweep", text + "".join(p.read_text() for p in Path(d).glob("*.inc")))
+            self.assertTrue(Path(d, "scene.png").stat().st_size > 0)
+
+    def test_fractalize_a_cube(self):
+        bpy.ops.mesh.primitive_cube_add()
+        cube = bpy.context.active_object
+        self.assertEqual(bpy.ops.object.fracterra_fractalize(levels=2, sigma=0.05, seed=1), {"FINISHED"})
+        self.assertEqual(len(cube.data.polygons), 6 * 16)
+        self.assertFalse(cube.data.validate(verbose=False))
+        expect_report(self, lambda: bpy.ops.object.fracterra_fractalize(levels=1, scheme="LOOP"), "triang")
+
+    def test_pov_export_into_a_missing_folder_is_an_error_report(self):
+        add_terrain(levels=3)
+        expect_report(self, lambda: bpy.ops.export_scene.fracterra_pov(filepath="/nonexistent-dir/x.pov"))
 
 
 if __name__ == "__main__":

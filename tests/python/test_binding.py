@@ -27,7 +27,7 @@ def test_every_declared_symbol_has_argtypes_and_restype(core):
 def test_binding_declares_every_exported_function_of_its_headers(core, header_dir):
     # Every ft_ function declared in the headers the binding covers has a signature.
     from fracterra.core.binding import SIGNATURES
-    for header in ("core.h", "terrain.h", "mesh.h"):
+    for header in ("core.h", "terrain.h", "mesh.h", "polyline.h", "subdiv.h"):
         text = (header_dir / header).read_text()
         for name in re.findall(r"FT_API [^(;]*?\b(ft_\w+)\s*\(", text):
             assert name in SIGNATURES, f"{name} from {header} has no ctypes signature"
@@ -37,15 +37,26 @@ def _struct_fields(header_text, struct):
     body = re.search(r"typedef struct %s \{(.*?)\} %s;" % (struct, struct), header_text, re.S).group(1)
     body = re.sub(r"/\*.*?\*/", "", body, flags=re.S)
     body = re.sub(r"//[^\n]*", "", body)
-    return re.findall(r"(\w+)\s*;", body)
+    return re.findall(r"(\w+)\s*(?:\[\d+\])?\s*;", body)
 
 
 def test_ctypes_structs_follow_the_header_field_order(core, header_dir):
+    from fracterra.core import binding as b
     from fracterra.core.binding import GridCounts, ProfileParams, TerrainParams
     terrain_h = (header_dir / "terrain.h").read_text()
     mesh_h = (header_dir / "mesh.h").read_text()
     assert [f for f, _ in TerrainParams._fields_] == _struct_fields(terrain_h, "ft_terrain_params")
     assert [f for f, _ in ProfileParams._fields_] == _struct_fields(terrain_h, "ft_profile_params")
+    for header, struct, cls in (("polyline.h", "ft_polyline_params", b.PolylineParams),
+                                ("polyline.h", "ft_polyline_stats", b.PolylineStats),
+                                ("analysis.h", "ft_hurst_params", b.HurstParams),
+                                ("analysis.h", "ft_hurst_result", b.HurstResult),
+                                ("povray.h", "ft_pov_scene_lines", b.PovSceneLines),
+                                ("povray.h", "ft_pov_scene_params", b.PovSceneParams),
+                                ("subdiv.h", "ft_fractalize_params", b.FractalizeParams)):
+        fields = _struct_fields((header_dir / header).read_text(), struct)
+        fields = [f.split("[")[0] for f in fields]
+        assert [f for f, _ in cls._fields_] == fields, struct
     assert [f for f, _ in GridCounts._fields_][:4] == ["vertices", "edges", "faces", "loops"]
 
 
@@ -57,6 +68,12 @@ def test_parameter_enums_match_the_header_values(core, header_dir):
                 "reference_scale": "FT_REFSCALE_"}
     for name, prefix in prefixes.items():
         for ident, _label, _tip, number in p[name].items:
+            assert values[prefix + ident] == number, (name, ident)
+    text = (header_dir / "polyline.h").read_text()
+    values = {name: int(v) for name, v in re.findall(r"(FT_\w+)\s*=\s*(\d+)", text)}
+    q = {x.name: x for x in core.params.POLYLINE_PARAMS}
+    for name, prefix in {"method": "FT_POLYLINE_", "rng": "FT_POLYLINE_RNG_", "ifs_preset": "FT_IFS_"}.items():
+        for ident, _label, _tip, number in q[name].items:
             assert values[prefix + ident] == number, (name, ident)
 
 
@@ -193,3 +210,19 @@ def test_a_file_that_is_not_a_library_is_refused(monkeypatch, tmp_path):
             lib_mod.library()
     finally:
         lib_mod._library = saved
+
+
+def test_params_structs_are_sized_by_the_library(core):
+    lib = core.library()
+    for struct_type, init in ((lib.terrain_params_type, lib.ft_terrain_params_init),
+                              (lib.profile_params_type, lib.ft_profile_params_init)):
+        p = struct_type()
+        lib.check(init(ctypes.byref(p)))
+        assert p.struct_size == ctypes.sizeof(p)
+
+
+def test_world_size_reaches_the_heightfield(core):
+    with core.generate_terrain(levels=3, world_size=42.0) as hf:
+        assert hf.world_size == 42.0
+    with pytest.raises(core.InvalidArgumentError, match="world_size"):
+        core.generate_terrain(levels=3, world_size=0.0)

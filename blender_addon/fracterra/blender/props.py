@@ -1,7 +1,8 @@
 """Blender properties made from the one parameter list (core.params)."""
 
 import bpy
-from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
+from bpy.props import (BoolProperty, EnumProperty, FloatProperty, FloatVectorProperty, IntProperty,
+                       StringProperty)
 
 from ..core import params
 
@@ -29,12 +30,14 @@ def bpy_property(p, update=None):
         return EnumProperty(**kw)
     if p.kind == "string":
         return StringProperty(**kw)
+    if p.kind == "vector":
+        return FloatVectorProperty(size=3, subtype=p.subtype, unit=p.unit, **kw)
     raise TypeError(f"unknown parameter kind {p.kind!r} for {p.name}")
 
 
-def terrain_annotations(update=None):
-    """{name: property} for every terrain setting, for operators and the PropertyGroup."""
-    return {p.name: bpy_property(p, update) for p in params.TERRAIN_PARAMS}
+def terrain_annotations(update=None, param_list=None):
+    """{name: property} for every setting (terrain unless another list is given)."""
+    return {p.name: bpy_property(p, update) for p in param_list or params.TERRAIN_PARAMS}
 
 
 def _on_setting_changed(self, context):
@@ -120,3 +123,26 @@ def draw_settings(layout, data, show_reference_pickers=True):
     sub = col.column(heading="Mesh", align=True)
     sub.prop(data, "uvs")
     sub.prop(data, "smooth")
+
+
+def draw_polyline_settings(layout, data):
+    col = layout.column()
+    col.use_property_split = True
+    col.use_property_decorate = False
+    method = data.method
+    for p in params.POLYLINE_PARAMS:
+        if p.name in ("start", "end") and data.base_source != "POINTS":
+            continue
+        if params.is_used(p, method):
+            col.prop(data, p.name)
+
+
+class FRACTERRA_PG_measures(bpy.types.PropertyGroup):
+    """Measures of an object, filled by object.fracterra_measure (the panel only shows them)."""
+    kind: StringProperty(name="Measured", default="", description="What was measured: terrain or polylines")
+    hurst: FloatProperty(name="H", description="Hurst exponent (variogram over dyadic lags)")
+    dimension: FloatProperty(name="D", description="Fractal dimension (terrain: 3 - H; polylines: box counting)")
+    stderr: FloatProperty(name="Std Error", description="Standard error of the fitted slope")
+    eta: FloatProperty(name="eta", description="Max deviation of the main line from its chord / chord length")
+    chi: FloatProperty(name="chi", description="Mean deviation from the chord / chord length")
+    gamma: FloatProperty(name="gamma", description="Line length / chord length (elongation)")

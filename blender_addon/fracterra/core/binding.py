@@ -17,6 +17,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 1
+ABI_MINOR_MIN = 1  # ft_terrain_params.world_size arrived in 1.1
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -58,7 +59,8 @@ class TerrainParams(Structure):
         ("warp", c_double),
         ("progress", PROGRESS_FN),
         ("progress_user", c_void_p),
-        ("world_size", c_double),  # ABI 1.1
+        # ABI 1.1
+        ("world_size", c_double),
     ]
 
 
@@ -73,6 +75,130 @@ class ProfileParams(Structure):
         ("reference", POINTER(c_float)),
         ("reference_size", c_int32),
         ("reference_scale", c_int32),
+        ("progress", PROGRESS_FN),
+        ("progress_user", c_void_p),
+    ]
+
+
+class PolylineParams(Structure):
+    """ft_polyline_params (fracterra/polyline.h)."""
+    _fields_ = [
+        ("struct_size", c_uint32),
+        ("method", c_int32),
+        ("rng", c_int32),
+        ("depth", c_int32),
+        ("spread", c_double),
+        ("min_length", c_double),
+        ("seed", c_uint64),
+        ("base", POINTER(c_double)),
+        ("base_count", c_int64),
+        ("plane_normal", c_double * 3),
+        ("branch_prob", c_double),
+        ("branch_decay", c_double),
+        ("branch_generations", c_int32),
+        ("ifs_preset", c_int32),
+        ("radius", c_double),
+        ("hurst", c_double),
+        ("ifs_table", POINTER(c_double)),
+        ("ifs_maps", c_int32),
+        ("threads", c_int32),
+        ("ifs_points", c_int64),
+        ("progress", PROGRESS_FN),
+        ("progress_user", c_void_p),
+    ]
+
+
+class PolylineStats(Structure):
+    """ft_polyline_stats (fracterra/polyline.h)."""
+    _fields_ = [
+        ("struct_size", c_uint32),
+        ("reserved0", c_int32),
+        ("line_count", c_int64),
+        ("vertex_count", c_int64),
+        ("eta", c_double),
+        ("chi", c_double),
+        ("gamma", c_double),
+        ("length", c_double),
+        ("mass_dimension", c_double),
+        ("box_dimension", c_double),
+        ("box_std_error", c_double),
+        ("box_min_size", c_double),
+        ("box_max_size", c_double),
+        ("box_sizes", c_int32),
+        ("reserved1", c_int32),
+    ]
+
+
+class HurstParams(Structure):
+    """ft_hurst_params (fracterra/analysis.h)."""
+    _fields_ = [
+        ("struct_size", c_uint32),
+        ("method", c_int32),
+        ("lag_min", c_double),
+        ("lag_max", c_double),
+        ("freq_min", c_double),
+        ("freq_max", c_double),
+        ("transects", c_int32),
+    ]
+
+
+class HurstResult(Structure):
+    """ft_hurst_result (fracterra/analysis.h)."""
+    _fields_ = [
+        ("method", c_int32),
+        ("transects", c_int32),
+        ("hurst", c_double),
+        ("dimension", c_double),
+        ("stderr_hurst", c_double),
+        ("band_lo", c_double),
+        ("band_hi", c_double),
+        ("band_is_frequency", c_int32),
+        ("points", c_int32),
+    ]
+
+
+class PovSceneLines(Structure):
+    """ft_pov_scene_lines (fracterra/povray.h)."""
+    _fields_ = [("lines", c_void_p), ("kind", c_int32), ("radius", c_double)]
+
+
+class PovSceneParams(Structure):
+    """ft_pov_scene_params (fracterra/povray.h)."""
+    _fields_ = [
+        ("struct_size", c_uint32),
+        ("terrain", c_void_p),
+        ("size_x", c_double),
+        ("size_y", c_double),
+        ("vertical_scale", c_double),
+        ("has_water", c_int32),
+        ("water_level", c_double),
+        ("lines", POINTER(PovSceneLines)),
+        ("line_set_count", c_int32),
+        ("camera_azimuth_deg", c_double),
+        ("camera_elevation_deg", c_double),
+        ("camera_fov_deg", c_double),
+        ("camera_aspect", c_double),
+        ("camera_distance_scale", c_double),
+        ("sun_azimuth_deg", c_double),
+        ("sun_elevation_deg", c_double),
+        ("image_path", c_char_p),
+    ]
+
+
+class FractalizeParams(Structure):
+    """ft_fractalize_params (fracterra/subdiv.h)."""
+    _fields_ = [
+        ("struct_size", c_uint32),
+        ("levels", c_int32),
+        ("hurst", c_double),
+        ("sigma", c_double),
+        ("seed", c_uint64),
+        ("scheme", c_int32),
+        ("mode", c_int32),
+        ("fix_boundary", c_int32),
+        ("scale_by_edge_length", c_int32),
+        ("weights", POINTER(c_float)),
+        ("threads", c_int32),
         ("progress", PROGRESS_FN),
         ("progress_user", c_void_p),
     ]
@@ -104,9 +230,9 @@ SIGNATURES = {
     "ft_heightfield_data_mut": (_F32P, [_HF]),
     "ft_heightfield_copy": (c_int32, [_HF, _F32P, c_size_t]),
     "ft_heightfield_stats": (c_int32, [_HF, _F64P, _F64P, _F64P, _F64P]),
-    "ft_heightfield_free": (None, [_HF]),
     "ft_heightfield_world_size": (c_double, [_HF]),
     "ft_heightfield_set_world_size": (c_int32, [_HF, c_double]),
+    "ft_heightfield_free": (None, [_HF]),
     "ft_polylines_create": (c_int32, [_F64P, _F64P, c_int64, POINTER(c_int64), c_int64, POINTER(_PL)]),
     "ft_polylines_line_count": (c_int64, [_PL]),
     "ft_polylines_vertex_count": (c_int64, [_PL]),
@@ -120,6 +246,28 @@ SIGNATURES = {
     "ft_profile_params_init": (c_int32, [POINTER(ProfileParams)]),
     "ft_profile_generate": (c_int32, [POINTER(ProfileParams), _F32P, c_size_t]),
     "ft_profile_length": (c_int64, [c_int32]),
+    "ft_polyline_params_init": (c_int32, [POINTER(PolylineParams)]),
+    "ft_polyline_generate": (c_int32, [POINTER(PolylineParams), POINTER(_PL)]),
+    "ft_polyline_measure": (c_int32, [_PL, POINTER(PolylineStats)]),
+    "ft_hurst_params_init": (c_int32, [POINTER(HurstParams)]),
+    "ft_hurst_profile": (c_int32, [_F32P, c_size_t, POINTER(HurstParams), POINTER(HurstResult)]),
+    "ft_hurst_heightfield": (c_int32, [_HF, POINTER(HurstParams), POINTER(HurstResult)]),
+    "ft_coastline": (c_int32, [_HF, c_double, c_int32, POINTER(_PL)]),
+    "ft_pov_scene_params_init": (c_int32, [POINTER(PovSceneParams)]),
+    "ft_pov_write_scene": (c_int32, [POINTER(PovSceneParams), c_char_p]),
+    "ft_pov_render": (c_int32, [c_char_p, c_char_p, c_int32, c_int32, c_double]),
+    "ft_mesh_create": (c_int32, [_F32P, c_int64, _I32P, c_int64, _I32P, _I32P, _F32P, c_int64,
+                                 POINTER(c_void_p)]),
+    "ft_mesh_set_corners": (c_int32, [c_void_p, _I32P, _F32P, c_int64]),
+    "ft_mesh_vertex_count": (c_int64, [c_void_p]),
+    "ft_mesh_positions": (_F32P, [c_void_p]),
+    "ft_mesh_face_count": (c_int64, [c_void_p]),
+    "ft_mesh_face_sizes": (_I32P, [c_void_p]),
+    "ft_mesh_face_index_count": (c_int64, [c_void_p]),
+    "ft_mesh_face_indices": (_I32P, [c_void_p]),
+    "ft_mesh_free": (None, [c_void_p]),
+    "ft_fractalize_params_init": (c_int32, [POINTER(FractalizeParams)]),
+    "ft_fractalize": (c_int32, [c_void_p, POINTER(FractalizeParams), POINTER(c_void_p)]),
     "ft_grid_counts_get": (c_int32, [c_int32, c_int32, POINTER(GridCounts)]),
     "ft_grid_vertices": (c_int32, [_HF, c_double, c_double, c_double, _F32P, c_size_t]),
     "ft_grid_heights": (c_int32, [_HF, c_double, _F32P, c_size_t, c_size_t]),
@@ -152,20 +300,38 @@ class Library:
             raise LibraryNotFoundError(f"{self.path} is not a fracterra library (no ft_abi_version). {HOW_TO_FIX}")
         abi = self.ft_abi_version()
         self.abi_major, self.abi_minor = abi >> 16, abi & 0xFFFF
-        if self.abi_major != ABI_MAJOR:
+        if self.abi_major != ABI_MAJOR or self.abi_minor < ABI_MINOR_MIN:
             raise LibraryNotFoundError(
                 f"{self.path} has ABI version {self.abi_major}.{self.abi_minor}; this add-on needs "
-                f"{ABI_MAJOR}.x. {HOW_TO_FIX}")
+                f"{ABI_MAJOR}.{ABI_MINOR_MIN} or a later {ABI_MAJOR}.x. {HOW_TO_FIX}")
         if missing:
             raise LibraryNotFoundError(
                 f"{self.path} lacks {', '.join(missing)} (an older build?). {HOW_TO_FIX}")
         self.version = self.ft_version_string().decode()
-        init = TerrainParams()
-        self.ft_terrain_params_init(ctypes.byref(init))
-        if init.struct_size != ctypes.sizeof(TerrainParams):
+        # A later 1.x library may have appended fields to its params structs: let its
+        # _init write into a roomy buffer first, then size ours to match, so the
+        # library never reads or writes past the end of what we pass.
+        self.terrain_params_type = self._sized(TerrainParams, self.ft_terrain_params_init)
+        self.profile_params_type = self._sized(ProfileParams, self.ft_profile_params_init)
+        self.polyline_params_type = self._sized(PolylineParams, self.ft_polyline_params_init)
+        self.hurst_params_type = self._sized(HurstParams, self.ft_hurst_params_init)
+        self.pov_scene_params_type = self._sized(PovSceneParams, self.ft_pov_scene_params_init)
+        self.fractalize_params_type = self._sized(FractalizeParams, self.ft_fractalize_params_init)
+
+    def _sized(self, struct_type, init):
+        probe = (ctypes.c_char * 4096)()
+        self.check(init(ctypes.cast(probe, POINTER(struct_type))))
+        size = c_uint32.from_buffer(probe).value
+        ours = ctypes.sizeof(struct_type)
+        if size < ours:
             raise LibraryNotFoundError(
-                f"{self.path}: ft_terrain_params is {init.struct_size} bytes, the binding expects "
-                f"{ctypes.sizeof(TerrainParams)}; rebuild the add-on and the library together.")
+                f"{self.path}: {struct_type.__name__} is {size} bytes, the binding expects at least {ours}. "
+                f"{HOW_TO_FIX}")
+        if size == ours:
+            return struct_type
+        # Newer library: same leading fields, trailing ones left at their defaults. A
+        # subclass, so byref() of it still passes the POINTER(struct_type) argtypes.
+        return type(struct_type.__name__, (struct_type,), {"_fields_": [("_newer_fields", ctypes.c_char * (size - ours))]})
 
     def has(self, name):
         """True when the loaded library exports `name` (for optional capabilities)."""

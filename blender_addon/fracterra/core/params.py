@@ -100,7 +100,7 @@ TERRAIN_PARAMS = (
           field="periodic"),
     Param("world_size", "float", 20.0, "World Size", "Extent of the terrain along X in scene units "
           "(Y follows from the sample spacing)", min=1e-4, max=1e7, soft_max=10000.0,
-          subtype="DISTANCE", unit="LENGTH", geometry=False, field="world_size"),
+          subtype="DISTANCE", unit="LENGTH", field="world_size"),
     Param("use_sea_level", "bool", False, "Sea Level", "Flatten everything below the sea level"),
     Param("sea_level", "float", 0.0, "Sea Level Height", "Heights below this become flat sea",
           soft_min=-100.0, soft_max=100.0, subtype="DISTANCE", unit="LENGTH"),
@@ -158,18 +158,83 @@ def is_used(param, method):
     return param.methods is None or method in param.methods
 
 
-def fill_struct(struct, values):
-    """Copies the values that have a C field into a ctypes ft_terrain_params.
+def fill_struct(struct, values, param_list=None):
+    """Copies the values that have a C field into a ctypes params struct
+    (ft_terrain_params unless another list is given).
 
-    `values` maps names to values (a dict, or anything with the names as
-    attributes via `values_of`); names it lacks keep the struct's value.
+    `values` maps names to values; names it lacks keep the struct's value.
     """
-    for p in TERRAIN_PARAMS:
+    for p in param_list or TERRAIN_PARAMS:
         if p.field and p.name in values:
             setattr(struct, p.field, p.c_value(values[p.name]))
     return struct
 
 
-def values_of(obj):
+def values_of(obj, param_list=None):
     """{name: value} read from an object whose attributes are the settings."""
-    return {p.name: getattr(obj, p.name) for p in TERRAIN_PARAMS}
+    return {p.name: (tuple(v) if p.kind == "vector" else v)
+            for p in param_list or TERRAIN_PARAMS for v in [getattr(obj, p.name)]}
+
+
+# Polylines (fracterra/polyline.h). Names shared with the library and the CLI:
+# method, rng, spread, depth, min_length, seed.
+POLYLINE_METHODS = (
+    ("FPL", "FPL 2D", "Nikulin's fractal polyline: random orthogonal midpoint displacement in the XY plane", 0),
+    ("FPL3D", "FPL 3D", "Fractal polyline with 3D displacements (lightning)", 1),
+    ("KOCH", "Koch", "Koch curve on every base segment", 2),
+    ("DRAGON", "Dragon", "Harter-Heighway dragon", 3),
+    ("SIERPINSKI", "Sierpinski", "Sierpinski arrowhead curve", 4),
+    ("IFS", "IFS Points", "Attractor of an iterated function system, as a point cloud", 5),
+    ("PROFILE", "Profile", "Voss 1D midpoint profile laid across every base segment (a horizon)", 6),
+)
+POLYLINE_RNGS = (
+    ("UNIFORM", "Uniform", "Displacements uniform on [-s, s]", 0),
+    ("NORMAL", "Normal", "Displacements normal with standard deviation s", 1),
+)
+IFS_PRESETS = (
+    ("FERN", "Fern", "Barnsley's fern", 0),
+    ("DRAGON", "Dragon", "Harter-Heighway dragon", 1),
+    ("KOCH", "Koch", "Koch curve", 2),
+)
+BASE_SOURCES = (
+    ("POINTS", "Two Points", "From Start to End", 0),
+    ("ACTIVE", "Active Object", "Through the points of the active curve, or the edge chain of the active mesh", 1),
+)
+_FPL = frozenset({"FPL", "FPL3D"})
+_RANDOM = frozenset({"FPL", "FPL3D", "PROFILE", "IFS"})
+
+POLYLINE_PARAMS = (
+    Param("method", "enum", "FPL", "Method", "Which fractal curve", items=POLYLINE_METHODS, field="method"),
+    Param("rng", "enum", "UNIFORM", "Generator", "Random generator of the displacements", items=POLYLINE_RNGS,
+          field="rng", methods=_FPL),
+    Param("spread", "float", 0.15, "Spread", "Displacement per unit segment length: s (uniform) or sigma "
+          "(normal). Below 0.1 lightning-like, 0.2-0.3 horizon-like, 0.3+ Brownian loops; profile: sigma",
+          min=0.0, max=10.0, soft_max=1.0, field="spread", methods=frozenset({"FPL", "FPL3D", "PROFILE"})),
+    Param("depth", "int", 8, "Depth", "Recursion depth r: each base segment gets up to 2^r segments "
+          "(Koch 4^r, Sierpinski 3^r)", min=0, max=20, soft_max=14, field="depth"),
+    Param("min_length", "float", 0.0, "Min Length", "Segments shorter than this are not split (delta)",
+          min=0.0, max=1e6, subtype="DISTANCE", unit="LENGTH", field="min_length", methods=_FPL),
+    Param("seed", "int", 1, "Seed", "Random seed", min=0, max=2**31 - 1, field="seed", methods=_RANDOM),
+    Param("branch_prob", "float", 0.0, "Branching", "Probability that a midpoint forks a side branch "
+          "(scaled by 2^(-level/2)); 0 = a single line", min=0.0, max=1.0, subtype="FACTOR",
+          field="branch_prob", methods=_FPL),
+    Param("branch_decay", "float", 0.5, "Branch Decay", "Length and radius factor per branch generation",
+          min=0.01, max=0.99, subtype="FACTOR", field="branch_decay", methods=_FPL),
+    Param("branch_generations", "int", 3, "Branch Generations", "Deepest branch generation", min=1, max=8,
+          field="branch_generations", methods=_FPL),
+    Param("hurst", "float", 0.8, "Hurst H", "Hurst exponent of the profile", min=0.0, max=1.0,
+          subtype="FACTOR", field="hurst", methods=frozenset({"PROFILE"})),
+    Param("ifs_preset", "enum", "FERN", "IFS", "Built-in iterated function system", items=IFS_PRESETS,
+          field="ifs_preset", methods=frozenset({"IFS"})),
+    Param("ifs_points", "int", 20000, "Points", "Attractor points", min=1, max=10_000_000,
+          field="ifs_points", methods=frozenset({"IFS"})),
+    Param("radius", "float", 0.02, "Radius", "Radius at the start of the main line (branches taper)",
+          min=0.0, max=1e4, soft_max=1.0, subtype="DISTANCE", unit="LENGTH", field="radius"),
+    Param("base_source", "enum", "POINTS", "Base", "The base polyline the fractal follows", items=BASE_SOURCES),
+    Param("start", "vector", (0.0, 0.0, 0.0), "Start", "First point of the base segment",
+          subtype="TRANSLATION", unit="LENGTH"),
+    Param("end", "vector", (10.0, 0.0, 0.0), "End", "Last point of the base segment",
+          subtype="TRANSLATION", unit="LENGTH"),
+    Param("bevel", "bool", True, "Bevel", "Give the curve thickness: bevel depth 1 times each point's radius"),
+)
+

@@ -6,7 +6,7 @@ from ctypes import POINTER, byref, c_double, c_float, c_void_p
 
 from . import params as params_mod
 from .errors import CancelledError, InvalidArgumentError
-from .binding import PROGRESS_FN, ProfileParams, TerrainParams, library
+from .binding import PROGRESS_FN, library
 
 
 def float_array(n, fill=0.0):
@@ -47,6 +47,11 @@ class Heightfield:
         out = c_void_p()
         lib.check(lib.ft_heightfield_create(width, height, as_pointer(buf, c_float), byref(out)))
         return cls(out)
+
+    @property
+    def world_size(self):
+        """Extent along x in scene units the library recorded (0 if unknown)."""
+        return self._lib.ft_heightfield_world_size(self.handle)
 
     @property
     def width(self):
@@ -113,7 +118,7 @@ class _ProgressBridge:
 def terrain_struct(values=None, **overrides):
     """An ft_terrain_params initialised by the library, then filled from settings."""
     lib = library()
-    p = TerrainParams()
+    p = lib.terrain_params_type()
     lib.check(lib.ft_terrain_params_init(byref(p)))
     merged = dict(values or {})
     merged.update(overrides)
@@ -158,8 +163,9 @@ def terrain_side(levels):
 def generate_profile(levels=10, hurst=0.8, sigma=1.0, seed=1, reference=None, progress=None):
     """Voss 1D midpoint displacement: 2^levels + 1 floats as array.array('f')."""
     lib = library()
-    p = ProfileParams()
-    lib.check(lib.ft_profile_params_init(byref(p)))
+    p = lib.profile_params_type()
+    as_params = byref(p)  # a subclass of ProfileParams when the library's struct is larger
+    lib.check(lib.ft_profile_params_init(as_params))
     p.levels, p.hurst, p.sigma, p.seed = levels, hurst, sigma, seed
     ref_buf = None
     if reference is not None:
@@ -169,11 +175,11 @@ def generate_profile(levels=10, hurst=0.8, sigma=1.0, seed=1, reference=None, pr
     n = lib.ft_profile_length(levels)
     if n < 0:
         # Let the library word the range error.
-        lib.check(lib.ft_profile_generate(byref(p), None, 0))
+        lib.check(lib.ft_profile_generate(as_params, None, 0))
     out = float_array(n)
     bridge = _ProgressBridge(progress)
     p.progress = bridge.c_fn
-    status = lib.ft_profile_generate(byref(p), as_pointer(out, c_float), len(out))
+    status = lib.ft_profile_generate(as_params, as_pointer(out, c_float), len(out))
     bridge.reraise()
     lib.check(status)
     return out

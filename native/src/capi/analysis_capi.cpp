@@ -20,9 +20,7 @@ ft_hurst_params default_hurst_params() {
 
 ft::HurstOptions to_options(const ft_hurst_params* params) {
   const ft_hurst_params p = params ? *params : default_hurst_params();
-  if (p.struct_size < sizeof(ft_hurst_params))
-    ft::invalid("ft_hurst_params.struct_size is " + std::to_string(p.struct_size) + ", expected " +
-                std::to_string(sizeof(ft_hurst_params)) + " (call ft_hurst_params_init first)");
+  ft::check_struct_size(p.struct_size, sizeof(ft_hurst_params), "ft_hurst_params");
   ft::check_int_range("method", p.method, FT_HURST_VARIOGRAM, FT_HURST_SPECTRAL);
   for (double v : {p.lag_min, p.lag_max, p.freq_min, p.freq_max}) ft::check_finite("band limit", v);
   ft::HurstOptions o;

@@ -32,9 +32,7 @@ FT_API ft_status ft_polyline_measure(const ft_polylines* p, ft_polyline_stats* o
   return guarded([&] {
     ft::check_not_null("polylines", p);
     ft::check_not_null("out", out);
-    if (out->struct_size < sizeof(ft_polyline_stats))
-      ft::invalid("out->struct_size must be sizeof(ft_polyline_stats) = " + std::to_string(sizeof(ft_polyline_stats)) +
-                  ", got " + std::to_string(out->struct_size));
+    ft::check_struct_size(out->struct_size, sizeof(ft_polyline_stats), "ft_polyline_stats");
     const ft::PolylineMeasures m = ft::measure_polylines(p->set);
     ft_polyline_stats s{};
     s.struct_size = sizeof(ft_polyline_stats);

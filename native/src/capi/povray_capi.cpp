@@ -16,13 +16,6 @@ using ft::capi::guarded;
 
 namespace {
 
-// The struct must be the one this library defines (filled by its _init).
-void check_struct_size(uint32_t got, size_t want, const char* name) {
-  if (got != want)
-    ft::invalid(std::string(name) + ".struct_size is " + std::to_string(got) + ", expected " +
-                std::to_string(want) + " (call " + name + "_init first)");
-}
-
 std::string path_arg(const char* name, const char* path) {
   ft::check_not_null(name, path);
   if (!*path) ft::invalid(std::string(name) + " must not be empty");
@@ -55,7 +48,7 @@ FT_API ft_status ft_pov_scene_params_init(ft_pov_scene_params* p) {
 FT_API ft_status ft_pov_write_scene(const ft_pov_scene_params* p, const char* pov_path) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    check_struct_size(p->struct_size, sizeof(ft_pov_scene_params), "ft_pov_scene_params");
+    ft::check_struct_size(p->struct_size, sizeof(ft_pov_scene_params), "ft_pov_scene_params");
     const std::string path = path_arg("pov_path", pov_path);
     ft::check_int_range("line_set_count", p->line_set_count, 0, 1024);
     if (p->line_set_count > 0) ft::check_not_null("lines", p->lines);
@@ -126,7 +119,7 @@ FT_API ft_status ft_pov_write_sweeps(const ft_polylines* lines, const ft_pov_swe
   return guarded([&] {
     ft::check_not_null("lines", lines);
     ft::check_not_null("params", p);
-    check_struct_size(p->struct_size, sizeof(ft_pov_sweep_params), "ft_pov_sweep_params");
+    ft::check_struct_size(p->struct_size, sizeof(ft_pov_sweep_params), "ft_pov_sweep_params");
     const std::string path = path_arg("inc_path", inc_path);
     const std::string id = ft::pov::identifier(name ? name : "", "name");
     ft::pov::SweepOptions o;

@@ -1,9 +1,25 @@
+#include <cstddef>
+#include <cstring>
+
 #include "capi/guard.hpp"
 #include "capi/handles.hpp"
 #include "fracterra/fracterra.h"
 #include "terrain/terrain.hpp"
 
 using ft::capi::guarded;
+
+namespace {
+// Parameter structs grow at the end. A caller built against ABI 1.0 passes
+// the struct without `world_size`; its fields are laid over today's defaults.
+ft_terrain_params upgraded(const ft_terrain_params& p) {
+  constexpr size_t kAbi10Size = offsetof(ft_terrain_params, world_size);
+  if (p.struct_size != kAbi10Size) return p;
+  ft_terrain_params q = ft::default_terrain_params();
+  std::memcpy(&q, &p, kAbi10Size);
+  q.struct_size = sizeof q;
+  return q;
+}
+}  // namespace
 
 extern "C" {
 
@@ -19,7 +35,7 @@ FT_API ft_status ft_terrain_generate(const ft_terrain_params* p, ft_heightfield*
     ft::capi::reset_out(out);
     ft::check_not_null("params", p);
     auto h = std::make_unique<ft_heightfield>();
-    h->hf = ft::generate_terrain(*p);
+    h->hf = ft::generate_terrain(upgraded(*p));
     *out = h.release();
   });
 }

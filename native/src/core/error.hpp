@@ -59,6 +59,15 @@ inline void check_int_range(const char* name, long long value, long long lo, lon
             ", got " + std::to_string(value));
 }
 
+// Parameter structs start with their own size (filled by the *_init call)
+// so that the ABI can grow; a struct of another size was not made for this
+// library (or was never initialised).
+inline void check_struct_size(uint32_t got, size_t want, const char* name) {
+  if (got != want)
+    invalid(std::string(name) + ".struct_size is " + std::to_string(got) + ", expected " + std::to_string(want) +
+            " (fill it with " + name + "_init, or set it to sizeof(" + name + "))");
+}
+
 template <class T>
 void check_not_null(const char* name, const T* p) {
   if (p == nullptr) invalid(std::string(name) + " must not be NULL");

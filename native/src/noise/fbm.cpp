@@ -43,7 +43,6 @@ struct Plan {
 constexpr uint32_t kWarpXLevel = 1000, kWarpYLevel = 2000;
 constexpr int kWarpOctaves = 4;
 
-
 std::vector<Octave> make_octaves(const FbmConfig& c, int count, double lacunarity, double gain,
                                  uint32_t level0) {
   std::vector<Octave> out(static_cast<size_t>(count));

@@ -198,7 +198,7 @@ class Fractalizer {
     // whose addresses do not depend on the thread count.
     constexpr int kChunk = 4096;
     const int chunks = (nv + kChunk - 1) / kChunk;
-#pragma omp parallel num_threads(threads_)
+#pragma omp parallel num_threads(threads_) if (chunks > 1)  // no thread start-up for small levels
     {
       std::vector<float> g(kChunk);
 #pragma omp for schedule(static)
@@ -252,8 +252,7 @@ class Fractalizer {
 }  // namespace detail
 
 Mesh fractalize(const Mesh& mesh, const ft_fractalize_params& p) {
-  if (p.struct_size < sizeof(ft_fractalize_params))
-    invalid("params.struct_size is " + std::to_string(p.struct_size) + "; fill the struct with ft_fractalize_params_init");
+  check_struct_size(p.struct_size, sizeof(ft_fractalize_params), "ft_fractalize_params");
   check_int_range("levels", p.levels, 1, kMaxSubdivLevels);
   check_range("hurst", p.hurst, 0.0, 1.0);
   if (!(p.sigma >= 0.0) || !std::isfinite(p.sigma))

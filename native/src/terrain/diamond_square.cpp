@@ -114,7 +114,7 @@ class Refiner {
   void square_step(int s, int big, int half, float delta) {
     const int cells = n_ / big;
     in_bands(cells, cells, [&](int j0, int j1) {
-#pragma omp parallel num_threads(threads_)
+#pragma omp parallel num_threads(threads_for(size_t(j1 - j0) * size_t(cells)))
       {
         std::vector<float> g(size_t(cells) + 4);
 #pragma omp for schedule(static)
@@ -137,7 +137,7 @@ class Refiner {
     const int cells = n_ / big;
     const int rows = 2 * cells + 1;
     in_bands(rows, cells + 1, [&](int r0, int r1) {
-#pragma omp parallel num_threads(threads_)
+#pragma omp parallel num_threads(threads_for(size_t(r1 - r0) * size_t(cells)))
       {
         std::vector<float> g(size_t(cells) + 5);
 #pragma omp for schedule(static)
@@ -205,7 +205,7 @@ class Refiner {
   void add_to_grid(int level, int origin, int step, float delta, Stream stream) {
     const int count = addition_count(origin, step);
     in_bands(count, count, [&](int j0, int j1) {
-#pragma omp parallel num_threads(threads_)
+#pragma omp parallel num_threads(threads_for(size_t(j1 - j0) * size_t(count)))
       {
         std::vector<float> g(size_t(count) + 4);
 #pragma omp for schedule(static)
@@ -232,6 +232,12 @@ class Refiner {
   const int n_, w_;
   float* x_;
   int threads_;
+
+  // Small passes run on one thread: waking a team costs more than they do,
+  // and on a busy machine every barrier can wait a whole time slice for a
+  // descheduled worker. (Output never depends on the thread count.)
+  static constexpr size_t kMinParallelPoints = size_t(1) << 16;
+  int threads_for(size_t points) const { return points >= kMinParallelPoints ? threads_ : 1; }
   int ref_step_ = 0;
   double done_ = 0, total_ = 0;
 };

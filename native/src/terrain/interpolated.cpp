@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "core/buffer.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
 
@@ -67,6 +69,11 @@ void check_interpolated_lacunarity(double lacunarity) {
 }
 
 Heightfield interpolated_fm(const InterpolatedConfig& c) {
+  // Peak use, last cycle: the old grid, the x-interpolated rows, the new
+  // grid and the returned copy, under 3 x W x H floats in all.
+  check_allocation(checked_bytes(uint64_t(c.width), uint64_t(c.height), 3 * sizeof(float)),
+                   "the interpolated method's grids for a " + std::to_string(c.width) + " x " +
+                       std::to_string(c.height) + " terrain");
   const bool per = c.periodic;
   const int threads = resolve_threads(c.threads);
   const double d0 = per ? std::max(c.width, c.height) : std::max(c.width - 1, c.height - 1);

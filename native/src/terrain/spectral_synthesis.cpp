@@ -6,6 +6,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
@@ -24,6 +25,16 @@ struct FftwFree {
 template <class T>
 using FftwBuffer = std::unique_ptr<T, FftwFree>;
 
+// The plan is destroyed on every path, including a cancellation between
+// planning and execution (the planner lock covers destruction too).
+struct PlanDeleter {
+  void operator()(fftwf_plan_s* plan) const {
+    std::lock_guard<std::mutex> lock(g_fftw_planner);
+    fftwf_destroy_plan(plan);
+  }
+};
+using Plan = std::unique_ptr<fftwf_plan_s, PlanDeleter>;
+
 template <class T>
 FftwBuffer<T> fftw_alloc(size_t count) {
   T* p = static_cast<T*>(fftwf_malloc(sizeof(T) * count));
@@ -40,12 +51,12 @@ Heightfield spectral_synthesis(const SpectralConfig& c) {
                    "spectral synthesis of a " + std::to_string(w) + " x " + std::to_string(h) + " terrain");
   auto coef = fftw_alloc<fftwf_complex>(ncoef);
   auto real = fftw_alloc<float>(size_t(w) * size_t(h));
-  fftwf_plan plan;
+  Plan plan;
   {
     std::lock_guard<std::mutex> lock(g_fftw_planner);
     // FFTW_ESTIMATE: the plan (and so every bit of the output) does not
     // depend on timing measurements, and the arrays are not touched.
-    plan = fftwf_plan_dft_c2r_2d(h, w, coef.get(), real.get(), FFTW_ESTIMATE);
+    plan.reset(fftwf_plan_dft_c2r_2d(h, w, coef.get(), real.get(), FFTW_ESTIMATE));
   }
   if (!plan) fail(FT_ERR_INTERNAL, "FFTW could not plan a " + std::to_string(w) + " x " + std::to_string(h) + " c2r transform");
 
@@ -57,17 +68,28 @@ Heightfield spectral_synthesis(const SpectralConfig& c) {
   const double exponent = -0.5 * (c.hurst + 1.0);  // applied to f^2
   const int threads = resolve_threads(c.threads);
   float* base = &coef.get()[0][0];
+  // Expected variance of the output = sum over the full spectrum of
+  // E|X|^2 (FFTW's c2r is unnormalised): 2 amp^2 per complex coefficient,
+  // amp^2 per real one; the half spectrum stands for both halves except in
+  // the self-mirrored columns kx = 0 and w / 2. Summed per row, then the rows
+  // in order, so the total (and the output) does not depend on the threads.
+  std::vector<double> row_variance(size_t(h), 0.0);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (int32_t ky = 0; ky < h; ++ky) {
     float* row = base + size_t(ky) * hw * 2;
     gaussian_fill(c.seed, Counter{uint32_t(ky), 0, Stream::kSpectral}, 0, size_t(hw) * 2, row);
     const double fy = double(ky <= h / 2 ? ky : ky - h) / h;
+    const bool real_row = ky == 0 || (h % 2 == 0 && ky == h / 2);
+    double var = 0;
     for (int32_t kx = 0; kx < hw; ++kx) {
       const double fx = double(kx) / w, f2 = fx * fx + fy * fy;
-      const float amp = f2 > 0 ? float(std::pow(f2, exponent)) : 0.0f;
-      row[2 * kx] *= amp;
-      row[2 * kx + 1] *= amp;
+      const double amp = f2 > 0 ? std::pow(f2, exponent) : 0.0;
+      row[2 * kx] *= float(amp);
+      row[2 * kx + 1] *= float(amp);
+      const bool mirrored = kx == 0 || (w % 2 == 0 && kx == w / 2);
+      var += (mirrored ? 1.0 : 2.0) * (mirrored && real_row ? 1.0 : 2.0) * amp * amp;
     }
+    row_variance[size_t(ky)] = var;
   }
   // Columns kx = 0 and (w even) kx = w / 2 hold their own mirror images:
   // Hermitian symmetry X(-ky) = conj X(ky) there, and real values where
@@ -85,31 +107,14 @@ Heightfield spectral_synthesis(const SpectralConfig& c) {
     coef_at(kx, 0)[1] = 0.0f;
     if (h % 2 == 0) coef_at(kx, h / 2)[1] = 0.0f;
   }
-  // Expected variance of the output = sum over the full spectrum of
-  // E|X|^2 (FFTW's c2r is unnormalised): 2 amp^2 per complex coefficient,
-  // amp^2 per real one; the half spectrum stands for both halves except in
-  // the self-mirrored columns. Scale to sigma^2, independently of the draws.
   double total = 0;
-  for (int32_t ky = 0; ky < h; ++ky) {
-    const double fy = double(ky <= h / 2 ? ky : ky - h) / h;
-    const bool real_row = ky == 0 || (h % 2 == 0 && ky == h / 2);
-    for (int32_t kx = 0; kx < hw; ++kx) {
-      const double fx = double(kx) / w, f2 = fx * fx + fy * fy;
-      if (f2 == 0) continue;
-      const bool mirrored = kx == 0 || (w % 2 == 0 && kx == w / 2);
-      const double a2 = std::pow(f2, 2 * exponent);
-      total += (mirrored ? 1.0 : 2.0) * (mirrored && real_row ? 1.0 : 2.0) * a2;
-    }
-  }
+  for (double v : row_variance) total += v;
   const float scale = float(c.sigma / std::sqrt(total));
   for (size_t i = 0; i < 2 * ncoef; ++i) base[i] *= scale;
   c.progress.report(0.5);
 
-  fftwf_execute(plan);
-  {
-    std::lock_guard<std::mutex> lock(g_fftw_planner);
-    fftwf_destroy_plan(plan);
-  }
+  fftwf_execute(plan.get());
+  plan.reset();
   Heightfield hf(w, h);
   std::copy(real.get(), real.get() + size_t(w) * size_t(h), hf.data());
   c.progress.report(1.0);

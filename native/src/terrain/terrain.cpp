@@ -14,12 +14,6 @@
 namespace ft {
 namespace {
 
-void check_struct_size(uint32_t got, size_t want, const char* name) {
-  if (got < want)
-    invalid(std::string(name) + ".struct_size is " + std::to_string(got) + ", expected " +
-            std::to_string(want) + " (call " + name + "_init first)");
-}
-
 // The displacement scale when refining from reference values (seed 000 tried
 // sigma = 1 and the mean of the reference values).
 double reference_scale(int mode, double sigma, const float* ref, size_t n) {

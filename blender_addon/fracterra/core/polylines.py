@@ -1,0 +1,150 @@
+"""Fractal polylines (FPL, Koch, dragon, Sierpinski, IFS, profile), their
+measures, and the ft_polylines handle."""
+
+import array
+import ctypes
+import math
+from ctypes import POINTER, byref, c_double, c_int64, c_void_p
+
+from . import params as params_mod
+from .binding import PolylineStats, library
+from .errors import InvalidArgumentError
+from .terrain import _ProgressBridge
+
+
+class Polylines:
+    """Owns an ft_polylines*; a set of polylines sharing one vertex array.
+    Use as a context manager (or call close())."""
+
+    def __init__(self, handle):
+        self._lib = library()
+        self.handle = handle
+
+    @classmethod
+    def from_lines(cls, lines, radii=None):
+        """A set from a list of lines, each a list of (x, y, z); radii: matching lists or None."""
+        lib = library()
+        xyz = array.array("d")
+        rad = array.array("d")
+        offsets = array.array("q", [0])
+        for k, line in enumerate(lines):
+            for i, p in enumerate(line):
+                xyz.extend((p[0], p[1], p[2]))
+                rad.append(radii[k][i] if radii else 0.0)
+            offsets.append(len(xyz) // 3)
+        out = c_void_p()
+
+        def ptr(buf, ctype):
+            return (ctype * len(buf)).from_buffer(buf) if len(buf) else None
+        lib.check(lib.ft_polylines_create(ptr(xyz, c_double), ptr(rad, c_double), len(xyz) // 3,
+                                          ptr(offsets, c_int64), len(offsets) - 1, byref(out)))
+        return cls(out)
+
+    @property
+    def line_count(self):
+        return self._lib.ft_polylines_line_count(self.handle)
+
+    @property
+    def vertex_count(self):
+        return self._lib.ft_polylines_vertex_count(self.handle)
+
+    def offsets(self):
+        n = self.line_count + 1
+        return array.array("q", ctypes.string_at(self._lib.ft_polylines_offsets(self.handle), 8 * n))
+
+    def xyz(self):
+        """3 * vertex_count floats (array.array('d'))."""
+        n = 3 * self.vertex_count
+        return array.array("d", ctypes.string_at(self._lib.ft_polylines_xyz(self.handle), 8 * n)) if n else array.array("d")
+
+    def radii(self):
+        n = self.vertex_count
+        return array.array("d", ctypes.string_at(self._lib.ft_polylines_radii(self.handle), 8 * n)) if n else array.array("d")
+
+    def lines(self):
+        """[(xyz list of tuples, radii list)] per line (for small sets and tests)."""
+        xyz, rad, off = self.xyz(), self.radii(), self.offsets()
+        return [([tuple(xyz[3 * i:3 * i + 3]) for i in range(off[k], off[k + 1])], list(rad[off[k]:off[k + 1]]))
+                for k in range(len(off) - 1)]
+
+    def measure(self):
+        """Seed 003's measures of line 0 (eta, chi, gamma, mass dimension) and the box dimension."""
+        s = PolylineStats()
+        s.struct_size = ctypes.sizeof(PolylineStats)
+        self._lib.check(self._lib.ft_polyline_measure(self.handle, byref(s)))
+        return {name: getattr(s, name) for name, _ in PolylineStats._fields_
+                if not name.startswith(("reserved", "struct_size"))}
+
+    def close(self):
+        if self.handle:
+            self._lib.ft_polylines_free(self.handle)
+            self.handle = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:
+            pass
+
+
+def generate_polylines(values=None, base=None, plane_normal=None, progress=None, threads=0, **overrides):
+    """Generates polylines; returns a Polylines (close it, or use `with`).
+
+    values/overrides: settings by name (params.POLYLINE_PARAMS): method='FPL',
+    rng='UNIFORM', spread=0.1, depth=8, min_length=0, seed=1, ...
+    base: None (the unit segment) or a list of >= 2 (x, y, z) nodes.
+    """
+    lib = library()
+    p = lib.polyline_params_type()
+    lib.check(lib.ft_polyline_params_init(byref(p)))
+    merged = dict(values or {})
+    merged.update(overrides)
+    params_mod.fill_struct(p, merged, params_mod.POLYLINE_PARAMS)
+    p.threads = threads
+    base_buf = None
+    if base is not None:
+        base_buf = array.array("d", [c for pt in base for c in pt[:3]])
+        if len(base_buf) < 6 or len(base_buf) % 3:
+            raise InvalidArgumentError(f"the base polyline needs at least 2 points of 3 coordinates, got {len(base_buf) / 3:g}")
+        p.base = ctypes.cast((c_double * len(base_buf)).from_buffer(base_buf), POINTER(c_double))
+        p.base_count = len(base_buf) // 3
+    if plane_normal is not None:
+        p.plane_normal[:] = [float(c) for c in plane_normal]
+    bridge = _ProgressBridge(progress)
+    p.progress = bridge.c_fn
+    out = c_void_p()
+    status = lib.ft_polyline_generate(byref(p), byref(out))
+    bridge.reraise()
+    lib.check(status)
+    return Polylines(out)
+
+
+def hurst_of_heightfield(hf, method="VARIOGRAM_ALIGNED"):
+    """{'hurst', 'dimension', 'stderr_hurst', ...} of a heightfield (analysis.h)."""
+    from .binding import HurstResult
+    lib = library()
+    p = lib.hurst_params_type()
+    lib.check(lib.ft_hurst_params_init(byref(p)))
+    p.method = HURST_METHODS[method]
+    r = HurstResult()
+    lib.check(lib.ft_hurst_heightfield(hf.handle, byref(p), byref(r)))
+    return {name: getattr(r, name) for name, _ in HurstResult._fields_}
+
+
+HURST_METHODS = {"VARIOGRAM": 0, "MADOGRAM": 1, "VARIOGRAM_ALIGNED": 2, "MADOGRAM_ALIGNED": 3, "SPECTRAL": 4}
+
+
+def coastline(hf, level, quantile=False):
+    """The level set of `hf` as Polylines in sample units (x = column, y = row, z = level)."""
+    lib = library()
+    if not math.isfinite(level):
+        raise InvalidArgumentError(f"the coastline level must be finite, got {level}")
+    out = c_void_p()
+    lib.check(lib.ft_coastline(hf.handle, level, 1 if quantile else 0, byref(out)))
+    return Polylines(out)

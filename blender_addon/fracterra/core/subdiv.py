@@ -1,0 +1,88 @@
+"""Fractalizing polygon meshes with OpenSubdiv in the library (fracterra/subdiv.h)."""
+
+import array
+import ctypes
+from ctypes import byref, c_float, c_int32, c_void_p
+
+from .binding import library
+from .terrain import _ProgressBridge
+
+SCHEMES = {"CATMARK": 0, "LOOP": 1, "BILINEAR": 2}
+MODES = {"VOSS": 0, "ADDITIONS": 1}
+
+
+def _ptr(buf, ctype):
+    return (ctype * len(buf)).from_buffer(buf) if len(buf) else None
+
+
+class Mesh:
+    """Owns an ft_mesh*: positions (3 floats per vertex), face sizes and indices."""
+
+    def __init__(self, handle):
+        self._lib = library()
+        self.handle = handle
+
+    @classmethod
+    def create(cls, positions, face_sizes, face_indices, crease_pairs=None, crease_sharpness=None):
+        """positions: array('f') of 3 per vertex; face_sizes/face_indices: int32 buffers
+        (array 'i' or 'I'); creases: vertex pairs and sharpness in [0, 10]."""
+        lib = library()
+        pairs = crease_pairs if crease_pairs is not None else array.array("i")
+        sharp = crease_sharpness if crease_sharpness is not None else array.array("f")
+        out = c_void_p()
+        lib.check(lib.ft_mesh_create(_ptr(positions, c_float), len(positions) // 3, _ptr(face_sizes, c_int32),
+                                     len(face_sizes), _ptr(face_indices, c_int32), _ptr(pairs, c_int32),
+                                     _ptr(sharp, c_float), len(sharp), byref(out)))
+        return cls(out)
+
+    def _copy(self, pointer, n, fmt, size):
+        return array.array(fmt, ctypes.string_at(pointer, n * size)) if n else array.array(fmt)
+
+    def positions(self):
+        return self._copy(self._lib.ft_mesh_positions(self.handle), 3 * self._lib.ft_mesh_vertex_count(self.handle), "f", 4)
+
+    def face_sizes(self):
+        return self._copy(self._lib.ft_mesh_face_sizes(self.handle), self._lib.ft_mesh_face_count(self.handle), "I", 4)
+
+    def face_indices(self):
+        return self._copy(self._lib.ft_mesh_face_indices(self.handle),
+                          self._lib.ft_mesh_face_index_count(self.handle), "I", 4)
+
+    def close(self):
+        if self.handle:
+            self._lib.ft_mesh_free(self.handle)
+            self.handle = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:
+            pass
+
+
+def fractalize(mesh, levels=4, hurst=0.8, sigma=0.1, seed=1, scheme="CATMARK", mode="VOSS",
+               fix_boundary=False, scale_by_edge_length=False, weights=None, threads=0, progress=None):
+    """A new Mesh: `mesh` subdivided `levels` times with fractal displacements."""
+    lib = library()
+    p = lib.fractalize_params_type()
+    lib.check(lib.ft_fractalize_params_init(byref(p)))
+    p.levels, p.hurst, p.sigma, p.seed = levels, hurst, sigma, seed
+    p.scheme, p.mode = SCHEMES[scheme], MODES[mode]
+    p.fix_boundary, p.scale_by_edge_length, p.threads = int(fix_boundary), int(scale_by_edge_length), threads
+    weight_buf = None
+    if weights is not None:
+        weight_buf = array.array("f", weights)
+        p.weights = ctypes.cast(_ptr(weight_buf, c_float), ctypes.POINTER(c_float))
+    bridge = _ProgressBridge(progress)
+    p.progress = bridge.c_fn
+    out = c_void_p()
+    status = lib.ft_fractalize(mesh.handle, byref(p), byref(out))
+    bridge.reraise()
+    lib.check(status)
+    return Mesh(out)
