@@ -21,6 +21,7 @@ namespace {
 
 struct CoastlineCli {
   std::string in, level = "q0.5", out, preview;
+  bool world = false;
 };
 
 // Draws the chains onto an RGB image of the heightfield's size: islands red,
@@ -47,7 +48,19 @@ int run(const CoastlineCli& c) {
   const Heightfield hf = read_heightfield(c.in);
   const double level = resolve_level(hf, parse_level(c.level, "--level"));
   const PolylineSet set = marching_squares(hf, level);
-  if (!c.out.empty()) write_polylines(set, c.out);
+  if (!c.out.empty() && c.world) {
+    // World units: x spans the recorded world size, y keeps the same sample
+    // spacing, heights share the unit (as the POV-Ray and Blender builders
+    // place the terrain).
+    if (!(hf.world_size() > 0))
+      invalid("--world: '" + c.in + "' records no world size (make it with fracterra terrain --world-size S)");
+    const double k = hf.world_size() / double(hf.width() - 1);
+    PolylineSet scaled = set;
+    for (Vec3& p : scaled.points) p[0] *= k, p[1] *= k;
+    write_polylines(scaled, c.out);
+  } else if (!c.out.empty()) {
+    write_polylines(set, c.out);
+  }
   if (!c.preview.empty()) {
     ReliefOptions ro;
     const HeightStats s = hf.stats();
@@ -79,6 +92,9 @@ Registration reg({"coastline",
                     app.add_option("--out", c->out,
                                    "output polylines .csv (x,y,z,radius; blank line between chains) or .json; "
                                    "x = column, y = row, z = level; closed loops repeat their first vertex");
+                    app.add_flag("--world", c->world,
+                                 "write x, y in world units (the terrain's recorded --world-size across x, same "
+                                 "spacing in y) instead of columns and rows");
                     app.add_option("--preview", c->preview,
                                    "also draw the chains over a shaded relief to this RGB .png (islands red, lakes "
                                    "blue, border chains yellow)");

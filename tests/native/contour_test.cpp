@@ -273,6 +273,22 @@ TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
   EXPECT_GT(a["dimension"].get<double>(), 1.0);
   EXPECT_LT(a["dimension"].get<double>(), 1.6);
   EXPECT_DOUBLE_EQ(a["hurst"].get<double>(), 2 - a["dimension"].get<double>());
+  // --world: columns and rows scaled to the recorded world size.
+  EXPECT_EQ(run_cli("coastline --in " + t + " --world --out " + csv, &out), 1);  // none recorded
+  EXPECT_NE(out.find("world size"), std::string::npos) << out;
+  Heightfield sized = terrain(8, 0.7, 4);
+  sized.set_world_size(10);
+  const std::string wpng = (dir / "w.png").string();  // .png records the world size, .npy cannot
+  write_heightfield(sized, wpng);
+  ASSERT_EQ(run_cli("coastline --in " + wpng + " --level q0.5 --out " + csv, &out), 0) << out;
+  const PolylineSet g = read_polylines(csv);
+  ASSERT_EQ(run_cli("coastline --in " + wpng + " --level q0.5 --world --out " + csv, &out), 0) << out;
+  const PolylineSet w = read_polylines(csv);
+  ASSERT_EQ(w.vertex_count(), g.vertex_count());
+  for (size_t i = 0; i < w.points.size(); ++i) {
+    EXPECT_DOUBLE_EQ(w.points[i][0], g.points[i][0] * (10.0 / 256));
+    EXPECT_DOUBLE_EQ(w.points[i][1], g.points[i][1] * (10.0 / 256));
+  }
   EXPECT_EQ(run_cli("coastline --in " + t + " --level qhalf --out " + csv, &out), 1);
   EXPECT_NE(out.find("--level"), std::string::npos) << out;
   EXPECT_EQ(run_cli("coastline --in " + (dir / "none.npy").string() + " --out " + csv, &out), 1);
