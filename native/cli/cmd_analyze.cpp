@@ -1,17 +1,28 @@
 // fracterra analyze: measure H and D of a heightfield, a profile or a set of
 // polylines, print a JSON report, and optionally plot the log-log fits.
 #include <cmath>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "analysis/box_counting.hpp"
 #include "analysis/hurst.hpp"
+#include "analysis/quantile.hpp"
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
+#include "contour/marching_squares.hpp"
 #include "io/npy.hpp"
+#include "io/polyline_io.hpp"
+#include "io/svg_plot.hpp"
+#include "polyline/polyline_report.hpp"
 
 namespace ft::cli {
 namespace {
@@ -44,7 +55,7 @@ json estimate_json(const HurstEstimate& e) {
             {"points", e.fit.points},
             {"slope", e.fit.slope},
             {"intercept", e.fit.intercept}};
-  if (e.transects) j["transects"] = e.transect_count;
+  if (e.transects) j["transects"] = e.transect_count, j["transect_method"] = hurst_method_name(e.method);
   return j;
 }
 
@@ -69,17 +80,25 @@ json hurst_report(const float* profile, size_t n, const Heightfield* surface, co
     o.method = m;
     run(hurst_method_name(m), o);
   }
+  // The recommendation: the dyadic-aligned variogram on 2^n + 1 grids (exact
+  // for the midpoint and additions generators, which build those grids);
+  // otherwise the spectral slope when there are >= 256 samples (5 octaves in
+  // its default band): on spectral-synthesis fields the plain variogram's
+  // small lags see the spectrum's cut-off at Nyquist and read H = 0.3 as
+  // 0.38; below that the plain variogram. The transect median uses the
+  // aligned variogram on dyadic grids, the plain one otherwise.
+  const bool grid = surface ? dyadic(surface->width()) && dyadic(surface->height()) : dyadic(int64_t(n));
+  const int64_t shortest = surface ? std::min(surface->width(), surface->height()) : int64_t(n);
   if (surface) {
     HurstOptions o = c.band;
-    o.method = HurstMethod::kVariogram;
+    o.method = grid ? HurstMethod::kVariogramAligned : HurstMethod::kVariogram;
     o.transects = true;
     run("transect_median", o);
   }
-  // The recommendation: the dyadic-aligned variogram on 2^n + 1 grids (exact
-  // for the midpoint and additions generators, which build those grids),
-  // else the plain variogram (all pairs: the most data for a stationary field).
-  const bool grid = surface ? dyadic(surface->width()) && dyadic(surface->height()) : dyadic(int64_t(n));
-  std::string pick = c.method != "auto" ? c.method : grid ? "variogram_aligned" : "variogram";
+  std::string pick = c.method != "auto" ? c.method
+                     : grid             ? "variogram_aligned"
+                     : shortest >= 256  ? "spectral"
+                                        : "variogram";
   if (!methods.contains(pick)) invalid("--method '" + pick + "' is not one of the estimators run on this input");
   json report;
   if (methods[pick].contains("error")) {
@@ -92,10 +111,98 @@ json hurst_report(const float* profile, size_t n, const Heightfield* surface, co
   return report;
 }
 
+json box_json(const BoxCountResult& b) {
+  return {{"dimension", b.dimension}, {"stderr", b.std_error}, {"min_size", b.min_size},
+          {"max_size", b.max_size},   {"sizes", b.sizes},       {"counts", b.counts}};
+}
+
+// The median coastline of a heightfield and its box-counting dimension:
+// a second, independent reading of H through D = 2 - H (seed 001). Boxes
+// from 4 cells (finer ones see the straight marching-squares chords) to the
+// box counter's default E / 4.
+json coastline_report(const Heightfield& hf, BoxCountResult* out) {
+  try {
+    const double level = heightfield_quantile(hf, 0.5);
+    const PolylineSet set = marching_squares(hf, level);
+    BoxCountOptions o;
+    o.min_size = 4;
+    const BoxCountResult b = box_counting_dimension(set, o);
+    if (out) *out = b;
+    return {{"level", level},         {"quantile", 0.5},       {"chains", set.line_count()},
+            {"box_counting", box_json(b)}, {"hurst", 2 - b.dimension}};
+  } catch (const Error& e) {
+    return {{"error", e.what()}};
+  }
+}
+
+// A log-log panel: the measured points and the fitted power law over them.
+SvgPanel fit_panel(const std::string& title, const std::string& xl, const std::string& yl,
+                   const std::vector<double>& x, const std::vector<double>& y, double slope, double intercept,
+                   const std::string& fit_label) {
+  SvgPanel p;
+  p.title = title, p.x_label = xl, p.y_label = yl, p.log_x = p.log_y = true;
+  SvgSeries data;
+  data.label = "measured", data.x = x, data.y = y, data.line = false, data.points = true;
+  SvgSeries fit;
+  fit.label = fit_label, fit.dashed = true;
+  for (double v : x) fit.x.push_back(v), fit.y.push_back(std::exp(intercept) * std::pow(v, slope));
+  p.series = {data, fit};
+  return p;
+}
+
+SvgPanel estimate_panel(const Named& n) {
+  const HurstEstimate& e = n.e;
+  char label[96];
+  std::snprintf(label, sizeof label, "H = %.3f +- %.3f, D = %.3f", e.hurst, e.stderr_hurst, e.dimension);
+  const bool lags = hurst_method_uses_lags(e.method);
+  const bool mad = e.method == HurstMethod::kMadogram || e.method == HurstMethod::kMadogramAligned;
+  std::string title = n.name;
+  if (e.transects) title += " (median transect)";
+  return fit_panel(title, lags ? "lag (samples)" : "frequency (cycles per record)",
+                   lags ? (mad ? "E|dX|" : "0.5 E[dX^2]") : "power", e.x, e.y, e.fit.slope, e.fit.intercept, label);
+}
+
+SvgPanel box_panel(const std::string& title, const std::vector<double>& sizes, const std::vector<int64_t>& counts,
+                   double dimension, double std_error) {
+  std::vector<double> x(sizes), y(counts.begin(), counts.end());
+  // Fit line through the centroid of the logs with slope -D.
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < x.size(); ++i) mx += std::log(x[i]) / double(x.size()), my += std::log(y[i]) / double(x.size());
+  char label[96];
+  std::snprintf(label, sizeof label, "D = %.3f +- %.3f", dimension, std_error);
+  return fit_panel(title, "box size", "boxes hit N", x, y, -dimension, my + dimension * mx, label);
+}
+
+// .svg directly; .png through rsvg-convert (Debian librsvg2-bin), written to
+// a temporary name and renamed, like every fracterra file.
+void write_plot(const std::string& path, const SvgFigure& fig) {
+  const std::string ext = extension_of(path);
+  if (ext == ".svg") return write_svg(path, fig);
+  if (ext != ".png") invalid("--plot '" + path + "': use a .svg or .png file name");
+  const std::string svg = path + ".tmp.svg", png = path + ".tmp.png";
+  write_svg(svg, fig);
+  const char* argv[] = {"rsvg-convert", "-b", "white", "-o", png.c_str(), svg.c_str(), nullptr};
+  pid_t pid;
+  int status = -1;
+  const int rc = posix_spawnp(&pid, "rsvg-convert", nullptr, nullptr, const_cast<char* const*>(argv), environ);
+  if (rc == 0) waitpid(pid, &status, 0);
+  std::error_code ec;
+  std::filesystem::remove(svg, ec);
+  if (rc != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::filesystem::remove(png, ec);
+    fail(FT_ERR_IO, "--plot '" + path + "': PNG plots need rsvg-convert (Debian package librsvg2-bin); "
+                    "it is missing or failed: write a .svg instead");
+  }
+  std::filesystem::rename(png, path, ec);
+  if (ec) fail(FT_ERR_IO, "--plot '" + path + "': " + ec.message());
+}
+
 int run(const AnalyzeCli& c) {
   const std::string ext = extension_of(c.file);
   json report = {{"file", c.file}};
   std::vector<Named> fits;
+  SvgFigure fig;
+  fig.title = c.file;
   if (ext == ".npy" || ext == ".png" || ext == ".pgm") {
     Heightfield hf;
     std::vector<float> profile;
@@ -116,10 +223,40 @@ int run(const AnalyzeCli& c) {
       report["kind"] = "heightfield";
       report["width"] = hf.width(), report["height"] = hf.height();
       report.update(hurst_report(nullptr, 0, &hf, c, fits));
+      BoxCountResult coast;
+      report["coastline"] = coastline_report(hf, &coast);
+      if (!coast.sizes.empty())
+        fig.panels.push_back(box_panel("median coastline: box counting", coast.sizes, coast.counts, coast.dimension,
+                                       coast.std_error));
     }
+    std::vector<SvgPanel> panels;
+    for (const Named& n : fits) panels.push_back(estimate_panel(n));
+    fig.panels.insert(fig.panels.begin(), panels.begin(), panels.end());
+  } else if (ext == ".csv" || ext == ".json") {
+    // Curves have a dimension, not a Hurst exponent of their own; for a
+    // coastline-like curve (a level set of an fBm surface) H = 2 - D.
+    const PolylineSet set = read_polylines(c.file);
+    report["kind"] = "polylines";
+    report.update(polyline_report(set));
+    const json& b = report["box_counting"];
+    if (b.contains("dimension") && b["dimension"].is_number()) {
+      const double d = b["dimension"].get<double>();
+      report["dimension"] = d, report["hurst"] = 2 - d;
+      fig.panels.push_back(box_panel("box counting", b["sizes"].get<std::vector<double>>(),
+                                     b["counts"].get<std::vector<int64_t>>(), d, b["std_error"].get<double>()));
+    } else {
+      report["dimension"] = nullptr, report["hurst"] = nullptr;
+    }
+    report["recommended"] = "box_counting";
+    report["note"] = "hurst = 2 - dimension, the relation of a coastline to its surface (seed 001)";
   } else {
     fail(FT_ERR_FORMAT, "'" + c.file + "': unsupported input (use .npy, .png or .pgm heightfields/profiles, or "
                         ".csv / .json polylines)");
+  }
+  if (!c.plot.empty()) {
+    if (fig.panels.empty()) invalid("--plot: no estimate succeeded on this input, nothing to draw");
+    fig.columns = fig.panels.size() > 4 ? 3 : 2;
+    write_plot(c.plot, fig);
   }
   std::printf("%s\n", report.dump(2).c_str());
   return 0;
@@ -135,7 +272,7 @@ Registration reg({"analyze",
                         ->required();
                     app.add_option("--method", c->method,
                                    "estimate reported as top-level hurst/dimension: auto (variogram_aligned on "
-                                   "2^n + 1 grids, else variogram), variogram, madogram, variogram_aligned, "
+                                   "2^n + 1 grids, else spectral from 256 samples, else variogram), variogram, madogram, variogram_aligned, "
                                    "madogram_aligned, spectral, transect_median")
                         ->capture_default_str();
                     app.add_option("--lag-min", c->band.lag_min, "smallest lag in samples (0 = 1)")
@@ -148,7 +285,7 @@ Registration reg({"analyze",
                     app.add_option("--freq-max", c->band.freq_max,
                                    "spectral: highest frequency, cycles per record (0 = n / 8)")
                         ->check(CLI::NonNegativeNumber)->capture_default_str();
-                    app.add_option("--plot", c->plot, "also draw the log-log fits to this .svg");
+                    app.add_option("--plot", c->plot, "also draw the log-log fits to this .svg (or .png, through rsvg-convert)");
                     app.add_flag("--json", c->json_flag, "accepted for compatibility: the report is always JSON");
                     return [c] { return run(*c); };
                   },

@@ -24,16 +24,6 @@ struct CoastlineCli {
   bool world = false;
 };
 
-// Grid coordinates (column, row) to the world units the terrain was made in
-// (x = column / (width - 1) * world size), as scenes place terrains.
-PolylineSet in_world_units(PolylineSet set, const Heightfield& hf) {
-  if (!(hf.world_size() > 0))
-    invalid("the terrain file records no world size; write it with fracterra terrain --world-size, or drop --world");
-  const double k = hf.world_size() / double(hf.width() - 1);
-  for (Vec3& p : set.points) p[0] *= k, p[1] *= k;
-  return set;
-}
-
 // Draws the chains onto an RGB image of the heightfield's size: islands red,
 // lakes blue, chains ending on the border yellow (1-pixel lines, DDA).
 void draw_chains(std::vector<uint8_t>& rgb, int32_t w, int32_t h, const PolylineSet& set) {
@@ -58,7 +48,19 @@ int run(const CoastlineCli& c) {
   const Heightfield hf = read_heightfield(c.in);
   const double level = resolve_level(hf, parse_level(c.level, "--level"));
   const PolylineSet set = marching_squares(hf, level);
-  if (!c.out.empty()) write_polylines(c.world ? in_world_units(set, hf) : set, c.out);
+  if (!c.out.empty() && c.world) {
+    // World units: x spans the recorded world size, y keeps the same sample
+    // spacing, heights share the unit (as the POV-Ray and Blender builders
+    // place the terrain).
+    if (!(hf.world_size() > 0))
+      invalid("--world: '" + c.in + "' records no world size (make it with fracterra terrain --world-size S)");
+    const double k = hf.world_size() / double(hf.width() - 1);
+    PolylineSet scaled = set;
+    for (Vec3& p : scaled.points) p[0] *= k, p[1] *= k;
+    write_polylines(scaled, c.out);
+  } else if (!c.out.empty()) {
+    write_polylines(set, c.out);
+  }
   if (!c.preview.empty()) {
     ReliefOptions ro;
     const HeightStats s = hf.stats();
@@ -91,8 +93,8 @@ Registration reg({"coastline",
                                    "output polylines .csv (x,y,z,radius; blank line between chains) or .json; "
                                    "x = column, y = row, z = level; closed loops repeat their first vertex");
                     app.add_flag("--world", c->world,
-                                 "write x and y in the terrain's world units (its recorded world size) instead of "
-                                 "columns and rows");
+                                 "write x, y in world units (the terrain's recorded --world-size across x, same "
+                                 "spacing in y) instead of columns and rows");
                     app.add_option("--preview", c->preview,
                                    "also draw the chains over a shaded relief to this RGB .png (islands red, lakes "
                                    "blue, border chains yellow)");

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/box_counting.hpp"
 #include "analysis/quantile.hpp"
 #include "contour/marching_squares.hpp"
 #include "core/error.hpp"
@@ -184,6 +185,61 @@ TEST(MarchingSquares, LevelOutsideTheDataOrConstantFieldIsEmptyNaNIsAnError) {
   EXPECT_THROW(marching_squares(Heightfield(1, 5), 0.0), Error);
 }
 
+// ------------------------------------------------ coastline dimension D = 2 - H
+
+// Box sizes for coastlines of sampled terrains: from 4 cells (below that the
+// marching-squares chords straighten the curve and N(eps) tends to 1/eps) up
+// to the box counter's default E / 4.
+BoxCountOptions coastline_boxes() {
+  BoxCountOptions o;
+  o.min_size = 4;
+  return o;
+}
+
+TEST(CoastlineDimension, MedianLevelSetOfMidpointTerrainsHasDimensionTwoMinusH) {
+  // Feder 13.4 (seed 001): a horizontal section of a self-affine surface is a
+  // self-similar curve of dimension 2 - H. Ten 1025^2 midpoint terrains per H
+  // (seeds 1..10), median level, boxes 4..256 cells. Measured: the spread of
+  // single terrains is sd 0.045, so the mean of ten has sd 0.014; the mean's
+  // offset from 2 - H is -0.025 (H = 0.5: the coarsest sampled scales still
+  // curve) and +0.017 (H = 0.8). The bound 0.06 leaves 2.5 sd
+  // beyond that offset.
+  for (double h : {0.5, 0.8}) {
+    std::vector<double> d(10);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int k = 0; k < 10; ++k) {
+      ft_terrain_params p = default_terrain_params();
+      p.levels = 10, p.hurst = h, p.seed = uint64_t(k + 1), p.threads = 1;
+      const Heightfield hf = generate_terrain(p);
+      const PolylineSet s = marching_squares(hf, heightfield_quantile(hf, 0.5));
+      d[size_t(k)] = box_counting_dimension(s, coastline_boxes()).dimension;
+    }
+    double mean = 0;
+    for (double v : d) mean += v / 10;
+    EXPECT_NEAR(mean, 2 - h, 0.06) << "H " << h;
+  }
+}
+
+TEST(CoastlineDimension, ContourOfAConeIsACircleAndOfARampALineOfDimensionOne) {
+  // Known curves through the coastline path: a level set of a cone is a
+  // circle of radius 200 cells, of a tilted plane a straight line; both have
+  // D = 1. A smooth curve covers N = L / eps + O(1) boxes, so the slope
+  // tends to 1 only for boxes well below its size: boxes 1..25 cells (1.016
+  // measured for the circle; 1.04 at 1..100, 1.07 at 4..100).
+  BoxCountOptions small;
+  small.min_size = 1, small.max_size = 25;
+  const Heightfield cone = field(513, 513, [](double x, double y) { return std::hypot(x - 256.3, y - 255.8); });
+  const PolylineSet circle = marching_squares(cone, 200);
+  ASSERT_EQ(circle.line_count(), 1);
+  EXPECT_EQ(chain_kind(circle, 0), ChainKind::kLake);  // land (higher) outside
+  EXPECT_NEAR(box_counting_dimension(circle, small).dimension, 1.0, 0.03);
+  const Heightfield ramp = field(513, 513, [](double x, double y) { return 0.3 * x + 0.7 * y; });
+  const PolylineSet line = marching_squares(ramp, 180);
+  ASSERT_EQ(line.line_count(), 1);
+  EXPECT_EQ(chain_kind(line, 0), ChainKind::kOpen);
+  EXPECT_NEAR(box_counting_dimension(line, small).dimension, 1.0, 0.03);
+}
+
 // ---------------------------------------------------------------------- CLI
 
 int run_cli(const std::string& args, std::string* out = nullptr) {
@@ -209,6 +265,30 @@ TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
   EXPECT_EQ(j["islands"].get<int>() + j["lakes"].get<int>() + j["open_chains"].get<int>(), s.line_count());
   EXPECT_EQ(j["islands"].get<int>(), count_kind(s, ChainKind::kIsland));
   EXPECT_TRUE(std::filesystem::exists(png));
+  // The coastline file read back by analyze: a curve, D by box counting.
+  ASSERT_EQ(run_cli("analyze " + csv + " --json", &out), 0) << out;
+  const nlohmann::json a = nlohmann::json::parse(out);
+  EXPECT_EQ(a["kind"], "polylines");
+  EXPECT_EQ(a["recommended"], "box_counting");
+  EXPECT_GT(a["dimension"].get<double>(), 1.0);
+  EXPECT_LT(a["dimension"].get<double>(), 1.6);
+  EXPECT_DOUBLE_EQ(a["hurst"].get<double>(), 2 - a["dimension"].get<double>());
+  // --world: columns and rows scaled to the recorded world size.
+  EXPECT_EQ(run_cli("coastline --in " + t + " --world --out " + csv, &out), 1);  // none recorded
+  EXPECT_NE(out.find("world size"), std::string::npos) << out;
+  Heightfield sized = terrain(8, 0.7, 4);
+  sized.set_world_size(10);
+  const std::string wpng = (dir / "w.png").string();  // .png records the world size, .npy cannot
+  write_heightfield(sized, wpng);
+  ASSERT_EQ(run_cli("coastline --in " + wpng + " --level q0.5 --out " + csv, &out), 0) << out;
+  const PolylineSet g = read_polylines(csv);
+  ASSERT_EQ(run_cli("coastline --in " + wpng + " --level q0.5 --world --out " + csv, &out), 0) << out;
+  const PolylineSet w = read_polylines(csv);
+  ASSERT_EQ(w.vertex_count(), g.vertex_count());
+  for (size_t i = 0; i < w.points.size(); ++i) {
+    EXPECT_DOUBLE_EQ(w.points[i][0], g.points[i][0] * (10.0 / 256));
+    EXPECT_DOUBLE_EQ(w.points[i][1], g.points[i][1] * (10.0 / 256));
+  }
   EXPECT_EQ(run_cli("coastline --in " + t + " --level qhalf --out " + csv, &out), 1);
   EXPECT_NE(out.find("--level"), std::string::npos) << out;
   EXPECT_EQ(run_cli("coastline --in " + (dir / "none.npy").string() + " --out " + csv, &out), 1);
