@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <vector>
@@ -104,5 +105,17 @@ TEST(AtomicFile, MissingFolderIsAClearIoError) {
   }
 }
 
+}  // namespace
+}  // namespace ft
+
+namespace ft {
+namespace {
+TEST(Rng, AllDispatchPathsGiveTheSameBits) {
+  const Counter c{5, 6, Stream::kTerrainSquare};
+  std::vector<float> a(10001), b(10001);
+  detail::gaussian_fill_on_path(true, 99, c, 3, a.size(), a.data());
+  detail::gaussian_fill_on_path(false, 99, c, 3, b.size(), b.data());
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0) << "path " << detail::dispatch_path();
+}
 }  // namespace
 }  // namespace ft

@@ -22,7 +22,7 @@ extern "C" {
 /// incompatibly; the minor one when functions or trailing struct fields are
 /// added. Bindings refuse a library whose major number differs from theirs.
 #define FT_ABI_VERSION_MAJOR 1
-#define FT_ABI_VERSION_MINOR 0
+#define FT_ABI_VERSION_MINOR 1
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.
@@ -85,6 +85,10 @@ FT_API ft_status ft_heightfield_copy(const ft_heightfield* hf, float* dst, size_
 /// Minimum, maximum, mean and standard deviation of the samples (any may be NULL).
 FT_API ft_status ft_heightfield_stats(const ft_heightfield* hf, double* min, double* max,
                                       double* mean, double* std);
+/// Extent along x in scene units that the heightfield stands for (0 if unknown).
+FT_API double ft_heightfield_world_size(const ft_heightfield* hf);
+/// Sets the extent along x in scene units (finite, > 0).
+FT_API ft_status ft_heightfield_set_world_size(ft_heightfield* hf, double world_size);
 /// Frees the handle; NULL is a harmless no-op.
 FT_API void ft_heightfield_free(ft_heightfield* hf);
 

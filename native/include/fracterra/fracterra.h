@@ -9,5 +9,10 @@
 
 #include "core.h"
 #include "terrain.h"
+#include "analysis.h"
+#include "subdiv.h"
+#include "mesh.h"
+#include "polyline.h"
+#include "povray.h"
 
 #endif

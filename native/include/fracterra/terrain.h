@@ -22,11 +22,11 @@ enum {
 
 /// Noise bases for FT_TERRAIN_FBM (ft_terrain_params.basis).
 enum {
-  FT_BASIS_VALUE = 0,
-  FT_BASIS_GRADIENT = 1,       ///< Perlin gradient noise
-  FT_BASIS_SIMPLEX = 2,
-  FT_BASIS_CELLULAR_F1 = 3,    ///< Voronoi distance to the nearest feature point
-  FT_BASIS_CELLULAR_F2F1 = 4   ///< Voronoi F2 - F1
+  FT_BASIS_VALUE = 0,          ///< lattice values, quintic interpolation; [-1, 1], mean 0
+  FT_BASIS_GRADIENT = 1,       ///< Perlin gradient noise; [-1, 1], mean 0
+  FT_BASIS_SIMPLEX = 2,        ///< simplex noise; [-1, 1], mean 0; not periodic
+  FT_BASIS_CELLULAR_F1 = 3,    ///< Voronoi distance to the nearest feature point, in cells; [0, 1.17]
+  FT_BASIS_CELLULAR_F2F1 = 4   ///< Voronoi F2 - F1, in cells; >= 0
 };
 
 /// Octave combinations for FT_TERRAIN_FBM (ft_terrain_params.variant).
@@ -55,7 +55,9 @@ typedef struct ft_terrain_params {
   double hurst;              ///< Hurst exponent H in [0, 1]; default 0.8
   double sigma;              ///< vertical scale (std of the first displacement), > 0; default 1
   uint64_t seed;             ///< any 64-bit value; default 1
-  int32_t periodic;          ///< non-zero: wrap-around neighbours, the terrain tiles; default 0
+  int32_t periodic;          ///< non-zero: the terrain tiles (wrap-around neighbours; fbm: whole
+                             ///< cells per period, no rotation, not simplex); default 0.
+                             ///< FT_TERRAIN_SPECTRAL always tiles.
   int32_t threads;           ///< 0: all cores; otherwise 1..1024. Output never depends on it.
   /* Reference points (midpoint and additions): a coarse (2^m + 1)^2 grid,
      row-major, taken as steps 1..m; the values survive exactly at their nodes. */
@@ -63,19 +65,24 @@ typedef struct ft_terrain_params {
   int32_t reference_size;    ///< 2^m + 1 with 1 <= m <= levels; ignored when reference is NULL
   int32_t reference_scale;   ///< FT_REFSCALE_*; default FT_REFSCALE_SIGMA
   /* fBm (FT_TERRAIN_FBM) and the interpolated variant. */
-  int32_t octaves;           ///< 1..30; default 8
+  int32_t octaves;           ///< 1..30, and the finest octave must stay within float
+                             ///< resolution (lattice coordinates <= 2^17); default 8
   double lacunarity;         ///< frequency ratio between octaves (> 1; default 2), or the
                              ///< scale factor 1/r per cycle of FT_TERRAIN_INTERPOLATED
-  double gain;               ///< amplitude ratio G between octaves; <= 0 means 2^-H (default 0)
+  double gain;               ///< amplitude ratio G between octaves, (0, 1]; <= 0 means
+                             ///< lacunarity^-H, i.e. 2^-H at lacunarity 2 (default 0)
   int32_t basis;             ///< FT_BASIS_*; default FT_BASIS_GRADIENT
   int32_t variant;           ///< FT_FBM_*; default FT_FBM_STANDARD
-  double frequency;          ///< base frequency in cycles across the width; default 4
+  double frequency;          ///< base-octave lattice cells across the width, > 0; default 4
   double offset;             ///< ridged/hybrid/hetero offset; default 1
-  double rotation;           ///< domain rotation per octave in radians; default 0.5
-  double warp;               ///< domain-warp strength (0 = off); default 0
+  double rotation;           ///< domain rotation per octave in radians (not with periodic); default 0.5
+  double warp;               ///< domain-warp displacement in base cells, 0 (off)..64; default 0
   /* Progress and cancellation; both may be NULL. */
   ft_progress_fn progress;
   void* progress_user;
+  /* Added in ABI 1.1 (trailing fields). */
+  double world_size;         ///< extent of the terrain along x in scene units (> 0; default 10);
+                             ///< y follows the aspect ratio; heights are in the same units
 } ft_terrain_params;
 
 /// Fills `p` with the defaults documented above. `p` must not be NULL.

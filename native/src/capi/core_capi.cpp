@@ -77,6 +77,16 @@ FT_API ft_status ft_heightfield_stats(const ft_heightfield* h, double* min, doub
   });
 }
 
+FT_API double ft_heightfield_world_size(const ft_heightfield* h) { return h ? h->hf.world_size() : 0.0; }
+
+FT_API ft_status ft_heightfield_set_world_size(ft_heightfield* h, double world_size) {
+  return guarded([&] {
+    ft::check_not_null("heightfield", h);
+    ft::check_positive("world_size", world_size);
+    h->hf.set_world_size(world_size);
+  });
+}
+
 FT_API void ft_heightfield_free(ft_heightfield* h) { delete h; }
 
 FT_API ft_status ft_polylines_create(const double* xyz, const double* radii, int64_t vertex_count,

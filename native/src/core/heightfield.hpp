@@ -28,9 +28,13 @@ class Heightfield {
   float at(int32_t x, int32_t y) const noexcept { return samples_[size_t(y) * width_ + x]; }
 
   HeightStats stats() const;
+  // Extent along x in scene units that the samples cover (0: unknown).
+  double world_size() const noexcept { return world_size_; }
+  void set_world_size(double size) noexcept { world_size_ = size; }
 
  private:
   int32_t width_ = 0, height_ = 0;
+  double world_size_ = 0.0;
   Buffer<float> samples_;
 };
 

@@ -83,6 +83,10 @@ namespace detail {
 // Written without libm calls (polynomial log and sincos) so it vectorises and
 // gives identical results on every path. Accuracy ~1e-7 relative.
 void box_muller(float u1, float u2, float& z0, float& z1);
+// "avx2" or "baseline": the path gaussian_fill takes on this machine.
+const char* dispatch_path();
+// gaussian_fill on a chosen path (AVX2 only where the CPU has it).
+void gaussian_fill_on_path(bool avx2, uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out);
 }  // namespace detail
 
 }  // namespace ft

@@ -42,6 +42,7 @@ GrayImage heightfield_to_image(const Heightfield& hf) {
   img.text["fracterra:min"] = format_number(s.min);
   img.text["fracterra:max"] = format_number(s.max);
   img.text["Software"] = "fracterra";
+  if (hf.world_size() > 0) img.text["fracterra:world_size"] = format_number(hf.world_size());
   return img;
 }
 
@@ -58,6 +59,10 @@ Heightfield image_to_heightfield(const GrayImage& image) {
   Heightfield hf(image.width, image.height);
   float* z = hf.data();
   for (size_t i = 0; i < hf.size(); ++i) z[i] = float(lo + (hi - lo) * (image.pixels[i] / full));
+  if (auto ws = image.text.find("fracterra:world_size"); ws != image.text.end()) {
+    const double v = std::strtod(ws->second.c_str(), nullptr);
+    if (std::isfinite(v) && v > 0) hf.set_world_size(v);
+  }
   return hf;
 }
 

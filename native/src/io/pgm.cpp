@@ -23,7 +23,8 @@ GrayImage decode_pgm(const std::string& bytes, const std::string& name) {
         const size_t end = bytes.find('\n', pos);
         std::istringstream c(bytes.substr(pos + 1, end == std::string::npos ? std::string::npos : end - pos - 1));
         std::string tag, lo, hi;
-        if (c >> tag >> lo >> hi && tag == "fracterra-range") {
+        if (c >> tag >> lo && tag == "fracterra-world-size") img.text["fracterra:world_size"] = lo;
+        else if (c >> hi && tag == "fracterra-range") {
           img.text["fracterra:min"] = lo;
           img.text["fracterra:max"] = hi;
         }
@@ -78,6 +79,8 @@ void write_pgm(const std::string& path, const GrayImage& image) {
   auto lo = image.text.find("fracterra:min"), hi = image.text.find("fracterra:max");
   if (lo != image.text.end() && hi != image.text.end())
     out += "# fracterra-range " + lo->second + " " + hi->second + "\n";
+  if (auto ws = image.text.find("fracterra:world_size"); ws != image.text.end())
+    out += "# fracterra-world-size " + ws->second + "\n";
   out += std::to_string(image.width) + " " + std::to_string(image.height) + "\n" +
          (image.bit_depth == 16 ? "65535" : "255") + "\n";
   const size_t n = image.pixels.size();

@@ -113,6 +113,30 @@ void write_png(const std::string& path, const GrayImage& image) {
   out.commit();
 }
 
+void write_png_rgb(const std::string& path, int32_t width, int32_t height, const uint8_t* rgb) {
+  if (width <= 0 || height <= 0 || !rgb) invalid("an RGB PNG needs a positive size and pixel data");
+  AtomicFile out(path);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, on_warning);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!info) {
+    png_destroy_write_struct(&png, nullptr);
+    fail(FT_ERR_OUT_OF_MEMORY, "libpng could not start a writer");
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    fail(FT_ERR_IO, "libpng failed writing '" + path + "'");
+  }
+  png_init_io(png, out.file());
+  png_set_compression_level(png, 3);
+  png_set_IHDR(png, info, uint32_t(width), uint32_t(height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int32_t y = 0; y < height; ++y) png_write_row(png, rgb + size_t(y) * width * 3);
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+  out.commit();
+}
+
 GrayImage decode_png(const std::string& bytes, const std::string& name) {
   if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0)
     fail(FT_ERR_FORMAT, "'" + name + "' is not a PNG file");

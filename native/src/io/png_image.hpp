@@ -18,6 +18,8 @@ struct GrayImage {
 
 // Writes atomically; 8-bit images use the low byte range 0..255 of `pixels`.
 void write_png(const std::string& path, const GrayImage& image);
+// Writes an 8-bit RGB image (width * height * 3 bytes, row 0 on top) atomically.
+void write_png_rgb(const std::string& path, int32_t width, int32_t height, const uint8_t* rgb);
 // Reads gray, gray+alpha, palette or RGB(A) PNGs of any depth; colour is
 // turned into luma. 8-bit images come back with bit_depth 8 (values 0..255).
 GrayImage read_png(const std::string& path);

@@ -5,8 +5,11 @@
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "noise/fbm.hpp"
 #include "terrain/diamond_square.hpp"
+#include "terrain/interpolated.hpp"
 #include "terrain/profile.hpp"
+#include "terrain/spectral_synthesis.hpp"
 
 namespace ft {
 namespace {
@@ -51,6 +54,16 @@ void check_reference(const float* ref, int32_t size, int levels, bool periodic) 
   }
 }
 
+FbmConfig fbm_config(const ft_terrain_params& p) {
+  FbmConfig c;
+  c.width = p.width, c.height = p.height, c.octaves = p.octaves, c.lacunarity = p.lacunarity;
+  c.gain = p.gain, c.hurst = p.hurst, c.basis = p.basis, c.variant = p.variant;
+  c.frequency = p.frequency, c.offset = p.offset, c.rotation = p.rotation, c.warp = p.warp;
+  c.sigma = p.sigma, c.periodic = p.periodic != 0, c.seed = p.seed, c.threads = p.threads;
+  c.progress = Progress(p.progress, p.progress_user);
+  return c;
+}
+
 }  // namespace
 
 int dyadic_levels(int64_t size) {
@@ -86,6 +99,7 @@ ft_terrain_params default_terrain_params() {
   p.offset = 1.0;
   p.rotation = 0.5;
   p.warp = 0.0;
+  p.world_size = 10.0;
   return p;
 }
 
@@ -94,6 +108,7 @@ void validate_terrain_params(const ft_terrain_params& p) {
   check_int_range("method", p.method, FT_TERRAIN_MIDPOINT, FT_TERRAIN_INTERPOLATED);
   check_range("hurst", p.hurst, 0.0, 1.0);
   check_positive("sigma", p.sigma);
+  check_positive("world_size", p.world_size);
   check_int_range("threads", p.threads, 0, 1024);
   check_int_range("reference_scale", p.reference_scale, FT_REFSCALE_SIGMA, FT_REFSCALE_STD);
   if (p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS) {
@@ -109,6 +124,8 @@ void validate_terrain_params(const ft_terrain_params& p) {
     check_allocation(checked_bytes(uint64_t(p.width), uint64_t(p.height), sizeof(float)),
                      "a " + std::to_string(p.width) + " x " + std::to_string(p.height) + " terrain");
     if (p.reference) invalid("reference points are supported by the midpoint and additions methods only");
+    if (p.method == FT_TERRAIN_FBM) validate_fbm(fbm_config(p));
+    if (p.method == FT_TERRAIN_INTERPOLATED) check_interpolated_lacunarity(p.lacunarity);
   }
 }
 
@@ -132,8 +149,18 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
         c.sigma = reference_scale(p.reference_scale, p.sigma, p.reference,
                                   size_t(p.reference_size) * size_t(p.reference_size));
       }
-      return diamond_square(c);
+      Heightfield hf = diamond_square(c);
+      hf.set_world_size(p.world_size);
+      return hf;
     }
+    case FT_TERRAIN_FBM:
+      return fbm(fbm_config(p));
+    case FT_TERRAIN_SPECTRAL:
+      return spectral_synthesis({p.width, p.height, p.hurst, p.sigma, p.seed, p.threads,
+                                 Progress(p.progress, p.progress_user)});
+    case FT_TERRAIN_INTERPOLATED:
+      return interpolated_fm({p.width, p.height, p.lacunarity, p.hurst, p.sigma, p.seed, p.periodic != 0,
+                              p.threads, Progress(p.progress, p.progress_user)});
     default:
       fail(FT_ERR_UNSUPPORTED, "terrain method " + std::to_string(p.method) + " is not available in this build");
   }

@@ -1,0 +1,76 @@
+"""Operators: Add > Mesh > Fractal Terrain, and regenerate in place."""
+
+import bpy
+from bpy_extras import object_utils
+
+from .. import core
+from ..core import params
+from . import props
+from .terrain_build import SettingsError, new_terrain_mesh, regenerate_object
+
+# Errors an operator reports instead of raising: the library's own messages
+# (bad parameters, unsupported method, missing library, memory cap) and the
+# add-on's checks of reference objects/images.
+REPORTED = (core.FracterraError, SettingsError)
+
+
+class FRACTERRA_OT_terrain_add(bpy.types.Operator, object_utils.AddObjectHelper):
+    """Add a fractal terrain mesh (midpoint displacement, additions, fBm, spectral, interpolated)"""
+    bl_idname = "mesh.fracterra_terrain_add"
+    bl_label = "Fractal Terrain"
+    bl_options = {"REGISTER", "UNDO", "PRESET"}
+
+    def draw(self, context):
+        props.draw_settings(self.layout, self)
+        col = self.layout.column()
+        col.use_property_split = True
+        col.prop(self, "align")
+        col.prop(self, "location")
+        col.prop(self, "rotation")
+
+    def execute(self, context):
+        values = params.values_of(self)
+        try:
+            mesh, summary = new_terrain_mesh(values, context)
+        except REPORTED as e:
+            self.report({"ERROR"}, str(e))
+            return {"CANCELLED"}
+        obj = object_utils.object_data_add(context, mesh, operator=self)
+        settings = obj.fracterra_terrain
+        props.copy_settings(self, settings)
+        settings.is_terrain = True
+        self.report({"INFO"}, f"Fractal terrain: {summary}")
+        return {"FINISHED"}
+
+
+# The operator's properties come from the same list as the object's settings.
+FRACTERRA_OT_terrain_add.__annotations__ = {**props.terrain_annotations()}
+
+
+class FRACTERRA_OT_terrain_regenerate(bpy.types.Operator):
+    """Regenerate the active fractal terrain from its settings (heights only when the grid size is unchanged)"""
+    bl_idname = "object.fracterra_terrain_regenerate"
+    bl_label = "Regenerate Terrain"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        return (obj is not None and obj.type == "MESH" and context.mode == "OBJECT"
+                and obj.fracterra_terrain.is_terrain)
+
+    def execute(self, context):
+        obj = context.active_object
+        try:
+            summary = regenerate_object(obj, context)
+        except REPORTED as e:
+            obj.fracterra_terrain.last_error = str(e)
+            self.report({"ERROR"}, str(e))
+            return {"CANCELLED"}
+        obj.fracterra_terrain.last_error = ""
+        self.report({"INFO"}, f"Fractal terrain: {summary}")
+        return {"FINISHED"}
+
+
+def menu_mesh_add(self, context):
+    self.layout.operator(FRACTERRA_OT_terrain_add.bl_idname, text="Fractal Terrain", icon="RNDCURVE")

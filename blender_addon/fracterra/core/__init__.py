@@ -1,0 +1,14 @@
+"""The bpy-free part of the fracterra add-on: the ctypes binding of
+libfracterra.so, the parameter definitions and grid-mesh arrays. Importable
+without Blender (the pytest suite uses it directly)."""
+
+from . import params
+from .errors import (CancelledError, FracterraError, InvalidArgumentError, LibraryNotFoundError,
+                     TooLargeError, UnsupportedError)
+from .grid import grid_arrays, grid_size, vertices
+from .binding import ENV_VAR, library, status
+from .terrain import Heightfield, generate_profile, generate_terrain, terrain_side
+
+__all__ = ["params", "FracterraError", "LibraryNotFoundError", "InvalidArgumentError", "CancelledError",
+           "TooLargeError", "UnsupportedError", "grid_arrays", "grid_size", "vertices", "ENV_VAR",
+           "library", "status", "Heightfield", "generate_profile", "generate_terrain", "terrain_side"]

@@ -1,0 +1,183 @@
+"""Terrain and profile generation through the C ABI, and the heightfield handle."""
+
+import array
+import ctypes
+from ctypes import POINTER, byref, c_double, c_float, c_void_p
+
+from . import params as params_mod
+from .errors import CancelledError, InvalidArgumentError
+from .binding import PROGRESS_FN, ProfileParams, TerrainParams, library
+
+
+def float_array(n, fill=0.0):
+    """A zero-initialised array.array('f') of n floats (fast: repeats one element)."""
+    return array.array("f", [fill]) * n
+
+
+def index_array(n):
+    """A zeroed array.array('I') of n indices. Unsigned on purpose: Blender's
+    foreach_set copies a buffer with memcpy only when its format matches the
+    property ('I' for the UNSIGNED index properties); otherwise it converts
+    element by element, about 10x slower. The library writes int32 values
+    in 0..2^31 - 1, whose bits are the same."""
+    return array.array("I", [0]) * n
+
+
+def as_pointer(buf, ctype):
+    """A zero-copy ctypes view of a writable buffer (array.array, bytearray)."""
+    if len(buf) == 0:
+        return None
+    return (ctype * len(buf)).from_buffer(buf)
+
+
+class Heightfield:
+    """Owns an ft_heightfield*; use as a context manager (or call close())."""
+
+    def __init__(self, handle):
+        self._lib = library()
+        self.handle = handle
+
+    @classmethod
+    def from_values(cls, width, height, values):
+        """A library heightfield holding `values` (width * height floats, row-major)."""
+        lib = library()
+        buf = array.array("f", values)
+        if len(buf) != width * height:
+            raise InvalidArgumentError(f"{len(buf)} values given for a {width} x {height} heightfield")
+        out = c_void_p()
+        lib.check(lib.ft_heightfield_create(width, height, as_pointer(buf, c_float), byref(out)))
+        return cls(out)
+
+    @property
+    def width(self):
+        return self._lib.ft_heightfield_width(self.handle)
+
+    @property
+    def height(self):
+        return self._lib.ft_heightfield_height(self.handle)
+
+    def to_array(self):
+        """A copy of the samples as array.array('f'), row-major (row = y)."""
+        out = float_array(self.width * self.height)
+        self._lib.check(self._lib.ft_heightfield_copy(self.handle, as_pointer(out, c_float), len(out)))
+        return out
+
+    def stats(self):
+        """{'min', 'max', 'mean', 'std'} of the samples."""
+        v = [c_double() for _ in range(4)]
+        self._lib.check(self._lib.ft_heightfield_stats(self.handle, *[byref(x) for x in v]))
+        return dict(zip(("min", "max", "mean", "std"), (x.value for x in v)))
+
+    def close(self):
+        if self.handle:
+            self._lib.ft_heightfield_free(self.handle)
+            self.handle = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):  # a safety net only; callers close explicitly
+        try:
+            self.close()
+        except Exception:
+            pass
+
+
+class _ProgressBridge:
+    """Adapts a Python `progress(fraction) -> bool` (True cancels) to ft_progress_fn.
+
+    An exception raised by the callback cancels the call and is re-raised
+    afterwards instead of being swallowed by ctypes.
+    """
+
+    def __init__(self, progress):
+        self.progress = progress
+        self.error = None
+        self.c_fn = PROGRESS_FN(self._call) if progress else PROGRESS_FN()
+
+    def _call(self, _user, fraction):
+        try:
+            return 1 if self.progress(fraction) else 0
+        except BaseException as e:  # noqa: B036 - must not unwind through C
+            self.error = e
+            return 1
+
+    def reraise(self):
+        if self.error is not None:
+            raise self.error
+
+
+def terrain_struct(values=None, **overrides):
+    """An ft_terrain_params initialised by the library, then filled from settings."""
+    lib = library()
+    p = TerrainParams()
+    lib.check(lib.ft_terrain_params_init(byref(p)))
+    merged = dict(values or {})
+    merged.update(overrides)
+    params_mod.fill_struct(p, merged)
+    return p
+
+
+def generate_terrain(values=None, reference=None, progress=None, threads=0, **overrides):
+    """Generates a terrain; returns a Heightfield (close it, or use `with`).
+
+    values/overrides: settings by name (see params.TERRAIN_PARAMS), e.g.
+    method='MIDPOINT', levels=10, hurst=0.8, sigma=1.0, seed=7.
+    reference: None or (size, values) with size = 2^m + 1 and size^2 floats,
+    row-major. progress: None or a callable(fraction) returning True to cancel
+    (raises CancelledError).
+    """
+    lib = library()
+    p = terrain_struct(values, **overrides)
+    p.threads = threads
+    ref_buf = None
+    if reference is not None:
+        size, ref_values = reference
+        ref_buf = array.array("f", ref_values)
+        if len(ref_buf) != size * size:
+            raise InvalidArgumentError(f"the reference grid has {len(ref_buf)} values; size {size} needs {size * size}")
+        p.reference = ctypes.cast(as_pointer(ref_buf, c_float), POINTER(c_float))
+        p.reference_size = size
+    bridge = _ProgressBridge(progress)
+    p.progress = bridge.c_fn
+    out = c_void_p()
+    status = lib.ft_terrain_generate(byref(p), byref(out))
+    bridge.reraise()
+    lib.check(status)
+    return Heightfield(out)
+
+
+def terrain_side(levels):
+    """2^levels + 1, or -1 when levels is outside the library's range."""
+    return library().ft_terrain_side(levels)
+
+
+def generate_profile(levels=10, hurst=0.8, sigma=1.0, seed=1, reference=None, progress=None):
+    """Voss 1D midpoint displacement: 2^levels + 1 floats as array.array('f')."""
+    lib = library()
+    p = ProfileParams()
+    lib.check(lib.ft_profile_params_init(byref(p)))
+    p.levels, p.hurst, p.sigma, p.seed = levels, hurst, sigma, seed
+    ref_buf = None
+    if reference is not None:
+        ref_buf = array.array("f", reference)
+        p.reference = ctypes.cast(as_pointer(ref_buf, c_float), POINTER(c_float))
+        p.reference_size = len(ref_buf)
+    n = lib.ft_profile_length(levels)
+    if n < 0:
+        # Let the library word the range error.
+        lib.check(lib.ft_profile_generate(byref(p), None, 0))
+    out = float_array(n)
+    bridge = _ProgressBridge(progress)
+    p.progress = bridge.c_fn
+    status = lib.ft_profile_generate(byref(p), as_pointer(out, c_float), len(out))
+    bridge.reraise()
+    lib.check(status)
+    return out
+
+
+__all__ = ["Heightfield", "generate_terrain", "generate_profile", "terrain_struct", "terrain_side",
+           "float_array", "index_array", "as_pointer", "CancelledError"]

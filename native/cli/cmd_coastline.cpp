@@ -1,0 +1,93 @@
+// fracterra coastline: the level set of a heightfield as polylines (marching
+// squares), optionally drawn over a shaded relief to look at.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "analysis/quantile.hpp"
+#include "cli/command.hpp"
+#include "contour/marching_squares.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/heightfield_io.hpp"
+#include "io/png_image.hpp"
+#include "io/polyline_io.hpp"
+#include "preview/relief.hpp"
+
+namespace ft::cli {
+namespace {
+
+struct CoastlineCli {
+  std::string in, level = "q0.5", out, preview;
+};
+
+// Draws the chains onto an RGB image of the heightfield's size: islands red,
+// lakes blue, chains ending on the border yellow (1-pixel lines, DDA).
+void draw_chains(std::vector<uint8_t>& rgb, int32_t w, int32_t h, const PolylineSet& set) {
+  for (int64_t i = 0; i < set.line_count(); ++i) {
+    const ChainKind kind = chain_kind(set, i);
+    const uint8_t colour[3][3] = {{255, 220, 0}, {220, 20, 20}, {20, 60, 230}};
+    const uint8_t* c = colour[int(kind)];
+    for (int64_t k = set.line_begin(i); k + 1 < set.line_end(i); ++k) {
+      const Vec3 &a = set.points[size_t(k)], &b = set.points[size_t(k + 1)];
+      const int steps = 1 + int(std::ceil(2 * std::max(std::fabs(b[0] - a[0]), std::fabs(b[1] - a[1]))));
+      for (int s = 0; s <= steps; ++s) {
+        const double t = double(s) / steps;
+        const long x = std::lround(a[0] + t * (b[0] - a[0])), y = std::lround(a[1] + t * (b[1] - a[1]));
+        if (x < 0 || y < 0 || x >= w || y >= h) continue;
+        std::copy(c, c + 3, rgb.begin() + (size_t(y) * size_t(w) + size_t(x)) * 3);
+      }
+    }
+  }
+}
+
+int run(const CoastlineCli& c) {
+  const Heightfield hf = read_heightfield(c.in);
+  const double level = resolve_level(hf, parse_level(c.level, "--level"));
+  const PolylineSet set = marching_squares(hf, level);
+  if (!c.out.empty()) write_polylines(set, c.out);
+  if (!c.preview.empty()) {
+    ReliefOptions ro;
+    const HeightStats s = hf.stats();
+    ro.sea_level = s.max > s.min ? std::clamp((level - s.min) / (s.max - s.min), 0.0, 1.0) : 0.0;
+    std::vector<uint8_t> rgb = shaded_relief(hf, ro);
+    draw_chains(rgb, hf.width(), hf.height(), set);
+    write_png_rgb(c.preview, hf.width(), hf.height(), rgb.data());
+  }
+  int64_t islands = 0, lakes = 0, open = 0;
+  for (int64_t i = 0; i < set.line_count(); ++i) {
+    const ChainKind k = chain_kind(set, i);
+    (k == ChainKind::kIsland ? islands : k == ChainKind::kLake ? lakes : open) += 1;
+  }
+  const nlohmann::json j = {{"level", level},       {"chains", set.line_count()}, {"vertices", set.vertex_count()},
+                            {"islands", islands},   {"lakes", lakes},             {"open_chains", open}};
+  std::printf("%s\n", j.dump().c_str());
+  return 0;
+}
+
+Registration reg({"coastline",
+                  "Level set (coastline) of a heightfield as polylines: marching squares, land on the left",
+                  [](CLI::App& app) -> std::function<int()> {
+                    auto c = std::make_shared<CoastlineCli>();
+                    app.add_option("--in", c->in, "heightfield .png, .pgm or .npy")->required();
+                    app.add_option("--level", c->level,
+                                   "height of the level set, or a quantile of the samples as qF with F in [0, 1] "
+                                   "(q0.5 = the median)")
+                        ->capture_default_str();
+                    app.add_option("--out", c->out,
+                                   "output polylines .csv (x,y,z,radius; blank line between chains) or .json; "
+                                   "x = column, y = row, z = level; closed loops repeat their first vertex");
+                    app.add_option("--preview", c->preview,
+                                   "also draw the chains over a shaded relief to this RGB .png (islands red, lakes "
+                                   "blue, border chains yellow)");
+                    return [c] {
+                      if (c->out.empty() && c->preview.empty()) invalid("give --out FILE and/or --preview FILE.png");
+                      return run(*c);
+                    };
+                  },
+                  50});
+
+}  // namespace
+}  // namespace ft::cli

@@ -1,0 +1,168 @@
+// fracterra polyline: fractal polylines (FPL 2D/3D, lightning, Koch, dragon,
+// Sierpinski arrowhead, IFS, Voss profile) as CSV/JSON, an optional SVG
+// drawing, and the measures of seed 003 as JSON.
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli/cli_util.hpp"
+#include "cli/command.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/polyline_io.hpp"
+#include "io/svg_plot.hpp"
+#include "polyline/polyline.hpp"
+#include "polyline/polyline_report.hpp"
+
+namespace ft::cli {
+namespace {
+
+const std::map<std::string, int> kMethods = {
+    {"fpl", FT_POLYLINE_FPL},     {"fpl3d", FT_POLYLINE_FPL3D},           {"koch", FT_POLYLINE_KOCH},
+    {"dragon", FT_POLYLINE_DRAGON}, {"sierpinski", FT_POLYLINE_SIERPINSKI}, {"ifs", FT_POLYLINE_IFS},
+    {"profile", FT_POLYLINE_PROFILE}};
+const std::map<std::string, int> kRngs = {{"uniform", FT_POLYLINE_RNG_UNIFORM}, {"normal", FT_POLYLINE_RNG_NORMAL}};
+const std::map<std::string, int> kIfs = {{"fern", FT_IFS_FERN}, {"dragon", FT_IFS_DRAGON}, {"koch", FT_IFS_KOCH}};
+
+struct PolylineOptions {
+  ft_polyline_params p = default_polyline_params();
+  std::string base, normal, ifs_table, out, svg;
+  bool stats = false;
+};
+
+// Numbers separated by commas (and spaces), e.g. "0.5,1,0".
+std::vector<double> parse_numbers(const std::string& text, const std::string& what) {
+  std::vector<double> v;
+  std::string item;
+  std::istringstream in(text);
+  while (std::getline(in, item, ',')) {
+    const auto a = item.find_first_not_of(" \t"), b = item.find_last_not_of(" \t");
+    if (a == std::string::npos) invalid(what + ": empty number in '" + text + "'");
+    item = item.substr(a, b - a + 1);
+    char* end = nullptr;
+    const double x = std::strtod(item.c_str(), &end);
+    if (end == item.c_str() || *end != '\0') invalid(what + ": '" + item + "' is not a number");
+    v.push_back(x);
+  }
+  return v;
+}
+
+// "x0,y0[,z0];x1,y1[,z1];..." -> xyz triples.
+std::vector<double> parse_base(const std::string& text) {
+  std::vector<double> xyz;
+  std::string point;
+  std::istringstream in(text);
+  int i = 0;
+  while (std::getline(in, point, ';')) {
+    ++i;
+    const std::vector<double> v = parse_numbers(point, "--base point " + std::to_string(i));
+    if (v.size() < 2 || v.size() > 3)
+      invalid("--base point " + std::to_string(i) + " must be x,y or x,y,z, got '" + point + "'");
+    xyz.insert(xyz.end(), {v[0], v[1], v.size() == 3 ? v[2] : 0.0});
+  }
+  return xyz;
+}
+
+// An IFS table file: one map per line "a,b,c,d,e,f,p" ('#' comments).
+std::vector<double> read_ifs_table(const std::string& path) {
+  std::vector<double> t;
+  std::istringstream in(read_file(path));
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    const auto a = line.find_first_not_of(" \t\r");
+    if (a == std::string::npos || line[a] == '#') continue;
+    if (line.back() == '\r') line.pop_back();
+    const std::vector<double> v = parse_numbers(line, "'" + path + "' line " + std::to_string(n));
+    if (v.size() != 7) invalid("'" + path + "' line " + std::to_string(n) + ": expected a,b,c,d,e,f,p");
+    t.insert(t.end(), v.begin(), v.end());
+  }
+  return t;
+}
+
+int run(const PolylineOptions& o) {
+  ft_polyline_params p = o.p;
+  std::vector<double> base, table;
+  if (!o.base.empty()) {
+    base = parse_base(o.base);
+    p.base = base.data();
+    p.base_count = int64_t(base.size() / 3);
+  }
+  if (!o.normal.empty()) {
+    const std::vector<double> n = parse_numbers(o.normal, "--normal");
+    if (n.size() != 3) invalid("--normal must be x,y,z");
+    for (int k = 0; k < 3; ++k) p.plane_normal[k] = n[size_t(k)];
+  }
+  if (!o.ifs_table.empty()) {
+    table = read_ifs_table(o.ifs_table);
+    p.ifs_table = table.data();
+    p.ifs_maps = int32_t(table.size() / 7);
+  }
+  Stopwatch clock;
+  const PolylineSet set = generate_polylines(p);
+  const double seconds = clock.seconds();
+  if (!o.out.empty()) write_polylines(set, o.out);
+  if (!o.svg.empty()) write_file_atomically(o.svg, render_polylines_svg(set, 900, 600, p.branch_prob > 0));
+  if (o.stats) {
+    nlohmann::json j = polyline_report(set);
+    j["seconds"] = seconds;
+    std::printf("%s\n", j.dump().c_str());
+  }
+  return 0;
+}
+
+Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch, dragon, Sierpinski, IFS)",
+                  [](CLI::App& app) -> std::function<int()> {
+                    auto o = std::make_shared<PolylineOptions>();
+                    auto& p = o->p;
+                    app.add_option("--method", p.method, "fpl, fpl3d, koch, dragon, sierpinski, ifs or profile")
+                        ->transform(choice(kMethods))->capture_default_str();
+                    app.add_option("--base", o->base,
+                                   "base polyline \"x0,y0[,z0];x1,y1[,z1];...\" (>= 2 points, consecutive ones "
+                                   "distinct); default the unit segment 0,0;1,0");
+                    app.add_option("--rng", p.rng, "FPL displacement generator: uniform urf(s) or normal nrf(sigma)")
+                        ->transform(choice(kRngs))->capture_default_str();
+                    app.add_option("--spread", p.spread,
+                                   "s or sigma: displacement per unit segment length, >= 0 (profile: sigma > 0)")
+                        ->capture_default_str();
+                    app.add_option("--depth", p.depth,
+                                   "recursion depth r: fpl/dragon 0..40 (2^r segments per base segment, memory "
+                                   "permitting), koch 0..15, sierpinski 0..19, profile 1..28")
+                        ->capture_default_str();
+                    app.add_option("--min-length", p.min_length, "delta: do not split segments shorter than this, >= 0")
+                        ->capture_default_str();
+                    app.add_option("--seed", p.seed, "random seed (64-bit)")->capture_default_str();
+                    app.add_option("--normal", o->normal,
+                                   "fpl3d: displace within the plane of this normal \"x,y,z\"; default: a random "
+                                   "perpendicular direction per midpoint");
+                    app.add_option("--branch-prob", p.branch_prob, "fpl/fpl3d: probability a midpoint forks a branch, 0..1")
+                        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+                    app.add_option("--branch-decay", p.branch_decay, "length and radius factor per branch generation, (0, 1)")
+                        ->capture_default_str();
+                    app.add_option("--branch-generations", p.branch_generations, "deepest branch generation, 1..8")
+                        ->capture_default_str();
+                    app.add_option("--radius", p.radius, "vertex radius of the main line, >= 0")->capture_default_str();
+                    app.add_option("--hurst", p.hurst, "profile: Hurst exponent H, 0..1")->capture_default_str();
+                    app.add_option("--ifs", p.ifs_preset, "ifs: built-in table fern, dragon or koch (seed 002)")
+                        ->transform(choice(kIfs))->capture_default_str();
+                    app.add_option("--ifs-table", o->ifs_table,
+                                   "ifs: a file of maps, one \"a,b,c,d,e,f,p\" per line: x' = a x + b y + e, "
+                                   "y' = c x + d y + f, probability p")
+                        ->check(CLI::ExistingFile);
+                    app.add_option("--points", p.ifs_points, "ifs: number of points, 1..268435456")->capture_default_str();
+                    app.add_option("--out", o->out, "output .csv (x,y,z,radius; blank line between polylines) or .json");
+                    app.add_option("--svg", o->svg, "also draw the x,y projection into this .svg");
+                    app.add_flag("--stats", o->stats,
+                                 "print JSON: eta, chi, gamma (of line 0, relative to its chord), mass and "
+                                 "box-counting dimensions, seconds");
+                    return [o] {
+                      if (o->out.empty() && o->svg.empty() && !o->stats) invalid("give --out FILE, --svg FILE and/or --stats");
+                      return run(*o);
+                    };
+                  },
+                  30});
+
+}  // namespace
+}  // namespace ft::cli

@@ -1,0 +1,119 @@
+// fracterra scene: a terrain and polylines as one POV-Ray scene.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "cli/cli_util.hpp"
+#include "cli/command.hpp"
+#include "core/error.hpp"
+#include "io/heightfield_io.hpp"
+#include "io/polyline_io.hpp"
+#include "povray/render.hpp"
+#include "povray/scene.hpp"
+
+namespace ft::cli {
+namespace {
+
+const std::map<std::string, int> kKinds = {{"line", int(pov::LineKind::kGeneric)},
+                                           {"lightning", int(pov::LineKind::kLightning)},
+                                           {"coastline", int(pov::LineKind::kCoastline)}};
+
+struct SceneOptions {
+  std::string terrain, pov, render;
+  std::vector<std::string> polylines;
+  std::vector<int> kinds;
+  std::vector<double> radii;
+  double size = 1, vertical_scale = 0, sea_fraction = NAN, water = NAN;
+  pov::CameraOptions camera;
+  double sun_azimuth = 235, sun_elevation = 35;
+  pov::RenderOptions r;
+};
+
+int run(SceneOptions& o) {
+  pov::SceneParams p;
+  Heightfield hf;
+  std::vector<PolylineSet> sets(o.polylines.size());
+  if (!o.terrain.empty()) {
+    hf = read_heightfield(o.terrain);
+    if (!std::isnan(o.sea_fraction) && !std::isnan(o.water)) invalid("give --sea-fraction or --water, not both");
+    pov::set_scene_terrain(p, hf, o.size, o.vertical_scale, o.sea_fraction);
+    if (!std::isnan(o.water)) p.has_water = true, p.water_level = o.water;
+  } else if (!std::isnan(o.water)) {
+    p.has_water = true, p.water_level = o.water;
+  }
+  if (o.kinds.size() > o.polylines.size()) invalid("more --kind options than --polyline files");
+  if (o.radii.size() > o.polylines.size()) invalid("more --radius options than --polyline files");
+  for (size_t i = 0; i < o.polylines.size(); ++i) {
+    sets[i] = read_polylines(o.polylines[i]);
+    const auto kind = pov::LineKind(i < o.kinds.size() ? o.kinds[i] : int(pov::LineKind::kGeneric));
+    p.lines.push_back({&sets[i], kind, i < o.radii.size() ? o.radii[i] : 0.0});
+  }
+  if (!o.render.empty()) o.camera.aspect = double(o.r.width) / double(o.r.height);
+  p.camera = o.camera;
+  p.sun_azimuth_deg = o.sun_azimuth;
+  p.sun_elevation_deg = o.sun_elevation;
+  p.title = o.terrain.empty() ? "polylines" : "terrain " + o.terrain;
+  const auto sum = pov::write_scene(p, o.pov);
+  std::printf("wrote %s%s%s\n", o.pov.c_str(), sum.image_path.empty() ? "" : " and ", sum.image_path.c_str());
+  if (!o.render.empty()) {
+    Stopwatch clock;
+    const auto res = pov::render_scene(o.pov, o.render, o.r);
+    if (res.warnings > 0) std::fputs(res.messages.c_str(), stderr);
+    std::printf("rendered %s (%dx%d) in %.2f s\n", o.render.c_str(), o.r.width, o.r.height, clock.seconds());
+  }
+  return 0;
+}
+
+Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (and render it)",
+                  [](CLI::App& app) -> std::function<int()> {
+                    auto o = std::make_shared<SceneOptions>();
+                    app.add_option("--terrain", o->terrain, "heightfield .png, .pgm or .npy")->check(CLI::ExistingFile);
+                    app.add_option("--polyline", o->polylines, "polyline set .csv or .json (world units); repeatable")
+                        ->check(CLI::ExistingFile);
+                    app.add_option("--kind", o->kinds,
+                                   "kind of the polyline set at the same position: line, lightning (glowing) or "
+                                   "coastline (thin, on the sea); default line")
+                        ->transform(choice(kKinds));
+                    app.add_option("--radius", o->radii,
+                                   "sweep radius of the polyline set at the same position where its vertices have "
+                                   "none; 0 = by kind and scene size (default)");
+                    app.add_option("--pov", o->pov, "scene to write (.pov); the terrain PNG goes beside it")->required();
+                    app.add_option("--size", o->size, "terrain width in world units (x); depth follows the grid")
+                        ->check(CLI::PositiveNumber)->capture_default_str();
+                    app.add_option("--vertical-scale", o->vertical_scale,
+                                   "height multiplier; 0 = relief of 20% of --size")
+                        ->check(CLI::NonNegativeNumber)->capture_default_str();
+                    app.add_option("--sea-fraction", o->sea_fraction,
+                                   "sea level at this fraction of the terrain's samples (0..0.999); default no sea")
+                        ->check(CLI::Range(0.0, 0.999));
+                    app.add_option("--water", o->water, "sea level in world units (instead of --sea-fraction)");
+                    app.add_option("--azimuth", o->camera.azimuth_deg,
+                                   "camera direction seen from the content, degrees from +y towards +x")
+                        ->check(CLI::Range(-360.0, 360.0))->capture_default_str();
+                    app.add_option("--elevation", o->camera.elevation_deg, "camera elevation, degrees 1..90")
+                        ->check(CLI::Range(1.0, 90.0))->capture_default_str();
+                    app.add_option("--fov", o->camera.fov_deg, "horizontal field of view, degrees 5..150")
+                        ->check(CLI::Range(5.0, 150.0))->capture_default_str();
+                    app.add_option("--zoom-out", o->camera.distance_scale,
+                                   "camera distance relative to the framed one, 0.1..100")
+                        ->check(CLI::Range(0.1, 100.0))->capture_default_str();
+                    app.add_option("--sun-azimuth", o->sun_azimuth, "sun direction, degrees from +y towards +x")
+                        ->check(CLI::Range(-360.0, 360.0))->capture_default_str();
+                    app.add_option("--sun-elevation", o->sun_elevation, "sun elevation, degrees 1..90")
+                        ->check(CLI::Range(1.0, 90.0))->capture_default_str();
+                    app.add_option("--render", o->render, "also render the scene with povray to this PNG");
+                    app.add_option("--width", o->r.width, "render width in pixels (also sets the framing aspect)")
+                        ->check(CLI::Range(1, 16384))->capture_default_str();
+                    app.add_option("--height", o->r.height, "render height in pixels")->check(CLI::Range(1, 16384))
+                        ->capture_default_str();
+                    app.add_option("--antialias", o->r.antialias, "anti-aliasing threshold (povray +A), 0 = off")
+                        ->check(CLI::Range(0.0, 3.0))->capture_default_str();
+                    return [o] {
+                      if (o->terrain.empty() && o->polylines.empty()) invalid("give --terrain and/or --polyline");
+                      return run(*o);
+                    };
+                  },
+                  80});
+
+}  // namespace
+}  // namespace ft::cli

@@ -1,0 +1,94 @@
+/// @file fracterra/analysis.h
+/// Measures: Hurst exponent and fractal dimension of profiles and
+/// heightfields, coastlines (level sets by marching squares) and Feder's
+/// clouds.
+#ifndef FRACTERRA_ANALYSIS_H
+#define FRACTERRA_ANALYSIS_H
+
+#include "core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// Hurst estimators (ft_hurst_params.method). Each is the slope of a log-log
+/// least-squares fit over a band:
+enum {
+  FT_HURST_VARIOGRAM = 0,          ///< 0.5 E[(X(t+tau) - X(t))^2] ~ tau^(2H), integer lags ~4 per octave
+  FT_HURST_MADOGRAM = 1,           ///< E|X(t+tau) - X(t)| ~ tau^H
+  FT_HURST_VARIOGRAM_ALIGNED = 2,  ///< variogram over dyadic-grid pairs only (tau = 2^j, t multiple of tau):
+                                   ///< exact for midpoint displacement
+  FT_HURST_MADOGRAM_ALIGNED = 3,   ///< madogram over dyadic-grid pairs only
+  FT_HURST_SPECTRAL = 4            ///< power spectrum P(f) ~ f^-(2H + 1) of the profile, or of every row
+                                   ///< and column of a surface; detrended, Hann window, 8 log bins per octave
+};
+
+/// Parameters of the Hurst estimates. Fill with ft_hurst_params_init.
+typedef struct ft_hurst_params {
+  uint32_t struct_size;   ///< sizeof(ft_hurst_params); set by _init
+  int32_t method;         ///< FT_HURST_*; default FT_HURST_VARIOGRAM_ALIGNED
+  double lag_min;         ///< smallest lag in samples (increment methods); 0 (default) = 1
+  double lag_max;         ///< largest lag in samples; 0 (default) = max(2, (n - 1) / 16), n = the
+                          ///< profile length or the shorter side of a heightfield
+  double freq_min;        ///< spectral: lowest frequency in cycles per record; 0 (default) =
+                          ///< clamp(n / 128, 1, 8)
+  double freq_max;        ///< spectral: highest frequency, at most n / 2; 0 (default) = n / 8
+  int32_t transects;      ///< heightfields: non-zero = median of the estimates of every row and
+                          ///< column (transect-median estimator); default 0 (pooled)
+} ft_hurst_params;
+
+/// The result of a Hurst estimate (caller-allocated).
+typedef struct ft_hurst_result {
+  int32_t method;          ///< the FT_HURST_* used
+  int32_t transects;       ///< non-zero for a transect median
+  double hurst;            ///< H (not clamped: values outside [0, 1] mean the input is not fBm-like)
+  double dimension;        ///< D = n + 1 - H, n = 1 for profiles, 2 for heightfields
+  double stderr_hurst;     ///< standard error of H from the fit's residuals (of the median for
+                           ///< transects; transects are correlated, so it is a lower bound)
+  double band_lo;          ///< first lag (samples) or lowest frequency (cycles per record) fitted
+  double band_hi;          ///< last lag or highest frequency fitted
+  int32_t band_is_frequency; ///< 1 for the spectral method, 0 for lags
+  int32_t points;          ///< points in the log-log fit
+} ft_hurst_result;
+
+FT_API ft_status ft_hurst_params_init(ft_hurst_params* p);
+/// Estimates H of a profile of `count` >= 8 finite samples. `samples` and
+/// `out` must not be NULL; `params` may be NULL for the defaults.
+FT_API ft_status ft_hurst_profile(const float* samples, size_t count, const ft_hurst_params* params,
+                                  ft_hurst_result* out);
+/// Estimates H of a heightfield of at least 8 x 8 finite samples.
+FT_API ft_status ft_hurst_heightfield(const ft_heightfield* hf, const ft_hurst_params* params,
+                                      ft_hurst_result* out);
+
+/// The level set of a heightfield at `level` (or at the `level`-quantile of
+/// its samples, level in [0, 1], when level_is_quantile is non-zero) as
+/// polylines: x = column, y = row, z = level, land (>= level) on the left, so
+/// islands run counter-clockwise and lakes clockwise; closed loops repeat their
+/// first vertex; open chains end on the border. Saddles are resolved by the
+/// cell mean. A level outside the data range gives an empty set (FT_OK).
+/// NaN samples are refused. Free *out with ft_polylines_free.
+FT_API ft_status ft_coastline(const ft_heightfield* hf, double level, int32_t level_is_quantile,
+                              ft_polylines** out);
+
+/// Parameters of Feder's clouds (seed 001): black below the threshold, above
+/// it grey = ln(e / e_T) / ln(e_max / e_T), e = elevation above the lowest sample.
+typedef struct ft_clouds_params {
+  uint32_t struct_size;          ///< sizeof(ft_clouds_params); set by _init
+  double threshold;              ///< height, or quantile in [0, 1]; default 0.5
+  int32_t threshold_is_quantile; ///< default 1 (threshold at the median)
+  int32_t bit_depth;             ///< 8 (values 0..255) or 16 (0..65535); default 8
+} ft_clouds_params;
+
+FT_API ft_status ft_clouds_params_init(ft_clouds_params* p);
+/// Writes width * height grey values (row 0 = heightfield row 0) into `dst`,
+/// which holds `count` uint16 values (at least width * height).
+FT_API ft_status ft_clouds(const ft_heightfield* hf, const ft_clouds_params* params, uint16_t* dst,
+                           size_t count);
+/// Writes the clouds as a grey PNG of params->bit_depth bits to `path`
+/// (atomically: a failed write leaves an existing file untouched).
+FT_API ft_status ft_clouds_write_png(const ft_heightfield* hf, const ft_clouds_params* params, const char* path);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,99 @@
+/// @file fracterra/povray.h
+/// POV-Ray export: terrains as `height_field` (16-bit PNG + SDL), polylines
+/// as chunked `sphere_sweep` unions, and complete scenes ready to render.
+/// Scenes use POV-Ray 3.7 SDL; every file is written atomically (temporary
+/// name, then rename), so a failed call leaves no partial file.
+/// Axes: fracterra's world (x, y, z up) is POV-Ray <x, z, y>.
+#ifndef FRACTERRA_POVRAY_H
+#define FRACTERRA_POVRAY_H
+
+#include "core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// Kinds of polyline sets in a scene.
+enum {
+  FT_POV_LINE = 0,       ///< a plain orange tube
+  FT_POV_LIGHTNING = 1,  ///< glowing (emissive, casts no shadow) with a light at its foot
+  FT_POV_COASTLINE = 2   ///< thin foam-white line laid on the sea (z = water level)
+};
+
+/// Sweep splines.
+enum { FT_POV_SWEEP_LINEAR = 0, FT_POV_SWEEP_CUBIC = 1 };
+
+/// One polyline set in a scene.
+typedef struct ft_pov_scene_lines {
+  const ft_polylines* lines;  ///< world units; not owned, must not be NULL
+  int32_t kind;               ///< FT_POV_LINE, FT_POV_LIGHTNING or FT_POV_COASTLINE
+  double radius;              ///< sweep radius where a vertex has none (radius 0); 0 = by kind and scene size
+} ft_pov_scene_lines;
+
+typedef struct ft_pov_scene_params {
+  uint32_t struct_size;             ///< sizeof(ft_pov_scene_params)
+  const ft_heightfield* terrain;    ///< may be NULL (polylines only); not owned
+  double size_x;                    ///< terrain extent across columns (world x), > 0; default 1
+  double size_y;                    ///< across rows (world y), > 0; default 1
+  double vertical_scale;            ///< heights = samples * vertical_scale, > 0; default 1
+  int32_t has_water;                ///< 1: a sea plane at water_level; default 0
+  double water_level;               ///< world z of the sea; default 0
+  const ft_pov_scene_lines* lines;  ///< line_set_count entries; may be NULL when the count is 0
+  int32_t line_set_count;           ///< 0..1024; default 0
+  double camera_azimuth_deg;        ///< from the content to the camera, 0 = +y, 90 = +x; -360..360; default 200
+  double camera_elevation_deg;      ///< 1..90; default 30
+  double camera_fov_deg;            ///< horizontal field of view, 5..150; default 45
+  double camera_aspect;             ///< width / height the framing is for, 0.1..10; default 4/3
+  double camera_distance_scale;     ///< > 1 backs off from the framed distance, 0.1..100; default 1
+  double sun_azimuth_deg;           ///< -360..360; default 235
+  double sun_elevation_deg;         ///< 1..90; default 35
+  const char* image_path;           ///< terrain PNG; NULL = beside the scene, "x.pov" -> "x.terrain.png"
+} ft_pov_scene_params;
+
+/// Fills `p` with the defaults above (FT_ERR_INVALID_ARGUMENT for NULL).
+FT_API ft_status ft_pov_scene_params_init(ft_pov_scene_params* p);
+
+/// Writes a complete scene to `pov_path` (and the terrain PNG when there is a
+/// terrain): camera framed on the content, sun, sky, sea, terrain material by
+/// altitude and slope, polylines as sweeps. The scene refers to the PNG by a
+/// relative, quoted path. FT_ERR_IO if the folder is missing or unwritable.
+FT_API ft_status ft_pov_write_scene(const ft_pov_scene_params* p, const char* pov_path);
+
+/// Writes `hf` as the 16-bit grayscale PNG a height_field reads (normalised
+/// to 0..65535, real range in tEXt) and, when `inc_path` is not NULL, an
+/// include file declaring `name` (a POV-Ray identifier with a capital
+/// letter, e.g. "Terrain") as the smooth height_field in real units:
+/// columns span x 0..size_x, rows z 0..size_y, heights y = samples *
+/// vertical_scale. `z_min`/`z_max` (may be NULL) receive the height range.
+FT_API ft_status ft_pov_write_heightfield(const ft_heightfield* hf, const char* png_path, const char* inc_path,
+                                         const char* name, double size_x, double size_y,
+                                         double vertical_scale, double* z_min, double* z_max);
+
+typedef struct ft_pov_sweep_params {
+  uint32_t struct_size;        ///< sizeof(ft_pov_sweep_params)
+  int32_t spline;              ///< FT_POV_SWEEP_LINEAR (default) or FT_POV_SWEEP_CUBIC
+  int64_t segments_per_sweep;  ///< 1..2^30, default 32 (16..64 renders fastest)
+  double default_radius;       ///< where a vertex radius is 0, > 0; default 0.01
+  double radius_scale;         ///< multiplies every radius, > 0; default 1
+  double tolerance;            ///< cubic sweeps' tolerance, > 0; default 1e-3
+} ft_pov_sweep_params;
+
+/// Fills `p` with the defaults above (FT_ERR_INVALID_ARGUMENT for NULL).
+FT_API ft_status ft_pov_sweep_params_init(ft_pov_sweep_params* p);
+
+/// Writes an include file declaring `name` (identifier as above) as one
+/// object, a union of short sphere_sweeps, without texture:
+/// `object { name texture { ... } }` in the including scene.
+FT_API ft_status ft_pov_write_sweeps(const ft_polylines* lines, const ft_pov_sweep_params* p,
+                                     const char* inc_path, const char* name);
+
+/// Runs povray on `pov_path` and writes the PNG `out_png` (atomically):
+/// width x height pixels, anti-aliasing threshold `antialias` (0 = off).
+/// On failure the message holds POV-Ray's error lines.
+FT_API ft_status ft_pov_render(const char* pov_path, const char* out_png, int32_t width, int32_t height,
+                               double antialias);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,57 @@
+#include <cmath>
+#include <memory>
+
+#include "capi/guard.hpp"
+#include "capi/handles.hpp"
+#include "fracterra/fracterra.h"
+#include "polyline/polyline.hpp"
+#include "polyline/polyline_stats.hpp"
+
+using ft::capi::guarded;
+
+extern "C" {
+
+FT_API ft_status ft_polyline_params_init(ft_polyline_params* p) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    *p = ft::default_polyline_params();
+  });
+}
+
+FT_API ft_status ft_polyline_generate(const ft_polyline_params* p, ft_polylines** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("params", p);
+    auto h = std::make_unique<ft_polylines>();
+    h->set = ft::generate_polylines(*p);
+    *out = h.release();
+  });
+}
+
+FT_API ft_status ft_polyline_measure(const ft_polylines* p, ft_polyline_stats* out) {
+  return guarded([&] {
+    ft::check_not_null("polylines", p);
+    ft::check_not_null("out", out);
+    if (out->struct_size < sizeof(ft_polyline_stats))
+      ft::invalid("out->struct_size must be sizeof(ft_polyline_stats) = " + std::to_string(sizeof(ft_polyline_stats)) +
+                  ", got " + std::to_string(out->struct_size));
+    const ft::PolylineMeasures m = ft::measure_polylines(p->set);
+    ft_polyline_stats s{};
+    s.struct_size = sizeof(ft_polyline_stats);
+    s.line_count = p->set.line_count();
+    s.vertex_count = p->set.vertex_count();
+    s.eta = m.main.eta;
+    s.chi = m.main.chi;
+    s.gamma = m.main.gamma;
+    s.length = m.total_length;
+    s.mass_dimension = m.mass_dimension;
+    s.box_dimension = m.box_ok ? m.box.dimension : NAN;
+    s.box_std_error = m.box_ok ? m.box.std_error : NAN;
+    s.box_min_size = m.box_ok ? m.box.min_size : NAN;
+    s.box_max_size = m.box_ok ? m.box.max_size : NAN;
+    s.box_sizes = m.box_ok ? int32_t(m.box.sizes.size()) : 0;
+    *out = s;
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,354 @@
+#include "noise/fbm.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "core/rng.hpp"
+#include "noise/basis.hpp"
+
+namespace ft {
+namespace {
+
+using namespace detail;
+
+// One octave: the affine map from normalised (u, v) to lattice coordinates,
+// its hash key and, when periodic, its lattice period.
+struct Octave {
+  float a11 = 1, a12 = 0, a21 = 0, a22 = 1, ox = 0, oy = 0;
+  float amp = 1;
+  uint32_t key = 0;
+  int32_t px = 1, py = 1;    // periods in cells (periodic only)
+  float ipx = 1, ipy = 1;    // 1 / period
+};
+
+struct Plan {
+  std::vector<Octave> octaves;
+  std::vector<Octave> warp_x, warp_y;  // the domain-warp fbm, two independent fields
+  int32_t basis = FT_BASIS_GRADIENT;
+  int32_t variant = FT_FBM_STANDARD;
+  bool periodic = false;
+  float offset = 1;
+  float scale = 1;        // applied to the sum: sigma, or sigma / sum a_i
+  float warp_u = 0, warp_v = 0;  // warp displacement per unit of warp noise, in (u, v) units
+};
+
+// Philox levels that key the octaves: the main octaves use level i, the two
+// warp fields their own ranges, so no two uses share random numbers.
+constexpr uint32_t kWarpXLevel = 1000, kWarpYLevel = 2000;
+constexpr int kWarpOctaves = 4;
+
+
+std::vector<Octave> make_octaves(const FbmConfig& c, int count, double lacunarity, double gain,
+                                 uint32_t level0) {
+  std::vector<Octave> out(static_cast<size_t>(count));
+  const double aspect = double(c.height) / double(c.width);
+  double f = c.frequency, a = 1.0;
+  for (int i = 0; i < count; ++i, f *= lacunarity, a *= gain) {
+    Octave& o = out[size_t(i)];
+    const auto r = philox_block(c.seed, Counter{0, level0 + uint32_t(i), Stream::kNoise}, 0);
+    o.key = r.v[0];
+    o.amp = float(a);
+    if (c.periodic) {
+      // Whole cells per period; u = x / width and v = y / height both run over [0, 1).
+      o.px = int32_t(std::max(1.0, std::round(f)));
+      o.py = int32_t(std::max(1.0, std::round(f * aspect)));
+      o.ipx = 1.0f / float(o.px);
+      o.ipy = 1.0f / float(o.py);
+      o.a11 = float(o.px);
+      o.a22 = float(o.py);
+      o.a12 = o.a21 = 0.0f;
+      // Any shift keeps the noise periodic (the lattice wraps, not the
+      // shift); a fractional one keeps the octaves' cell edges, which nest
+      // when the periods double, from lining up.
+      o.ox = float(double(r.v[1] >> 8) * (double(o.px) / 16777216.0));
+      o.oy = float(double(r.v[2] >> 8) * (double(o.py) / 16777216.0));
+    } else {
+      const double t = c.rotation * i, cs = std::cos(t), sn = std::sin(t);
+      o.a11 = float(f * cs);
+      o.a12 = float(-f * sn);
+      o.a21 = float(f * sn);
+      o.a22 = float(f * cs);
+      // A random origin per octave in [0, 256) cells: the lattice zeros of
+      // the octaves do not line up at (0, 0).
+      o.ox = float(double(r.v[1] >> 8) * (256.0 / 16777216.0));
+      o.oy = float(double(r.v[2] >> 8) * (256.0 / 16777216.0));
+    }
+  }
+  return out;
+}
+
+Plan make_plan(const FbmConfig& c) {
+  Plan p;
+  const double gain = effective_gain(c);
+  p.octaves = make_octaves(c, c.octaves, c.lacunarity, gain, 0);
+  p.basis = c.basis;
+  p.variant = c.variant;
+  p.periodic = c.periodic;
+  p.offset = float(c.offset);
+  double sum = 0;
+  for (const Octave& o : p.octaves) sum += o.amp;
+  const bool bounded = c.variant == FT_FBM_STANDARD || c.variant == FT_FBM_RIDGED;
+  p.scale = float(bounded ? c.sigma / sum : c.sigma);
+  if (c.warp > 0) {
+    // Quilez's warp f(p + w q(p)) with q two independent 4-octave gradient
+    // fbms normalised to about [-1, 1]; w is in base-octave cells.
+    p.warp_x = make_octaves(c, kWarpOctaves, 2.0, 0.5, kWarpXLevel);
+    p.warp_y = make_octaves(c, kWarpOctaves, 2.0, 0.5, kWarpYLevel);
+    double wsum = 0;
+    for (const Octave& o : p.warp_x) wsum += o.amp;
+    const double su = c.periodic ? p.octaves[0].px : c.frequency;
+    const double sv = c.periodic ? p.octaves[0].py : c.frequency;
+    p.warp_u = float(c.warp / (wsum * su));
+    p.warp_v = float(c.warp / (wsum * sv));
+  }
+  return p;
+}
+
+// ---------------------------------------------------------------------------
+// The hot part: one chunk of one row. Everything below is always_inline so
+// that it is compiled inside each of the two dispatch wrappers.
+#define FT_INLINE [[gnu::always_inline]] inline
+
+constexpr int kChunk = 256;  // samples per chunk: 5 arrays of 1 KiB stay in L1
+
+// noise(M (u, v) + o) for n samples into out[]: the one noise call of the octave loop.
+template <int kBasis, bool kPeriodic>
+FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v, float* out) {
+  const float a11 = o.a11, a12 = o.a12, a21 = o.a21, a22 = o.a22, ox = o.ox, oy = o.oy;
+  const uint32_t key = o.key;
+  const int32_t px = o.px, py = o.py;
+  const float ipx = o.ipx, ipy = o.ipy;
+  // The lattice coordinates first, in their own loop: the noise loop below
+  // then needs fewer live constants (AVX2 has 16 vector registers).
+  float xs[kChunk], ys[kChunk];
+  for (int i = 0; i < n; ++i) {
+    xs[i] = (a11 * u[i] + a12 * v[i]) + ox;
+    ys[i] = (a21 * u[i] + a22 * v[i]) + oy;
+  }
+  if constexpr (kBasis == FT_BASIS_CELLULAR_F1 || kBasis == FT_BASIS_CELLULAR_F2F1) {
+    float f2[kChunk];
+    for (int i = 0; i < n; ++i) {
+      const F12 f = cellular_noise<kPeriodic>(key, xs[i], ys[i], px, py, ipx, ipy);
+      out[i] = f.f1;
+      f2[i] = f.f2;
+    }
+    for (int i = 0; i < n; ++i) {
+      const float d1 = std::sqrt(out[i]);
+      out[i] = kBasis == FT_BASIS_CELLULAR_F1 ? d1 : std::sqrt(f2[i]) - d1;
+    }
+  } else {
+    for (int i = 0; i < n; ++i) {
+      if constexpr (kBasis == FT_BASIS_VALUE)
+        out[i] = value_noise<kPeriodic>(key, xs[i], ys[i], px, py, ipx, ipy);
+      else if constexpr (kBasis == FT_BASIS_GRADIENT)
+        out[i] = gradient_noise<kPeriodic>(key, xs[i], ys[i], px, py, ipx, ipy);
+      else
+        out[i] = simplex_noise(key, xs[i], ys[i]);  // periodic simplex is refused by validate_fbm
+    }
+  }
+}
+
+template <bool kPeriodic>
+FT_INLINE void noise_row(int basis, const Octave& o, int n, const float* u, const float* v, float* out) {
+  switch (basis) {
+    case FT_BASIS_VALUE: return basis_row<FT_BASIS_VALUE, kPeriodic>(o, n, u, v, out);
+    case FT_BASIS_GRADIENT: return basis_row<FT_BASIS_GRADIENT, kPeriodic>(o, n, u, v, out);
+    case FT_BASIS_SIMPLEX: return basis_row<FT_BASIS_SIMPLEX, kPeriodic>(o, n, u, v, out);
+    case FT_BASIS_CELLULAR_F1: return basis_row<FT_BASIS_CELLULAR_F1, kPeriodic>(o, n, u, v, out);
+    default: return basis_row<FT_BASIS_CELLULAR_F2F1, kPeriodic>(o, n, u, v, out);
+  }
+}
+
+// The octave loop, the same for every variant: one noise call per octave,
+// then the variant's way of adding it in (Musgrave's formulations, with
+// a_i = gain^i in place of f_i^-H).
+template <bool kPeriodic>
+FT_INLINE void octave_loop(const std::vector<Octave>& octs, int basis, int variant, float offset, int n,
+                           const float* u, const float* v, float* sum) {
+  float noise[kChunk], weight[kChunk];
+  for (size_t k = 0; k < octs.size(); ++k) {
+    const Octave& o = octs[k];
+    noise_row<kPeriodic>(basis, o, n, u, v, noise);
+    const float a = o.amp;
+    const bool first = k == 0;
+    switch (variant) {
+      case FT_FBM_STANDARD:
+        for (int i = 0; i < n; ++i) sum[i] = first ? a * noise[i] : sum[i] + a * noise[i];
+        break;
+      case FT_FBM_RIDGED:  // ridges where the noise crosses zero, sharpened by the octave below
+        for (int i = 0; i < n; ++i) {
+          const float ab = noise[i] < 0.0f ? -noise[i] : noise[i];
+          float s = offset - ab;
+          s = s * s;
+          s = first ? s : s * weight[i];
+          float w = s * 2.0f;
+          w = w > 1.0f ? 1.0f : (w < 0.0f ? 0.0f : w);
+          weight[i] = w;
+          sum[i] = first ? a * s : sum[i] + a * s;
+        }
+        break;
+      case FT_FBM_HYBRID:  // detail grows where the terrain is already high
+        for (int i = 0; i < n; ++i) {
+          const float s = (noise[i] + offset) * a;
+          if (first) {
+            sum[i] = s;
+            weight[i] = s;
+          } else {
+            const float w = weight[i] > 1.0f ? 1.0f : weight[i];
+            sum[i] = sum[i] + w * s;
+            weight[i] = w * s;
+          }
+        }
+        break;
+      default:  // FT_FBM_HETERO: increments scaled by the height so far
+        for (int i = 0; i < n; ++i)
+          sum[i] = first ? offset + noise[i] : sum[i] + ((noise[i] + offset) * a) * sum[i];
+        break;
+    }
+  }
+}
+
+template <bool kPeriodic>
+FT_INLINE void chunk_body(const Plan& p, int n, float* u, float* v, float* out) {
+  if (!p.warp_x.empty()) {
+    // The warp pass: displace the coordinates, then run the octaves on them.
+    float wx[kChunk], wy[kChunk];
+    octave_loop<kPeriodic>(p.warp_x, FT_BASIS_GRADIENT, FT_FBM_STANDARD, 0.0f, n, u, v, wx);
+    octave_loop<kPeriodic>(p.warp_y, FT_BASIS_GRADIENT, FT_FBM_STANDARD, 0.0f, n, u, v, wy);
+    for (int i = 0; i < n; ++i) {
+      u[i] = u[i] + p.warp_u * wx[i];
+      v[i] = v[i] + p.warp_v * wy[i];
+    }
+  }
+  octave_loop<kPeriodic>(p.octaves, p.basis, p.variant, p.offset, n, u, v, out);
+  for (int i = 0; i < n; ++i) out[i] = out[i] * p.scale;
+}
+
+// One row y, samples [x0, x0 + n): normalised coordinates, then the octaves.
+FT_INLINE void row_body(const Plan& p, int32_t width, int32_t height, int32_t y, float* row) {
+  alignas(32) float u[kChunk], v[kChunk];
+  const float inv_w = 1.0f / float(width);
+  const float vy = p.periodic ? float(y) / float(height) : float(y) * inv_w;
+  for (int32_t x0 = 0; x0 < width; x0 += kChunk) {
+    const int n = std::min<int32_t>(kChunk, width - x0);
+    for (int i = 0; i < n; ++i) {
+      u[i] = float(x0 + i) * inv_w;
+      v[i] = vy;
+    }
+    if (p.periodic)
+      chunk_body<true>(p, n, u, v, row + x0);
+    else
+      chunk_body<false>(p, n, u, v, row + x0);
+  }
+}
+#undef FT_INLINE
+
+// Runtime dispatch: the same source compiled twice. Hand-rolled rather than
+// target_clones so a test can force the baseline path and compare bits.
+[[gnu::flatten]] __attribute__((target("avx2"))) void row_avx2(const Plan& p, int32_t w, int32_t h, int32_t y,
+                                                               float* row) {
+  row_body(p, w, h, y, row);
+}
+[[gnu::flatten]] void row_baseline(const Plan& p, int32_t w, int32_t h, int32_t y, float* row) {
+  row_body(p, w, h, y, row);
+}
+
+std::atomic<SimdPath> g_path{SimdPath::kAuto};
+
+using RowFn = void (*)(const Plan&, int32_t, int32_t, int32_t, float*);
+RowFn pick_row_fn() {
+  if (g_path.load() == SimdPath::kAuto && __builtin_cpu_supports("avx2")) return row_avx2;
+  return row_baseline;
+}
+
+// The largest |lattice coordinate| any octave can reach: |M| (|u| + |v|) + origin.
+double max_lattice_coordinate(const FbmConfig& c) {
+  const double umax = 1.0 + c.warp / c.frequency;
+  const double vmax = (c.periodic ? 1.0 : double(c.height) / double(c.width)) + c.warp / c.frequency;
+  const double aspect = c.periodic ? double(c.height) / double(c.width) : 1.0;
+  const double f = c.frequency * std::pow(c.lacunarity, c.octaves - 1) * std::max(1.0, aspect) + 1.0;
+  return f * (umax + vmax) + 256.0;
+}
+
+}  // namespace
+
+double effective_gain(const FbmConfig& c) {
+  return c.gain > 0 ? c.gain : std::pow(c.lacunarity, -c.hurst);
+}
+
+void validate_fbm(const FbmConfig& c) {
+  check_int_range("width", c.width, 2, 65536);
+  check_int_range("height", c.height, 2, 65536);
+  check_int_range("octaves", c.octaves, 1, kMaxOctaves);
+  if (!(c.lacunarity > 1.0) || !std::isfinite(c.lacunarity))
+    invalid("lacunarity must be a finite number > 1 (2 doubles the frequency per octave; 2.01 is a "
+            "common choice), got " + format_number(c.lacunarity));
+  if (std::isnan(c.gain) || c.gain > 1.0)
+    invalid("gain must be in (0, 1] (or <= 0 to use lacunarity^-H), got " + format_number(c.gain));
+  check_range("hurst", c.hurst, 0.0, 1.0);
+  check_int_range("basis", c.basis, FT_BASIS_VALUE, FT_BASIS_CELLULAR_F2F1);
+  check_int_range("variant", c.variant, FT_FBM_STANDARD, FT_FBM_HETERO);
+  check_positive("frequency", c.frequency);
+  check_finite("offset", c.offset);
+  check_finite("rotation", c.rotation);
+  check_range("warp", c.warp, 0.0, kMaxWarp);
+  check_positive("sigma", c.sigma);
+  if (c.periodic && c.basis == FT_BASIS_SIMPLEX)
+    invalid("periodic fbm is available for the value, gradient and cellular bases, not simplex "
+            "(its skewed lattice does not tile a rectangle)");
+  const double m = max_lattice_coordinate(c);
+  if (!(m <= kMaxLatticeCoordinate))
+    invalid("the finest octave is beyond float resolution: frequency " + format_number(c.frequency) +
+            " x lacunarity " + format_number(c.lacunarity) + "^(octaves - 1 = " + std::to_string(c.octaves - 1) +
+            ") reaches lattice coordinate " + format_number(std::round(m)) + ", more than " +
+            format_number(kMaxLatticeCoordinate) + "; use fewer octaves, a smaller lacunarity or frequency");
+}
+
+Heightfield fbm(const FbmConfig& c) {
+  validate_fbm(c);
+  const Plan plan = make_plan(c);
+  Heightfield hf(c.width, c.height);
+  const RowFn row_fn = pick_row_fn();
+  const int threads = resolve_threads(c.threads);
+  // One parallel region, rows handed out dynamically: a single barrier at
+  // the end (barriers per band cost dearly when the cores are shared). The
+  // calling thread (OpenMP's thread 0) reports progress between its rows;
+  // a cancellation stops the others at their next row and is rethrown here.
+  std::atomic<int32_t> done{0};
+  std::atomic<bool> stop{false};
+  std::exception_ptr error;
+#pragma omp parallel num_threads(threads)
+  {
+    const bool caller = omp_get_thread_num() == 0;
+#pragma omp for schedule(dynamic, 2)
+    for (int32_t y = 0; y < c.height; ++y) {
+      if (stop.load(std::memory_order_relaxed)) continue;
+      row_fn(plan, c.width, c.height, y, hf.data() + size_t(y) * c.width);
+      const int32_t d = done.fetch_add(1, std::memory_order_relaxed) + 1;
+      if (caller) {
+        try {
+          c.progress.report(double(d) / c.height);
+        } catch (...) {
+          error = std::current_exception();
+          stop.store(true);
+        }
+      }
+    }
+  }
+  if (error) std::rethrow_exception(error);
+  c.progress.report(1.0);
+  return hf;
+}
+
+namespace detail {
+void set_simd_path(SimdPath path) { g_path.store(path); }
+const char* active_simd_path() { return pick_row_fn() == row_avx2 ? "avx2" : "baseline"; }
+}  // namespace detail
+
+}  // namespace ft

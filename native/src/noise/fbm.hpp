@@ -1,0 +1,69 @@
+// fBm octave noise (Quilez, seed 004) in the FastNoiseLite style: one config,
+// one dispatcher; every fractal variant is the same octave loop around one
+// noise call, and domain warping is a separate pass over the coordinates.
+//
+//   t = sum_i a_i noise(M_i x),  M_i = f_i R(i rotation),  f_i = frequency lacunarity^i,
+//   a_i = gain^i  (gain <= 0: lacunarity^-H, i.e. 2^-H at lacunarity 2)
+//
+// x runs over [0, 1) across the width (samples are x / width, y / width, so
+// cells are square); `frequency` is the number of base-octave cells across
+// the width. Periodic noise rounds every octave's frequency to a whole number
+// of cells per period (across the width and across the height), wraps the
+// lattice, and drops the rotation (a rotated lattice does not tile).
+#pragma once
+
+#include <cstdint>
+
+#include "core/heightfield.hpp"
+#include "core/progress.hpp"
+#include "fracterra/terrain.h"
+
+namespace ft {
+
+// Lattice coordinates above this lose sub-cell resolution in float (the ulp
+// at 2^17 is 1/64 of a cell): an fbm whose finest octave reaches beyond it
+// is refused rather than silently quantised.
+inline constexpr double kMaxLatticeCoordinate = 131072.0;
+inline constexpr int kMaxOctaves = 30;
+inline constexpr double kMaxWarp = 64.0;
+
+struct FbmConfig {
+  int32_t width = 513, height = 513;
+  int32_t octaves = 8;        // 1..30
+  double lacunarity = 2.0;    // > 1
+  double gain = 0.0;          // (0, 1]; <= 0: lacunarity^-H
+  double hurst = 0.8;         // used when gain <= 0
+  int32_t basis = FT_BASIS_GRADIENT;
+  int32_t variant = FT_FBM_STANDARD;
+  double frequency = 4.0;     // base-octave cells across the width, > 0
+  double offset = 1.0;        // ridged / hybrid / hetero offset, finite
+  double rotation = 0.5;      // radians per octave, finite
+  double warp = 0.0;          // domain warp in base cells, 0..64
+  double sigma = 1.0;         // output scale
+  bool periodic = false;
+  uint64_t seed = 1;
+  int threads = 0;
+  Progress progress;
+};
+
+// Throws ft::Error naming the field and its allowed range (octaves, NaN,
+// lacunarity <= 1, finest octave beyond float resolution, ...).
+void validate_fbm(const FbmConfig& c);
+// The amplitude ratio actually used (gain, or lacunarity^-H).
+double effective_gain(const FbmConfig& c);
+// Validates, then fills a width x height heightfield. Output scale: standard
+// and ridged are divided by sum a_i, so standard value/gradient/simplex fbm
+// stays within [-sigma, sigma]; hybrid and hetero are multiplied by sigma only.
+Heightfield fbm(const FbmConfig& c);
+
+namespace detail {
+// Which compiled path runs the octave loop: kAuto picks AVX2 when the CPU has
+// it. kBaseline forces the x86-64 baseline build (a test hook: both paths
+// must give identical bits).
+enum class SimdPath { kAuto, kBaseline };
+void set_simd_path(SimdPath path);
+// "avx2" or "baseline": the path the next fbm call will take.
+const char* active_simd_path();
+}  // namespace detail
+
+}  // namespace ft

@@ -1,0 +1,103 @@
+#include "povray/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace ft::pov {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Vec3 unit(const Vec3& a) {
+  const double n = std::sqrt(dot(a, a));
+  return {a[0] / n, a[1] / n, a[2] / n};
+}
+
+}  // namespace
+
+void validate_camera_options(const CameraOptions& o) {
+  check_range("camera azimuth_deg", o.azimuth_deg, -360, 360);
+  check_range("camera elevation_deg", o.elevation_deg, 1, 90);
+  check_range("camera fov_deg", o.fov_deg, 5, 150);
+  check_range("camera aspect", o.aspect, 0.1, 10);
+  check_range("camera margin", o.margin, 0, 0.5);
+  check_range("camera distance_scale", o.distance_scale, 0.1, 100);
+  check_range("camera center_v", o.center_v, 0.2, 0.8);
+}
+
+bool Camera::project(const Vec3& p, double& u, double& v) const {
+  const Vec3 d{p[0] - location[0], p[1] - location[1], p[2] - location[2]};
+  const double depth = dot(d, direction);
+  if (depth <= 0) return false;
+  // POV-Ray: the image plane spans |right| = aspect across and |up| = 1
+  // down, at distance 0.5 * aspect / tan(angle / 2).
+  const double t = std::tan(fov_deg * kPi / 360);
+  u = 0.5 + dot(d, right) / depth * 0.5 / t;
+  v = 0.5 - dot(d, up) / depth * 0.5 * aspect / t;
+  return true;
+}
+
+Camera frame_points(const std::vector<Vec3>& points, const CameraOptions& o) {
+  validate_camera_options(o);
+  if (points.empty()) invalid("there is nothing to frame: no points");
+  Vec3 lo = points[0], hi = points[0];
+  for (const Vec3& p : points)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const Vec3 centre{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+  const double size = std::max(std::sqrt(dot({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]},
+                                              {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]})),
+                               1e-9);
+  const double az = o.azimuth_deg * kPi / 180, el = o.elevation_deg * kPi / 180;
+  // World azimuth: 0 = +y (POV +z), 90 = +x.
+  const Vec3 to_camera{std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el)};
+  // Tilt: the centre, seen along -to_camera, must land on row center_v, so
+  // the view axis is raised by the angle that puts it there.
+  const double t = std::tan(o.fov_deg * kPi / 360);
+  const double tilt = std::atan((o.center_v - 0.5) * 2 * t / o.aspect);
+  const double pitch = std::max(-el + tilt, -kPi / 2 + 1e-6);  // view axis below the horizon
+  const Vec3 flat{-std::sin(az), 0, -std::cos(az)};
+  Camera c;
+  c.fov_deg = o.fov_deg;
+  c.aspect = o.aspect;
+  c.direction = {flat[0] * std::cos(pitch), std::sin(pitch), flat[2] * std::cos(pitch)};
+  const Vec3 sky = o.elevation_deg > 89.9 ? Vec3{-flat[0], 0, -flat[2]} : Vec3{0, 1, 0};
+  c.right = unit(cross(sky, c.direction));
+  c.up = cross(c.direction, c.right);
+  auto place = [&](double d) {
+    c.location = {centre[0] + to_camera[0] * d, centre[1] + to_camera[1] * d, centre[2] + to_camera[2] * d};
+    c.look_at = {c.location[0] + c.direction[0] * d, c.location[1] + c.direction[1] * d,
+                 c.location[2] + c.direction[2] * d};
+  };
+  auto fits = [&](double d) {
+    place(d);
+    const double m = o.margin / 2;
+    for (const Vec3& p : points) {
+      double u, v;
+      if (!c.project(p, u, v) || u < m || u > 1 - m || v < m || v > 1 - m) return false;
+    }
+    return true;
+  };
+  // Farther always fits better (every point tends to the centre's row), so
+  // bisect the distance between a too-near and a fitting one.
+  double near = 0, far = size;
+  while (!fits(far) && far < size * 1e6) near = far, far *= 2;
+  for (int i = 0; i < 50; ++i) {
+    const double mid = (near + far) / 2;
+    (fits(mid) ? far : near) = mid;
+  }
+  place(std::max(far, 1e-3 * size) * o.distance_scale);
+  return c;
+}
+
+Camera frame_box(const Vec3& lo, const Vec3& hi, const CameraOptions& o) {
+  std::vector<Vec3> corners;
+  for (int i = 0; i < 8; ++i) corners.push_back({i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]});
+  return frame_points(corners, o);
+}
+
+}  // namespace ft::pov

@@ -1,0 +1,39 @@
+// A perspective camera framed on a box of content, and the projection
+// POV-Ray's camera makes of it (so tests can say where a point must land).
+#pragma once
+
+#include <vector>
+
+#include "core/polyline_set.hpp"
+
+namespace ft::pov {
+
+struct CameraOptions {
+  double azimuth_deg = 200;    // compass direction from the content to the camera: 0 = +y (north), 90 = +x
+  double elevation_deg = 22;   // above the horizon, 1..90
+  double fov_deg = 50;         // horizontal field of view (POV-Ray `angle`), 5..150
+  double aspect = 4.0 / 3.0;   // image width / height the framing is made for, 0.1..10
+  double margin = 0.04;        // free border, fraction of the half-frame, 0..0.5
+  double distance_scale = 1;   // > 1 moves the camera away from the framed distance, 0.1..100
+  double center_v = 0.6;       // image row (0 top .. 1 bottom) of the content's centre, 0.2..0.8:
+                               // below 0.5 tilts the view up and shows more sky
+};
+
+struct Camera {
+  Vec3 location{}, look_at{};    // POV axes
+  Vec3 right{}, up{}, direction{};  // unit vectors (POV axes, left-handed)
+  double fov_deg = 45, aspect = 4.0 / 3.0;
+  // Image position of a POV point in 0..1 (u right, v down from the top);
+  // false when it is behind the camera.
+  bool project(const Vec3& p, double& u, double& v) const;
+};
+
+void validate_camera_options(const CameraOptions& o);
+// The camera placed towards the given azimuth and elevation from the centre
+// of the points' box, tilted so that centre lands on row center_v, just far
+// enough for every point to fit the frame within the margin.
+Camera frame_points(const std::vector<Vec3>& points, const CameraOptions& o);
+// The same for the 8 corners of the POV box [lo, hi].
+Camera frame_box(const Vec3& lo, const Vec3& hi, const CameraOptions& o);
+
+}  // namespace ft::pov

@@ -1,0 +1,269 @@
+#include "povray/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "povray/sdl_writer.hpp"
+#include "povray/sphere_sweep_export.hpp"
+
+namespace ft::pov {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void grow(Vec3& lo, Vec3& hi, const Vec3& p) {
+  for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+}
+
+std::string default_image_path(const std::string& pov_path) {
+  std::filesystem::path p(pov_path);
+  return p.replace_extension(".terrain.png").string();
+}
+
+const char* kind_name(LineKind k) {
+  switch (k) {
+    case LineKind::kLightning: return "lightning";
+    case LineKind::kCoastline: return "coastline";
+    default: return "line";
+  }
+}
+
+// Scene-level materials, each replaceable by declaring it before including
+// the scene (the povray tests do that to paint the terrain flat).
+const char* kSceneMaterials = R"(#ifndef(FT_Lightning_Tex)
+#declare FT_Lightning_Tex = texture {
+   pigment { rgb <0.85, 0.88, 1.0> }
+   finish { emission 3 diffuse 0 }
+}
+#end
+#ifndef(FT_Lightning_Glow_Tex)
+#declare FT_Lightning_Glow_Tex = texture {
+   pigment { rgbt <0.55, 0.65, 1.0, 0.85> }
+   finish { emission 0.8 diffuse 0 }
+}
+#end
+#ifndef(FT_Coast_Tex)
+#declare FT_Coast_Tex = texture {
+   pigment { rgb <0.96, 0.97, 1.0> }
+   finish { emission 0.35 diffuse 0.7 }
+}
+#end
+#ifndef(FT_Line_Tex)
+#declare FT_Line_Tex = texture {
+   pigment { rgb <0.95, 0.42, 0.08> }
+   finish { diffuse 0.8 specular 0.3 roughness 0.02 }
+}
+#end
+#ifndef(FT_Ground_Tex)
+#declare FT_Ground_Tex = texture {
+   pigment { rgb <0.55, 0.55, 0.52> }
+   finish { diffuse 0.8 }
+}
+#end
+)";
+
+}  // namespace
+
+void validate_scene_params(const SceneParams& p) {
+  if (p.terrain) validate_terrain(*p.terrain, p.size_x, p.size_y, p.vertical_scale);
+  if (p.has_water) check_finite("water_level", p.water_level);
+  validate_camera_options(p.camera);
+  check_range("sun_azimuth_deg", p.sun_azimuth_deg, -360, 360);
+  check_range("sun_elevation_deg", p.sun_elevation_deg, 1, 90);
+  for (const auto& l : p.lines) {
+    check_not_null("polyline set", l.set);
+    if (l.kind != LineKind::kGeneric && l.kind != LineKind::kLightning && l.kind != LineKind::kCoastline)
+      invalid("polyline kind must be 0 (line), 1 (lightning) or 2 (coastline), got " +
+              std::to_string(int(l.kind)));
+    if (!(l.radius >= 0) || !std::isfinite(l.radius))
+      invalid("polyline radius must be finite and >= 0 (0 = automatic), got " + format_number(l.radius));
+  }
+  if (!p.terrain && p.lines.empty()) invalid("a scene needs a terrain or at least one polyline set");
+}
+
+SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
+  validate_scene_params(p);
+  AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
+  const std::string folder = folder_of(pov_path);
+  SceneSummary sum;
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  const double water = p.has_water ? p.water_level : NAN;
+
+  // What the camera frames (POV axes): the land above the sea on a 65 x 65
+  // lattice of the terrain, and every polyline vertex.
+  std::vector<Vec3> frame;
+  if (p.terrain) {
+    sum.terrain = place_terrain(*p.terrain, p.size_x, p.size_y, p.vertical_scale);
+    const Heightfield& hf = *p.terrain;
+    std::vector<Vec3> under;
+    for (int j = 0; j <= 64; ++j)
+      for (int i = 0; i <= 64; ++i) {
+        const int x = int(std::lround(i * (hf.width() - 1) / 64.0)), y = int(std::lround(j * (hf.height() - 1) / 64.0));
+        const Vec3 q{x * p.size_x / (hf.width() - 1), hf.at(x, y) * p.vertical_scale, y * p.size_y / (hf.height() - 1)};
+        (p.has_water && q[1] < water ? under : frame).push_back(q);
+      }
+    if (frame.empty())
+      for (Vec3 q : under) frame.push_back({q[0], water, q[2]});  // all under the sea
+  }
+  for (const auto& l : p.lines)
+    for (const Vec3& w : l.set->points) {
+      Vec3 q = to_pov(w);
+      if (l.kind == LineKind::kCoastline && p.has_water) q[1] = water;
+      frame.push_back(q);
+    }
+  if (frame.empty()) invalid("the scene is empty: the polyline sets hold no vertices");
+  for (const Vec3& q : frame) grow(lo, hi, q);
+  const double extent = std::max({hi[0] - lo[0], hi[2] - lo[2], hi[1] - lo[1], 1e-9});
+  sum.lo = lo;
+  sum.hi = hi;
+  sum.camera = frame_points(frame, p.camera);
+  const Camera& cam = sum.camera;
+  const Vec3 centre = cam.look_at;
+  bool stormy = false;
+  for (const auto& l : p.lines) stormy = stormy || l.kind == LineKind::kLightning;
+
+  std::string s;
+  s += "// fracterra scene" + (p.title.empty() ? std::string() : ": " + comment_text(p.title)) + "\n";
+  s += "// Render: fracterra render " + comment_text(std::filesystem::path(pov_path).filename().string()) +
+       " --width 800 --height 600 --out image.png\n";
+  s += "//     or: povray +W800 +H600 +A0.1 " +
+       comment_text(std::filesystem::path(pov_path).filename().string()) + "\n";
+  s += "// Axes: fracterra world (x, y, z up) is POV-Ray <x, z, y>; units are world units.\n";
+  s += "#version 3.7;\n";
+  s += "global_settings { assumed_gamma 1.0 max_trace_level 6 }\n\n";
+  s += "#ifndef(FT_Texture_Scale) #declare FT_Texture_Scale = " + number(extent / 200) + "; #end\n";
+  s += "// ---- povray_macros/ft_terrain.inc, embedded so the scene stands alone ----\n";
+  s += kFtTerrainInc;
+  s += "// ---- end of ft_terrain.inc ----\n\n";
+  s += kSceneMaterials;
+  s += "\n#declare FT_Scene_Min = " + vec(lo) + ";\n#declare FT_Scene_Max = " + vec(hi) + ";\n\n";
+
+  s += "camera {\n  perspective\n  location " + vec(cam.location) + "\n  sky " +
+       vec(cam.up) +
+       "\n  right x*image_width/image_height\n  angle " + number(cam.fov_deg) + "\n  look_at " +
+       vec(cam.look_at) + "\n}\n\n";
+
+  const double saz = p.sun_azimuth_deg * kPi / 180, sel = p.sun_elevation_deg * kPi / 180;
+  const double far = extent * 100;
+  const Vec3 sun{centre[0] + far * std::sin(saz) * std::cos(sel), centre[1] + far * std::sin(sel),
+                 centre[2] + far * std::cos(saz) * std::cos(sel)};
+  s += "light_source {\n  " + vec(sun) + "\n  color rgb " +
+       (stormy ? std::string("<0.55, 0.58, 0.70>") : std::string("<1.25, 1.2, 1.1>")) +
+       "\n  parallel point_at " + vec(centre) + "\n}\n";
+  // A dim fill from the sky side so shadows are not black.
+  s += "light_source { " + vec({centre[0] - (sun[0] - centre[0]), centre[1] + far, centre[2] - (sun[2] - centre[2])}) +
+       " color rgb " + (stormy ? "<0.10, 0.11, 0.16>" : std::string("<0.18, 0.2, 0.26>")) +
+       " parallel point_at " + vec(centre) + " shadowless }\n\n";
+  if (stormy)
+    s += "sky_sphere { pigment { gradient y color_map { [0 rgb <0.30, 0.31, 0.38>] [0.25 rgb <0.12, 0.13, "
+         "0.20>] [1 rgb <0.04, 0.05, 0.10>] } } }\n\n";
+  else
+    s += "sky_sphere { pigment { gradient y color_map { [0 rgb <0.80, 0.86, 0.95>] [0.2 rgb <0.45, 0.62, "
+         "0.90>] [1 rgb <0.18, 0.34, 0.72>] } } }\n\n";
+
+  if (p.has_water) s += "plane { y, " + number(water) + " texture { FT_Sea_Tex } }\n\n";
+
+  if (p.terrain) {
+    const std::string image = p.image_path.empty() ? default_image_path(pov_path) : p.image_path;
+    sum.terrain = write_heightfield_png(*p.terrain, image, p.size_x, p.size_y, p.vertical_scale);
+    sum.image_path = image;
+    const double zw = p.has_water ? water : sum.terrain.z_min - 1;
+    s += "#declare FT_Terrain_Object = ";
+    s += heightfield_sdl(relative_path(image, folder), sum.terrain, water);
+    s += "object { FT_Terrain_Object\n  FT_Terrain_Texture(" + number(sum.terrain.z_min) + ", " +
+         number(sum.terrain.z_max) + ", " + number(zw) + ")\n}\n\n";
+  } else {
+    // Polylines alone: a ground to catch their shadows, just below them.
+    s += "plane { y, " + number(lo[1] - 0.02 * extent) + " texture { FT_Ground_Tex } }\n\n";
+  }
+
+  for (size_t i = 0; i < p.lines.size(); ++i) {
+    const SceneLines& l = p.lines[i];
+    SweepOptions o;
+    const double auto_r = l.kind == LineKind::kLightning   ? 0.0035 * extent
+                          : l.kind == LineKind::kCoastline ? 0.0012 * extent
+                                                           : 0.003 * extent;
+    o.default_radius = l.radius > 0 ? l.radius : auto_r;
+    if (l.kind == LineKind::kCoastline && p.has_water) o.use_z_override = true, o.z_override = water;
+    const char* tex = l.kind == LineKind::kLightning   ? "FT_Lightning_Tex"
+                      : l.kind == LineKind::kCoastline ? "FT_Coast_Tex"
+                                                       : "FT_Line_Tex";
+    const std::string mods = std::string("  texture { ") + tex + " }\n" +
+                             (l.kind == LineKind::kLightning ? "  no_shadow\n" : "");
+    s += "// polyline set " + std::to_string(i + 1) + ": " + kind_name(l.kind) + ", " +
+         std::to_string(l.set->line_count()) + " lines, " + std::to_string(l.set->vertex_count()) +
+         " vertices\n";
+    s += sweeps_sdl(*l.set, o, mods);
+    if (l.kind == LineKind::kLightning) {
+      // A faint wide tube around the bolt reads as its glow. A `merge` would
+      // hide the faint overlap of the pieces' end spheres but renders 3x
+      // slower; at 85% transmit the overlap is barely visible.
+      SweepOptions g = o;
+      g.radius_scale = 4;
+      const std::string glow = sweeps_sdl(*l.set, g, "  texture { FT_Lightning_Glow_Tex }\n  no_shadow\n");
+      s += glow;
+    }
+    if (l.kind == LineKind::kLightning && !l.set->points.empty()) {
+      // The bolt lights what is near its foot (its lowest vertex).
+      Vec3 foot = to_pov(l.set->points[0]);
+      for (const Vec3& w : l.set->points)
+        if (w[2] < foot[1]) foot = to_pov(w);
+      foot[1] += 0.02 * extent;
+      s += "light_source { " + vec(foot) + " color rgb <0.9, 0.95, 1.3>*2 fade_distance " +
+           number(0.08 * extent) + " fade_power 2 shadowless }\n";
+    }
+    s += "\n";
+  }
+
+  out.write(s);
+  out.commit();
+  return sum;
+}
+
+void set_scene_terrain(SceneParams& p, const Heightfield& hf, double size_x, double vertical_scale,
+                       double sea_fraction) {
+  check_positive("terrain size_x", size_x);
+  if (!(vertical_scale >= 0) || !std::isfinite(vertical_scale))
+    invalid("vertical_scale must be finite and >= 0 (0 = automatic), got " + format_number(vertical_scale));
+  if (!std::isnan(sea_fraction)) check_range("sea_fraction", sea_fraction, 0, 0.999);
+  validate_terrain(hf, 1, 1, 1);
+  const HeightStats st = hf.stats();
+  if (!std::isfinite(st.min) || !std::isfinite(st.max)) invalid("the terrain holds NaN or infinite samples");
+  p.terrain = &hf;
+  p.size_x = size_x;
+  p.size_y = size_x * double(hf.height() - 1) / double(hf.width() - 1);
+  p.vertical_scale = vertical_scale > 0 ? vertical_scale
+                     : st.max > st.min  ? 0.2 * size_x / (st.max - st.min)
+                                        : 1.0;
+  p.has_water = !std::isnan(sea_fraction);
+  if (p.has_water) {
+    std::vector<float> z(hf.data(), hf.data() + hf.size());
+    const size_t k = std::min(z.size() - 1, size_t(sea_fraction * double(z.size())));
+    std::nth_element(z.begin(), z.begin() + std::ptrdiff_t(k), z.end());
+    // Exactly at a sample the sea would cut that sample's flat neighbourhood
+    // in stripes: sit a hair above it.
+    p.water_level = (double(z[k]) + 1e-4 * (st.max - st.min)) * p.vertical_scale;
+  }
+}
+
+SceneSummary write_terrain_scene(const Heightfield& hf, const std::string& pov_path) {
+  SceneParams p;
+  set_scene_terrain(p, hf);
+  p.title = "terrain " + std::to_string(hf.width()) + " x " + std::to_string(hf.height());
+  return write_scene(p, pov_path);
+}
+
+SceneSummary write_polyline_scene(const PolylineSet& set, const std::string& pov_path, LineKind kind,
+                                  double radius, const CameraOptions& camera) {
+  SceneParams p;
+  p.lines.push_back({&set, kind, radius});
+  p.camera = camera;
+  p.title = std::string(kind_name(kind)) + " polylines";
+  return write_scene(p, pov_path);
+}
+
+}  // namespace ft::pov

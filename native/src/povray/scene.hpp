@@ -1,0 +1,77 @@
+// Complete POV-Ray scenes a person can render at once: a terrain as a
+// height_field with materials by altitude and slope, a sea at the water
+// level, polylines as chunked sphere_sweeps (lightning glowing, coastlines
+// as thin lines on the sea), a sun, a sky and a camera framed on it all.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/heightfield.hpp"
+#include "core/polyline_set.hpp"
+#include "povray/camera.hpp"
+#include "povray/heightfield_export.hpp"
+
+namespace ft::pov {
+
+enum class LineKind : int32_t { kGeneric = 0, kLightning = 1, kCoastline = 2 };
+
+struct SceneLines {
+  const PolylineSet* set = nullptr;  // world units, not owned
+  LineKind kind = LineKind::kGeneric;
+  double radius = 0;  // world units where a vertex has none; 0 = by kind and scene size
+};
+
+struct SceneParams {
+  const Heightfield* terrain = nullptr;  // may be null (a polyline scene)
+  double size_x = 1, size_y = 1, vertical_scale = 1;
+  bool has_water = false;
+  double water_level = 0;                // world z of the sea
+  std::vector<SceneLines> lines;
+  CameraOptions camera;
+  double sun_azimuth_deg = 235, sun_elevation_deg = 35;
+  // The terrain PNG; "" = beside the scene, named after it ("x.pov" -> "x.terrain.png").
+  std::string image_path;
+  std::string title;                     // written as a comment
+};
+
+struct SceneSummary {
+  Camera camera;
+  TerrainPlacement terrain;              // width 0 without terrain
+  Vec3 lo{}, hi{};                       // content box, POV axes
+  std::string image_path;
+};
+
+void validate_scene_params(const SceneParams& p);
+// Writes the PNG and the scene, each atomically; the scene's folder is
+// checked first, so an unwritable destination fails before anything is
+// written. Throws ft::Error.
+SceneSummary write_scene(const SceneParams& p, const std::string& pov_path);
+
+// Puts a terrain into `p`: size_x > 0 (size_y follows the grid's aspect),
+// vertical_scale 0 = automatic (relief = 20% of size_x), sea_fraction in
+// [0, 1) puts the sea at that quantile of the heights (NaN: no sea).
+void set_scene_terrain(SceneParams& p, const Heightfield& hf, double size_x = 1, double vertical_scale = 0,
+                       double sea_fraction = 0.3);
+// `fracterra terrain ... --pov`: the terrain alone with defaults as above.
+SceneSummary write_terrain_scene(const Heightfield& hf, const std::string& pov_path);
+
+// Camera defaults for a polyline alone: seen from high above (70 degrees).
+inline CameraOptions polyline_camera() {
+  CameraOptions c;
+  c.elevation_deg = 70;
+  return c;
+}
+
+// `fracterra polyline ... --pov`: one polyline set alone, framed, over a
+// plain ground, as a lightning, coastline or generic line.
+SceneSummary write_polyline_scene(const PolylineSet& set, const std::string& pov_path,
+                                  LineKind kind = LineKind::kGeneric, double radius = 0,
+                                  const CameraOptions& camera = polyline_camera());
+
+// The include files of povray_macros/ this writer embeds in every scene so
+// a scene needs nothing beside its PNG (generated from the .inc at build).
+extern const char* const kFtTerrainInc;
+
+}  // namespace ft::pov

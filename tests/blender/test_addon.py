@@ -1,0 +1,295 @@
+"""The installed add-on in real Blender: every operator with explicit
+parameters, vertex counts, heights bit-identical to the library's output,
+re-editing in place, presets, and error reports instead of tracebacks."""
+
+import array
+import os
+import random
+import sys
+import unittest
+from pathlib import Path
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import addon_harness  # noqa: E402
+
+import bpy  # noqa: E402
+
+
+def core():
+    import fracterra.core
+    return fracterra.core
+
+
+def clear_scene():
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj)
+    for mesh in list(bpy.data.meshes):
+        bpy.data.meshes.remove(mesh)
+
+
+def coords(mesh):
+    co = array.array("f", [0.0]) * (3 * len(mesh.vertices))
+    mesh.vertices.foreach_get("co", co)
+    return co
+
+
+def f32(x):
+    """x as Blender stores a FloatProperty (float32): the library sees that value."""
+    return array.array("f", [x])[0]
+
+
+def library_heights(**values):
+    """The library's own heights for these settings, with floats rounded as Blender stores them."""
+    values = {k: f32(v) if isinstance(v, float) else v for k, v in values.items()}
+    for name in ("hurst", "sigma"):  # defaults too come through float properties
+        values.setdefault(name, f32(core().params.PARAMS_BY_NAME[name].default))
+    with core().generate_terrain(values) as hf:
+        return hf.to_array()
+
+
+def add_terrain(**kw):
+    result = bpy.ops.mesh.fracterra_terrain_add(**kw)
+    assert result == {"FINISHED"}, result
+    return bpy.context.active_object
+
+
+class OperatorError(AssertionError):
+    pass
+
+
+def expect_report(test, call, *fragments):
+    """`call` must fail with an operator error report containing `fragments`, not a traceback."""
+    with test.assertRaises(RuntimeError) as cm:
+        call()
+    message = str(cm.exception)
+    test.assertNotIn("Traceback", message)
+    test.assertTrue(message.startswith("Error: "), message)
+    for f in fragments:
+        test.assertIn(f, message)
+    return message
+
+
+class TerrainAddTest(unittest.TestCase):
+    def setUp(self):
+        clear_scene()
+
+    def test_operator_is_registered_with_redo_undo_and_presets(self):
+        op = bpy.ops.mesh.fracterra_terrain_add
+        self.assertEqual(op.get_rna_type().identifier, "MESH_OT_fracterra_terrain_add")
+        self.assertEqual(set(op.bl_options), {"REGISTER", "UNDO", "PRESET"})
+        self.assertEqual(set(bpy.ops.object.fracterra_terrain_regenerate.bl_options), {"REGISTER", "UNDO"})
+        draw_funcs = [f.__name__ for f in bpy.types.VIEW3D_MT_mesh_add._dyn_ui_initialize()]
+        self.assertIn("menu_mesh_add", draw_funcs)
+
+    def test_midpoint_grid_has_the_right_counts_and_library_heights(self):
+        obj = add_terrain(method="MIDPOINT", levels=5, hurst=0.6, sigma=2.0, seed=7, world_size=10.0)
+        mesh = obj.data
+        self.assertEqual(len(mesh.vertices), 33 * 33)
+        self.assertEqual(len(mesh.edges), 2 * 33 * 32)
+        self.assertEqual(len(mesh.polygons), 32 * 32)
+        self.assertEqual(len(mesh.loops), 4 * 32 * 32)
+        self.assertFalse(mesh.validate(verbose=False), "Blender had to repair the mesh")
+        z = coords(mesh)[2::3]
+        expected = library_heights(method="MIDPOINT", levels=5, hurst=0.6, sigma=2.0, seed=7)
+        self.assertEqual(z.tobytes(), expected.tobytes())
+        co = coords(mesh)
+        self.assertAlmostEqual(min(co[0::3]), -5.0, places=5)
+        self.assertAlmostEqual(max(co[1::3]), 5.0, places=5)
+        self.assertIsNotNone(mesh.uv_layers.get("UVMap"))
+        self.assertTrue(all(p.use_smooth for p in mesh.polygons))
+        settings = obj.fracterra_terrain
+        self.assertTrue(settings.is_terrain)
+        self.assertEqual((settings.levels, settings.seed, settings.method), (5, 7, "MIDPOINT"))
+        self.assertAlmostEqual(settings.hurst, 0.6, places=6)
+
+    def test_additions_gives_the_library_heights(self):
+        obj = add_terrain(method="ADDITIONS", levels=4, hurst=0.5, seed=3, uvs=False, smooth=False)
+        self.assertEqual(coords(obj.data)[2::3].tobytes(),
+                         library_heights(method="ADDITIONS", levels=4, hurst=0.5, seed=3).tobytes())
+        self.assertEqual(len(obj.data.uv_layers), 0)
+        self.assertFalse(obj.data.polygons[0].use_smooth)
+
+    def test_other_methods_build_or_report_the_library_message(self):
+        for method in ("FBM", "SPECTRAL", "INTERPOLATED"):
+            kw = dict(method=method, width=40, height=24, seed=5)
+            try:
+                obj = add_terrain(**kw)
+            except RuntimeError as e:
+                self.assertNotIn("Traceback", str(e))
+                self.assertIn("not available", str(e))
+                continue
+            self.assertEqual(len(obj.data.vertices), 40 * 24)
+            self.assertEqual(coords(obj.data)[2::3].tobytes(),
+                             library_heights(method=method, width=40, height=24, seed=5).tobytes())
+
+    def test_sea_level_flattens_the_low_ground(self):
+        obj = add_terrain(levels=5, seed=2, use_sea_level=True, sea_level=0.25)
+        z = coords(obj.data)[2::3]
+        lib = library_heights(levels=5, seed=2)
+        self.assertEqual(min(z), f32(0.25))
+        self.assertEqual(list(z), [max(h, f32(0.25)) for h in lib])
+
+    def test_presets_apply_and_build(self):
+        folder = Path(bpy.utils.user_resource("SCRIPTS", path="presets/operator/mesh.fracterra_terrain_add"))
+        presets = sorted(folder.glob("*.py"))
+        self.assertGreaterEqual(len(presets), 3, f"no presets installed in {folder}")
+
+        class Recorder:
+            pass
+
+        for preset in presets:
+            op = Recorder()
+            body = preset.read_text().replace("op = bpy.context.active_operator", "")
+            exec(compile(body, str(preset), "exec"), {"bpy": bpy, "op": op})
+            values = dict(vars(op))
+            values["levels"] = min(values.get("levels", 5), 5)  # keep the test fast
+            obj = add_terrain(**values)
+            for name, value in values.items():
+                got = getattr(obj.fracterra_terrain, name)
+                if isinstance(value, float):
+                    self.assertAlmostEqual(got, value, places=5, msg=f"{preset.name}: {name}")
+                else:
+                    self.assertEqual(got, value, f"{preset.name}: {name}")
+
+    def test_reference_grid_object_heights_survive_at_the_nodes(self):
+        # A 9 x 9 grid (m = 3) in shuffled vertex order: the add-on sorts by y, then x.
+        rng = random.Random(4)
+        pts = [(x, y, rng.uniform(-1, 1)) for y in range(9) for x in range(9)]
+        shuffled = pts[:]
+        rng.shuffle(shuffled)
+        ref_mesh = bpy.data.meshes.new("ref")
+        ref_mesh.from_pydata(shuffled, [], [])
+        ref = bpy.data.objects.new("Reference Grid", ref_mesh)
+        bpy.context.scene.collection.objects.link(ref)
+        obj = add_terrain(levels=5, seed=1, reference_source="OBJECT", reference_object=ref.name)
+        z = coords(obj.data)[2::3]
+        step = 32 // 8
+        for j in range(9):
+            for i in range(9):
+                self.assertEqual(z[(j * step) * 33 + i * step], array.array("f", [pts[j * 9 + i][2]])[0])
+
+    def test_reference_image_corners_survive(self):
+        img = bpy.data.images.new("ref", 8, 8, alpha=False, float_buffer=True)
+        px = [0.5, 0.5, 0.5, 1.0] * 64
+        for (x, y), v in {(0, 0): 0.0, (7, 0): 1.0, (0, 7): 0.25, (7, 7): 0.75}.items():
+            px[4 * (y * 8 + x):4 * (y * 8 + x) + 3] = [v, v, v]
+        img.pixels.foreach_set(px)
+        obj = add_terrain(levels=4, seed=1, reference_source="IMAGE", reference_image=img.name,
+                          reference_levels=2, reference_height=4.0)
+        z = coords(obj.data)[2::3]
+        n = 17
+        for (row, col), v in {(0, 0): 0.0, (0, n - 1): 4.0, (n - 1, 0): 1.0, (n - 1, n - 1): 3.0}.items():
+            self.assertAlmostEqual(z[row * n + col], v, places=5)
+
+    def test_non_grid_reference_object_is_an_error_report(self):
+        bpy.ops.mesh.primitive_cube_add()
+        cube = bpy.context.active_object.name
+        expect_report(self, lambda: bpy.ops.mesh.fracterra_terrain_add(
+            levels=4, reference_source="OBJECT", reference_object=cube), "(2^m + 1)^2", cube)
+        self.assertEqual(len([m for m in bpy.data.meshes if m.users == 0]), 0, "a failed add left a mesh")
+
+    def test_reference_finer_than_the_terrain_is_the_library_message(self):
+        img = bpy.data.images.new("ref2", 4, 4)
+        expect_report(self, lambda: bpy.ops.mesh.fracterra_terrain_add(
+            levels=2, reference_source="IMAGE", reference_image=img.name, reference_levels=3),
+            "reference_size must be 2^m + 1")
+
+    def test_memory_cap_is_an_error_report(self):
+        lib = core().library()
+        lib.ft_set_memory_cap(1 << 20)
+        try:
+            expect_report(self, lambda: bpy.ops.mesh.fracterra_terrain_add(levels=10), "1025")
+        finally:
+            lib.ft_set_memory_cap(0)
+        self.assertEqual(len(bpy.data.objects), 0)
+
+
+class RecordingLayout:
+    """Stands in for a UILayout (there is no window in background mode): records
+    every prop()/prop_search() so the test can check the drawn properties exist."""
+
+    def __init__(self, log):
+        self.log = log
+
+    def __getattr__(self, name):
+        def call(*args, **kw):
+            if name in ("prop", "prop_search"):
+                self.log.append((args[0], args[1]))
+            return RecordingLayout(self.log)
+        return call
+
+
+class DrawTest(unittest.TestCase):
+    def test_settings_ui_draws_only_existing_properties_for_every_method(self):
+        from fracterra.blender import panels, props
+        clear_scene()
+        obj = add_terrain(levels=3)
+        settings = obj.fracterra_terrain
+        for method in ("MIDPOINT", "ADDITIONS", "FBM", "SPECTRAL", "INTERPOLATED"):
+            for source in ("NONE", "OBJECT", "IMAGE"):
+                settings.method, settings.reference_source = method, source
+                log = []
+                props.draw_settings(RecordingLayout(log), settings)
+                fake_panel = type("P", (), {"layout": RecordingLayout(log)})()
+                panels.FRACTERRA_PT_terrain.draw(fake_panel, bpy.context)
+                self.assertTrue(log)
+                for data, name in log:
+                    self.assertIn(name, data.bl_rna.properties.keys(), f"{method}/{source}: {name}")
+
+
+class RegenerateTest(unittest.TestCase):
+    def setUp(self):
+        clear_scene()
+
+    def test_new_seed_rewrites_heights_in_the_same_mesh(self):
+        obj = add_terrain(levels=5, seed=1, world_size=8.0)
+        mesh = obj.data
+        pointer = mesh.as_pointer()
+        edges = array.array("I", [0]) * (2 * len(mesh.edges))
+        mesh.edges.foreach_get("vertices", edges)
+        obj.fracterra_terrain.seed = 99
+        self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
+        self.assertEqual(obj.data.as_pointer(), pointer)
+        self.assertEqual(coords(obj.data)[2::3].tobytes(), library_heights(levels=5, seed=99).tobytes())
+        after = array.array("I", [0]) * (2 * len(obj.data.edges))
+        obj.data.edges.foreach_get("vertices", after)
+        self.assertEqual(edges, after)
+
+    def test_new_levels_rebuild_the_grid(self):
+        obj = add_terrain(levels=3, seed=1)
+        obj.fracterra_terrain.levels = 5
+        bpy.ops.object.fracterra_terrain_regenerate()
+        self.assertEqual(len(obj.data.vertices), 33 * 33)
+        self.assertFalse(obj.data.validate(verbose=False))
+        self.assertEqual(coords(obj.data)[2::3].tobytes(), library_heights(levels=5, seed=1).tobytes())
+
+    def test_auto_update_regenerates_on_change(self):
+        obj = add_terrain(levels=4, seed=1)
+        obj.fracterra_terrain.auto_update = True
+        obj.fracterra_terrain.hurst = 0.3
+        self.assertEqual(coords(obj.data)[2::3].tobytes(), library_heights(levels=4, seed=1, hurst=0.3).tobytes())
+
+    def test_toggling_uvs_and_smooth_in_place(self):
+        obj = add_terrain(levels=3, uvs=True, smooth=True)
+        obj.fracterra_terrain.uvs = False
+        obj.fracterra_terrain.smooth = False
+        bpy.ops.object.fracterra_terrain_regenerate()
+        self.assertEqual(len(obj.data.uv_layers), 0)
+        self.assertFalse(any(p.use_smooth for p in obj.data.polygons))
+
+    def test_regenerate_error_is_a_report_and_keeps_the_mesh(self):
+        obj = add_terrain(levels=3, seed=1)
+        before = coords(obj.data)
+        obj.fracterra_terrain.reference_source = "OBJECT"
+        obj.fracterra_terrain.reference_object = "no such object"
+        expect_report(self, bpy.ops.object.fracterra_terrain_regenerate, "Grid Object")
+        self.assertEqual(coords(obj.data), before)
+        self.assertIn("Grid Object", obj.fracterra_terrain.last_error)
+
+    def test_regenerate_needs_a_terrain(self):
+        bpy.ops.mesh.primitive_cube_add()
+        self.assertFalse(bpy.ops.object.fracterra_terrain_regenerate.poll())
+
+
+if __name__ == "__main__":
+    addon_harness.run(globals())

@@ -1,0 +1,46 @@
+# The add-on in real Blender (blender -b --factory-startup): the built zip is
+# installed into a scratch user scripts folder and every operator is run.
+find_program(FT_BLENDER blender)
+if(FT_BLENDER)
+  set(FT_BLENDER_ZIP ${PROJECT_BINARY_DIR}/blender_addon/fracterra.zip)
+  foreach(name addon missing_library)
+    set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_${name})
+    add_test(NAME blender_${name}
+      COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch}
+              ${FT_BLENDER} -b --factory-startup --python-exit-code 1
+              --python ${CMAKE_CURRENT_LIST_DIR}/test_${name}.py -- --zip ${FT_BLENDER_ZIP})
+    set_tests_properties(blender_${name} PROPERTIES LABELS blender TIMEOUT 120
+      FIXTURES_REQUIRED blender_scratch)
+  endforeach()
+  # The installed add-on must use its bundled library, except in the test of a missing one.
+  set_tests_properties(blender_addon PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
+  set_tests_properties(blender_missing_library PROPERTIES
+    ENVIRONMENT "FRACTERRA_LIBRARY=${CMAKE_CURRENT_BINARY_DIR}/no-such-dir/libfracterra.so")
+  add_test(NAME blender_scratch_clean
+    COMMAND ${CMAKE_COMMAND} -E rm -rf ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_addon
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_missing_library)
+  set_tests_properties(blender_scratch_clean PROPERTIES FIXTURES_SETUP blender_scratch LABELS blender)
+endif()
+
+# The headless demo script, run from the source tree with the built library
+# (a tiny render keeps it to a few seconds).
+if(FT_BLENDER)
+  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_example)
+  add_test(NAME blender_example_scene
+    COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch} FRACTERRA_LIBRARY=$<TARGET_FILE:fracterra>
+            ${FT_BLENDER} -b --factory-startup --python ${PROJECT_SOURCE_DIR}/examples/20_blender_scene.py
+            -- --out ${CMAKE_CURRENT_BINARY_DIR}/example_scene --levels 6 --resolution 96x54 --samples 2)
+  set_tests_properties(blender_example_scene PROPERTIES LABELS blender TIMEOUT 120)
+endif()
+
+# Undo needs a window (background Blender keeps no undo stack): run it under Xvfb.
+find_program(FT_XVFB_RUN xvfb-run)
+if(FT_BLENDER AND FT_XVFB_RUN)
+  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_undo)
+  add_test(NAME blender_undo
+    COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch} --unset=FRACTERRA_LIBRARY
+            ${FT_XVFB_RUN} -a -s "-screen 0 1024x768x24"
+            ${FT_BLENDER} --factory-startup --python-exit-code 1
+            --python ${CMAKE_CURRENT_LIST_DIR}/test_undo.py -- --zip ${FT_BLENDER_ZIP})
+  set_tests_properties(blender_undo PROPERTIES LABELS blender TIMEOUT 180)
+endif()

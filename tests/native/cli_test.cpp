@@ -1,0 +1,152 @@
+// The fracterra CLI as a user runs it: outputs, --stats, --help, and bad
+// input (one clear line on stderr, non-zero exit, no partial or clobbered file).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/atomic_file.hpp"
+#include "io/heightfield_io.hpp"
+#include "terrain/terrain.hpp"
+
+namespace ft {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+
+CliRun run(const std::string& args) {
+  const fs::path err = fs::temp_directory_path() / ("ft_cli_err_" + std::to_string(::getpid()));
+  const std::string cmd = std::string(FT_CLI_PATH) + " " + args + " 2>" + err.string();
+  CliRun r{};
+  FILE* p = ::popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  const int status = ::pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = read_file(err.string());
+  fs::remove(err);
+  return r;
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("ft_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  size_t files() const {
+    size_t n = 0;
+    for (auto& e : fs::directory_iterator(dir_)) n += e.is_regular_file();
+    return n;
+  }
+  fs::path dir_;
+};
+
+TEST_F(Cli, TerrainStatsPrintsOneJsonObjectWithTheRequiredKeys) {
+  const CliRun r = run("terrain --levels 6 --hurst 0.5 --seed 4 --stats");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"seconds", "min", "max", "mean", "std"}) EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_LT(j["min"].get<double>(), j["max"].get<double>());
+  EXPECT_GE(j["seconds"].get<double>(), 0.0);
+}
+
+TEST_F(Cli, PngPgmAndNpyOutputsRoundTrip) {
+  ft_terrain_params p = default_terrain_params();
+  p.levels = 6;
+  p.seed = 9;
+  const Heightfield want = generate_terrain(p);
+  const HeightStats s = want.stats();
+  for (const char* ext : {".png", ".pgm", ".npy"}) {
+    const std::string out = path(std::string("t") + ext);
+    const CliRun r = run("terrain --levels 6 --seed 9 --out " + out);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const Heightfield got = read_heightfield(out);
+    ASSERT_EQ(got.width(), 65);
+    // 16-bit formats quantise the normalised range: half a step of 1/65535.
+    const double tol = std::string(ext) == ".npy" ? 0.0 : 0.5 * (s.max - s.min) / 65535.0 + 1e-6;
+    for (size_t i = 0; i < got.size(); ++i) ASSERT_NEAR(got.data()[i], want.data()[i], tol) << ext << " " << i;
+  }
+}
+
+TEST_F(Cli, MissingOutputFolderIsOneClearLineAndNoFile) {
+  const CliRun r = run("terrain --levels 4 --out " + path("no/such/folder/t.png"));
+  EXPECT_NE(r.code, 0);
+  EXPECT_EQ(r.err.rfind("fracterra: error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, AFailedRunNeverClobbersAGoodFile) {
+  const std::string out = path("good.png");
+  ASSERT_EQ(run("terrain --levels 5 --seed 1 --out " + out).code, 0);
+  const std::string before = read_file(out);
+  // A malformed reference file fails after the output was named.
+  write_file_atomically(path("bad.png"), "not a png at all");
+  const CliRun r = run("terrain --levels 5 --reference " + path("bad.png") + " --out " + out);
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("not a PNG"), std::string::npos) << r.err;
+  EXPECT_EQ(read_file(out), before);
+  EXPECT_EQ(files(), 2u) << "no temporary file may be left behind";
+}
+
+TEST_F(Cli, OutOfRangeParametersAreRejectedWithTheAllowedRange) {
+  for (const char* args : {"--hurst 1.5", "--hurst nan", "--levels 0", "--levels 16", "--sigma 0", "--sigma -2"}) {
+    const CliRun r = run(std::string("terrain --stats ") + args);
+    EXPECT_NE(r.code, 0) << args;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+}
+
+TEST_F(Cli, ReferenceGridFromAFileSurvivesInTheTerrain) {
+  // A 5x5 reference as .npy; its values must appear exactly at the nodes.
+  std::vector<float> ref(25);
+  for (int i = 0; i < 25; ++i) ref[size_t(i)] = float(i % 7) - 2.5f;
+  Heightfield r(5, 5);
+  std::copy(ref.begin(), ref.end(), r.data());
+  write_heightfield(r, path("ref.npy"));
+  ASSERT_EQ(run("terrain --levels 6 --reference " + path("ref.npy") + " --out " + path("t.npy")).code, 0);
+  const Heightfield t = read_heightfield(path("t.npy"));
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(t.at(i * 16, j * 16), ref[size_t(j * 5 + i)]);
+}
+
+TEST_F(Cli, HelpExplainsEveryFlagWithItsDefault) {
+  const CliRun r = run("terrain --help");
+  ASSERT_EQ(r.code, 0);
+  for (const char* flag : {"--method", "--levels", "--hurst", "--sigma", "--seed", "--periodic", "--reference",
+                           "--threads", "--out", "--stats"})
+    EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
+  EXPECT_NE(r.out.find("=0.8"), std::string::npos) << "the default of --hurst";
+}
+
+TEST_F(Cli, ProfileWritesCsvWithTwoToTheLevelsPlusOneRows) {
+  ASSERT_EQ(run("profile --levels 8 --hurst 0.7 --out " + path("p.csv")).code, 0);
+  const std::string csv = read_file(path("p.csv"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 257 + 1);  // + header comment
+}
+
+TEST_F(Cli, ReliefPreviewIsAnRgbPng) {
+  ASSERT_EQ(run("terrain --levels 6 --out " + path("t.png")).code, 0);
+  const CliRun r = run("relief --in " + path("t.png") + " --out " + path("r.png"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const GrayImage img = read_png(path("r.png"));  // read back as luma
+  EXPECT_EQ(img.width, 65);
+}
+
+}  // namespace
+}  // namespace ft

@@ -1,0 +1,219 @@
+// The contour layer: marching-squares level sets (coastlines), their
+// geometry, topology and orientation, bad input, and the coastline CLI.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "analysis/quantile.hpp"
+#include "contour/marching_squares.hpp"
+#include "core/error.hpp"
+#include "io/heightfield_io.hpp"
+#include "io/polyline_io.hpp"
+#include "terrain/terrain.hpp"
+
+namespace ft {
+namespace {
+
+template <class F>
+Heightfield field(int w, int h, F f) {
+  Heightfield hf(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) hf.at(x, y) = float(f(double(x), double(y)));
+  return hf;
+}
+
+double bump(double x, double y, double cx, double cy, double r) {
+  return std::exp(-((x - cx) * (x - cx) + (y - cy) * (y - cy)) / (r * r));
+}
+
+Heightfield terrain(int levels, double hurst, uint64_t seed) {
+  ft_terrain_params p = default_terrain_params();
+  p.levels = levels, p.hurst = hurst, p.seed = seed;
+  return generate_terrain(p);
+}
+
+int count_kind(const PolylineSet& s, ChainKind k) {
+  int n = 0;
+  for (int64_t i = 0; i < s.line_count(); ++i) n += chain_kind(s, i) == k;
+  return n;
+}
+
+double length(const PolylineSet& s, int64_t i) {
+  double l = 0;
+  for (int64_t k = s.line_begin(i); k + 1 < s.line_end(i); ++k)
+    l += std::hypot(s.points[size_t(k + 1)][0] - s.points[size_t(k)][0],
+                    s.points[size_t(k + 1)][1] - s.points[size_t(k)][1]);
+  return l;
+}
+
+TEST(MarchingSquares, EveryVertexLiesOnTheLevelByInterpolation) {
+  // Each vertex sits on a grid edge (x or y integral) where the linear
+  // interpolation of the edge's two samples equals the level. The samples are
+  // floats and t is computed in double, so the residual is rounding of
+  // a + t (b - a): a few ulps of the heights, far below 1e-6 of the range.
+  const Heightfield hf = terrain(8, 0.6, 5);
+  const double level = heightfield_quantile(hf, 0.4);
+  const PolylineSet s = marching_squares(hf, level);
+  ASSERT_GT(s.vertex_count(), 1000);
+  const HeightStats st = hf.stats();
+  for (const Vec3& p : s.points) {
+    ASSERT_EQ(p[2], level);
+    const double fx = std::floor(p[0]), fy = std::floor(p[1]);
+    const bool on_x = fx == p[0], on_y = fy == p[1];
+    ASSERT_TRUE(on_x || on_y) << p[0] << " " << p[1];
+    double v;
+    if (on_y) {  // on a horizontal edge (x, y) - (x + 1, y) (or on a sample)
+      const int x = int(fx), y = int(fy);
+      const double a = hf.at(x, y), b = x + 1 < hf.width() ? hf.at(x + 1, y) : a;
+      v = a + (p[0] - fx) * (b - a);
+    } else {
+      const int x = int(fx), y = int(fy);
+      const double a = hf.at(x, y), b = hf.at(x, y + 1);
+      v = a + (p[1] - fy) * (b - a);
+    }
+    ASSERT_NEAR(v, level, 1e-6 * (st.max - st.min)) << p[0] << " " << p[1];
+  }
+}
+
+TEST(MarchingSquares, OneBumpIsOneCounterClockwiseIslandOfTheRightSize) {
+  // exp(-r^2 / 12^2) = 0.5 at r = 12 sqrt(ln 2) = 9.99: a closed loop of
+  // length 2 pi r = 62.8; the inscribed polygon of chords through ~40 cells
+  // is shorter by < 0.5%, bilinear interpolation adds < 1%.
+  const Heightfield hf = field(64, 64, [](double x, double y) { return bump(x, y, 31.5, 30.2, 12); });
+  const PolylineSet s = marching_squares(hf, 0.5);
+  ASSERT_EQ(s.line_count(), 1);
+  EXPECT_EQ(chain_kind(s, 0), ChainKind::kIsland);
+  EXPECT_EQ(s.points.front(), s.points.back());  // closed: first vertex repeated
+  const double r = 12 * std::sqrt(std::log(2.0));
+  EXPECT_NEAR(length(s, 0), 2 * M_PI * r, 0.015 * 2 * M_PI * r);
+  EXPECT_NEAR(signed_area(s, 0), M_PI * r * r, 0.02 * M_PI * r * r);
+}
+
+TEST(MarchingSquares, FourBumpsAreFourIslandsAndAPitIsALake) {
+  const Heightfield four = field(80, 80, [](double x, double y) {
+    return bump(x, y, 20, 20, 6) + bump(x, y, 60, 20, 6) + bump(x, y, 20, 60, 6) + bump(x, y, 60, 60, 6);
+  });
+  const PolylineSet s = marching_squares(four, 0.5);
+  EXPECT_EQ(s.line_count(), 4);
+  EXPECT_EQ(count_kind(s, ChainKind::kIsland), 4);
+  // The same field upside down: four lakes, land all around them.
+  const Heightfield pits = field(80, 80, [&](double x, double y) { return -four.at(int(x), int(y)); });
+  const PolylineSet p = marching_squares(pits, -0.5);
+  EXPECT_EQ(p.line_count(), 4);
+  EXPECT_EQ(count_kind(p, ChainKind::kLake), 4);
+  for (int64_t i = 0; i < 4; ++i) EXPECT_NEAR(signed_area(p, i), -signed_area(s, i), 1e-9);
+}
+
+TEST(MarchingSquares, SaddlesFollowTheCellMean) {
+  // Two peaks touching diagonally: the saddle cell (1,1)-(2,2) has corners
+  // 1, 0, 1, 0, mean 0.5. Below the mean the peaks join into one island;
+  // above it they are two.
+  Heightfield hf(4, 4);
+  std::fill(hf.data(), hf.data() + hf.size(), 0.0f);
+  hf.at(1, 1) = 1, hf.at(2, 2) = 1;
+  EXPECT_EQ(marching_squares(hf, 0.4).line_count(), 1);
+  EXPECT_EQ(marching_squares(hf, 0.6).line_count(), 2);
+  EXPECT_EQ(count_kind(marching_squares(hf, 0.6), ChainKind::kIsland), 2);
+}
+
+TEST(MarchingSquares, ChainsCloseInsideAndEndOnTheBorder) {
+  const Heightfield hf = terrain(8, 0.5, 9);
+  const PolylineSet s = marching_squares(hf, heightfield_quantile(hf, 0.5));
+  const double w = hf.width() - 1, h = hf.height() - 1;
+  auto on_border = [&](const Vec3& p) { return p[0] == 0 || p[1] == 0 || p[0] == w || p[1] == h; };
+  int open = 0, closed = 0;
+  for (int64_t i = 0; i < s.line_count(); ++i) {
+    const Vec3 &a = s.points[size_t(s.line_begin(i))], &b = s.points[size_t(s.line_end(i) - 1)];
+    if (a == b) {
+      ++closed;
+      EXPECT_GE(s.line_end(i) - s.line_begin(i), 4);
+    } else {
+      ++open;
+      EXPECT_TRUE(on_border(a) && on_border(b)) << "chain " << i;
+    }
+  }
+  EXPECT_GT(open, 0);
+  EXPECT_GT(closed, 10);
+}
+
+TEST(MarchingSquares, OutputDoesNotDependOnThreadCount) {
+  const Heightfield hf = terrain(9, 0.5, 2);
+  omp_set_num_threads(1);
+  const PolylineSet a = marching_squares(hf, 0.1);
+  omp_set_num_threads(3);
+  const PolylineSet b = marching_squares(hf, 0.1);
+  omp_set_num_threads(omp_get_num_procs());
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.offsets, b.offsets);
+}
+
+TEST(MarchingSquares, SamplesExactlyOnTheLevelGiveNoRepeatedVertices) {
+  // A quantile level equals a sample; an integer ramp puts whole rows on it.
+  const Heightfield hf = field(9, 9, [](double x, double y) { return std::round(x + 0.3 * y); });
+  const PolylineSet s = marching_squares(hf, 4.0);
+  ASSERT_GT(s.line_count(), 0);
+  for (int64_t i = 0; i < s.line_count(); ++i)
+    for (int64_t k = s.line_begin(i); k + 1 < s.line_end(i); ++k)
+      EXPECT_NE(s.points[size_t(k)], s.points[size_t(k + 1)]);
+}
+
+TEST(MarchingSquares, LevelOutsideTheDataOrConstantFieldIsEmptyNaNIsAnError) {
+  const Heightfield hf = terrain(6, 0.5, 1);
+  const HeightStats st = hf.stats();
+  EXPECT_EQ(marching_squares(hf, st.max + 1).line_count(), 0);
+  EXPECT_EQ(marching_squares(hf, st.min - 1).line_count(), 0);
+  Heightfield flat(10, 10);
+  std::fill(flat.data(), flat.data() + flat.size(), 3.0f);
+  EXPECT_EQ(marching_squares(flat, 3.0).line_count(), 0);
+  EXPECT_EQ(marching_squares(flat, 2.0).line_count(), 0);
+  Heightfield holes = terrain(5, 0.5, 1);
+  holes.at(4, 7) = NAN;
+  try {
+    marching_squares(holes, 0.0);
+    FAIL() << "NaN accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), FT_ERR_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(e.what()).find("x 4, y 7"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(marching_squares(hf, NAN), Error);
+  EXPECT_THROW(marching_squares(Heightfield(1, 5), 0.0), Error);
+}
+
+// ---------------------------------------------------------------------- CLI
+
+int run_cli(const std::string& args, std::string* out = nullptr) {
+  FILE* p = popen((std::string(FT_CLI_PATH) + " " + args + " 2>&1").c_str(), "r");
+  std::string s;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) s.append(buf, n);
+  if (out) *out = s;
+  return WEXITSTATUS(pclose(p));
+}
+
+TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
+  const auto dir = std::filesystem::temp_directory_path() / "ft_coastline_cli";
+  std::filesystem::create_directories(dir);
+  const std::string t = (dir / "t.npy").string(), csv = (dir / "c.csv").string(), png = (dir / "p.png").string();
+  write_heightfield(terrain(8, 0.7, 4), t);
+  std::string out;
+  ASSERT_EQ(run_cli("coastline --in " + t + " --level q0.5 --out " + csv + " --preview " + png, &out), 0) << out;
+  const nlohmann::json j = nlohmann::json::parse(out);
+  const PolylineSet s = read_polylines(csv);
+  EXPECT_EQ(j["chains"].get<int64_t>(), s.line_count());
+  EXPECT_EQ(j["islands"].get<int>() + j["lakes"].get<int>() + j["open_chains"].get<int>(), s.line_count());
+  EXPECT_EQ(j["islands"].get<int>(), count_kind(s, ChainKind::kIsland));
+  EXPECT_TRUE(std::filesystem::exists(png));
+  EXPECT_EQ(run_cli("coastline --in " + t + " --level qhalf --out " + csv, &out), 1);
+  EXPECT_NE(out.find("--level"), std::string::npos) << out;
+  EXPECT_EQ(run_cli("coastline --in " + (dir / "none.npy").string() + " --out " + csv, &out), 1);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace ft

@@ -1,0 +1,103 @@
+// The C ABI as ctypes sees it: statuses, ft_last_error, handles, defaults.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "fracterra/fracterra.h"
+
+namespace {
+
+TEST(CApi, VersionMatchesTheHeader) {
+  EXPECT_EQ(ft_abi_version(), uint32_t(FT_ABI_VERSION));
+  EXPECT_STREQ(ft_version_string(), "0.1.0");
+}
+
+TEST(CApi, GeneratesATerrainIntoALibraryOwnedHandle) {
+  ft_terrain_params p;
+  ASSERT_EQ(ft_terrain_params_init(&p), FT_OK);
+  EXPECT_EQ(p.struct_size, sizeof(ft_terrain_params));
+  p.levels = 5;
+  ft_heightfield* hf = nullptr;
+  ASSERT_EQ(ft_terrain_generate(&p, &hf), FT_OK) << ft_last_error();
+  EXPECT_STREQ(ft_last_error(), "");
+  ASSERT_EQ(ft_heightfield_width(hf), 33);
+  ASSERT_EQ(ft_heightfield_height(hf), 33);
+  std::vector<float> copy(33 * 33);
+  ASSERT_EQ(ft_heightfield_copy(hf, copy.data(), copy.size()), FT_OK);
+  EXPECT_EQ(std::memcmp(copy.data(), ft_heightfield_data(hf), copy.size() * sizeof(float)), 0);
+  double lo, hi;
+  ASSERT_EQ(ft_heightfield_stats(hf, &lo, &hi, nullptr, nullptr), FT_OK);
+  EXPECT_LT(lo, hi);
+  EXPECT_EQ(ft_heightfield_copy(hf, copy.data(), 10), FT_ERR_INVALID_ARGUMENT);
+  ft_heightfield_free(hf);
+  ft_heightfield_free(nullptr);  // harmless
+}
+
+TEST(CApi, BadParametersReturnAStatusAndAMessageAndNoHandle) {
+  ft_terrain_params p;
+  ft_terrain_params_init(&p);
+  p.hurst = NAN;
+  ft_heightfield* hf = reinterpret_cast<ft_heightfield*>(0x1);
+  EXPECT_EQ(ft_terrain_generate(&p, &hf), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(hf, nullptr);
+  EXPECT_NE(std::string(ft_last_error()).find("hurst"), std::string::npos) << ft_last_error();
+  EXPECT_STREQ(ft_status_name(FT_ERR_INVALID_ARGUMENT), "FT_ERR_INVALID_ARGUMENT");
+  EXPECT_EQ(ft_terrain_generate(nullptr, &hf), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_terrain_generate(&p, nullptr), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_terrain_params_init(nullptr), FT_ERR_INVALID_ARGUMENT);
+}
+
+TEST(CApi, MemoryCapRefusesBeforeAllocating) {
+  ft_set_memory_cap(1 << 20);
+  ft_terrain_params p;
+  ft_terrain_params_init(&p);
+  p.levels = 10;  // 1025^2 floats = 4.2 MB
+  ft_heightfield* hf = nullptr;
+  EXPECT_EQ(ft_terrain_generate(&p, &hf), FT_ERR_TOO_LARGE);
+  EXPECT_NE(std::string(ft_last_error()).find("GiB"), std::string::npos);
+  ft_set_memory_cap(0);
+  EXPECT_EQ(ft_memory_cap(), uint64_t(8) << 30);
+}
+
+TEST(CApi, CancelledCallReturnsCancelledAndNoHandle) {
+  ft_terrain_params p;
+  ft_terrain_params_init(&p);
+  p.levels = 8;
+  p.progress = [](void*, double f) -> int32_t { return f >= 0.25; };
+  ft_heightfield* hf = nullptr;
+  EXPECT_EQ(ft_terrain_generate(&p, &hf), FT_ERR_CANCELLED);
+  EXPECT_EQ(hf, nullptr);
+}
+
+TEST(CApi, ProfileFillsACallerBuffer) {
+  ft_profile_params p;
+  ASSERT_EQ(ft_profile_params_init(&p), FT_OK);
+  p.levels = 6;
+  ASSERT_EQ(ft_profile_length(6), 65);
+  std::vector<float> x(65);
+  ASSERT_EQ(ft_profile_generate(&p, x.data(), x.size()), FT_OK) << ft_last_error();
+  EXPECT_EQ(x[0], 0.0f);
+  EXPECT_EQ(ft_profile_generate(&p, x.data(), 64), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("needs 65"), std::string::npos) << ft_last_error();
+}
+
+TEST(CApi, PolylineHandlesRoundTrip) {
+  const double xyz[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 5, 5, 5};
+  const double radii[] = {1, 2, 3, 4};
+  const int64_t offsets[] = {0, 3, 4};
+  ft_polylines* p = nullptr;
+  ASSERT_EQ(ft_polylines_create(xyz, radii, 4, offsets, 2, &p), FT_OK) << ft_last_error();
+  EXPECT_EQ(ft_polylines_line_count(p), 2);
+  EXPECT_EQ(ft_polylines_vertex_count(p), 4);
+  EXPECT_EQ(ft_polylines_xyz(p)[9], 5.0);
+  EXPECT_EQ(ft_polylines_radii(p)[2], 3.0);
+  EXPECT_EQ(ft_polylines_offsets(p)[1], 3);
+  ft_polylines_free(p);
+  const int64_t bad[] = {0, 5, 4};
+  EXPECT_EQ(ft_polylines_create(xyz, radii, 4, bad, 2, &p), FT_ERR_INVALID_ARGUMENT);
+}
+
+}  // namespace

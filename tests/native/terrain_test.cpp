@@ -1,0 +1,387 @@
+// Terrain layer: Voss midpoint displacement (1D, 2D), Feder's additions,
+// reference points, periodic terrains, determinism, bad input.
+//
+// The scaling law is checked with an estimator written here, independently of
+// the library's analysis layer: the variance of increments over lag tau,
+// using only pairs of points aligned to the grid on which that lag was made
+// (the exact statement of the midpoint method), fitted in log-log.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/memory.hpp"
+#include "terrain/terrain.hpp"
+
+namespace ft {
+namespace {
+
+ft_terrain_params terrain(int method, int levels, double hurst, uint64_t seed) {
+  ft_terrain_params p = default_terrain_params();
+  p.method = method;
+  p.levels = levels;
+  p.hurst = hurst;
+  p.seed = seed;
+  return p;
+}
+
+// Least-squares slope of y on x.
+double slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = double(x.size());
+  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
+  const double my = std::accumulate(y.begin(), y.end(), 0.0) / n;
+  double sxy = 0, sxx = 0;
+  for (size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
+  return sxy / sxx;
+}
+
+// 64-bit FNV-1a of the samples' bytes: a golden checksum of bit-exact output.
+uint64_t checksum(const float* v, size_t n) {
+  uint64_t h = 1469598103934665603ULL;
+  const auto* b = reinterpret_cast<const unsigned char*>(v);
+  for (size_t i = 0; i < n * sizeof(float); ++i) h = (h ^ b[i]) * 1099511628211ULL;
+  return h;
+}
+
+// H from an ensemble of 2D terrains: for each lag D = 2^j, the mean squared
+// increment along rows and columns between neighbouring points of the grid
+// of spacing D (both points on that level's grid), over lags jmin..jmax.
+double aligned_hurst_2d(int method, int levels, double hurst, int count, int jmin, int jmax) {
+  std::vector<double> logd, logv;
+  std::vector<double> sum(size_t(jmax) + 1, 0.0), num(size_t(jmax) + 1, 0.0);
+  for (int k = 0; k < count; ++k) {
+    ft_terrain_params p = terrain(method, levels, hurst, 1000 + k);
+    p.threads = 1;
+    const Heightfield hf = generate_terrain(p);
+    const int n = hf.width() - 1;
+    for (int j = jmin; j <= jmax; ++j) {
+      const int d = 1 << j;
+      for (int y = 0; y <= n; y += d)
+        for (int x = 0; x + d <= n; x += d) {
+          const double a = hf.at(x + d, y) - hf.at(x, y);
+          const double b = hf.at(y, x + d) - hf.at(y, x);  // the transposed pair: columns
+          sum[size_t(j)] += a * a + b * b;
+          num[size_t(j)] += 2;
+        }
+    }
+  }
+  for (int j = jmin; j <= jmax; ++j) {
+    logd.push_back(j * std::log(2.0));
+    logv.push_back(std::log(sum[size_t(j)] / num[size_t(j)]));
+  }
+  return slope(logd, logv) / 2.0;
+}
+
+// ---------------------------------------------------------------- scaling law
+
+class ProfileScaling : public ::testing::TestWithParam<double> {};
+
+TEST_P(ProfileScaling, AlignedIncrementVarianceGrowsAsLagToTheTwoH) {
+  // Voss 1D with rho = sqrt(1 - 2^(2H-2)) makes Var[X(t + tau) - X(t)] =
+  // sigma^2 tau^(2H) exactly for grid-aligned pairs. Ensemble: 300 profiles of
+  // 2^12 + 1 samples, lags 2^-12 .. 2^-3. The coarsest lag used has 8 pairs a
+  // profile, 2400 in all: the relative standard error of its variance is
+  // sqrt(2 / 2400) = 2.9%, i.e. 0.029 in log; spread over the 9 octaves of
+  // the fit that moves the slope by < 0.01 and H by < 0.005. Tolerance 0.05
+  // (the issue's) leaves room for nothing but a wrong rho or scale schedule.
+  const double H = GetParam();
+  const int levels = 12, count = 300;
+  std::vector<double> sum(levels + 1, 0.0), num(levels + 1, 0.0);
+  std::vector<float> x((1 << levels) + 1);
+  for (int k = 0; k < count; ++k) {
+    ft_profile_params p = default_profile_params();
+    p.levels = levels;
+    p.hurst = H;
+    p.seed = 77 + k;
+    generate_profile(p, x.data(), x.size());
+    for (int j = 0; j <= levels; ++j) {
+      const int d = 1 << j;
+      for (int i = 0; i + d <= (1 << levels); i += d) {
+        const double inc = x[size_t(i + d)] - x[size_t(i)];
+        sum[size_t(j)] += inc * inc;
+        num[size_t(j)] += 1;
+      }
+    }
+  }
+  std::vector<double> logt, logv;
+  for (int j = 0; j <= levels - 3; ++j) {
+    logt.push_back((j - levels) * std::log(2.0));  // tau = 2^j / 2^levels
+    logv.push_back(std::log(sum[size_t(j)] / num[size_t(j)]));
+  }
+  const double estimated = slope(logt, logv) / 2.0;
+  std::printf("profile H %.2f: estimated %.4f\n", H, estimated);
+  EXPECT_NEAR(estimated, H, 0.05);
+  // And the scale: Var at tau = 2^-levels is sigma^2 2^(-2 H levels).
+  EXPECT_NEAR(std::log(sum[0] / num[0]), -2.0 * H * levels * std::log(2.0), 0.1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Hurst, ProfileScaling, ::testing::Values(0.3, 0.5, 0.8));
+
+class TerrainScaling : public ::testing::TestWithParam<std::tuple<int, double>> {};
+
+TEST_P(TerrainScaling, AlignedIncrementVarianceGrowsAsLagToTheTwoH) {
+  // 2D diamond-square is not exact: the square step averages diagonal
+  // neighbours at distance sqrt(2) D, so the smallest lags are biased (a
+  // property of the method, seed 000 fig. 7g). Measured on lags 2^2 .. 2^7 of
+  // 40 terrains of 2^9 + 1: at lag 2^7 each terrain has 2 * 5 * 4 = 40 pairs,
+  // 1600 in all (relative SE 3.5%); the fit's statistical error in H is below
+  // 0.01, so the 0.08 tolerance (the issue's) bounds the method's own bias.
+  const auto [method, H] = GetParam();
+  const double estimated = aligned_hurst_2d(method, 9, H, 40, 2, 7);
+  std::printf("method %d H %.2f: estimated %.4f\n", method, H, estimated);
+  EXPECT_NEAR(estimated, H, 0.08) << "method " << method;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    MethodsAndHurst, TerrainScaling,
+    ::testing::Combine(::testing::Values(FT_TERRAIN_MIDPOINT, FT_TERRAIN_ADDITIONS),
+                       ::testing::Values(0.3, 0.5, 0.8)));
+
+
+// ------------------------------------------------------------ reference points
+
+class ReferencePoints : public ::testing::TestWithParam<int> {};
+
+TEST_P(ReferencePoints, ValuesSurviveExactlyAtTheirNodes) {
+  const int m = 3, side = (1 << m) + 1;
+  std::vector<float> ref(size_t(side) * side);
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) ref[size_t(j) * side + i] = float(std::sin(i * 0.7) * 3 + j * 0.25);
+  ft_terrain_params p = terrain(GetParam(), 8, 0.7, 5);
+  p.reference = ref.data();
+  p.reference_size = side;
+  const Heightfield hf = generate_terrain(p);
+  const int step = 256 >> m;
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i)
+      ASSERT_EQ(hf.at(i * step, j * step), ref[size_t(j) * side + i]) << i << "," << j;
+  // Between the nodes the terrain is refined, not flat.
+  EXPECT_NE(hf.at(step / 2, step / 2), hf.at(0, 0));
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, ReferencePoints, ::testing::Values(FT_TERRAIN_MIDPOINT, FT_TERRAIN_ADDITIONS));
+
+TEST(ReferencePoints, ScaleFromMeanOfReferencesScalesTheDetail) {
+  // With reference_scale = mean the displacements scale with mean |ref|:
+  // multiplying the references by 10 multiplies the fine detail by 10 too.
+  const int side = 5;
+  std::vector<float> ref(size_t(side) * side), ref10(ref.size());
+  for (size_t i = 0; i < ref.size(); ++i) ref[i] = 1.0f + float(i % 3), ref10[i] = 10.0f * ref[i];
+  auto detail = [&](const std::vector<float>& r) {
+    ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 7, 0.5, 9);
+    p.reference = r.data();
+    p.reference_size = side;
+    p.reference_scale = FT_REFSCALE_MEAN;
+    const Heightfield hf = generate_terrain(p);
+    return hf.at(1, 1) - 0.25 * (hf.at(0, 0) + hf.at(2, 0) + hf.at(0, 2) + hf.at(2, 2));
+  };
+  EXPECT_NEAR(detail(ref10), 10.0 * detail(ref), 1e-3 * std::fabs(detail(ref10)) + 1e-5);
+}
+
+TEST(ReferencePoints, ProfileValuesSurviveExactly) {
+  std::vector<float> ref = {0.0f, 2.0f, -1.0f, 0.5f, 3.0f};  // 2^2 + 1
+  ft_profile_params p = default_profile_params();
+  p.levels = 10;
+  p.reference = ref.data();
+  p.reference_size = 5;
+  std::vector<float> x(1025);
+  generate_profile(p, x.data(), x.size());
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(x[size_t(i) * 256], ref[size_t(i)]);
+}
+
+// ---------------------------------------------------------------- periodic
+
+TEST(Periodic, OppositeEdgesAreEqualSoTilesMeetWithoutASeam) {
+  for (int method : {FT_TERRAIN_MIDPOINT, FT_TERRAIN_ADDITIONS}) {
+    ft_terrain_params p = terrain(method, 7, 0.6, 3);
+    p.periodic = 1;
+    const Heightfield hf = generate_terrain(p);
+    const int n = hf.width() - 1;
+    for (int k = 0; k <= n; ++k) {
+      ASSERT_EQ(hf.at(k, 0), hf.at(k, n));
+      ASSERT_EQ(hf.at(0, k), hf.at(n, k));
+    }
+  }
+}
+
+TEST(Periodic, IncrementsAcrossTheSeamAreLikeThoseInside) {
+  // A tile is seamless when increments that straddle the edge (from x = n - d/2
+  // to x = d/2 of the next tile) have the same variance as interior ones at
+  // the same lag d. 60 terrains of 2^7 + 1, lag d = 32, all rows: 60 * 128
+  // pairs per kind, relative SE of each variance sqrt(2 / 7680) = 1.6%, but
+  // rows of one terrain are correlated; the 25% band below is ~5 effective SE.
+  // A non-periodic terrain fails it by far (its edges are independent).
+  auto ratio = [](int periodic) {
+    double seam = 0, inner = 0;
+    for (int k = 0; k < 60; ++k) {
+      ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 7, 0.5, 400 + k);
+      p.periodic = periodic;
+      const Heightfield hf = generate_terrain(p);
+      const int n = 128, d = 32;
+      for (int y = 0; y < n; ++y) {
+        const double a = hf.at(d / 2, y) - hf.at(n - d / 2, y);
+        const double b = hf.at(n / 2 + d / 2, y) - hf.at(n / 2 - d / 2, y);
+        seam += a * a;
+        inner += b * b;
+      }
+    }
+    return seam / inner;
+  };
+  EXPECT_NEAR(ratio(1), 1.0, 0.25);
+  EXPECT_GT(ratio(0), 2.0);
+}
+
+// ------------------------------------------------------------- determinism
+
+TEST(Determinism, SameSeedGivesTheSameBitsOnAnyThreadCount) {
+  for (int method : {FT_TERRAIN_MIDPOINT, FT_TERRAIN_ADDITIONS}) {
+    ft_terrain_params p = terrain(method, 8, 0.7, 11);
+    p.threads = 1;
+    const Heightfield one = generate_terrain(p);
+    for (int t : {2, 3, 8}) {
+      p.threads = t;
+      const Heightfield many = generate_terrain(p);
+      ASSERT_EQ(std::memcmp(one.data(), many.data(), one.size() * sizeof(float)), 0) << t << " threads";
+    }
+  }
+}
+
+TEST(Determinism, GoldenChecksumsPinTheOutput) {
+  // These values were recorded from this implementation; they change only if
+  // the algorithm, the random streams or the float arithmetic change, which
+  // must be a deliberate, documented decision (saved seeds would change).
+  struct Case {
+    int method, periodic;
+    uint64_t want;
+  };
+  const Case cases[] = {{FT_TERRAIN_MIDPOINT, 0, 0x3807fbe9d4144615ULL},
+                        {FT_TERRAIN_ADDITIONS, 0, 0x0a431245c3005bf4ULL},
+                        {FT_TERRAIN_MIDPOINT, 1, 0x9e89501b87bfb242ULL}};
+  for (const Case& c : cases) {
+    ft_terrain_params p = terrain(c.method, 8, 0.8, 2024);
+    p.periodic = c.periodic;
+    const Heightfield hf = generate_terrain(p);
+    const uint64_t got = checksum(hf.data(), hf.size());
+    std::printf("method %d periodic %d: 0x%016llxULL\n", c.method, c.periodic, (unsigned long long)got);
+    EXPECT_EQ(got, c.want);
+  }
+  std::vector<float> x(1025);
+  ft_profile_params pp = default_profile_params();
+  pp.seed = 2024;
+  generate_profile(pp, x.data(), x.size());
+  const uint64_t got = checksum(x.data(), x.size());
+  std::printf("profile: 0x%016llxULL\n", (unsigned long long)got);
+  EXPECT_EQ(got, 0xda88b8ce154ba34dULL);
+}
+
+TEST(Determinism, DifferentSeedsGiveDifferentTerrains) {
+  const Heightfield a = generate_terrain(terrain(FT_TERRAIN_MIDPOINT, 6, 0.5, 1));
+  const Heightfield b = generate_terrain(terrain(FT_TERRAIN_MIDPOINT, 6, 0.5, 2));
+  EXPECT_NE(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0);
+}
+
+// ---------------------------------------------------------------- bad input
+
+ft_status status_of(const ft_terrain_params& p, std::string* message = nullptr) {
+  try {
+    generate_terrain(p);
+    return FT_OK;
+  } catch (const Error& e) {
+    if (message) *message = e.what();
+    return e.status();
+  }
+}
+
+TEST(BadInput, HurstOutsideZeroToOneOrNanIsRejectedWithTheRange) {
+  for (double h : {-0.1, 1.01, std::nan("")}) {
+    ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 4, h, 1);
+    std::string msg;
+    EXPECT_EQ(status_of(p, &msg), FT_ERR_INVALID_ARGUMENT) << h;
+    EXPECT_NE(msg.find("hurst must be in [0, 1]"), std::string::npos) << msg;
+  }
+}
+
+TEST(BadInput, SigmaMustBePositiveAndFinite) {
+  for (double s : {0.0, -1.0, std::nan(""), double(INFINITY)}) {
+    ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 4, 0.5, 1);
+    p.sigma = s;
+    EXPECT_EQ(status_of(p), FT_ERR_INVALID_ARGUMENT) << s;
+  }
+}
+
+TEST(BadInput, LevelsOutOfRangeAreRejected) {
+  for (int levels : {0, -3, 16, 1000}) {
+    std::string msg;
+    EXPECT_EQ(status_of(terrain(FT_TERRAIN_MIDPOINT, levels, 0.5, 1), &msg), FT_ERR_INVALID_ARGUMENT);
+    EXPECT_NE(msg.find("levels must be in 1..15"), std::string::npos) << msg;
+  }
+}
+
+TEST(BadInput, TerrainAboveTheMemoryCapIsRefusedBeforeAllocating) {
+  set_memory_cap(64 << 20);  // 64 MiB: levels 12 (16.8M samples, 67 MB) is too much
+  std::string msg;
+  EXPECT_EQ(status_of(terrain(FT_TERRAIN_MIDPOINT, 12, 0.5, 1), &msg), FT_ERR_TOO_LARGE);
+  EXPECT_NE(msg.find("levels 12"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("memory cap"), std::string::npos) << msg;
+  EXPECT_EQ(status_of(terrain(FT_TERRAIN_MIDPOINT, 11, 0.5, 1)), FT_OK);
+  set_memory_cap(0);
+}
+
+TEST(BadInput, ReferenceGridOfTheWrongSizeIsRejected) {
+  std::vector<float> ref(64, 1.0f);
+  for (int size : {8, 2, 0, 513}) {
+    ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 8, 0.5, 1);
+    p.reference = ref.data();
+    p.reference_size = size;
+    std::string msg;
+    EXPECT_EQ(status_of(p, &msg), FT_ERR_INVALID_ARGUMENT) << size;
+    EXPECT_NE(msg.find("reference_size must be 2^m + 1"), std::string::npos) << msg;
+  }
+}
+
+TEST(BadInput, NonFiniteReferenceValuesAreRejected) {
+  std::vector<float> ref(9, 1.0f);
+  ref[4] = std::nanf("");
+  ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 4, 0.5, 1);
+  p.reference = ref.data();
+  p.reference_size = 3;
+  EXPECT_EQ(status_of(p), FT_ERR_INVALID_ARGUMENT);
+}
+
+TEST(BadInput, PeriodicTerrainNeedsAPeriodicReference) {
+  std::vector<float> ref = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+  ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 4, 0.5, 1);
+  p.reference = ref.data();
+  p.reference_size = 3;
+  p.periodic = 1;
+  EXPECT_EQ(status_of(p), FT_ERR_INVALID_ARGUMENT);
+}
+
+TEST(BadInput, UninitialisedParamsAreRejected) {
+  ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 4, 0.5, 1);
+  p.struct_size = 0;
+  std::string msg;
+  EXPECT_EQ(status_of(p, &msg), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(msg.find("ft_terrain_params_init"), std::string::npos) << msg;
+}
+
+TEST(Cancellation, ProgressCallbackCanStopAGeneration) {
+  ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 10, 0.5, 1);
+  int calls = 0;
+  p.progress = [](void* user, double fraction) -> int32_t {
+    ++*static_cast<int*>(user);
+    return fraction > 0.5;
+  };
+  p.progress_user = &calls;
+  EXPECT_EQ(status_of(p), FT_ERR_CANCELLED);
+  EXPECT_GE(calls, 5);
+}
+
+}  // namespace
+}  // namespace ft

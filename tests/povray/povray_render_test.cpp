@@ -1,0 +1,310 @@
+// The POV-Ray layer against the real povray: small renders (160 x 120) of
+// written scenes, the examples and the macros; trace() probes for the
+// height_field's orientation and heights.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/png_image.hpp"
+#include "povray/heightfield_export.hpp"
+#include "povray/render.hpp"
+#include "povray/scene.hpp"
+#include "povray/sdl_writer.hpp"
+#include "povray/sphere_sweep_export.hpp"
+
+namespace fs = std::filesystem;
+
+namespace ft {
+namespace {
+
+const std::string kSource = FT_SOURCE_DIR;
+
+// A fresh folder per test, removed afterwards.
+class PovTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("ft_pov_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // Renders with no warnings allowed; returns the luma image.
+  GrayImage render(const std::string& scene, int w = 160, int h = 120, double aa = 0,
+                   std::string* messages = nullptr) {
+    pov::RenderOptions o;
+    o.width = w;
+    o.height = h;
+    o.antialias = aa;
+    o.include_paths = {kSource + "/povray_macros"};
+    const std::string out = path("render_" + std::to_string(count_++) + ".png");
+    const pov::RenderResult r = pov::render_scene(scene, out, o);
+    EXPECT_EQ(r.warnings, 0) << "povray warned on " << scene << ":\n" << r.messages;
+    if (messages) *messages = r.messages;
+    return read_png(out);
+  }
+  fs::path dir_;
+  int count_ = 0;
+};
+
+struct Stats {
+  double mean = 0, sd = 0;
+};
+Stats pixel_stats(const GrayImage& img) {
+  const double full = img.bit_depth == 16 ? 65535.0 : 255.0;
+  double s = 0, ss = 0;
+  for (uint16_t p : img.pixels) s += p / full, ss += (p / full) * (p / full);
+  const double n = double(img.pixels.size());
+  return {s / n, std::sqrt(std::max(0.0, ss / n - (s / n) * (s / n)))};
+}
+double luma(const GrayImage& img, int x, int y) {
+  return img.pixels[size_t(y) * img.width + x] / (img.bit_depth == 16 ? 65535.0 : 255.0);
+}
+// A rendered picture is "not blank" when its pixels vary: a uniform image has
+// sd 0 and even a plain sky gradient has sd < 0.02 at this size.
+void expect_not_blank(const GrayImage& img, const std::string& what) {
+  const Stats s = pixel_stats(img);
+  EXPECT_GT(s.sd, 0.04) << what << " looks blank (mean " << s.mean << ")";
+  EXPECT_GT(s.mean, 0.005) << what;
+  EXPECT_LT(s.mean, 0.995) << what;
+}
+
+// A polyline that wanders (a deterministic, non-random test input).
+PolylineSet wiggle(int n, double radius = 0) {
+  PolylineSet s;
+  for (int i = 0; i < n; ++i) {
+    const double t = double(i) / (n - 1);
+    s.add({t, 0.25 * std::sin(9 * t) + 0.05 * std::sin(83 * t), 0.1 + 0.05 * std::cos(31 * t)}, radius);
+  }
+  s.end_line();
+  return s;
+}
+
+int run_cli(const std::string& args, std::string& output) {
+  const std::string cmd = std::string(FT_CLI_PATH) + " " + args + " 2>&1";
+  FILE* p = ::popen(cmd.c_str(), "r");
+  char buf[4096];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) output.append(buf, n);
+  const int status = ::pclose(p);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST_F(PovTest, ExampleScenesRenderWithoutWarningsAndAreNotBlank) {
+  int found = 0;
+  for (const auto& e : fs::directory_iterator(kSource + "/examples")) {
+    const std::string name = e.path().filename().string();
+    if (e.path().extension() != ".pov") continue;
+    ++found;
+    SCOPED_TRACE(name);
+    expect_not_blank(render(e.path().string()), name);
+  }
+  EXPECT_GE(found, 3);
+}
+
+TEST_F(PovTest, TraceProbeConfirmsOrientationAndHeightTo16BitPrecision) {
+  // Every sample different and the grid not square: a swapped or mirrored
+  // axis, or heights off by the 65535/65536 of POV-Ray's 16-bit reading,
+  // would put the probes on wrong values.
+  const int w = 33, h = 17;
+  Heightfield hf(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) hf.at(x, y) = float(0.37 * x + 5.1 * y + 0.9 * std::sin(x * y));
+  const double sx = 3.2, sy = 1.6, vs = 0.05;
+  const auto place = pov::write_heightfield_png(hf, path("probe.png"), sx, sy, vs);
+  std::string s = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n#declare T = " +
+                  pov::heightfield_sdl("probe.png", place, NAN);
+  const int probes[][2] = {{0, 0}, {32, 0}, {0, 16}, {32, 16}, {7, 3}, {20, 11}, {31, 15}, {1, 14}};
+  for (const auto& p : probes) {
+    // World (x, y) of sample (col, row) is (col * dx, row * dy): POV <x, _, y>.
+    // Edge samples are probed a hair inside: a ray exactly on the border of
+    // the height_field's box may miss it. 1e-6 of the size moves the height
+    // by < 1e-6 * 0.5 (the steepest slope here is ~0.5): far below a step.
+    const double px = std::clamp(p[0] * sx / (w - 1), 1e-6 * sx, sx * (1 - 1e-6));
+    const double pz = std::clamp(p[1] * sy / (h - 1), 1e-6 * sy, sy * (1 - 1e-6));
+    s += "#declare N = <0, 0, 0>;\n#declare P = trace(T, " + pov::vec({px, 1000, pz}) +
+         ", -y, N);\n#debug concat(\"FT_PROBE " + std::to_string(p[0]) + " " + std::to_string(p[1]) +
+         " \", str(vlength(N), 0, 0), \" \", str(P.y, 0, 12), \"\\n\")\n";
+  }
+  s += "camera { location <1.6, 3, -2> look_at <1.6, 0, 0.8> }\nlight_source { <0, 10, -10> rgb 1 }\n"
+       "object { T pigment { rgb 1 } }\n";
+  write_file_atomically(path("probe.pov"), s);
+  std::string messages;
+  render(path("probe.pov"), 8, 6, 0, &messages);
+  std::map<std::pair<int, int>, double> got;
+  std::regex re("FT_PROBE (\\d+) (\\d+) (\\d) (-?[0-9.]+)");
+  for (std::sregex_iterator it(messages.begin(), messages.end(), re), end; it != end; ++it) {
+    ASSERT_EQ((*it)[3], "1") << "probe missed the terrain: " << (*it)[0];
+    got[{std::stoi((*it)[1]), std::stoi((*it)[2])}] = std::stod((*it)[4]);
+  }
+  ASSERT_EQ(got.size(), std::size(probes)) << messages;
+  // One 16-bit step of the height range is the precision the PNG keeps.
+  const double step = (place.z_max - place.z_min) / 65535;
+  for (const auto& p : probes) {
+    const double want = hf.at(p[0], p[1]) * vs;
+    const double g = got[{p[0], p[1]}];
+    EXPECT_NEAR(g, want, step) << "sample col " << p[0] << " row " << p[1];
+  }
+}
+
+TEST_F(PovTest, HighestPointLandsWhereTheCameraSays) {
+  // A flat plain with one steep cone: its tip is the topmost terrain point in
+  // its image column. Painted white (emissive) over the sky, the first white
+  // pixel from the top of that column must be where Camera::project says.
+  const int n = 65, cx = 44, cy = 19;
+  Heightfield hf(n, n);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) hf.at(x, y) = float(std::max(0.0, 1 - std::hypot(x - cx, y - cy) / 2.5));
+  pov::SceneParams p;
+  p.terrain = &hf;
+  p.size_x = p.size_y = 1;
+  p.vertical_scale = 0.3;
+  p.camera.aspect = 160.0 / 120.0;
+  const auto sum = pov::write_scene(p, path("peak.pov"));
+  write_file_atomically(path("peak_flat.pov"),
+                        "#version 3.7;\n#declare FT_Sand_Tex = texture { pigment { rgb 1 } finish { emission 1 "
+                        "diffuse 0 } }\n#declare FT_Grass_Tex = FT_Sand_Tex;\n#declare FT_Rock_Tex = "
+                        "FT_Sand_Tex;\n#declare FT_Snow_Tex = FT_Sand_Tex;\n#include \"peak.pov\"\n");
+  const GrayImage img = render(path("peak_flat.pov"));
+  double u, v;
+  const Vec3 tip = pov::to_pov({cx / double(n - 1), cy / double(n - 1), 0.3});
+  ASSERT_TRUE(sum.camera.project(tip, u, v));
+  const int px = int(u * 160), py = int(v * 120);
+  ASSERT_TRUE(px >= 0 && px < 160 && py >= 4 && py < 116) << "tip projects to " << px << ", " << py;
+  int top = -1;
+  for (int y = 0; y < 120 && top < 0; ++y)
+    if (luma(img, px, y) > 0.98) top = y;
+  // The tip is a point; the sampled column meets the cone within a pixel or two.
+  EXPECT_NEAR(top, py, 2) << "tip expected at row " << py << " of column " << px;
+  EXPECT_LT(luma(img, px, std::max(0, py - 4)), 0.95) << "sky expected above the tip";
+  // Framing: the terrain's corners are inside the picture.
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_TRUE(sum.camera.project({double(i & 1), 0, double(i >> 1)}, u, v));
+    EXPECT_TRUE(u > 0 && u < 1 && v > 0 && v < 1) << "corner " << i << " at " << u << ", " << v;
+  }
+}
+
+TEST_F(PovTest, ChunkedSweepRendersLikeOneSweep) {
+  for (auto spline : {pov::SweepSpline::kLinear, pov::SweepSpline::kCubic}) {
+    PolylineSet line = wiggle(301);
+    for (size_t i = 0; i < line.radii.size(); ++i) line.radii[i] = 0.01 + 0.03 * double(i) / 300;  // taper
+    std::string a, b;
+    for (int64_t seg : {int64_t(24), int64_t(1) << 30}) {
+      pov::SweepOptions o;
+      o.spline = spline;
+      o.segments_per_sweep = seg;
+      const std::string s = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\ncamera { location <0.5, 1.2, "
+                            "-0.2> look_at <0.5, 0, 0.1> angle 70 }\nlight_source { <-2, 5, -3> rgb 1 }\n"
+                            "background { rgb 0.3 }\n" +
+                            pov::sweeps_sdl(line, o, "pigment { rgb <1, 0.6, 0.2> }\n");
+      const std::string f = path(std::string(seg == 24 ? "chunked" : "single") + ".pov");
+      write_file_atomically(f, s);
+      (seg == 24 ? a : b) = f;
+    }
+    const GrayImage ia = render(a), ib = render(b);
+    // The tube covers a good part of the grey background...
+    int drawn = 0, differ = 0;
+    for (size_t i = 0; i < ia.pixels.size(); ++i) drawn += std::abs(int(ia.pixels[i]) - int(ia.pixels[0])) > 24;
+    EXPECT_GT(drawn, int(ia.pixels.size() / 100)) << "spline " << int(spline);
+    // ...and the same geometry gives the same picture: only pixels on the
+    // silhouette may differ (root finding near grazing rays), < 2% of it.
+    for (size_t i = 0; i < ia.pixels.size(); ++i) differ += std::abs(int(ia.pixels[i]) - int(ib.pixels[i])) > 24;
+    EXPECT_LT(differ, drawn / 50 + 5) << "spline " << int(spline);
+  }
+}
+
+TEST_F(PovTest, TerrainSceneWithCoastAndLightningRendersCleanly) {
+  Heightfield hf(65, 65);
+  for (int y = 0; y < 65; ++y)
+    for (int x = 0; x < 65; ++x) hf.at(x, y) = float(1 - std::hypot(x - 32, y - 32) / 32 + 0.1 * std::sin(x * 0.7) * std::cos(y * 0.5));
+  PolylineSet coast, bolt;
+  for (int i = 0; i <= 128; ++i) {
+    const double a = 2 * M_PI * i / 128;
+    coast.add({0.5 + 0.3 * std::cos(a), 0.5 + 0.3 * std::sin(a), 0});
+  }
+  coast.end_line();
+  for (int i = 0; i <= 64; ++i) bolt.add({0.6 + 0.03 * std::sin(i * 1.7), 0.4, 0.9 - 0.7 * i / 64.0}, 0.006 - 0.00005 * i);
+  bolt.end_line();
+  pov::SceneParams p;
+  pov::set_scene_terrain(p, hf, 1, 0, 0.4);
+  p.lines = {{&coast, pov::LineKind::kCoastline, 0}, {&bolt, pov::LineKind::kLightning, 0}};
+  p.camera.aspect = 160.0 / 120.0;
+  pov::write_scene(p, path("scene with space.pov"));
+  expect_not_blank(render(path("scene with space.pov"), 160, 120, 0.3), "terrain scene");
+  EXPECT_TRUE(fs::exists(path("scene with space.terrain.png")));
+}
+
+TEST_F(PovTest, SceneToUnwritablePlaceFailsCleanlyWithNoPartialFile) {
+  Heightfield hf(9, 9);
+  for (size_t i = 0; i < hf.size(); ++i) hf.data()[i] = float(i % 7);
+  pov::SceneParams p;
+  p.terrain = &hf;
+  // The folder does not exist: nothing at all may be written, PNG included.
+  try {
+    pov::write_scene(p, path("missing/scene.pov"));
+    FAIL() << "expected FT_ERR_IO";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), FT_ERR_IO);
+    EXPECT_NE(std::string(e.what()).find("missing"), std::string::npos) << e.what();
+  }
+  // /proc refuses new files even to root.
+  EXPECT_THROW(pov::write_scene(p, "/proc/ft_scene.pov"), Error);
+  // The scene's folder is fine but its PNG cannot be written: the scene must
+  // not appear and no temporary file may stay behind.
+  p.image_path = "/proc/ft_terrain.png";
+  EXPECT_THROW(pov::write_scene(p, path("scene.pov")), Error);
+  EXPECT_TRUE(fs::is_empty(dir_)) << "left a file in " << dir_;
+}
+
+TEST_F(PovTest, RenderCommandShowsPovrayErrorsAndWritesNothing) {
+  write_file_atomically(path("bad.pov"), "#version 3.7;\nsphere { <0, 0, 0> 1 pigment { rgb 1 }\n");
+  std::string out;
+  const int rc = run_cli("render '" + path("bad.pov") + "' --width 32 --height 24 --out '" + path("bad.png") + "'", out);
+  EXPECT_EQ(rc, 1) << out;
+  EXPECT_NE(out.find("Parse Error"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(path("bad.png")));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1) << "temporary file left";
+}
+
+TEST_F(PovTest, SceneCommandWritesAndRendersTerrainWithPolylines) {
+  std::string out;
+  ASSERT_EQ(run_cli("terrain --levels 6 --seed 5 --out '" + path("t.png") + "'", out), 0) << out;
+  PolylineSet bolt = wiggle(129);
+  std::ofstream(path("bolt.csv")) << "0.5,0.5,0.6\n0.52,0.5,0.4\n0.49,0.51,0.2\n0.5,0.5,0.05\n";
+  ASSERT_EQ(run_cli("scene --terrain '" + path("t.png") + "' --sea-fraction 0.3 --polyline '" + path("bolt.csv") +
+                        "' --kind lightning --pov '" + path("s.pov") + "' --render '" + path("s.png") +
+                        "' --width 160 --height 120",
+                    out),
+            0)
+      << out;
+  expect_not_blank(read_png(path("s.png")), "fracterra scene --render");
+}
+
+TEST_F(PovTest, MacrosFailWithClearErrorsOnBadInput) {
+  // FT_FPL bounds its recursion depth (POV-Ray nests ~98 macro calls).
+  write_file_atomically(path("deep.pov"), "#version 3.7;\n#include \"ft_fpl.inc\"\n#declare P = FT_FPL(<0,0,0>, "
+                                          "<1,0,0>, y, 0.1, false, 0, 120, seed(1));\n");
+  try {
+    render(path("deep.pov"), 8, 6);
+    FAIL() << "expected povray to stop";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("FT_FPL: Depth must be"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace ft

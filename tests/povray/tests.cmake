@@ -1,0 +1,15 @@
+# POV-Ray layer: real `povray` renders of the scenes fracterra writes, of the
+# examples/1x_pov_*.pov scenes and of the povray_macros include files.
+find_program(FT_POVRAY_EXE povray)
+if(FT_POVRAY_EXE)
+  add_executable(povray_render_test ${CMAKE_CURRENT_LIST_DIR}/povray_render_test.cpp)
+  target_link_libraries(povray_render_test PRIVATE fracterra_core GTest::gtest GTest::gtest_main)
+  target_compile_definitions(povray_render_test PRIVATE
+    FT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    FT_CLI_PATH="$<TARGET_FILE:fracterra_cli>")
+  add_dependencies(povray_render_test fracterra_cli)
+  gtest_discover_tests(povray_render_test DISCOVERY_TIMEOUT 60
+                       PROPERTIES LABELS povray ENVIRONMENT FT_POVRAY=${FT_POVRAY_EXE})
+else()
+  message(WARNING "povray not found: the POV-Ray tests are skipped (apt-get install povray povray-includes)")
+endif()

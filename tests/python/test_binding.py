@@ -1,0 +1,195 @@
+"""The ctypes binding of libfracterra.so, outside Blender."""
+
+import array
+import ctypes
+import re
+
+import pytest
+
+
+def test_library_reports_matching_abi_and_version(core):
+    lib = core.library()
+    assert lib.abi_major == 1
+    assert re.fullmatch(r"\d+\.\d+\.\d+", lib.version)
+    ok, message = core.status()
+    assert ok and lib.version in message
+
+
+def test_every_declared_symbol_has_argtypes_and_restype(core):
+    from fracterra.core.binding import SIGNATURES
+    lib = core.library()
+    for name, (restype, argtypes) in SIGNATURES.items():
+        fn = getattr(lib, name)
+        assert fn.argtypes == argtypes, name
+        assert fn.restype == restype, name
+
+
+def test_binding_declares_every_exported_function_of_its_headers(core, header_dir):
+    # Every ft_ function declared in the headers the binding covers has a signature.
+    from fracterra.core.binding import SIGNATURES
+    for header in ("core.h", "terrain.h", "mesh.h"):
+        text = (header_dir / header).read_text()
+        for name in re.findall(r"FT_API [^(;]*?\b(ft_\w+)\s*\(", text):
+            assert name in SIGNATURES, f"{name} from {header} has no ctypes signature"
+
+
+def _struct_fields(header_text, struct):
+    body = re.search(r"typedef struct %s \{(.*?)\} %s;" % (struct, struct), header_text, re.S).group(1)
+    body = re.sub(r"/\*.*?\*/", "", body, flags=re.S)
+    body = re.sub(r"//[^\n]*", "", body)
+    return re.findall(r"(\w+)\s*;", body)
+
+
+def test_ctypes_structs_follow_the_header_field_order(core, header_dir):
+    from fracterra.core.binding import GridCounts, ProfileParams, TerrainParams
+    terrain_h = (header_dir / "terrain.h").read_text()
+    mesh_h = (header_dir / "mesh.h").read_text()
+    assert [f for f, _ in TerrainParams._fields_] == _struct_fields(terrain_h, "ft_terrain_params")
+    assert [f for f, _ in ProfileParams._fields_] == _struct_fields(terrain_h, "ft_profile_params")
+    assert [f for f, _ in GridCounts._fields_][:4] == ["vertices", "edges", "faces", "loops"]
+
+
+def test_parameter_enums_match_the_header_values(core, header_dir):
+    text = (header_dir / "terrain.h").read_text()
+    values = {name: int(v) for name, v in re.findall(r"(FT_\w+)\s*=\s*(\d+)", text)}
+    p = core.params.PARAMS_BY_NAME
+    prefixes = {"method": "FT_TERRAIN_", "basis": "FT_BASIS_", "variant": "FT_FBM_",
+                "reference_scale": "FT_REFSCALE_"}
+    for name, prefix in prefixes.items():
+        for ident, _label, _tip, number in p[name].items:
+            assert values[prefix + ident] == number, (name, ident)
+
+
+def test_every_c_field_parameter_names_a_struct_field(core):
+    from fracterra.core.binding import TerrainParams
+    fields = {f for f, _ in TerrainParams._fields_}
+    for p in core.params.TERRAIN_PARAMS:
+        if p.field:
+            assert p.field in fields, p.name
+
+
+def test_terrain_has_dyadic_size_and_is_deterministic(core):
+    with core.generate_terrain(levels=5, seed=42, hurst=0.7) as a, \
+            core.generate_terrain(levels=5, seed=42, hurst=0.7, threads=1) as b, \
+            core.generate_terrain(levels=5, seed=43, hurst=0.7) as c:
+        assert (a.width, a.height) == (33, 33)
+        assert a.to_array().tobytes() == b.to_array().tobytes()
+        assert a.to_array().tobytes() != c.to_array().tobytes()
+
+
+def test_additions_differs_from_midpoint(core):
+    with core.generate_terrain(method="MIDPOINT", levels=4, seed=1) as m, \
+            core.generate_terrain(method="ADDITIONS", levels=4, seed=1) as a:
+        assert m.to_array() != a.to_array()
+
+
+def test_sigma_scales_the_terrain_linearly(core):
+    # sigma multiplies every displacement: the same seed at sigma 2 is exactly twice sigma 1
+    # (a power of two keeps float rounding exact).
+    with core.generate_terrain(levels=4, seed=9, sigma=1.0) as a, core.generate_terrain(levels=4, seed=9, sigma=2.0) as b:
+        assert [2 * x for x in a.to_array()] == list(b.to_array())
+
+
+def test_bad_hurst_raises_with_the_library_message(core):
+    with pytest.raises(core.InvalidArgumentError, match=r"hurst must be in \[0, 1\], got 1.5"):
+        core.generate_terrain(hurst=1.5)
+
+
+def test_bad_levels_raise_invalid_argument(core):
+    with pytest.raises(core.InvalidArgumentError, match="levels"):
+        core.generate_terrain(levels=0)
+
+
+def test_every_method_either_generates_or_says_it_is_unavailable(core):
+    for ident, *_ in core.params.METHODS:
+        try:
+            with core.generate_terrain(method=ident, levels=4, width=20, height=12, seed=3) as hf:
+                assert hf.width * hf.height > 0
+        except core.UnsupportedError as e:
+            assert "not available" in str(e)
+
+
+def test_reference_values_survive_at_their_nodes(core):
+    ref = [float(i % 7) - 3.0 for i in range(25)]  # 5 x 5 = levels 2 reference
+    with core.generate_terrain(levels=4, seed=5, reference=(5, ref)) as hf:
+        h = hf.to_array()
+        step = (hf.width - 1) // 4
+        for j in range(5):
+            for i in range(5):
+                assert h[j * step * hf.width + i * step] == ref[j * 5 + i]
+
+
+def test_bad_reference_size_is_reported(core):
+    with pytest.raises(core.InvalidArgumentError, match="reference_size"):
+        core.generate_terrain(levels=2, reference=(9, [0.0] * 81))
+
+
+def test_progress_reaches_one_and_can_cancel(core):
+    seen = []
+    with core.generate_terrain(levels=6, progress=lambda f: seen.append(f) or False):
+        pass
+    assert seen and seen == sorted(seen) and seen[-1] == pytest.approx(1.0)
+    with pytest.raises(core.CancelledError):
+        core.generate_terrain(levels=6, progress=lambda f: f > 0.3)
+
+
+def test_exception_in_progress_callback_cancels_and_is_reraised(core):
+    def boom(_fraction):
+        raise KeyError("from the callback")
+    with pytest.raises(KeyError, match="from the callback"):
+        core.generate_terrain(levels=6, progress=boom)
+
+
+def test_heightfield_context_manager_releases_the_handle(core):
+    with core.generate_terrain(levels=3) as hf:
+        assert hf.handle
+    assert hf.handle is None
+    hf.close()  # twice is harmless
+
+
+def test_heightfield_stats_match_the_samples(core):
+    with core.generate_terrain(levels=5, seed=2) as hf:
+        h = hf.to_array()
+        s = hf.stats()
+    assert s["min"] == min(h) and s["max"] == max(h)
+    assert s["mean"] == pytest.approx(sum(h) / len(h), rel=1e-6, abs=1e-9)
+
+
+def test_profile_has_2_to_the_levels_plus_one_samples(core):
+    a = core.generate_profile(levels=8, seed=4)
+    assert len(a) == 257 and a == core.generate_profile(levels=8, seed=4)
+    with pytest.raises(core.InvalidArgumentError, match="levels"):
+        core.generate_profile(levels=0)
+
+
+def test_terrain_side(core):
+    assert core.terrain_side(10) == 1025
+    assert core.terrain_side(0) == -1
+
+
+def test_missing_library_gives_instructions(monkeypatch, tmp_path):
+    from fracterra.core import binding as lib_mod
+    saved = lib_mod._library
+    monkeypatch.setenv("FRACTERRA_LIBRARY", str(tmp_path / "nope.so"))
+    lib_mod.reset()
+    try:
+        with pytest.raises(lib_mod.LibraryNotFoundError, match="FRACTERRA_LIBRARY=.*nope.so.*does not exist"):
+            lib_mod.library()
+        ok, message = lib_mod.status()
+        assert not ok and "fracterra_blender_addon" in message
+    finally:
+        lib_mod._library = saved
+
+
+def test_a_file_that_is_not_a_library_is_refused(monkeypatch, tmp_path):
+    from fracterra.core import binding as lib_mod
+    bogus = tmp_path / "libfracterra.so"
+    bogus.write_bytes(b"not an ELF file")
+    saved = lib_mod._library
+    monkeypatch.setenv("FRACTERRA_LIBRARY", str(bogus))
+    lib_mod.reset()
+    try:
+        with pytest.raises(lib_mod.LibraryNotFoundError, match="cannot load"):
+            lib_mod.library()
+    finally:
+        lib_mod._library = saved
