@@ -29,7 +29,15 @@ struct FractalizeOptions {
 int run(const FractalizeOptions& o) {
   const Mesh base = read_obj(o.in);
   Stopwatch clock;
-  const Mesh mesh = fractalize(base, o.p);
+  Mesh mesh;
+  try {
+    mesh = fractalize(base, o.p);
+  } catch (const Error& e) {
+    if (e.status() != FT_ERR_INVALID_ARGUMENT) throw;
+    // The library counts faces and vertices from 0, OBJ 'f' lines from 1.
+    throw Error(e.status(), std::string(e.what()) + " (in '" + o.in +
+                                "'; faces and vertices are numbered from 0 in the order of the file)");
+  }
   const double seconds = clock.seconds();
   char comment[256];
   std::snprintf(comment, sizeof comment, "fractalize levels=%d hurst=%g sigma=%g seed=%llu scheme=%d mode=%d",

@@ -128,7 +128,7 @@ Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch
                                    "s or sigma: displacement per unit segment length, >= 0 (profile: sigma > 0)")
                         ->capture_default_str();
                     app.add_option("--depth", p.depth,
-                                   "recursion depth r: fpl/dragon 0..40 (2^r segments per base segment, memory "
+                                   "recursion depth r: fpl/dragon 0..34 (2^r segments per base segment, memory "
                                    "permitting), koch 0..15, sierpinski 0..19, profile 1..28")
                         ->capture_default_str();
                     app.add_option("--min-length", p.min_length, "delta: do not split segments shorter than this, >= 0")
@@ -152,6 +152,8 @@ Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch
                                    "y' = c x + d y + f, probability p")
                         ->check(CLI::ExistingFile);
                     app.add_option("--points", p.ifs_points, "ifs: number of points, 1..268435456")->capture_default_str();
+                    app.add_option("--threads", p.threads, "FPL worker threads, 0 = all cores (output never depends on it)")
+                        ->check(CLI::Range(0, 1024))->capture_default_str();
                     app.add_option("--out", o->out, "output .csv (x,y,z,radius; blank line between polylines) or .json");
                     app.add_option("--svg", o->svg, "also draw the x,y projection into this .svg");
                     app.add_flag("--stats", o->stats,

@@ -90,7 +90,8 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                     app.add_option("--azimuth", o->camera.azimuth_deg,
                                    "camera direction seen from the content, degrees from +y towards +x")
                         ->check(CLI::Range(-360.0, 360.0))->capture_default_str();
-                    app.add_option("--elevation", o->camera.elevation_deg, "camera elevation, degrees 1..90")
+                    app.add_option("--elevation", o->camera.elevation_deg,
+                                   "camera elevation, degrees 1..90 (without terrain: 70, or 12 for lightning)")
                         ->check(CLI::Range(1.0, 90.0))->capture_default_str();
                     app.add_option("--fov", o->camera.fov_deg, "horizontal field of view, degrees 5..150")
                         ->check(CLI::Range(5.0, 150.0))->capture_default_str();
@@ -108,8 +109,17 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                         ->capture_default_str();
                     app.add_option("--antialias", o->r.antialias, "anti-aliasing threshold (povray +A), 0 = off")
                         ->check(CLI::Range(0.0, 3.0))->capture_default_str();
-                    return [o] {
+                    auto* elevation = app.get_option("--elevation");
+                    return [o, elevation] {
                       if (o->terrain.empty() && o->polylines.empty()) invalid("give --terrain and/or --polyline");
+                      // Polylines alone are seen from high above unless told otherwise.
+                      if (o->terrain.empty() && elevation->count() == 0) {
+                        bool all_lightning = !o->kinds.empty() && o->kinds.size() == o->polylines.size();
+                        for (int k : o->kinds) all_lightning = all_lightning && k == int(pov::LineKind::kLightning);
+                        o->camera.elevation_deg =
+                            pov::polyline_camera(all_lightning ? pov::LineKind::kLightning : pov::LineKind::kGeneric)
+                                .elevation_deg;
+                      }
                       return run(*o);
                     };
                   },

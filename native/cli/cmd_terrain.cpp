@@ -1,4 +1,5 @@
 // fracterra terrain: generate a heightfield and write it as PNG/PGM/NPY.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -71,6 +72,11 @@ int run(const TerrainOptions& o) {
     nlohmann::json j = {{"seconds", seconds}, {"width", hf.width()}, {"height", hf.height()},
                         {"min", s.min},       {"max", s.max},        {"mean", s.mean},
                         {"std", s.std}};
+    // Where the highest sample is (column, row), e.g. to place a lightning bolt.
+    const float* z = hf.data();
+    const size_t top = size_t(std::max_element(z, z + hf.size()) - z);
+    j["peak"] = {{"column", top % size_t(hf.width())}, {"row", top / size_t(hf.width())}, {"height", z[top]}};
+    if (hf.world_size() > 0) j["world_size"] = hf.world_size();
     std::printf("%s\n", j.dump().c_str());
   }
   return 0;

@@ -44,7 +44,7 @@ typedef struct ft_polyline_params {
   uint32_t struct_size;        ///< sizeof(ft_polyline_params); set by _init
   int32_t method;              ///< FT_POLYLINE_*; default FT_POLYLINE_FPL
   int32_t rng;                 ///< FT_POLYLINE_RNG_*; default uniform
-  int32_t depth;               ///< recursion depth r: FPL/dragon/profile 0..40 (memory cap
+  int32_t depth;               ///< recursion depth r: FPL/dragon 0..34 (memory cap
                                ///< permitting; profile 1..28), Koch 0..15, Sierpinski 0..19; default 8
   double spread;               ///< s or sigma, displacement per unit segment length, >= 0; default 0.1.
                                ///< Profile: the vertical scale sigma (> 0)
@@ -67,7 +67,7 @@ typedef struct ft_polyline_params {
                                ///< (a, b, c, d, e, f, p): x' = a x + b y + e, y' = c x + d y + f,
                                ///< chosen with probability p (p >= 0, normalised by their sum)
   int32_t ifs_maps;            ///< rows in ifs_table, 1..64
-  int32_t reserved0;           ///< must be 0
+  int32_t threads;             ///< FPL worker threads, 0 = all cores, 1..1024; output never depends on it
   int64_t ifs_points;          ///< IFS points to return, 1..2^28; default 100000
   ft_progress_fn progress;     ///< may be NULL
   void* progress_user;

@@ -41,8 +41,8 @@ typedef struct ft_pov_scene_params {
   const ft_pov_scene_lines* lines;  ///< line_set_count entries; may be NULL when the count is 0
   int32_t line_set_count;           ///< 0..1024; default 0
   double camera_azimuth_deg;        ///< from the content to the camera, 0 = +y, 90 = +x; -360..360; default 200
-  double camera_elevation_deg;      ///< 1..90; default 30
-  double camera_fov_deg;            ///< horizontal field of view, 5..150; default 45
+  double camera_elevation_deg;      ///< 1..90; default 22
+  double camera_fov_deg;            ///< horizontal field of view, 5..150; default 50
   double camera_aspect;             ///< width / height the framing is for, 0.1..10; default 4/3
   double camera_distance_scale;     ///< > 1 backs off from the framed distance, 0.1..100; default 1
   double sun_azimuth_deg;           ///< -360..360; default 235

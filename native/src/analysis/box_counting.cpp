@@ -107,6 +107,14 @@ int64_t count_unchecked(const PolylineSet& set, double eps, double ox, double oy
 
 int64_t count_boxes(const PolylineSet& set, double eps, double ox, double oy) {
   check_positive("box size", eps);
+  check_finite("grid origin x", ox);
+  check_finite("grid origin y", oy);
+  if (set.points.empty()) return 0;
+  const Bounds b = bounds_of(set);
+  const double reach = std::max({std::fabs(b.x0 - ox), std::fabs(b.x1 - ox), std::fabs(b.y0 - oy), std::fabs(b.y1 - oy)});
+  if (reach / eps > double(1 << 30))
+    invalid("box size " + format_number(eps) + " is too small for the set's distance " + format_number(reach) +
+            " from the grid origin (at most 2^30 boxes)");
   const double visits = visit_bound(set, eps);
   check_allocation(uint64_t(visits) * sizeof(uint64_t), "box counting at this box size");
   return count_unchecked(set, eps, ox, oy, visits);

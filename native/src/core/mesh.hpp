@@ -30,6 +30,10 @@ struct Mesh {
   }
 };
 
+// Newell's vector of the polygon idx[0..n): twice its vector area (normal
+// times area, also for non-planar polygons), counter-clockwise = outward.
+std::array<double, 3> face_vector_area(const Mesh& mesh, const int32_t* idx, int32_t n);
+
 // Area-weighted vertex normals (unit length; zero for a vertex without faces
 // of non-zero area), xyz per vertex. Serial and in face order: deterministic.
 std::vector<float> mesh_vertex_normals(const Mesh& mesh);

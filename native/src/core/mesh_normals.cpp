@@ -4,21 +4,23 @@
 
 namespace ft {
 
+std::array<double, 3> face_vector_area(const Mesh& mesh, const int32_t* idx, int32_t n) {
+  double nx = 0, ny = 0, nz = 0;
+  for (int32_t i = 0; i < n; ++i) {
+    const float* a = mesh.positions.data() + 3 * size_t(idx[i]);
+    const float* b = mesh.positions.data() + 3 * size_t(idx[i + 1 < n ? i + 1 : 0]);
+    nx += (double(a[1]) - b[1]) * (double(a[2]) + b[2]);
+    ny += (double(a[2]) - b[2]) * (double(a[0]) + b[0]);
+    nz += (double(a[0]) - b[0]) * (double(a[1]) + b[1]);
+  }
+  return {nx, ny, nz};
+}
+
 std::vector<float> mesh_vertex_normals(const Mesh& mesh) {
   std::vector<double> acc(mesh.positions.size(), 0.0);
-  const float* p = mesh.positions.data();
   size_t first = 0;
   for (int32_t n : mesh.face_sizes) {
-    // Newell's normal: twice the vector area of the (possibly non-planar)
-    // polygon, so larger faces weigh more.
-    double nx = 0, ny = 0, nz = 0;
-    for (int32_t i = 0; i < n; ++i) {
-      const float* a = p + 3 * size_t(mesh.face_indices[first + i]);
-      const float* b = p + 3 * size_t(mesh.face_indices[first + (i + 1) % n]);
-      nx += (double(a[1]) - b[1]) * (double(a[2]) + b[2]);
-      ny += (double(a[2]) - b[2]) * (double(a[0]) + b[0]);
-      nz += (double(a[0]) - b[0]) * (double(a[1]) + b[1]);
-    }
+    const auto [nx, ny, nz] = face_vector_area(mesh, mesh.face_indices.data() + first, n);  // area-weighted
     for (int32_t i = 0; i < n; ++i) {
       double* v = acc.data() + 3 * size_t(mesh.face_indices[first + i]);
       v[0] += nx, v[1] += ny, v[2] += nz;

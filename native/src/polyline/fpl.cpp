@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "core/parallel.hpp"
 #include "core/rng.hpp"
 
 namespace ft {
@@ -13,6 +14,7 @@ namespace {
 
 constexpr uint32_t kAngleLevel = 64;  // Counter.level offset of the 3D angles
 constexpr int kBlockLevels = 12;      // subtrees of 2^12 vertices (96 KiB) stay in L2
+enum { kFlat = 0, kPlanar = 1, kRandom3d = 2 };  // displacement modes
 
 inline double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
@@ -55,41 +57,30 @@ struct Engine {
   }
   bool needs_angle() const { return c.three_d && !planar3d; }
 
-  // Batch versions for n consecutive nodes from `first` (same values).
-  void factors(int level, uint64_t first, size_t n, double* out) const {
-    if (c.rule == FplRule::kDragon) {
-      for (size_t i = 0; i < n; ++i) out[i] = ((first + i) & 1) ? -0.5 : 0.5;
-      return;
+  // Draws for n <= kChunk consecutive nodes from `first` into u (and the
+  // angles into phi when needed): the same values as factor_at / angle_at.
+  static constexpr size_t kChunk = 1024;
+  void draws(int level, uint64_t first, size_t n, float* u, float* phi) const {
+    if (c.rule != FplRule::kDragon) {
+      const Counter k{line, uint32_t(level), Stream::kPolyline};
+      if (c.rng == FplRng::kUniform) uniform_fill(c.seed, k, first, n, u);
+      else gaussian_fill(c.seed, k, first, n, u);
     }
-    float buf[1024];
-    const Counter k{line, uint32_t(level), Stream::kPolyline};
-    for (size_t done = 0; done < n;) {
-      const size_t m = std::min<size_t>(n - done, 1024);
-      if (c.rng == FplRng::kUniform) uniform_fill(c.seed, k, first + done, m, buf);
-      else gaussian_fill(c.seed, k, first + done, m, buf);
-      for (size_t i = 0; i < m; ++i) out[done + i] = factor(buf[i]);
-      done += m;
-    }
+    if (needs_angle()) uniform_fill(c.seed, Counter{line, uint32_t(level) + kAngleLevel, Stream::kPolyline}, first, n, phi);
   }
-  void angles(int level, uint64_t first, size_t n, double* out) const {
-    float buf[1024];
-    const Counter k{line, uint32_t(level) + kAngleLevel, Stream::kPolyline};
-    for (size_t done = 0; done < n;) {
-      const size_t m = std::min<size_t>(n - done, 1024);
-      uniform_fill(c.seed, k, first + done, m, buf);
-      for (size_t i = 0; i < m; ++i) out[done + i] = 2.0 * std::numbers::pi * double(buf[i]);
-      done += m;
-    }
+  double factor_of(float draw, uint64_t j) const {
+    return c.rule == FplRule::kDragon ? ((j & 1) ? -0.5 : 0.5) : factor(draw);
   }
 
   // d = c + f * (perpendicular of length |V|): the one formula both paths use.
-  Vec3 midpoint(const Vec3& a, const Vec3& b, double f, double phi) const {
+  template <int kMode>
+  Vec3 midpoint_as(const Vec3& a, const Vec3& b, double f, double phi) const {
     const Vec3 v{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     const Vec3 m{a[0] + 0.5 * v[0], a[1] + 0.5 * v[1], a[2] + 0.5 * v[2]};
-    if (!c.three_d) return {m[0] - f * v[1], m[1] + f * v[0], m[2]};  // Lrot(V) = [-Vy, Vx]
+    if constexpr (kMode == kFlat) return {m[0] - f * v[1], m[1] + f * v[0], m[2]};  // Lrot(V) = [-Vy, Vx]
     const double len = norm(v);
     Vec3 dir;
-    if (planar3d) {
+    if constexpr (kMode == kPlanar) {
       dir = unit(cross(normal, v));
     } else {
       // A basis perpendicular to V that depends on V only: e1 from the axis
@@ -104,21 +95,42 @@ struct Engine {
     const double s = f * len;
     return {m[0] + s * dir[0], m[1] + s * dir[1], m[2] + s * dir[2]};
   }
+  int mode() const { return !c.three_d ? kFlat : planar3d ? kPlanar : kRandom3d; }
+  Vec3 midpoint(const Vec3& a, const Vec3& b, double f, double phi) const {
+    switch (mode()) {
+      case kFlat: return midpoint_as<kFlat>(a, b, f, phi);
+      case kPlanar: return midpoint_as<kPlanar>(a, b, f, phi);
+      default: return midpoint_as<kRandom3d>(a, b, f, phi);
+    }
+  }
 };
 
 // Breadth-first refinement of levels [l0, l0 + nlev) of an array of
 // 2^span + 1 vertices whose ends are set; its level-l0 node is `node0`.
-void refine(const Engine& e, Vec3* out, int span, int l0, int nlev, uint64_t node0, double* f,
-            double* phi) {
+// One instantiation per displacement mode keeps the inner loop branch-free.
+template <int kMode>
+void refine_as(const Engine& e, Vec3* out, int span, int l0, int nlev, uint64_t node0) {
+  float u[Engine::kChunk], phi[Engine::kChunk];
   for (int k = 0; k < nlev; ++k) {
     const int64_t step = int64_t(1) << (span - k), half = step / 2;
     const size_t count = size_t(1) << k;
     const uint64_t first = node0 << k;
-    e.factors(l0 + k, first, count, f);
-    if (e.needs_angle()) e.angles(l0 + k, first, count, phi);
-    Vec3* p = out;
-    for (size_t j = 0; j < count; ++j, p += step)
-      p[half] = e.midpoint(p[0], p[step], f[j], e.needs_angle() ? phi[j] : 0.0);
+    for (size_t done = 0; done < count; done += Engine::kChunk) {
+      const size_t n = std::min(Engine::kChunk, count - done);
+      e.draws(l0 + k, first + done, n, u, phi);
+      Vec3* p = out + int64_t(done) * step;
+      for (size_t i = 0; i < n; ++i, p += step)
+        p[half] = e.midpoint_as<kMode>(p[0], p[step], e.factor_of(u[i], first + done + i),
+                                       kMode == kRandom3d ? 2.0 * std::numbers::pi * double(phi[i]) : 0.0);
+    }
+  }
+}
+
+void refine(const Engine& e, Vec3* out, int span, int l0, int nlev, uint64_t node0) {
+  switch (e.mode()) {
+    case kFlat: return refine_as<kFlat>(e, out, span, l0, nlev, node0);
+    case kPlanar: return refine_as<kPlanar>(e, out, span, l0, nlev, node0);
+    default: return refine_as<kRandom3d>(e, out, span, l0, nlev, node0);
   }
 }
 
@@ -178,13 +190,18 @@ void fpl_segment(const FplConfig& c, const Vec3& a, const Vec3& b, uint32_t line
   // 2^kBlockLevels vertices finished while it is in cache.
   const int top = std::max(0, depth - kBlockLevels);
   const int sub = depth - top;
-  const size_t scratch = size_t(1) << std::max(top, sub);
-  std::vector<double> f(scratch), phi(e.needs_angle() ? scratch : 0);
-  refine(e, out, depth, 0, top, 0, f.data(), phi.data());
-  const uint64_t blocks = uint64_t(1) << top;
-  for (uint64_t t = 0; t < blocks; ++t) {
-    refine(e, out + (int64_t(t) << sub), sub, top, sub, t, f.data(), phi.data());
-    if ((t & 255) == 255) c.progress.report(double(t + 1) / double(blocks));
+  refine(e, out, depth, 0, top, 0);
+  // Blocks are independent (draws keyed by position), so they run on any
+  // number of threads with the same result; progress is reported between
+  // groups of blocks, from the calling thread.
+  const int64_t blocks = int64_t(1) << top;
+  const int threads = resolve_threads(c.threads);
+  constexpr int64_t kGroup = 64;
+  for (int64_t g = 0; g < blocks; g += kGroup) {
+    const int64_t end = std::min(blocks, g + kGroup);
+#pragma omp parallel for num_threads(threads) schedule(static) if (end - g > 1 && threads > 1)
+    for (int64_t t = g; t < end; ++t) refine(e, out + (t << sub), sub, top, sub, uint64_t(t));
+    if (end < blocks) c.progress.report(double(end) / double(blocks));
   }
   if (visitor) {
     // The splits, recovered from the finished array (nodes never move).

@@ -31,7 +31,8 @@ namespace ft {
 enum class FplRng : int { kUniform = 0, kNormal = 1 };
 enum class FplRule : int { kRandom = 0, kDragon = 1 };
 
-inline constexpr int kMaxFplDepth = 40;
+// Node j of level l uses Philox block j / 4 (32 bits): j < 2^34, so levels 0..33.
+inline constexpr int kMaxFplDepth = 34;
 
 struct FplConfig {
   FplRng rng = FplRng::kUniform;
@@ -42,6 +43,7 @@ struct FplConfig {
   uint64_t seed = 1;
   bool three_d = false;
   Vec3 plane_normal{0, 0, 0};  // 3D only; all zero: random direction per midpoint
+  int threads = 0;             // 0: all cores; the output never depends on it
   Progress progress;
 };
 

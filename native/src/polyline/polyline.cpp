@@ -99,6 +99,7 @@ FplConfig fpl_config(const ft_polyline_params& p) {
   c.min_length = p.min_length;
   c.seed = p.seed;
   c.three_d = p.method == FT_POLYLINE_FPL3D;
+  c.threads = p.threads;
   c.plane_normal = {p.plane_normal[0], p.plane_normal[1], p.plane_normal[2]};
   c.progress = Progress(p.progress, p.progress_user);
   return c;
@@ -109,7 +110,7 @@ void validate_polyline_params(const ft_polyline_params& p) {
     invalid("struct_size must be sizeof(ft_polyline_params) = " + std::to_string(sizeof(ft_polyline_params)) +
             ", got " + std::to_string(p.struct_size) + " (fill the struct with ft_polyline_params_init)");
   check_int_range("method", p.method, FT_POLYLINE_FPL, FT_POLYLINE_PROFILE);
-  if (p.reserved0 != 0) invalid("reserved0 must be 0");
+  check_int_range("threads", p.threads, 0, 1024);
   if (p.method == FT_POLYLINE_IFS) {
     if (p.ifs_table) {
       check_int_range("ifs_maps", p.ifs_maps, 1, 64);

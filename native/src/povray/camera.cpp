@@ -55,42 +55,56 @@ Camera frame_points(const std::vector<Vec3>& points, const CameraOptions& o) {
   const double az = o.azimuth_deg * kPi / 180, el = o.elevation_deg * kPi / 180;
   // World azimuth: 0 = +y (POV +z), 90 = +x.
   const Vec3 to_camera{std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el)};
-  // Tilt: the centre, seen along -to_camera, must land on row center_v, so
-  // the view axis is raised by the angle that puts it there.
   const double t = std::tan(o.fov_deg * kPi / 360);
-  const double tilt = std::atan((o.center_v - 0.5) * 2 * t / o.aspect);
-  const double pitch = std::max(-el + tilt, -kPi / 2 + 1e-6);  // view axis below the horizon
   const Vec3 flat{-std::sin(az), 0, -std::cos(az)};
   Camera c;
   c.fov_deg = o.fov_deg;
   c.aspect = o.aspect;
-  c.direction = {flat[0] * std::cos(pitch), std::sin(pitch), flat[2] * std::cos(pitch)};
-  const Vec3 sky = o.elevation_deg > 89.9 ? Vec3{-flat[0], 0, -flat[2]} : Vec3{0, 1, 0};
-  c.right = unit(cross(sky, c.direction));
-  c.up = cross(c.direction, c.right);
-  auto place = [&](double d) {
+  auto place = [&](double d, double tilt) {
+    // The view axis is raised by `tilt` from the line to the centre.
+    const double pitch = std::clamp(-el + tilt, -kPi / 2 + 1e-6, kPi / 2 - 1e-6);
+    c.direction = {flat[0] * std::cos(pitch), std::sin(pitch), flat[2] * std::cos(pitch)};
+    // Straight down, "up" in the picture is still the way the camera faces.
+    const Vec3 sky = o.elevation_deg > 89.9 ? Vec3{flat[0], 0, flat[2]} : Vec3{0, 1, 0};
+    c.right = unit(cross(sky, c.direction));
+    c.up = cross(c.direction, c.right);
     c.location = {centre[0] + to_camera[0] * d, centre[1] + to_camera[1] * d, centre[2] + to_camera[2] * d};
     c.look_at = {c.location[0] + c.direction[0] * d, c.location[1] + c.direction[1] * d,
                  c.location[2] + c.direction[2] * d};
   };
-  auto fits = [&](double d) {
-    place(d);
+  // Rows vmin..vmax the points cover, false if one is off the frame.
+  double vmin = 0, vmax = 0;
+  auto fits = [&](double d, double tilt) {
+    place(d, tilt);
     const double m = o.margin / 2;
+    vmin = 1, vmax = 0;
     for (const Vec3& p : points) {
       double u, v;
       if (!c.project(p, u, v) || u < m || u > 1 - m || v < m || v > 1 - m) return false;
+      vmin = std::min(vmin, v), vmax = std::max(vmax, v);
     }
     return true;
   };
-  // Farther always fits better (every point tends to the centre's row), so
-  // bisect the distance between a too-near and a fitting one.
-  double near = 0, far = size;
-  while (!fits(far) && far < size * 1e6) near = far, far *= 2;
-  for (int i = 0; i < 50; ++i) {
-    const double mid = (near + far) / 2;
-    (fits(mid) ? far : near) = mid;
+  auto row_angle = [&](double v) { return std::atan((v - 0.5) * 2 * t / o.aspect); };
+  // Tilt so the middle of what is seen lands on row center_v, then fit the
+  // distance; the middle moves as the distance changes, so repeat a few times.
+  double tilt = row_angle(o.center_v), dist = size;
+  for (int round = 0; round < 6; ++round) {
+    // Farther always fits better (every point tends to the centre's row), so
+    // bisect the distance between a too-near and a fitting one.
+    double near = 0, far = size;
+    while (!fits(far, tilt) && far < size * 1e6) near = far, far *= 2;
+    for (int i = 0; i < 40; ++i) {
+      const double mid = (near + far) / 2;
+      (fits(mid, tilt) ? far : near) = mid;
+    }
+    dist = far;
+    fits(dist, tilt);
+    const double shift = row_angle((vmin + vmax) / 2) - row_angle(o.center_v);
+    if (std::abs(shift) < 1e-4 || round == 5) break;  // keep the tilt the distance was fitted for
+    tilt -= shift;
   }
-  place(std::max(far, 1e-3 * size) * o.distance_scale);
+  place(std::max(dist, 1e-3 * size) * o.distance_scale, tilt);
   return c;
 }
 

@@ -15,14 +15,14 @@ struct CameraOptions {
   double aspect = 4.0 / 3.0;   // image width / height the framing is made for, 0.1..10
   double margin = 0.04;        // free border, fraction of the half-frame, 0..0.5
   double distance_scale = 1;   // > 1 moves the camera away from the framed distance, 0.1..100
-  double center_v = 0.6;       // image row (0 top .. 1 bottom) of the content's centre, 0.2..0.8:
-                               // below 0.5 tilts the view up and shows more sky
+  double center_v = 0.55;      // image row (0 top .. 1 bottom) where the middle of the framed
+                               // content lands, 0.2..0.8: above 0.5 leaves more sky
 };
 
 struct Camera {
   Vec3 location{}, look_at{};    // POV axes
   Vec3 right{}, up{}, direction{};  // unit vectors (POV axes, left-handed)
-  double fov_deg = 45, aspect = 4.0 / 3.0;
+  double fov_deg = 50, aspect = 4.0 / 3.0;
   // Image position of a POV point in 0..1 (u right, v down from the top);
   // false when it is behind the camera.
   bool project(const Vec3& p, double& u, double& v) const;
@@ -30,8 +30,8 @@ struct Camera {
 
 void validate_camera_options(const CameraOptions& o);
 // The camera placed towards the given azimuth and elevation from the centre
-// of the points' box, tilted so that centre lands on row center_v, just far
-// enough for every point to fit the frame within the margin.
+// of the points' box, tilted so the middle of their picture lands on row
+// center_v, just far enough for every point to fit the frame within the margin.
 Camera frame_points(const std::vector<Vec3>& points, const CameraOptions& o);
 // The same for the 8 corners of the POV box [lo, hi].
 Camera frame_box(const Vec3& lo, const Vec3& hi, const CameraOptions& o);

@@ -58,12 +58,6 @@ const char* kSceneMaterials = R"(#ifndef(FT_Lightning_Tex)
    finish { diffuse 0.8 specular 0.3 roughness 0.02 }
 }
 #end
-#ifndef(FT_Ground_Tex)
-#declare FT_Ground_Tex = texture {
-   pigment { rgb <0.55, 0.55, 0.52> }
-   finish { diffuse 0.8 }
-}
-#end
 )";
 
 }  // namespace
@@ -88,6 +82,8 @@ void validate_scene_params(const SceneParams& p) {
 SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   validate_scene_params(p);
   AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
+  bool stormy = false;
+  for (const auto& l : p.lines) stormy = stormy || l.kind == LineKind::kLightning;
   const std::string folder = folder_of(pov_path);
   SceneSummary sum;
   Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
@@ -123,8 +119,6 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   sum.camera = frame_points(frame, p.camera);
   const Camera& cam = sum.camera;
   const Vec3 centre = cam.look_at;
-  bool stormy = false;
-  for (const auto& l : p.lines) stormy = stormy || l.kind == LineKind::kLightning;
 
   std::string s;
   s += "// fracterra scene" + (p.title.empty() ? std::string() : ": " + comment_text(p.title)) + "\n";
@@ -140,6 +134,8 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   s += kFtTerrainInc;
   s += "// ---- end of ft_terrain.inc ----\n\n";
   s += kSceneMaterials;
+  s += std::string("#ifndef(FT_Ground_Tex)\n#declare FT_Ground_Tex = texture {\n   pigment { rgb ") +
+       (stormy ? "<0.10, 0.10, 0.11>" : "<0.55, 0.55, 0.52>") + " }\n   finish { diffuse 0.8 }\n}\n#end\n";
   s += "\n#declare FT_Scene_Min = " + vec(lo) + ";\n#declare FT_Scene_Max = " + vec(hi) + ";\n\n";
 
   s += "camera {\n  perspective\n  location " + vec(cam.location) + "\n  sky " +
@@ -179,7 +175,11 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
          number(sum.terrain.z_max) + ", " + number(zw) + ")\n}\n\n";
   } else {
     // Polylines alone: a ground to catch their shadows, just below them.
-    s += "plane { y, " + number(lo[1] - 0.02 * extent) + " texture { FT_Ground_Tex } }\n\n";
+    // Coastlines alone lie on a sea, where their white reads best.
+    bool coast = false;
+    for (const auto& l : p.lines) coast = coast || l.kind == LineKind::kCoastline;
+    s += "plane { y, " + number(lo[1] - 0.02 * extent) + " texture { " +
+         (coast ? "FT_Sea_Tex" : "FT_Ground_Tex") + " } }\n\n";
   }
 
   for (size_t i = 0; i < p.lines.size(); ++i) {

@@ -57,18 +57,23 @@ void set_scene_terrain(SceneParams& p, const Heightfield& hf, double size_x = 1,
 // `fracterra terrain ... --pov`: the terrain alone with defaults as above.
 SceneSummary write_terrain_scene(const Heightfield& hf, const std::string& pov_path);
 
-// Camera defaults for a polyline alone: seen from high above (70 degrees).
-inline CameraOptions polyline_camera() {
+// Camera defaults for a polyline alone: seen from high above (70 degrees),
+// or nearly from the side (12 degrees) for lightning, which is vertical.
+inline CameraOptions polyline_camera(LineKind kind = LineKind::kGeneric) {
   CameraOptions c;
-  c.elevation_deg = 70;
+  c.elevation_deg = kind == LineKind::kLightning ? 12 : 70;
   return c;
 }
 
 // `fracterra polyline ... --pov`: one polyline set alone, framed, over a
 // plain ground, as a lightning, coastline or generic line.
-SceneSummary write_polyline_scene(const PolylineSet& set, const std::string& pov_path,
-                                  LineKind kind = LineKind::kGeneric, double radius = 0,
-                                  const CameraOptions& camera = polyline_camera());
+SceneSummary write_polyline_scene(const PolylineSet& set, const std::string& pov_path, LineKind kind,
+                                  double radius, const CameraOptions& camera);
+// The same with the automatic radius and the camera defaults of its kind.
+inline SceneSummary write_polyline_scene(const PolylineSet& set, const std::string& pov_path,
+                                         LineKind kind = LineKind::kGeneric) {
+  return write_polyline_scene(set, pov_path, kind, 0, polyline_camera(kind));
+}
 
 // The include files of povray_macros/ this writer embeds in every scene so
 // a scene needs nothing beside its PNG (generated from the .inc at build).

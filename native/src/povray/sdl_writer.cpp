@@ -17,7 +17,10 @@ std::string number(double v) {
 }
 
 std::string vec(const Vec3& v) {
-  return "<" + number(v[0]) + ", " + number(v[1]) + ", " + number(v[2]) + ">";
+  // Appended piece by piece: GCC 12's -Wrestrict misfires on the chained "+".
+  std::string s = "<";
+  s.append(number(v[0])).append(", ").append(number(v[1])).append(", ").append(number(v[2]));
+  return s.append(">");
 }
 
 std::string quoted(const std::string& text) {
@@ -26,7 +29,12 @@ std::string quoted(const std::string& text) {
     if (c < 0x20 || c == 0x7f)
       invalid("text written into a POV-Ray scene must not contain control characters: '" +
               comment_text(text) + "'");
-    if (c == '"' || c == '\\') out += '\\';
+    // POV-Ray 3.7 turns \" into " in file names but keeps \\ as two
+    // backslashes, so a backslash cannot be written faithfully: refuse it
+    // (and with it any way to pair our escapes with one of the caller's).
+    if (c == '\\')
+      invalid("a path written into a POV-Ray scene must not contain a backslash: '" + comment_text(text) + "'");
+    if (c == '"') out += '\\';
     out += char(c);
   }
   return out + "\"";

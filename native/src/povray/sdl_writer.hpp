@@ -21,9 +21,9 @@ inline Vec3 to_pov(const Vec3& w) { return {w[0], w[2], w[1]}; }
 std::string number(double v);
 // "<x, y, z>" of a POV-Ray vector (already in POV axes).
 std::string vec(const Vec3& v);
-// A double-quoted SDL string literal. Backslashes and quotes are escaped so
-// no text can end the literal early; control characters (newlines, ...)
-// are refused, since a scene path or name never needs them.
+// A double-quoted SDL string literal (file names). Quotes are escaped so no
+// text can end the literal early; backslashes (POV-Ray keeps "\\" as two)
+// and control characters are refused: a scene path never needs them.
 std::string quoted(const std::string& text);
 // `name` when it is a safe SDL identifier of ours: letters, digits and '_',
 // starting with a letter, at most 40 characters, with at least one capital

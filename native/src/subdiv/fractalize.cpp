@@ -198,7 +198,7 @@ class Fractalizer {
     // whose addresses do not depend on the thread count.
     constexpr int kChunk = 4096;
     const int chunks = (nv + kChunk - 1) / kChunk;
-#pragma omp parallel num_threads(threads_)
+#pragma omp parallel num_threads(threads_) if (chunks > 1)  // no thread start-up for small levels
     {
       std::vector<float> g(kChunk);
 #pragma omp for schedule(static)

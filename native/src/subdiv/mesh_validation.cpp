@@ -64,14 +64,8 @@ void validate_mesh(const Mesh& m) {
     if (dup != sorted.end())
       invalid(face_name(f) + " uses vertex " + std::to_string(*dup) +
               " twice; a face needs distinct vertices (degenerate faces are not allowed)");
-    double nx = 0, ny = 0, nz = 0;  // Newell's vector area
-    for (int32_t i = 0; i < n; ++i) {
-      const auto a = m.vertex(size_t(idx[i])), b = m.vertex(size_t(idx[(i + 1) % n]));
-      nx += (double(a[1]) - b[1]) * (double(a[2]) + b[2]);
-      ny += (double(a[2]) - b[2]) * (double(a[0]) + b[0]);
-      nz += (double(a[0]) - b[0]) * (double(a[1]) + b[1]);
-      directed.push_back(edge_key(uint32_t(idx[i]), uint32_t(idx[(i + 1) % n])));
-    }
+    for (int32_t i = 0; i < n; ++i) directed.push_back(edge_key(uint32_t(idx[i]), uint32_t(idx[(i + 1) % n])));
+    const auto [nx, ny, nz] = face_vector_area(m, idx, n);
     if (nx == 0 && ny == 0 && nz == 0)
       invalid(face_name(f) + " has zero area (its vertices coincide or lie on a line); degenerate faces are not allowed");
     first += size_t(n);

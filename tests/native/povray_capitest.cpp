@@ -1,0 +1,111 @@
+// The POV-Ray exporter through the C ABI, as ctypes and the Blender
+// exporter call it.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "fracterra/fracterra.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TempDir {
+  fs::path dir = fs::temp_directory_path() / ("ft_pov_capi_" + std::to_string(::getpid()));
+  TempDir() { fs::create_directories(dir); }
+  ~TempDir() { fs::remove_all(dir); }
+  std::string operator/(const std::string& n) const { return (dir / n).string(); }
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+TEST(PovCapi, WritesASceneWithTerrainAndLines) {
+  TempDir t;
+  std::vector<float> z(17 * 9);
+  for (size_t i = 0; i < z.size(); ++i) z[i] = float(std::sin(i * 0.37));
+  ft_heightfield* hf = nullptr;
+  ASSERT_EQ(ft_heightfield_create(17, 9, z.data(), &hf), FT_OK);
+  const double xyz[] = {0.1, 0.1, 0.5, 0.2, 0.3, 0.4, 0.3, 0.2, 0.1};
+  ft_polylines* pl = nullptr;
+  ASSERT_EQ(ft_polylines_create(xyz, nullptr, 3, nullptr, 1, &pl), FT_OK);
+  ft_pov_scene_params p;
+  ASSERT_EQ(ft_pov_scene_params_init(&p), FT_OK);
+  p.terrain = hf;
+  p.vertical_scale = 0.1;
+  p.has_water = 1;
+  ft_pov_scene_lines lines = {pl, FT_POV_LIGHTNING, 0};
+  p.lines = &lines;
+  p.line_set_count = 1;
+  ASSERT_EQ(ft_pov_write_scene(&p, (t / "s.pov").c_str()), FT_OK) << ft_last_error();
+  const std::string sdl = slurp(t / "s.pov");
+  EXPECT_NE(sdl.find("png \"s.terrain.png\""), std::string::npos);
+  EXPECT_NE(sdl.find("FT_Lightning_Tex"), std::string::npos);
+  EXPECT_TRUE(fs::exists(t / "s.terrain.png"));
+  ft_polylines_free(pl);
+  ft_heightfield_free(hf);
+}
+
+TEST(PovCapi, RejectsBadArgumentsWithMessages) {
+  TempDir t;
+  ft_pov_scene_params p;
+  ASSERT_EQ(ft_pov_scene_params_init(&p), FT_OK);
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "s.pov").c_str()), FT_ERR_INVALID_ARGUMENT);  // nothing to show
+  EXPECT_NE(std::string(ft_last_error()).find("terrain or at least one polyline"), std::string::npos);
+  EXPECT_EQ(ft_pov_write_scene(nullptr, "x.pov"), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_pov_write_scene(&p, nullptr), FT_ERR_INVALID_ARGUMENT);
+  p.struct_size = 8;
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "s.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("struct_size"), std::string::npos);
+  EXPECT_EQ(ft_pov_scene_params_init(nullptr), FT_ERR_INVALID_ARGUMENT);
+
+  const double xyz[] = {0, 0, 0, 1, 0, 0};
+  ft_polylines* pl = nullptr;
+  ASSERT_EQ(ft_polylines_create(xyz, nullptr, 2, nullptr, 1, &pl), FT_OK);
+  ft_pov_sweep_params sp;
+  ASSERT_EQ(ft_pov_sweep_params_init(&sp), FT_OK);
+  EXPECT_EQ(ft_pov_write_sweeps(pl, &sp, (t / "a.inc").c_str(), "bolt } sphere {"), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("identifier"), std::string::npos);
+  sp.segments_per_sweep = 0;
+  EXPECT_EQ(ft_pov_write_sweeps(pl, &sp, (t / "a.inc").c_str(), "Bolt"), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_FALSE(fs::exists(t / "a.inc"));
+  ft_polylines_free(pl);
+}
+
+TEST(PovCapi, LowerLevelWritersForOtherExporters) {
+  TempDir t;
+  std::vector<float> z = {0, 1, 2, 3};
+  ft_heightfield* hf = nullptr;
+  ASSERT_EQ(ft_heightfield_create(2, 2, z.data(), &hf), FT_OK);
+  double lo = 0, hi = 0;
+  ASSERT_EQ(ft_pov_write_heightfield(hf, (t / "h.png").c_str(), (t / "h.inc").c_str(), "Terrain", 10, 10, 2,
+                                     &lo, &hi),
+            FT_OK)
+      << ft_last_error();
+  EXPECT_EQ(lo, 0);
+  EXPECT_EQ(hi, 6);
+  EXPECT_NE(slurp(t / "h.inc").find("#declare Terrain = height_field {\n  png \"h.png\""), std::string::npos);
+  const double xyz[] = {0, 0, 0, 1, 0, 0, 2, 1, 0};
+  const double radii[] = {0.3, 0.2, 0.1};
+  ft_polylines* pl = nullptr;
+  ASSERT_EQ(ft_polylines_create(xyz, radii, 3, nullptr, 1, &pl), FT_OK);
+  ft_pov_sweep_params sp;
+  ft_pov_sweep_params_init(&sp);
+  ASSERT_EQ(ft_pov_write_sweeps(pl, &sp, (t / "b.inc").c_str(), "Bolt"), FT_OK) << ft_last_error();
+  EXPECT_NE(slurp(t / "b.inc").find("#declare Bolt = object {\nsphere_sweep { linear_spline 3,"), std::string::npos);
+  ft_polylines_free(pl);
+  ft_heightfield_free(hf);
+}
+
+}  // namespace

@@ -1,0 +1,179 @@
+// The POV-Ray writer without povray: SDL numbers, strings, identifiers,
+// paths, sweep chunking and camera framing. (Real renders: tests/povray.)
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <regex>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "povray/camera.hpp"
+#include "povray/scene.hpp"
+#include "povray/sdl_writer.hpp"
+#include "povray/sphere_sweep_export.hpp"
+
+namespace ft::pov {
+namespace {
+
+TEST(PovSdl, NumbersKeepNineSignificantDigits) {
+  EXPECT_EQ(number(0.123456789012), "0.123456789");
+  EXPECT_EQ(number(1234567.891), "1234567.89");
+  EXPECT_EQ(number(-0.0), "0");
+  EXPECT_EQ(number(1e-12), "1e-12");
+  EXPECT_EQ(vec({1, 2.5, -3}), "<1, 2.5, -3>");
+  EXPECT_THROW(number(NAN), Error);
+  EXPECT_THROW(number(INFINITY), Error);
+}
+
+TEST(PovSdl, QuotedStringsCannotBreakOut) {
+  EXPECT_EQ(quoted("a.png"), "\"a.png\"");
+  EXPECT_EQ(quoted("x\" } sphere { 0, 1 } #declare A = \"y"),
+            "\"x\\\" } sphere { 0, 1 } #declare A = \\\"y\"");
+  EXPECT_THROW(quoted("dir\\file.png"), Error);
+  EXPECT_THROW(quoted("a\nb"), Error);
+  EXPECT_THROW(quoted(std::string("a\0b", 3)), Error);
+}
+
+TEST(PovSdl, IdentifiersMustBeSafeAndCannotBeKeywords) {
+  EXPECT_EQ(identifier("Terrain_1", "name"), "Terrain_1");
+  EXPECT_THROW(identifier("sphere", "name"), Error);  // no capital: could be a keyword
+  EXPECT_THROW(identifier("1Terrain", "name"), Error);
+  EXPECT_THROW(identifier("Ter rain", "name"), Error);
+  EXPECT_THROW(identifier("A = 1; #debug", "name"), Error);
+  EXPECT_THROW(identifier("", "name"), Error);
+}
+
+TEST(PovSdl, PathsAreRelativeToTheSceneFolder) {
+  EXPECT_EQ(relative_path("/a/b/scene.terrain.png", "/a/b"), "scene.terrain.png");
+  EXPECT_EQ(relative_path("/a/img/t.png", "/a/b"), "../img/t.png");
+  EXPECT_EQ(folder_of("x.pov"), ".");
+  EXPECT_EQ(folder_of("d/x.pov"), "d");
+}
+
+PolylineSet line_of(int n) {
+  PolylineSet s;
+  for (int i = 0; i < n; ++i) s.add({double(i), std::sin(i * 0.3), 0}, 0.01 * (1 + i));
+  s.end_line();
+  return s;
+}
+
+std::vector<int> sweep_sizes(const std::string& sdl, const char* kind) {
+  std::vector<int> sizes;
+  std::regex re(std::string(kind) + " (\\d+),");
+  for (std::sregex_iterator it(sdl.begin(), sdl.end(), re), end; it != end; ++it) sizes.push_back(std::stoi((*it)[1]));
+  return sizes;
+}
+
+TEST(PovSweep, LinearPiecesShareEndPointsAndCoverTheLine) {
+  SweepOptions o;
+  o.segments_per_sweep = 16;
+  const std::string sdl = sweeps_sdl(line_of(100), o);  // 99 segments: 6 x 16 + 3
+  EXPECT_EQ(sdl.rfind("union {", 0), 0u);
+  const auto sizes = sweep_sizes(sdl, "linear_spline");
+  ASSERT_EQ(sizes.size(), 7u);
+  int segments = 0;
+  for (int n : sizes) {
+    EXPECT_GE(n, 2);
+    segments += n - 1;
+  }
+  EXPECT_EQ(segments, 99);
+  // The last point of one piece is the first of the next.
+  EXPECT_NE(sdl.find("<16, 0, -0.996164609>, 0.17\n}\nsphere_sweep { linear_spline 17,\n  <16, 0, -0.996164609>, 0.17"),
+            std::string::npos)
+      << sdl.substr(0, 2000);
+}
+
+TEST(PovSweep, CubicPiecesHaveFourPointsAndTolerance) {
+  SweepOptions o;
+  o.spline = SweepSpline::kCubic;
+  o.segments_per_sweep = 16;
+  const std::string sdl = sweeps_sdl(line_of(18), o);  // 17 segments: 16 + 1
+  const auto sizes = sweep_sizes(sdl, "cubic_spline");
+  ASSERT_EQ(sizes.size(), 2u);
+  EXPECT_EQ(sizes[0], 19);
+  EXPECT_EQ(sizes[1], 4);  // one segment plus its two control points
+  EXPECT_NE(sdl.find("tolerance 0.001"), std::string::npos);
+  // The first control point mirrors point 1 about point 0: world
+  // (-1, -sin(0.3), 0), written in POV axes.
+  EXPECT_NE(sdl.find("<-1, 0, -0.295520207>"), std::string::npos);
+}
+
+TEST(PovSweep, RepeatedPointsAreDroppedAndLonePointsBecomeSpheres) {
+  PolylineSet s;
+  for (double x : {0.0, 0.0, 1.0, 1.0 + 1e-12, 2.0}) s.add({x, 0, 0});
+  s.end_line();
+  s.add({5, 5, 5});
+  s.add({5, 5, 5});
+  s.end_line();
+  SweepStats st;
+  SweepOptions o;
+  const std::string sdl = sweeps_sdl(s, o, "", &st);
+  EXPECT_EQ(st.duplicates_removed, 3);
+  EXPECT_EQ(st.sweeps, 1);
+  EXPECT_EQ(st.spheres, 1);
+  EXPECT_EQ(sweep_sizes(sdl, "linear_spline"), std::vector<int>{3});
+  // Radius 0 takes the default radius; POV axes swap y and z.
+  EXPECT_NE(sdl.find("sphere { <5, 5, 5>, 0.01 }"), std::string::npos) << sdl;
+}
+
+TEST(PovSweep, RejectsBadOptionsAndRadii) {
+  SweepOptions o;
+  o.segments_per_sweep = 0;
+  EXPECT_THROW(sweeps_sdl(line_of(3), o), Error);
+  o = {};
+  o.default_radius = 0;
+  EXPECT_THROW(sweeps_sdl(line_of(3), o), Error);
+  PolylineSet s = line_of(3);
+  s.radii[1] = -1;
+  EXPECT_THROW(sweeps_sdl(s, {}), Error);
+  s.radii[1] = NAN;
+  EXPECT_THROW(sweeps_sdl(s, {}), Error);
+}
+
+TEST(PovCamera, FramedPointsAllLandInsideTheImage) {
+  std::vector<Vec3> pts;
+  for (int i = 0; i < 50; ++i) pts.push_back({std::cos(i * 1.3) * 3, std::abs(std::sin(i * 0.7)), std::sin(i * 2.1) * 2});
+  for (double az : {0.0, 90.0, 200.0, -45.0})
+    for (double el : {10.0, 45.0, 90.0}) {
+      CameraOptions o;
+      o.azimuth_deg = az;
+      o.elevation_deg = el;
+      const Camera c = frame_points(pts, o);
+      double umin = 1, umax = 0, vmin = 1, vmax = 0;
+      for (const Vec3& p : pts) {
+        double u, v;
+        ASSERT_TRUE(c.project(p, u, v));
+        umin = std::min(umin, u), umax = std::max(umax, u), vmin = std::min(vmin, v), vmax = std::max(vmax, v);
+      }
+      EXPECT_GT(umin, 0) << az << " " << el;
+      EXPECT_LT(umax, 1);
+      EXPECT_GT(vmin, 0);
+      EXPECT_LT(vmax, 1);
+      // Tight: some point touches the margin (2% of the frame) on some side.
+      EXPECT_LT(std::min({umin, 1 - umax, vmin, 1 - vmax}), 0.03) << az << " " << el;
+    }
+}
+
+TEST(PovScene, RejectsBadParametersBeforeWritingAnything) {
+  const auto dir = std::filesystem::temp_directory_path() / ("ft_pov_unit_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  Heightfield hf(5, 5);
+  for (size_t i = 0; i < hf.size(); ++i) hf.data()[i] = float(i);
+  SceneParams p;
+  p.terrain = &hf;
+  p.size_x = -1;
+  EXPECT_THROW(write_scene(p, (dir / "a.pov").string()), Error);
+  p.size_x = 1;
+  p.camera.elevation_deg = 0;
+  EXPECT_THROW(write_scene(p, (dir / "a.pov").string()), Error);
+  p.camera = {};
+  p.has_water = true;
+  p.water_level = NAN;
+  EXPECT_THROW(write_scene(p, (dir / "a.pov").string()), Error);
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace ft::pov
