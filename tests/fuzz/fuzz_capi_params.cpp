@@ -119,7 +119,7 @@ void fuzz_polyline(Bytes& in) {
   in.take_into(&p, sizeof p);
   const uint8_t fixups = in.take<uint8_t>();
   if (fixups & 1) p.struct_size = sizeof p;
-  if (fixups & 2) p.reserved0 = 0;
+  if (p.threads >= 0 && p.threads <= 1024) p.threads %= 3;  // as for terrains
   // The base polyline and the IFS table hold exactly what their counts
   // claim (small counts only), from the input.
   std::vector<double> base, table;

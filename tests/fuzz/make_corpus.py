@@ -238,7 +238,7 @@ class PolylineParams(ctypes.Structure):
                 ("plane_normal", ctypes.c_double * 3), ("branch_prob", ctypes.c_double),
                 ("branch_decay", ctypes.c_double), ("branch_generations", ctypes.c_int32),
                 ("ifs_preset", ctypes.c_int32), ("radius", ctypes.c_double), ("hurst", ctypes.c_double),
-                ("ifs_table", ctypes.c_void_p), ("ifs_maps", ctypes.c_int32), ("reserved0", ctypes.c_int32),
+                ("ifs_table", ctypes.c_void_p), ("ifs_maps", ctypes.c_int32), ("threads", ctypes.c_int32),
                 ("ifs_points", ctypes.c_int64), ("progress", ctypes.c_void_p), ("progress_user", ctypes.c_void_p)]
 
 
