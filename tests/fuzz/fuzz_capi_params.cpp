@@ -1,7 +1,8 @@
 // Fuzzes the C ABI the way ctypes callers can get it wrong: raw bytes become
-// the fields of ft_terrain_params / ft_profile_params (struct_size included),
-// with an optional reference grid of the claimed size and a progress callback
-// that cancels after a few reports. Every call must return a known status
+// the fields of ft_terrain_params / ft_profile_params / ft_polyline_params /
+// ft_fractalize_params (struct_size included), with pointer fields (reference
+// grid, base polyline, IFS table, weights) holding what their counts claim,
+// and a progress callback that cancels after a few reports. Every call must return a known status
 // with a message, hand back either a complete result or NULL, and never
 // crash, leak or hang (the memory cap keeps accepted sizes small).
 #include <memory>
@@ -113,6 +114,75 @@ void fuzz_profile(Bytes& in) {
   if (s == FT_OK && (len < 0 || size_t(len) > count)) bug("profile written past the buffer it was given");
 }
 
+void fuzz_polyline(Bytes& in) {
+  ft_polyline_params p;
+  in.take_into(&p, sizeof p);
+  const uint8_t fixups = in.take<uint8_t>();
+  if (fixups & 1) p.struct_size = sizeof p;
+  if (p.threads >= 0 && p.threads <= 1024) p.threads %= 3;  // as for terrains
+  // The base polyline and the IFS table hold exactly what their counts
+  // claim (small counts only), from the input.
+  std::vector<double> base, table;
+  if ((fixups & 4) && p.base_count >= 0 && p.base_count <= 64) {
+    base.resize(size_t(p.base_count) * 3);
+    for (double& v : base) v = in.left() >= 8 ? in.take<double>() : double(in.take<uint8_t>());
+    p.base = base.data();
+  } else {
+    p.base = nullptr;
+  }
+  if ((fixups & 8) && p.ifs_maps >= 0 && p.ifs_maps <= 64) {
+    table.resize(size_t(p.ifs_maps) * 7);
+    for (double& v : table) v = in.left() >= 8 ? in.take<double>() : double(in.take<uint8_t>()) / 255.0;
+    p.ifs_table = table.data();
+  } else {
+    p.ifs_table = nullptr;
+  }
+  CancelAfter cancel{in.take<uint8_t>() % 16};
+  p.progress = (fixups & 16) ? cancel_after : nullptr;
+  p.progress_user = &cancel;
+  ft_polylines* out = reinterpret_cast<ft_polylines*>(&p);
+  const ft_status s = ft_polyline_generate(&p, &out);
+  check_status(s);
+  if (s != FT_OK) {
+    if (out != nullptr) bug("failed call left a handle behind");
+    return;
+  }
+  const int64_t lines = ft_polylines_line_count(out), verts = ft_polylines_vertex_count(out);
+  const int64_t* off = ft_polylines_offsets(out);
+  if (lines < 1 || !off || off[0] != 0 || off[lines] != verts) bug("inconsistent polyline set");
+  ft_polyline_stats st;
+  check_status(ft_polyline_measure(out, &st));
+  ft_polylines_free(out);
+}
+
+// A unit cube: the fractalize parameters vary, the mesh does not (the OBJ
+// harness varies meshes).
+void fuzz_fractalize(Bytes& in) {
+  static const float kCube[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+  static const int32_t kSizes[] = {4, 4, 4, 4, 4, 4};
+  static const int32_t kFaces[] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
+  ft_mesh* cube = nullptr;
+  check_status(ft_mesh_create(kCube, 8, kSizes, 6, kFaces, nullptr, nullptr, 0, &cube));
+  ft_fractalize_params p;
+  in.take_into(&p, sizeof p);
+  const uint8_t fixups = in.take<uint8_t>();
+  if (fixups & 1) p.struct_size = sizeof p;
+  if (p.threads >= 0 && p.threads <= 1024) p.threads %= 3;
+  std::vector<float> weights(8);
+  for (float& w : weights) w = in.take<float>();
+  p.weights = (fixups & 2) ? weights.data() : nullptr;
+  CancelAfter cancel{in.take<uint8_t>() % 16};
+  p.progress = (fixups & 4) ? cancel_after : nullptr;
+  p.progress_user = &cancel;
+  ft_mesh* out = reinterpret_cast<ft_mesh*>(&p);
+  const ft_status s = ft_fractalize(cube, &p, &out);
+  check_status(s);
+  if (s != FT_OK && out != nullptr) bug("failed call left a handle behind");
+  if (s == FT_OK && (ft_mesh_face_count(out) < 6 || ft_mesh_vertex_count(out) < 8)) bug("mesh shrank");
+  ft_mesh_free(s == FT_OK ? out : nullptr);
+  ft_mesh_free(cube);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
@@ -122,8 +192,11 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   Bytes in(data, size);
-  const uint8_t which = in.take<uint8_t>();
-  if (which & 1) fuzz_profile(in);
-  else fuzz_terrain(in);
+  switch (in.take<uint8_t>() % 4) {
+    case 0: fuzz_terrain(in); break;
+    case 1: fuzz_profile(in); break;
+    case 2: fuzz_polyline(in); break;
+    default: fuzz_fractalize(in); break;
+  }
   return 0;
 }

@@ -147,6 +147,23 @@ put("reference_grid", "npy_periodic_grid", bytes([2, 0x12]) + npy(np.zeros((3, 3
 put("reference_grid", "npy_nan_grid", bytes([2, 0x10]) + npys["nan_inf.npy"])
 
 
+# ---------------------------------------------------------------- OBJ meshes
+# byte 0: fractalize knobs (levels, scheme, mode, fix_boundary, scale_by_edge_length).
+objs = {
+    "cube_creases.obj": (0x00, "# cube\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                               "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n"
+                               "t crease 2/1/0 0 1 3\nt corner 1/1/0 6 10\n"),
+    "tetra_loop.obj": (0x05, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"),
+    "open_quad.obj": (0x21, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"),
+    "bad_index.obj": (0x00, "v 0 0 0\nv 1 0 0\nf 1 2 9\n"),
+    "zero_area.obj": (0x00, "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"),
+    "negative_and_slashes.obj": (0x00, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -3\nf 1/1/1 2//2 3/3\n"),
+    "nan_vertex.obj": (0x00, "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+    "non_manifold.obj": (0x00, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 2 3\n"),
+}
+for k, (knobs, text) in objs.items():
+    put("obj", k, bytes([knobs]) + text.encode())
+
 # ---------------------------------------------------------------- C ABI params
 # The structs as ctypes lays them out (mirrors native/include/fracterra/terrain.h).
 class TerrainParams(ctypes.Structure):
@@ -157,7 +174,8 @@ class TerrainParams(ctypes.Structure):
                 ("reference_scale", ctypes.c_int32), ("octaves", ctypes.c_int32), ("lacunarity", ctypes.c_double),
                 ("gain", ctypes.c_double), ("basis", ctypes.c_int32), ("variant", ctypes.c_int32),
                 ("frequency", ctypes.c_double), ("offset", ctypes.c_double), ("rotation", ctypes.c_double),
-                ("warp", ctypes.c_double), ("progress", ctypes.c_void_p), ("progress_user", ctypes.c_void_p)]
+                ("warp", ctypes.c_double), ("progress", ctypes.c_void_p), ("progress_user", ctypes.c_void_p),
+                ("world_size", ctypes.c_double)]  # ABI 1.1
 
 
 class ProfileParams(ctypes.Structure):
@@ -170,7 +188,7 @@ class ProfileParams(ctypes.Structure):
 def terrain(**kw):
     p = TerrainParams(struct_size=ctypes.sizeof(TerrainParams), method=0, levels=4, width=9, height=9, hurst=0.8,
                       sigma=1.0, seed=1, reference_scale=0, octaves=8, lacunarity=2.0, basis=1, frequency=4.0,
-                      offset=1.0, rotation=0.5)
+                      offset=1.0, rotation=0.5, world_size=10.0)
     for k, v in kw.items():
         setattr(p, k, v)
     return p
@@ -193,7 +211,11 @@ def capi(name, which, params, fixups=1, flags=0, cancel=0, ref=()):
 
 capi("terrain_default", 0, terrain())
 capi("terrain_additions_periodic", 0, terrain(method=1, periodic=1, threads=2))
-capi("terrain_fbm_unavailable", 0, terrain(method=2))
+capi("terrain_fbm_ridged_warp", 0, terrain(method=2, width=33, height=17, variant=1, warp=2.0))
+capi("terrain_fbm_cellular", 0, terrain(method=2, width=20, height=20, basis=4, octaves=3))
+capi("terrain_spectral", 0, terrain(method=3, width=32, height=24))
+capi("terrain_interpolated", 0, terrain(method=4, width=40, height=40, lacunarity=3.0))
+capi("terrain_abi_1_0_size", 0, terrain(struct_size=152), fixups=0)
 capi("terrain_too_large", 0, terrain(levels=12))
 capi("terrain_nan_hurst", 0, terrain(hurst=float("nan")))
 capi("terrain_struct_size_0", 0, terrain(struct_size=0), fixups=0)
@@ -205,4 +227,60 @@ capi("profile_reference", 1, profile(reference_size=5, reference_scale=2), flags
 capi("profile_short_buffer", 1, profile(), fixups=3)
 capi("profile_null_dst", 1, profile(), fixups=5)
 capi("profile_levels_28", 1, profile(levels=28))
+
+
+# Polyline and fractalize parameters: the structs as ctypes lays them out
+# (mirrors polyline.h and subdiv.h). [which = 2 / 3] [struct] [fixups] ...
+class PolylineParams(ctypes.Structure):
+    _fields_ = [("struct_size", ctypes.c_uint32), ("method", ctypes.c_int32), ("rng", ctypes.c_int32),
+                ("depth", ctypes.c_int32), ("spread", ctypes.c_double), ("min_length", ctypes.c_double),
+                ("seed", ctypes.c_uint64), ("base", ctypes.c_void_p), ("base_count", ctypes.c_int64),
+                ("plane_normal", ctypes.c_double * 3), ("branch_prob", ctypes.c_double),
+                ("branch_decay", ctypes.c_double), ("branch_generations", ctypes.c_int32),
+                ("ifs_preset", ctypes.c_int32), ("radius", ctypes.c_double), ("hurst", ctypes.c_double),
+                ("ifs_table", ctypes.c_void_p), ("ifs_maps", ctypes.c_int32), ("threads", ctypes.c_int32),
+                ("ifs_points", ctypes.c_int64), ("progress", ctypes.c_void_p), ("progress_user", ctypes.c_void_p)]
+
+
+class FractalizeParams(ctypes.Structure):
+    _fields_ = [("struct_size", ctypes.c_uint32), ("levels", ctypes.c_int32), ("hurst", ctypes.c_double),
+                ("sigma", ctypes.c_double), ("seed", ctypes.c_uint64), ("scheme", ctypes.c_int32),
+                ("mode", ctypes.c_int32), ("fix_boundary", ctypes.c_int32), ("scale_by_edge_length", ctypes.c_int32),
+                ("weights", ctypes.c_void_p), ("threads", ctypes.c_int32), ("progress", ctypes.c_void_p),
+                ("progress_user", ctypes.c_void_p)]
+
+
+def polyline(**kw):
+    p = PolylineParams(struct_size=ctypes.sizeof(PolylineParams), method=0, depth=6, spread=0.1, seed=1,
+                       branch_decay=0.5, branch_generations=3, radius=0.01, hurst=0.8, ifs_points=1000)
+    for k, v in kw.items():
+        setattr(p, k, v)
+    return p
+
+
+def fractalize(**kw):
+    p = FractalizeParams(struct_size=ctypes.sizeof(FractalizeParams), levels=2, hurst=0.8, sigma=0.1, seed=1)
+    for k, v in kw.items():
+        setattr(p, k, v)
+    return p
+
+
+def put_polyline(name, params, fixups=1, cancel=0, base=(), table=()):
+    put("capi_params", name, bytes([2]) + bytes(params) + bytes([fixups]) +
+        b"".join(struct.pack("<d", v) for v in base) + b"".join(struct.pack("<d", v) for v in table) +
+        bytes([cancel]))
+
+
+put_polyline("polyline_fpl", polyline())
+put_polyline("polyline_lightning", polyline(branch_prob=0.8, method=1), fixups=17, cancel=3)
+put_polyline("polyline_base", polyline(base_count=3), fixups=5, base=[0, 0, 0, 1, 0, 0, 1, 1, 0])
+put_polyline("polyline_koch", polyline(method=2, depth=4))
+put_polyline("polyline_ifs_table", polyline(method=5, ifs_maps=2), fixups=9,
+             table=[0.5, 0, 0, 0.5, 0, 0, 1, 0.5, 0, 0, 0.5, 0.5, 0, 1])
+put_polyline("polyline_profile", polyline(method=6, depth=10))
+put_polyline("polyline_depth_40", polyline(depth=40))
+put("capi_params", "fractalize_cube", bytes([3]) + bytes(fractalize()) + bytes([1]) + bytes(32) + bytes([0]))
+put("capi_params", "fractalize_weights_cancel", bytes([3]) + bytes(fractalize(levels=3, mode=1, scheme=2)) +
+    bytes([7]) + struct.pack("<8f", 1, 0, 0.5, 1, 1, 1, 0, 2) + bytes([1]))
+put("capi_params", "fractalize_levels_10", bytes([3]) + bytes(fractalize(levels=10)) + bytes([1]) + bytes(33))
 print("corpus written to", CORPUS)

@@ -29,6 +29,9 @@ cmake --build "$build" -j2 --target "${harnesses[@]/#/fuzz_}" >/dev/null
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:print_stacktrace=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}
+# Idle OpenMP workers sleep instead of spinning: the fuzzer calls many small
+# parallel regions on a machine that is shared.
+export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 
 failed=0
 printf '%-18s %8s %12s  %s\n' harness seconds executions result

@@ -21,6 +21,8 @@
 #include "io/npy.hpp"
 #include "io/pgm.hpp"
 #include "io/png_image.hpp"
+#include "povray/render.hpp"
+#include "povray/scene.hpp"
 
 namespace ft {
 namespace {
@@ -73,7 +75,7 @@ Child run_cli(const std::vector<std::string>& args, rlim_t fsize_limit = 0, bool
 }
 
 class Folder : public ::testing::Test {
- protected:
+ public:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
            ("ft_hardening_" + std::to_string(::getpid()) + "_" +
@@ -224,6 +226,86 @@ TEST(Readers, FileLargerThanTheCapIsRefusedBeforeReading) {
   set_memory_cap(0);
   EXPECT_NE(msg.find("needs 3.00 MiB"), std::string::npos) << msg;
   fs::remove(p);
+}
+
+// POV-Ray text: names and paths written into scenes cannot inject SDL. The
+// oracle is the real povray: an injected `#fopen ... write` directive would
+// create a file in the scene's folder (the positive control shows it does).
+class PovInjection : public Folder {
+ public:
+  static constexpr const char* kDirective = "#fopen FtPwn \"pwned.txt\" write #fclose FtPwn";
+  Heightfield terrain() const {
+    Heightfield hf(17, 17);
+    for (int y = 0; y < 17; ++y)
+      for (int x = 0; x < 17; ++x) hf.at(x, y) = float((x * 7 + y * 3) % 5) * 0.1f;
+    return hf;
+  }
+  pov::RenderOptions tiny() const {
+    pov::RenderOptions o;
+    o.width = 32;
+    o.height = 24;
+    o.antialias = 0;
+    return o;
+  }
+  bool pwned() const { return fs::exists(dir_ / "pwned.txt"); }
+};
+
+TEST_F(PovInjection, PositiveControlARawDirectiveDoesWriteTheFile) {
+  write_file_atomically(path("raw.pov"), std::string("#version 3.7;\n") + kDirective +
+                                             "\ncamera { location <0, 1, -3> look_at 0 }\n"
+                                             "light_source { <2, 4, -3> rgb 1 }\nsphere { 0, 1 pigment { rgb 1 } }\n");
+  pov::render_scene(path("raw.pov"), path("raw.png"), tiny());
+  EXPECT_TRUE(pwned()) << "povray did not run the directive: this oracle cannot see injections";
+}
+
+// Renders a terrain scene whose PNG path and title carry `payload`; returns
+// POV-Ray's messages (or the render error).
+std::string render_with(const PovInjection& t, const std::string& image_name, const std::string& title,
+                        const std::string& pov_name) {
+  const Heightfield hf = t.terrain();
+  pov::SceneParams p;
+  pov::set_scene_terrain(p, hf);
+  p.image_path = t.path(image_name);
+  p.title = title;
+  pov::write_scene(p, t.path(pov_name));
+  EXPECT_TRUE(fs::exists(p.image_path));
+  try {
+    return pov::render_scene(t.path(pov_name), t.path("out.png"), t.tiny()).messages;
+  } catch (const Error& e) {
+    return e.what();
+  }
+}
+
+TEST_F(PovInjection, QuotesAndDirectivesInNamesStayTextAndRender) {
+  // A file name may hold quotes, '#' and spaces: the scene refers to it as
+  // one string literal that POV-Ray reads back exactly, and a title (with
+  // line breaks) is only ever a comment.
+  const std::string messages =
+      render_with(*this, std::string("evil\" ") + kDirective + " #declare FtQ = \"x.png",
+                  std::string("title\n") + kDirective + "\n#end\r*/", "scene #1.pov");
+  EXPECT_FALSE(pwned()) << "SDL was injected; povray said:\n" << messages;
+  EXPECT_TRUE(fs::exists(path("out.png"))) << messages;
+}
+
+TEST_F(PovInjection, ControlCharactersAndBackslashesInAPathAreRefusedAndNothingIsWritten) {
+  // POV-Ray 3.7 keeps a file name's backslashes as written (no escape
+  // processing), so a path with one cannot be referred to: refused, like a
+  // line break, before anything is written.
+  const Heightfield hf = terrain();
+  for (const std::string name : {std::string("line\n") + kDirective + "\nx.png",
+                                 std::string("evil\\\" ") + kDirective + " #declare FtQ = \"x.png"}) {
+    pov::SceneParams p;
+    pov::set_scene_terrain(p, hf);
+    p.image_path = path(name);
+    try {
+      pov::write_scene(p, path("s.pov"));
+      ADD_FAILURE() << "accepted " << name;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.status(), FT_ERR_INVALID_ARGUMENT);
+    }
+    EXPECT_FALSE(pwned());
+    EXPECT_TRUE(others("").empty()) << "a refused scene left files behind";
+  }
 }
 
 }  // namespace

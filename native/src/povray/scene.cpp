@@ -165,6 +165,7 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
 
   if (p.terrain) {
     const std::string image = p.image_path.empty() ? default_image_path(pov_path) : p.image_path;
+    quoted(relative_path(image, folder));  // a path SDL cannot hold is refused before the PNG is written
     sum.terrain = write_heightfield_png(*p.terrain, image, p.size_x, p.size_y, p.vertical_scale);
     sum.image_path = image;
     const double zw = p.has_water ? water : sum.terrain.z_min - 1;

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Builds the native tests with AddressSanitizer + UndefinedBehaviorSanitizer
+# (gcc, -O1, in ${FT_ASAN_BUILD_DIR:-build-asan}) and runs them: every
+# GoogleTest suite, the CLI they drive and the fuzz corpus replays (ctest
+# label "native"). Any sanitizer report fails the run. Benchmarks are not
+# built, so this adds only the native tests' own build time to the CI.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${FT_ASAN_BUILD_DIR:-build-asan}
+CC=gcc CXX=g++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
+  -DFT_SANITIZE=ON -DFT_BUILD_BENCH=OFF >/dev/null
+cmake --build "$build" -j"$(nproc)"
+# Leaks are errors (detect_leaks); the first report stops the test with a
+# stack trace. OpenMP (libgomp) needs no suppression: its thread pool is
+# still reachable at exit, so LeakSanitizer does not count it.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:abort_on_error=1:print_stacktrace=1:strict_string_checks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+cd "$build"
+ctest -L native --output-on-failure -j"$(nproc)" --timeout 600
