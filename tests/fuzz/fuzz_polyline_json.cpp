@@ -10,17 +10,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
-  ft::fuzz::expect_ok_or_error([&] {
-    const ft::PolylineSet s = ft::decode_polylines_json(text);
-    if (s.offsets.empty() || s.offsets.front() != 0 || s.offsets.back() != s.vertex_count() ||
-        s.radii.size() != s.points.size())
-      ft::fuzz::bug("inconsistent polyline set");
-    for (int64_t i = 0; i < s.line_count(); ++i)
-      if (s.line_end(i) <= s.line_begin(i)) ft::fuzz::bug("empty polyline kept");
-    const ft::PolylineSet t = ft::decode_polylines_json(ft::encode_polylines_json(s));
-    if (t.points != s.points || t.radii != s.radii || t.offsets != s.offsets)
-      ft::fuzz::bug("write + read does not give back the same polylines");
-  });
+  ft::fuzz::check_polyline_reader(
+      data, size, [](const std::string& t) { return ft::decode_polylines_json(t); },
+      [](const ft::PolylineSet& s) { return ft::encode_polylines_json(s); });
   return 0;
 }

@@ -13,6 +13,8 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "io/heightfield_io.hpp"
+#include "io/polyline_io.hpp"
 
 namespace ft::fuzz {
 
@@ -68,6 +70,39 @@ void expect_ok_or_error(F&& f) {
     if (e.status() == FT_ERR_INTERNAL) bug(std::string("internal error: ") + e.what());
     if (e.what()[0] == '\0') bug("an error without a message");
   }
+}
+
+// The image readers' promise: a consistent 8- or 16-bit image that converts
+// to a heightfield of its size.
+template <class Decode>
+void check_image_reader(const uint8_t* data, size_t size, Decode decode) {
+  const std::string bytes(reinterpret_cast<const char*>(data), size);
+  expect_ok_or_error([&] {
+    const ft::GrayImage img = decode(bytes);
+    if (img.width < 1 || img.height < 1 || img.pixels.size() != size_t(img.width) * size_t(img.height))
+      bug("decoded image size does not match its pixels");
+    if (img.bit_depth != 8 && img.bit_depth != 16) bug("bit depth neither 8 nor 16");
+    const ft::Heightfield hf = ft::image_to_heightfield(img);
+    if (hf.width() != img.width || hf.height() != img.height) bug("heightfield size differs from the image");
+  });
+}
+
+// The polyline readers' promise: whatever they accept is a consistent set
+// with no empty line, and it survives a write and re-read exactly.
+template <class Decode, class Encode>
+void check_polyline_reader(const uint8_t* data, size_t size, Decode decode, Encode encode) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  expect_ok_or_error([&] {
+    const ft::PolylineSet s = decode(text);
+    if (s.offsets.empty() || s.offsets.front() != 0 || s.offsets.back() != s.vertex_count() ||
+        s.radii.size() != s.points.size())
+      bug("inconsistent polyline set");
+    for (int64_t i = 0; i < s.line_count(); ++i)
+      if (s.line_end(i) <= s.line_begin(i)) bug("empty polyline kept");
+    const ft::PolylineSet t = decode(encode(s));
+    if (t.points != s.points || t.radii != s.radii || t.offsets != s.offsets)
+      bug("write + read does not give back the same polylines");
+  });
 }
 
 }  // namespace ft::fuzz

@@ -7,18 +7,17 @@ import math
 from ctypes import POINTER, byref, c_double, c_int64, c_void_p
 
 from . import params as params_mod
+from .handle import LibraryHandle
 from .binding import PolylineStats, library
 from .errors import InvalidArgumentError
 from .terrain import _ProgressBridge
 
 
-class Polylines:
+class Polylines(LibraryHandle):
     """Owns an ft_polylines*; a set of polylines sharing one vertex array.
     Use as a context manager (or call close())."""
 
-    def __init__(self, handle):
-        self._lib = library()
-        self.handle = handle
+    _free = "ft_polylines_free"
 
     @classmethod
     def from_lines(cls, lines, radii=None):
@@ -75,22 +74,6 @@ class Polylines:
         return {name: getattr(s, name) for name, _ in PolylineStats._fields_
                 if not name.startswith(("reserved", "struct_size"))}
 
-    def close(self):
-        if self.handle:
-            self._lib.ft_polylines_free(self.handle)
-            self.handle = None
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-
-    def __del__(self):
-        try:
-            self.close()
-        except Exception:
-            pass
 
 
 def generate_polylines(values=None, base=None, plane_normal=None, progress=None, threads=0, **overrides):

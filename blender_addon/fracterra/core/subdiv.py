@@ -4,23 +4,18 @@ import array
 import ctypes
 from ctypes import byref, c_float, c_int32, c_void_p
 
+from .handle import LibraryHandle
 from .binding import library
-from .terrain import _ProgressBridge
+from .terrain import _ProgressBridge, as_pointer as _ptr
 
 SCHEMES = {"CATMARK": 0, "LOOP": 1, "BILINEAR": 2}
 MODES = {"VOSS": 0, "ADDITIONS": 1}
 
 
-def _ptr(buf, ctype):
-    return (ctype * len(buf)).from_buffer(buf) if len(buf) else None
-
-
-class Mesh:
+class Mesh(LibraryHandle):
     """Owns an ft_mesh*: positions (3 floats per vertex), face sizes and indices."""
 
-    def __init__(self, handle):
-        self._lib = library()
-        self.handle = handle
+    _free = "ft_mesh_free"
 
     @classmethod
     def create(cls, positions, face_sizes, face_indices, crease_pairs=None, crease_sharpness=None):
@@ -48,22 +43,6 @@ class Mesh:
         return self._copy(self._lib.ft_mesh_face_indices(self.handle),
                           self._lib.ft_mesh_face_index_count(self.handle), "I", 4)
 
-    def close(self):
-        if self.handle:
-            self._lib.ft_mesh_free(self.handle)
-            self.handle = None
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-
-    def __del__(self):
-        try:
-            self.close()
-        except Exception:
-            pass
 
 
 def fractalize(mesh, levels=4, hurst=0.8, sigma=0.1, seed=1, scheme="CATMARK", mode="VOSS",

@@ -6,6 +6,7 @@ from ctypes import POINTER, byref, c_double, c_float, c_void_p
 
 from . import params as params_mod
 from .errors import CancelledError, InvalidArgumentError
+from .handle import LibraryHandle
 from .binding import PROGRESS_FN, library
 
 
@@ -30,12 +31,10 @@ def as_pointer(buf, ctype):
     return (ctype * len(buf)).from_buffer(buf)
 
 
-class Heightfield:
+class Heightfield(LibraryHandle):
     """Owns an ft_heightfield*; use as a context manager (or call close())."""
 
-    def __init__(self, handle):
-        self._lib = library()
-        self.handle = handle
+    _free = "ft_heightfield_free"
 
     @classmethod
     def from_values(cls, width, height, values):
@@ -73,22 +72,6 @@ class Heightfield:
         self._lib.check(self._lib.ft_heightfield_stats(self.handle, *[byref(x) for x in v]))
         return dict(zip(("min", "max", "mean", "std"), (x.value for x in v)))
 
-    def close(self):
-        if self.handle:
-            self._lib.ft_heightfield_free(self.handle)
-            self.handle = None
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-
-    def __del__(self):  # a safety net only; callers close explicitly
-        try:
-            self.close()
-        except Exception:
-            pass
 
 
 class _ProgressBridge:
