@@ -3,6 +3,7 @@
 // fails anyway is FT_ERR_OUT_OF_MEMORY, progress reports come often enough to
 // cancel a long call promptly, and a cancelled call hands back nothing.
 #include <gtest/gtest.h>
+
 #include <sys/resource.h>
 
 #include <cstring>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "fracterra/fracterra.h"
+#include "sanitizer.hpp"
 
 namespace {
 
@@ -68,13 +70,6 @@ TEST_F(MemoryCap, HeightfieldCreateAboveTheCapIsRefused) {
   EXPECT_NE(std::string(ft_last_error()).find("needs 4.00 MiB"), std::string::npos) << ft_last_error();
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-#define FT_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define FT_UNDER_ASAN 1
-#endif
-#endif
 
 TEST(OutOfMemory, FailedAllocationIsAStatusNotAnAbort) {
 #ifdef FT_UNDER_ASAN

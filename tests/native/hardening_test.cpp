@@ -4,6 +4,7 @@
 // through the real CLI in a child process, the way a crash would hit them.
 #include <fcntl.h>
 #include <gtest/gtest.h>
+
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -23,6 +24,7 @@
 #include "io/png_image.hpp"
 #include "povray/render.hpp"
 #include "povray/scene.hpp"
+#include "sanitizer.hpp"
 
 namespace ft {
 namespace {
@@ -158,13 +160,6 @@ TEST_F(Folder, StaleTemporaryOfALiveWriterIsLeftAlone) {
   EXPECT_TRUE(fs::exists(live));
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-#define FT_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define FT_UNDER_ASAN 1
-#endif
-#endif
 
 TEST_F(Folder, CliOutOfMemoryIsAnErrorNotACrash) {
 #ifdef FT_UNDER_ASAN

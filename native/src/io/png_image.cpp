@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <cstring>
+#include <map>
 #include <memory>
 
 #include "core/error.hpp"
@@ -61,11 +62,14 @@ struct ReadStructs {
 
 }  // namespace
 
-void write_png(const std::string& path, const GrayImage& image) {
-  if (image.bit_depth != 8 && image.bit_depth != 16) invalid("PNG bit depth must be 8 or 16");
-  if (image.width <= 0 || image.height <= 0 ||
-      image.pixels.size() != size_t(image.width) * size_t(image.height))
-    invalid("PNG image size does not match its pixel count");
+namespace {
+
+// The one libpng writer: an image of `height` rows, row y's bytes from
+// row_at(y), written atomically. libpng's errors jump back here and become
+// FT_ERR_IO with libpng's reason.
+template <class RowAt>
+void write_png_rows(const std::string& path, int32_t width, int32_t height, int color_type, int bit_depth,
+                    const std::map<std::string, std::string>& text, RowAt&& row_at) {
   AtomicFile out(path);
   std::string reason;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &reason, on_error, on_warning);
@@ -74,9 +78,8 @@ void write_png(const std::string& path, const GrayImage& image) {
     png_destroy_write_struct(&png, nullptr);
     fail(FT_ERR_OUT_OF_MEMORY, "libpng could not start a writer");
   }
-  std::vector<uint8_t> row(size_t(image.width) * (image.bit_depth / 8));
   std::vector<png_text> texts;
-  for (auto& [k, v] : image.text) {
+  for (auto& [k, v] : text) {
     png_text t{};
     t.compression = PNG_TEXT_COMPRESSION_NONE;
     t.key = const_cast<char*>(k.c_str());
@@ -91,50 +94,43 @@ void write_png(const std::string& path, const GrayImage& image) {
   // Heightmaps compress poorly at high levels; level 3 is ~3x faster than 6
   // for a 2% larger file.
   png_set_compression_level(png, 3);
-  png_set_IHDR(png, info, uint32_t(image.width), uint32_t(image.height), image.bit_depth,
-               PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-               PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, uint32_t(width), uint32_t(height), bit_depth, color_type, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   if (!texts.empty()) png_set_text(png, info, texts.data(), int(texts.size()));
   png_write_info(png, info);
-  for (int32_t y = 0; y < image.height; ++y) {
-    const uint16_t* src = image.pixels.data() + size_t(y) * image.width;
-    if (image.bit_depth == 16) {
-      for (int32_t x = 0; x < image.width; ++x) {  // PNG stores 16-bit big-endian
-        row[2 * x] = uint8_t(src[x] >> 8);
-        row[2 * x + 1] = uint8_t(src[x]);
-      }
-    } else {
-      for (int32_t x = 0; x < image.width; ++x) row[x] = uint8_t(src[x] > 255 ? 255 : src[x]);
-    }
-    png_write_row(png, row.data());
-  }
+  for (int32_t y = 0; y < height; ++y) png_write_row(png, const_cast<png_bytep>(row_at(y)));
   png_write_end(png, info);
   png_destroy_write_struct(&png, &info);
   out.commit();
 }
 
+}  // namespace
+
+void write_png(const std::string& path, const GrayImage& image) {
+  if (image.bit_depth != 8 && image.bit_depth != 16) invalid("PNG bit depth must be 8 or 16");
+  if (image.width <= 0 || image.height <= 0 ||
+      image.pixels.size() != size_t(image.width) * size_t(image.height))
+    invalid("PNG image size does not match its pixel count");
+  std::vector<uint8_t> row(size_t(image.width) * (image.bit_depth / 8));
+  write_png_rows(path, image.width, image.height, PNG_COLOR_TYPE_GRAY, image.bit_depth, image.text,
+                 [&](int32_t y) -> const uint8_t* {
+                   const uint16_t* src = image.pixels.data() + size_t(y) * image.width;
+                   if (image.bit_depth == 16) {
+                     for (int32_t x = 0; x < image.width; ++x) {  // PNG stores 16-bit big-endian
+                       row[2 * x] = uint8_t(src[x] >> 8);
+                       row[2 * x + 1] = uint8_t(src[x]);
+                     }
+                   } else {
+                     for (int32_t x = 0; x < image.width; ++x) row[x] = uint8_t(src[x] > 255 ? 255 : src[x]);
+                   }
+                   return row.data();
+                 });
+}
+
 void write_png_rgb(const std::string& path, int32_t width, int32_t height, const uint8_t* rgb) {
   if (width <= 0 || height <= 0 || !rgb) invalid("an RGB PNG needs a positive size and pixel data");
-  AtomicFile out(path);
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, on_warning);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!info) {
-    png_destroy_write_struct(&png, nullptr);
-    fail(FT_ERR_OUT_OF_MEMORY, "libpng could not start a writer");
-  }
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    fail(FT_ERR_IO, "libpng failed writing '" + path + "'");
-  }
-  png_init_io(png, out.file());
-  png_set_compression_level(png, 3);
-  png_set_IHDR(png, info, uint32_t(width), uint32_t(height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_write_info(png, info);
-  for (int32_t y = 0; y < height; ++y) png_write_row(png, rgb + size_t(y) * width * 3);
-  png_write_end(png, info);
-  png_destroy_write_struct(&png, &info);
-  out.commit();
+  write_png_rows(path, width, height, PNG_COLOR_TYPE_RGB, 8, {},
+                 [&](int32_t y) { return rgb + size_t(y) * size_t(width) * 3; });
 }
 
 GrayImage decode_png(const std::string& bytes, const std::string& name) {

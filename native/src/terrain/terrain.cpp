@@ -18,12 +18,9 @@ namespace {
 // sigma = 1 and the mean of the reference values).
 double reference_scale(int mode, double sigma, const float* ref, size_t n) {
   if (mode == FT_REFSCALE_SIGMA) return sigma;
-  double sum = 0, sum2 = 0;
-  for (size_t i = 0; i < n; ++i) sum += std::fabs(ref[i]), sum2 += double(ref[i]) * ref[i];
-  double mean_abs = sum / double(n);
-  double mean = 0;
-  for (size_t i = 0; i < n; ++i) mean += ref[i];
-  mean /= double(n);
+  double sum_abs = 0, sum = 0, sum2 = 0;
+  for (size_t i = 0; i < n; ++i) sum_abs += std::fabs(ref[i]), sum += ref[i], sum2 += double(ref[i]) * ref[i];
+  const double mean_abs = sum_abs / double(n), mean = sum / double(n);
   const double scale = mode == FT_REFSCALE_MEAN ? mean_abs : std::sqrt(std::max(0.0, sum2 / double(n) - mean * mean));
   if (!(scale > 0))
     invalid(std::string("reference_scale ") + (mode == FT_REFSCALE_MEAN ? "'mean'" : "'std'") +
