@@ -33,6 +33,11 @@ TEST(CApi, GeneratesATerrainIntoALibraryOwnedHandle) {
   ASSERT_EQ(ft_heightfield_stats(hf, &lo, &hi, nullptr, nullptr), FT_OK);
   EXPECT_LT(lo, hi);
   EXPECT_EQ(ft_heightfield_copy(hf, copy.data(), 10), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_heightfield_world_size(hf), 10.0);
+  EXPECT_EQ(ft_heightfield_set_world_size(hf, -1.0), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("world_size"), std::string::npos) << ft_last_error();
+  EXPECT_EQ(ft_heightfield_set_world_size(hf, 250.0), FT_OK);
+  EXPECT_EQ(ft_heightfield_world_size(hf), 250.0);
   ft_heightfield_free(hf);
   ft_heightfield_free(nullptr);  // harmless
 }

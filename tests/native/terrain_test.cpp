@@ -315,6 +315,16 @@ TEST(BadInput, SigmaMustBePositiveAndFinite) {
   }
 }
 
+TEST(BadInput, WorldSizeMustBePositiveAndFinite) {
+  for (double w : {0.0, -5.0, std::nan(""), double(INFINITY)}) {
+    ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 4, 0.5, 1);
+    p.world_size = w;
+    std::string msg;
+    EXPECT_EQ(status_of(p, &msg), FT_ERR_INVALID_ARGUMENT) << w;
+    EXPECT_NE(msg.find("world_size"), std::string::npos) << msg;
+  }
+}
+
 TEST(BadInput, LevelsOutOfRangeAreRejected) {
   for (int levels : {0, -3, 16, 1000}) {
     std::string msg;
