@@ -200,6 +200,13 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
                 size_x, size_y = core.grid_size(terrain.fracterra_terrain.world_size, nx, ny)
                 level = self.quantile if self.use_quantile else self.level
                 with core.coastline(hf, level, quantile=self.use_quantile) as pl:
+                    if pl.line_count == 0:
+                        # Not an empty curve without a word: say why.
+                        s = hf.stats()
+                        what = f"quantile {level:g}" if self.use_quantile else f"level {level:g}"
+                        self.report({"ERROR"}, f"no coastline at {what}: the terrain's heights are "
+                                               f"[{s['min']:g}, {s['max']:g}] and no cell crosses it")
+                        return {"CANCELLED"}
                     def to_local(x, y, z):
                         return (x / (nx - 1) - 0.5) * size_x, (y / (ny - 1) - 0.5) * size_y, z
                     curve = curve_from_polylines("Coastline", pl, bevel=False, transform=to_local)
@@ -253,8 +260,9 @@ class FRACTERRA_OT_measure(bpy.types.Operator):
                 m.dimension, m.stderr, m.hurst = s["box_dimension"], s["box_std_error"], math.nan
             else:
                 with heightfield_of(obj) as hf:
-                    r = core.hurst_of_heightfield(hf)
+                    r = core.hurst_of_heightfield(hf)  # the library's recommended estimator, as the CLI's
                 m.kind, m.hurst, m.dimension, m.stderr = "terrain", r["hurst"], r["dimension"], r["stderr_hurst"]
+                m.estimator, m.estimator_reason = r["estimator"], r["reason"]
                 m.eta = m.chi = m.gamma = math.nan
         except REPORTED as e:
             self.report({"ERROR"}, str(e))
@@ -281,6 +289,8 @@ class FRACTERRA_PT_measures(bpy.types.Panel):
             layout.label(text="Not measured yet")
             return
         col = layout.column(align=True)
+        if m.kind == "terrain" and m.estimator:
+            col.label(text=f"Estimator: {m.estimator}")
         names = ("hurst", "dimension", "stderr") if m.kind == "terrain" else ("eta", "chi", "gamma", "dimension", "stderr")
         for name in names:
             row = col.row()
