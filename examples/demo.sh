@@ -35,7 +35,7 @@ top="$(python3 -c "print(f'{$px + 1.5},{$py - 1.0},{$pz + 5.0}')")"
 step "POV-Ray: height_field + coastline sweeps + lightning, rendered"
 "$ft" scene --terrain "$out/terrain.png" --vertical-scale "$vscale" --sea-fraction 0.6 \
   --polyline "$out/coast.csv" --kind coastline --polyline "$out/bolt.csv" --kind lightning \
-  --pov "$out/scene.pov" --render "$out/scene.png" --width 800 --height 600
+  --radius-from-file --pov "$out/scene.pov" --render "$out/scene.png" --width 800 --height 600
 
 step "OpenSubdiv: a fractal rock from a cube"
 "$ft" fractalize --in "$root/examples/meshes/cube.obj" --levels 6 --hurst 0.75 --sigma 0.25 \

@@ -307,6 +307,54 @@ TEST_F(PovTest, SceneCommandWritesAndRendersTerrainWithPolylines) {
   expect_not_blank(read_png(path("s.png")), "fracterra scene --render");
 }
 
+// `fracterra polyline ... --pov` (asked for, and missing before): a framed
+// sphere_sweep scene of the line that the real POV-Ray renders.
+TEST_F(PovTest, PolylineCommandWritesAFramedSceneThatRenders) {
+  std::string out;
+  ASSERT_EQ(run_cli("polyline --method fpl --depth 10 --seed 3 --out '" + path("l.csv") + "' --pov '" +
+                        path("l.pov") + "' --render '" + path("l.png") + "' --width 160 --height 120",
+                    out),
+            0)
+      << out;
+  const std::string sdl = read_file(path("l.pov"));
+  EXPECT_NE(sdl.find("sphere_sweep { linear_spline"), std::string::npos);
+  EXPECT_NE(sdl.find("camera {"), std::string::npos);
+  EXPECT_NE(sdl.find("the file's radii as taper"), std::string::npos);
+  expect_not_blank(read_png(path("l.png")), "fracterra polyline --pov --render");
+  // Branching lines are drawn as lightning unless --kind says otherwise.
+  ASSERT_EQ(run_cli("polyline --method fpl3d --depth 7 --branch-prob 0.05 --pov '" + path("b.pov") + "'", out), 0)
+      << out;
+  EXPECT_NE(read_file(path("b.pov")).find(": lightning,"), std::string::npos);
+  ASSERT_EQ(run_cli("polyline --method fpl --depth 7 --kind coastline --pov '" + path("c.pov") + "'", out), 0) << out;
+  EXPECT_NE(read_file(path("c.pov")).find(": coastline,"), std::string::npos);
+  EXPECT_EQ(run_cli("polyline --method fpl --depth 4 --render '" + path("x.png") + "'", out), 1);
+  EXPECT_NE(out.find("--render needs --pov"), std::string::npos) << out;
+}
+
+// `scene --radius` overrides the radii stored in a polyline file (before, it
+// applied only to vertices without one), `--radius-scale` multiplies, and
+// `--radius-from-file` keeps the stored ones as world units.
+TEST_F(PovTest, SceneRadiusOptionsOverrideScaleOrKeepTheFileRadii) {
+  std::ofstream(path("l.csv")) << "0,0,0,0.01\n1,0.3,0,0.01\n1.5,0.1,0,0.01\n";
+  auto radius_comment = [&](const std::string& flags) {
+    std::string out;
+    EXPECT_EQ(run_cli("scene --polyline '" + path("l.csv") + "' " + flags + " --pov '" + path("s.pov") + "'", out), 0)
+        << out;
+    const std::string sdl = read_file(path("s.pov"));
+    const size_t at = sdl.find(" vertices, radius ");
+    return at == std::string::npos ? -1.0 : std::stod(sdl.substr(at + 18));
+  };
+  const double automatic = radius_comment("");
+  EXPECT_GT(automatic, 0);
+  EXPECT_LT(automatic, 0.01);  // sized from the picture, not the file's 0.01
+  EXPECT_DOUBLE_EQ(radius_comment("--radius 0.002"), 0.002);
+  EXPECT_DOUBLE_EQ(radius_comment("--radius 0.002 --radius-scale 3"), 0.006);
+  EXPECT_NE(read_file(path("s.pov")).find(", 0.006\n"), std::string::npos);
+  radius_comment("--radius-from-file");
+  EXPECT_NE(read_file(path("s.pov")).find(", 0.01\n"), std::string::npos);  // the stored radius
+  expect_not_blank(render(path("s.pov")), "scene with the file's radii");
+}
+
 TEST_F(PovTest, MacrosFailWithClearErrorsOnBadInput) {
   // FT_FPL bounds its recursion depth (POV-Ray nests ~98 macro calls).
   write_file_atomically(path("deep.pov"), "#version 3.7;\n#include \"ft_fpl.inc\"\n#declare P = FT_FPL(<0,0,0>, "
