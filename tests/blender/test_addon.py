@@ -457,6 +457,37 @@ class TerrainToolsTest(unittest.TestCase):
         self.assertFalse(cube.data.validate(verbose=False))
         expect_report(self, lambda: bpy.ops.object.fracterra_fractalize(levels=1, scheme="LOOP"), "triang")
 
+    def test_fractalize_keeps_creased_edges_sharp(self):
+        # sigma 0: plain subdivision. Catmull-Clark pulls a cube's corners inwards; edges
+        # creased 1 (sharpness 10 c^2 = 10 > levels) keep them where they are.
+        extents = {}
+        for creased in (False, True):
+            clear_scene()
+            bpy.ops.mesh.primitive_cube_add(size=2.0)
+            cube = bpy.context.active_object
+            if creased:
+                crease = array.array("f", [1.0]) * len(cube.data.edges)
+                cube.data.edges.foreach_set("crease", crease)
+            self.assertEqual(bpy.ops.object.fracterra_fractalize(levels=2, sigma=0.0, use_creases=True),
+                             {"FINISHED"})
+            extents[creased] = max(abs(c) for c in coords(cube.data))
+        self.assertAlmostEqual(extents[True], 1.0, places=6)
+        self.assertLess(extents[False], 0.9)
+
+    def test_measures_of_a_straight_bezier_curve(self):
+        curve = bpy.data.curves.new("bezier", "CURVE")
+        spline = curve.splines.new("BEZIER")
+        spline.bezier_points.add(2)
+        for p, x in zip(spline.bezier_points, (0.0, 1.0, 2.0)):
+            p.co = (x, 0.0, 0.0)
+        obj = bpy.data.objects.new("Bezier", curve)
+        bpy.context.scene.collection.objects.link(obj)
+        bpy.context.view_layer.objects.active = obj
+        self.assertEqual(bpy.ops.object.fracterra_measure(), {"FINISHED"})
+        m = obj.fracterra_measures
+        self.assertEqual((m.kind, m.eta, m.chi), ("polylines", 0.0, 0.0))
+        self.assertAlmostEqual(m.gamma, 1.0, places=9)
+
     def test_pov_export_into_a_missing_folder_is_an_error_report(self):
         add_terrain(levels=3)
         expect_report(self, lambda: bpy.ops.export_scene.fracterra_pov(filepath="/nonexistent-dir/x.pov"))

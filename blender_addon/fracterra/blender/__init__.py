@@ -11,8 +11,8 @@ tests/python/test_addon_layers.py checks this order.
 
 import bpy
 
-from . import (fractalize_op, measure_op, menus as menu_entries, panels, polyline_ops, pov_export, prefs,
-               presets, props, terrain_ops)
+from . import fractalize_op, measure_op, panels, polyline_ops, pov_export, prefs, presets, props, terrain_ops
+from .menus import MENUS
 
 classes = (
     props.FRACTERRA_PG_terrain,
@@ -28,9 +28,6 @@ classes = (
     panels.FRACTERRA_PT_measures,
     prefs.FracterraPreferences,
 )
-
-menus = menu_entries.MENUS
-
 
 def on_register():
     bpy.types.Object.fracterra_terrain = bpy.props.PointerProperty(type=props.FRACTERRA_PG_terrain)
