@@ -418,11 +418,11 @@ class TerrainToolsTest(unittest.TestCase):
         x, y, _ = expected[0][0]
         self.assertAlmostEqual(lines[0][0][0], (x / 32 - 0.5) * 8.0, places=5)
         self.assertAlmostEqual(lines[0][0][1], (y / 32 - 0.5) * 8.0, places=5)
-
         # A level above every height: a clear report, not an empty curve.
         bpy.context.view_layer.objects.active = terrain
         expect_report(self, lambda: bpy.ops.curve.fracterra_coastline_add(use_quantile=False, level=1e6),
                       "no coastline at level 1e+06")
+
     def test_measures_of_a_terrain_and_a_curve(self):
         add_terrain(levels=7, seed=1, hurst=0.7)
         self.assertEqual(bpy.ops.object.fracterra_measure(), {"FINISHED"})
