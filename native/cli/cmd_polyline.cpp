@@ -195,9 +195,9 @@ Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch
                                  "print JSON: eta, chi, gamma (of line 0, relative to its chord), mass and "
                                  "box-counting dimensions, seconds");
                     return [o] {
+                      if (!o->render.empty() && o->pov.empty()) invalid("--render needs --pov FILE (the scene it renders)");
                       if (o->out.empty() && o->svg.empty() && o->pov.empty() && !o->stats)
                         invalid("give --out FILE, --svg FILE, --pov FILE and/or --stats");
-                      if (!o->render.empty() && o->pov.empty()) invalid("--render needs --pov FILE (the scene it renders)");
                       return run(*o);
                     };
                   },

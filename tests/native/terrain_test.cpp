@@ -357,7 +357,7 @@ TEST(BadInput, SigmaThatCouldOverflowFloatIsRefusedBeforeAnyWork) {
   }
   ft_profile_params q = default_profile_params();
   q.sigma = 1e300;
-  std::vector<float> x(size_t(ft_profile_length(q.levels)));
+  std::vector<float> x((size_t(1) << q.levels) + 1);
   EXPECT_THROW(generate_profile(q, x.data(), x.size()), Error);
 }
 

@@ -74,6 +74,17 @@ Stats pixel_stats(const GrayImage& img) {
 double luma(const GrayImage& img, int x, int y) {
   return img.pixels[size_t(y) * img.width + x] / (img.bit_depth == 16 ? 65535.0 : 255.0);
 }
+// Pixels that stand out from the picture's median grey by more than 0.08:
+// a thin line over a plain ground (whose own shading varies by < 0.02).
+int64_t standout_pixels(const GrayImage& img) {
+  const double full = img.bit_depth == 16 ? 65535.0 : 255.0;
+  std::vector<uint16_t> v(img.pixels);
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+  const double med = v[v.size() / 2] / full;
+  int64_t n = 0;
+  for (uint16_t p : img.pixels) n += std::fabs(p / full - med) > 0.08;
+  return n;
+}
 // A rendered picture is "not blank" when its pixels vary: a uniform image has
 // sd 0 and even a plain sky gradient has sd < 0.02 at this size.
 void expect_not_blank(const GrayImage& img, const std::string& what) {
@@ -256,8 +267,12 @@ TEST_F(PovTest, PolylineSceneRendersForEveryKind) {
   const PolylineSet line = wiggle(257);
   for (auto kind : {pov::LineKind::kGeneric, pov::LineKind::kLightning, pov::LineKind::kCoastline}) {
     const std::string f = path("line" + std::to_string(int(kind)) + ".pov");
-    pov::write_polyline_scene(line, f, kind);
-    expect_not_blank(render(f), "polyline scene of kind " + std::to_string(int(kind)));
+    // Sized for the 160-pixel render: the automatic radius follows the picture.
+    pov::write_polyline_scene(pov::SceneLines{&line, kind}, f, pov::polyline_camera(kind), 160);
+    // The wiggle crosses ~85% of 160 pixels: a line >= 1 pixel wide and its
+    // shadow stand out in >= 200 pixels (measured 1012, 5573 with the glow,
+    // 1202); a blank picture has none.
+    EXPECT_GE(standout_pixels(render(f)), 200) << "polyline scene of kind " << int(kind);
   }
 }
 
@@ -320,7 +335,7 @@ TEST_F(PovTest, PolylineCommandWritesAFramedSceneThatRenders) {
   EXPECT_NE(sdl.find("sphere_sweep { linear_spline"), std::string::npos);
   EXPECT_NE(sdl.find("camera {"), std::string::npos);
   EXPECT_NE(sdl.find("the file's radii as taper"), std::string::npos);
-  expect_not_blank(read_png(path("l.png")), "fracterra polyline --pov --render");
+  EXPECT_GE(standout_pixels(read_png(path("l.png"))), 200) << "fracterra polyline --pov --render";
   // Branching lines are drawn as lightning unless --kind says otherwise.
   ASSERT_EQ(run_cli("polyline --method fpl3d --depth 7 --branch-prob 0.05 --pov '" + path("b.pov") + "'", out), 0)
       << out;
@@ -352,7 +367,7 @@ TEST_F(PovTest, SceneRadiusOptionsOverrideScaleOrKeepTheFileRadii) {
   EXPECT_NE(read_file(path("s.pov")).find(", 0.006\n"), std::string::npos);
   radius_comment("--radius-from-file");
   EXPECT_NE(read_file(path("s.pov")).find(", 0.01\n"), std::string::npos);  // the stored radius
-  expect_not_blank(render(path("s.pov")), "scene with the file's radii");
+  EXPECT_GE(standout_pixels(render(path("s.pov"))), 200) << "scene with the file's radii";
 }
 
 TEST_F(PovTest, MacrosFailWithClearErrorsOnBadInput) {
