@@ -46,6 +46,13 @@ void check_reference(const float* ref, int32_t size, int levels, bool periodic) 
   }
 }
 
+// The noise layer's enums carry the ABI's values, so basis and variant pass through.
+static_assert(kBasisValue == FT_BASIS_VALUE && kBasisGradient == FT_BASIS_GRADIENT &&
+              kBasisSimplex == FT_BASIS_SIMPLEX && kBasisCellularF1 == FT_BASIS_CELLULAR_F1 &&
+              kBasisCellularF2F1 == FT_BASIS_CELLULAR_F2F1);
+static_assert(kFbmStandard == FT_FBM_STANDARD && kFbmRidged == FT_FBM_RIDGED && kFbmHybrid == FT_FBM_HYBRID &&
+              kFbmHetero == FT_FBM_HETERO);
+
 // Float range. Heights are float32: a sigma large enough to overflow them
 // (`--sigma 1e300`) used to be noticed only when the file was written, after
 // the work. The check bounds the largest |height| a method can make, B =
