@@ -2,7 +2,8 @@
 //   x' = a x + b y + e,   y' = c x + d y + f,
 // one chosen at each step with probability p. The tables given in seed 002:
 // Barnsley's fern (4 maps) and the Harter-Heighway dragon and Koch curve
-// coded on a 640 x 350 screen (2 and 4 maps, equal probabilities).
+// coded on a 640 x 350 screen (2 and 4 maps, equal probabilities); and the
+// Sierpinski gasket of its text (3 maps of ratio 1/2, D = log 3 / log 2).
 #pragma once
 
 #include <cstdint>
@@ -17,7 +18,7 @@ struct IfsMap {
   double a, b, c, d, e, f, p;
 };
 
-// FT_IFS_FERN / FT_IFS_DRAGON / FT_IFS_KOCH.
+// FT_IFS_FERN / FT_IFS_DRAGON / FT_IFS_KOCH / FT_IFS_SIERPINSKI_GASKET.
 std::vector<IfsMap> ifs_preset(int preset);
 // Checks a table: 1..64 maps, finite coefficients, p >= 0 with a positive sum.
 void validate_ifs(const std::vector<IfsMap>& maps);

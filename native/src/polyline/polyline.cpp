@@ -113,7 +113,7 @@ void validate_polyline_params(const ft_polyline_params& p) {
     if (p.ifs_table) {
       check_int_range("ifs_maps", p.ifs_maps, 1, 64);
     } else {
-      check_int_range("ifs_preset", p.ifs_preset, FT_IFS_FERN, FT_IFS_KOCH);
+      check_int_range("ifs_preset", p.ifs_preset, FT_IFS_FERN, FT_IFS_SIERPINSKI_GASKET);
     }
     check_int_range("ifs_points", p.ifs_points, 1, int64_t(1) << 28);
     return;
