@@ -298,6 +298,11 @@ TEST(Ifs, SierpinskiGasketHasBoxDimensionLog3OverLog2) {
   // log-periodic ripple (the gasket repeats at ratio 2), which the fit then
   // averages out; the 4 grid shifts take the smallest count, as for the
   // Koch curve and the arrowhead above. The tolerance is the 0.05.
+  // Measured: 1.614 (fit standard error 0.004), 0.029 above log 3 / log 2.
+  // The excess is deterministic, not noise: square boxes along the
+  // triangle's sides and holes add counts of lower order than 3^k whose share
+  // shrinks like (2/3)^k, so a fit over finer sizes comes closer (1.606 from
+  // 1/8 to 1/256 with 2^20 points, at 5 times the run time).
   ft_polyline_params p = default_polyline_params();
   p.method = FT_POLYLINE_IFS;
   p.ifs_preset = FT_IFS_SIERPINSKI_GASKET;
