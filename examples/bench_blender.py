@@ -113,7 +113,7 @@ def main():
     ok, status = core.status()
     if not ok:
         raise RuntimeError(status)
-    from fracterra.blender.panels import preferences
+    from fracterra.blender.prefs import preferences
     prefs = preferences(bpy.context)
     if prefs is not None and args.threads is not None:
         prefs.threads = args.threads

@@ -22,7 +22,7 @@ except ImportError:  # outside Blender: only fracterra.core is usable
     bpy = None
 
 if bpy is not None:
-    from .blender import classes, menus, on_register, on_unregister
+    from .blender import MENUS as menus, classes, on_register, on_unregister
 
     def register():
         for cls in classes:

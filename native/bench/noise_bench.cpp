@@ -103,12 +103,12 @@ void BM_SpectralSynthesis(benchmark::State& state) {
 BENCHMARK(BM_LibnoisePerlin)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
 // args: size, threads, baseline, basis
 BENCHMARK(BM_FracterraFbm)
-    ->Args({2048, 0, 0, FT_BASIS_GRADIENT})
-    ->Args({2048, 1, 0, FT_BASIS_GRADIENT})
-    ->Args({2048, 0, 1, FT_BASIS_GRADIENT})
-    ->Args({2048, 0, 0, FT_BASIS_VALUE})
-    ->Args({2048, 0, 0, FT_BASIS_SIMPLEX})
-    ->Args({2048, 0, 0, FT_BASIS_CELLULAR_F1})
+    ->Args({2048, 0, 0, ft::kBasisGradient})
+    ->Args({2048, 1, 0, ft::kBasisGradient})
+    ->Args({2048, 0, 1, ft::kBasisGradient})
+    ->Args({2048, 0, 0, ft::kBasisValue})
+    ->Args({2048, 0, 0, ft::kBasisSimplex})
+    ->Args({2048, 0, 0, ft::kBasisCellularF1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_SpectralSynthesis)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -12,6 +12,7 @@
 
 #include "analysis/box_counting.hpp"
 #include "analysis/hurst.hpp"
+#include "analysis/polyline_report.hpp"
 #include "analysis/quantile.hpp"
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
@@ -22,7 +23,6 @@
 #include "io/npy.hpp"
 #include "io/polyline_io.hpp"
 #include "io/svg_plot.hpp"
-#include "polyline/polyline_report.hpp"
 
 namespace ft::cli {
 namespace {

@@ -10,7 +10,7 @@
 #include "cli/command.hpp"
 #include "core/error.hpp"
 #include "io/obj_io.hpp"
-#include "io/pov_mesh2.hpp"
+#include "povray/mesh2_export.hpp"
 #include "subdiv/fractalize.hpp"
 
 namespace ft::cli {
@@ -43,7 +43,7 @@ int run(const FractalizeOptions& o) {
   std::snprintf(comment, sizeof comment, "fractalize levels=%d hurst=%g sigma=%g seed=%llu scheme=%d mode=%d",
                 o.p.levels, o.p.hurst, o.p.sigma, (unsigned long long)o.p.seed, o.p.scheme, o.p.mode);
   if (!o.out.empty()) write_obj(mesh, o.out, std::string(comment) + " from " + o.in);
-  if (!o.pov.empty()) write_pov_mesh2(mesh, o.pov, o.pov_name);
+  if (!o.pov.empty()) pov::write_mesh2(mesh, o.pov, o.pov_name);
   if (o.stats) {
     nlohmann::json j = {{"seconds", seconds},
                         {"base_vertices", base.vertex_count()},

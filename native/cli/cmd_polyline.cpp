@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "analysis/polyline_report.hpp"
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "core/error.hpp"
@@ -13,7 +14,6 @@
 #include "io/polyline_io.hpp"
 #include "io/svg_plot.hpp"
 #include "polyline/polyline.hpp"
-#include "polyline/polyline_report.hpp"
 
 namespace ft::cli {
 namespace {

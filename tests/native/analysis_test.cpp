@@ -152,19 +152,12 @@ TEST(HurstEstimator, SpectralRecoversSlopeOfPowerLawSignals) {
 }
 
 TEST(HurstEstimator, SpectralRecoversHurstOfSpectralSynthesisTerrains) {
-  // Enabled once FT_TERRAIN_SPECTRAL is implemented (the noise branch): until
-  // then generate_terrain refuses it and the test is skipped, saying so.
   // Spectral synthesis fixes the power law exactly, so the estimate over
   // 1024 transects has a standard error of ~0.01; 0.1 is the bound.
   for (double h : {0.3, 0.5, 0.8}) {
     ft_terrain_params p = default_terrain_params();
     p.method = FT_TERRAIN_SPECTRAL, p.width = 512, p.height = 512, p.hurst = h, p.seed = 5;
-    Heightfield hf;
-    try {
-      hf = generate_terrain(p);
-    } catch (const Error& e) {
-      GTEST_SKIP() << "FT_TERRAIN_SPECTRAL not available yet: " << e.what();
-    }
+    const Heightfield hf = generate_terrain(p);
     HurstOptions o;
     o.method = HurstMethod::kSpectral;
     EXPECT_NEAR(estimate_hurst_surface(hf, o).hurst, h, 0.1) << "H " << h;

@@ -11,14 +11,14 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/box_counting.hpp"
+#include "analysis/polyline_report.hpp"
+#include "analysis/polyline_stats.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "io/atomic_file.hpp"
 #include "io/polyline_io.hpp"
 #include "polyline/fpl_study.hpp"
 #include "polyline/polyline.hpp"
-#include "polyline/polyline_report.hpp"
-#include "polyline/polyline_stats.hpp"
 
 namespace ft {
 namespace {

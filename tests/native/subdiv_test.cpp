@@ -21,7 +21,7 @@
 #include "core/memory.hpp"
 #include "io/atomic_file.hpp"
 #include "io/obj_io.hpp"
-#include "io/pov_mesh2.hpp"
+#include "povray/mesh2_export.hpp"
 #include "subdiv/fractalize.hpp"
 #include "subdiv/mesh_validation.hpp"
 
@@ -451,15 +451,15 @@ TEST(ObjIo, ReportsMissingAndFacelessFiles) {
 }
 
 TEST(PovMesh2, IdentifiersAreValidAndNeverKeywords) {
-  EXPECT_EQ(pov_identifier("FT_Rock"), "FT_Rock");
-  EXPECT_EQ(pov_identifier("sphere"), "FT_sphere");
-  EXPECT_EQ(pov_identifier("3 rocks/big"), "FT__3_rocks_big");
-  EXPECT_EQ(pov_identifier("Fels\xc3\xa4"), "Fels__");
-  EXPECT_EQ(pov_identifier(""), "FT__");
+  EXPECT_EQ(pov::identifier("FT_Rock"), "FT_Rock");
+  EXPECT_EQ(pov::identifier("sphere"), "FT_sphere");
+  EXPECT_EQ(pov::identifier("3 rocks/big"), "FT__3_rocks_big");
+  EXPECT_EQ(pov::identifier("Fels\xc3\xa4"), "Fels__");
+  EXPECT_EQ(pov::identifier(""), "FT__");
 }
 
 TEST(PovMesh2, TriangulatesAndWritesOneNormalPerVertex) {
-  const std::string s = encode_pov_mesh2(cube(), "Cube");
+  const std::string s = pov::encode_mesh2(cube(), "Cube");
   EXPECT_NE(s.find("#declare Cube = mesh2 {"), std::string::npos);
   EXPECT_NE(s.find("vertex_vectors {\n    8,"), std::string::npos);
   EXPECT_NE(s.find("normal_vectors {\n    8,"), std::string::npos);

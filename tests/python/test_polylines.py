@@ -30,17 +30,45 @@ def test_polylines_round_trip(core):
         assert pl.lines() == [(lines[0], radii[0]), (lines[1], radii[1])]
 
 
+def test_polylines_from_numpy_arrays_equal_the_same_lines(core):
+    import numpy as np
+    lines = [[(0, 0, 0), (1, 0, 0)], [(0, 1, 0), (1, 1, 0), (2, 2, 1)]]
+    radii = [[0.1, 0.2], [0.3, 0.3, 0.3]]
+    xyz = np.array([p for line in lines for p in line], dtype=np.float64)  # (5, 3): flattened by the binding
+    offsets = np.array([0, 2, 5], dtype=np.int64)
+    for rad in (np.array([0.1, 0.2, 0.3, 0.3, 0.3]), np.array([0.1, 0.2, 0.3, 0.3, 0.3], dtype=np.float32)):
+        with core.Polylines.from_arrays(xyz, rad, offsets) as pl:
+            got = pl.lines()
+        assert [line for line, _ in got] == lines
+        assert [r for _, line in got for r in line] == pytest.approx([0.1, 0.2, 0.3, 0.3, 0.3], rel=1e-7)
+    with core.Polylines.from_arrays(xyz.ravel(), None, offsets) as pl:
+        assert pl.radii().tolist() == [0.0] * 5
+
+
 def test_bad_spread_is_the_library_message(core):
     with pytest.raises(core.InvalidArgumentError, match="spread"):
         core.generate_polylines(spread=-1.0)
 
 
-def test_coastline_at_the_median_exists_and_lies_at_the_level(core):
+def test_coastline_at_the_median_lies_at_the_median_between_its_samples(core):
     with core.generate_terrain(levels=5, seed=4) as hf, core.coastline(hf, 0.5, quantile=True) as pl:
         lines = pl.lines()
+        h, n = hf.to_array(), hf.width
+    # The median as the library defines its quantiles (NumPy's default, linear between
+    # order statistics); 33^2 samples: the middle one.
+    level = sorted(h)[len(h) // 2]
     assert lines
-    level = lines[0][0][0][2]
-    assert all(p[2] == level for line, _ in lines for p in line)
+    for line, _ in lines:
+        for x, y, z in line:
+            assert z == pytest.approx(level, abs=1e-6)
+            # Marching squares puts every vertex on a cell edge, between two samples that
+            # straddle the level (land >= level on one side, sea on the other).
+            if x == int(x):
+                a, b = h[int(y) * n + int(x)], h[min(int(y) + 1, n - 1) * n + int(x)]
+            else:
+                assert y == int(y)
+                a, b = h[int(y) * n + int(x)], h[int(y) * n + min(int(x) + 1, n - 1)]
+            assert min(a, b) - 1e-6 <= level <= max(a, b) + 1e-6, (x, y, a, b)
 
 
 def test_hurst_estimate_of_a_midpoint_terrain(core):

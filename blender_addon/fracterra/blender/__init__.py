@@ -1,8 +1,18 @@
-"""The Blender side of the add-on: properties, operators, panels, menus."""
+"""The Blender side of the add-on: properties, operators, panels, menus.
+
+Modules import only downwards, never in a circle:
+    reporting, widgets, prefs, mesh_build, curve_build   (leaves: core and bpy only)
+    <- terrain_build, terrain_objects, settings_ui
+    <- props (PropertyGroups; auto-update calls terrain_build)
+    <- terrain_ops, polyline_ops, measure_op, fractalize_op, pov_export (operators)
+    <- panels, menus (refer to operators by their id strings)
+tests/python/test_addon_layers.py checks this order.
+"""
 
 import bpy
 
-from . import fractalize_op, panels, polyline_ops, pov_export, presets, props, terrain_ops
+from . import fractalize_op, measure_op, panels, polyline_ops, pov_export, prefs, presets, props, terrain_ops
+from .menus import MENUS
 
 classes = (
     props.FRACTERRA_PG_terrain,
@@ -11,21 +21,13 @@ classes = (
     terrain_ops.FRACTERRA_OT_terrain_regenerate,
     polyline_ops.FRACTERRA_OT_polyline_add,
     polyline_ops.FRACTERRA_OT_coastline_add,
-    polyline_ops.FRACTERRA_OT_measure,
+    measure_op.FRACTERRA_OT_measure,
     pov_export.FRACTERRA_OT_export_pov,
     fractalize_op.FRACTERRA_OT_fractalize,
     panels.FRACTERRA_PT_terrain,
-    polyline_ops.FRACTERRA_PT_measures,
-    panels.FracterraPreferences,
+    panels.FRACTERRA_PT_measures,
+    prefs.FracterraPreferences,
 )
-
-menus = (
-    (bpy.types.VIEW3D_MT_mesh_add, terrain_ops.menu_mesh_add),
-    (bpy.types.VIEW3D_MT_curve_add, polyline_ops.menu_curve_add),
-    (bpy.types.TOPBAR_MT_file_export, pov_export.menu_export),
-    (bpy.types.VIEW3D_MT_object, fractalize_op.menu_object),
-)
-
 
 def on_register():
     bpy.types.Object.fracterra_terrain = bpy.props.PointerProperty(type=props.FRACTERRA_PG_terrain)

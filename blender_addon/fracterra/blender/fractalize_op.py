@@ -1,21 +1,18 @@
 """Object > Fractalize: OpenSubdiv refinement with fractal displacements."""
 
-import array
-import itertools
-
 import bpy
+import numpy as np
 
-from .. import core
 from ..core import subdiv
-from .terrain_build import SettingsError, WindowProgress
-
-REPORTED = (core.FracterraError, SettingsError)
+from .prefs import library_threads
+from .reporting import REPORTED, SettingsError, WindowProgress
 
 
 def _edge_creases(mesh):
-    """(pairs, sharpness) from Blender's edge creases c in [0, 1] -> 10 c^2, as Blender's own subdivision."""
+    """(pairs, sharpness) from Blender's edge creases c in [0, 1] -> 10 c^2, as Blender's own
+    subdivision; (None, None) when no edge is creased."""
     n = len(mesh.edges)
-    crease = array.array("f", [0.0]) * n
+    crease = np.zeros(n, dtype=np.float32)
     try:
         mesh.edges.foreach_get("crease", crease)
     except (AttributeError, TypeError, RuntimeError):  # Blender 4.0+: an attribute
@@ -23,37 +20,40 @@ def _edge_creases(mesh):
         if layer is None:
             return None, None
         layer.data.foreach_get("value", crease)
-    verts = array.array("I", [0]) * (2 * n)
+    creased = np.flatnonzero(crease > 0)
+    if not len(creased):
+        return None, None
+    verts = np.empty(2 * n, dtype=np.uint32)
     mesh.edges.foreach_get("vertices", verts)
-    pairs, sharp = array.array("I"), array.array("f")
-    for i, c in enumerate(crease):
-        if c > 0:
-            pairs.extend(verts[2 * i:2 * i + 2])
-            sharp.append(10.0 * c * c)
-    return (pairs, sharp) if sharp else (None, None)
+    pairs = verts.reshape(n, 2)[creased].ravel()
+    return pairs, 10.0 * crease[creased] ** 2
 
 
 def ft_mesh_of(mesh, use_creases):
-    co = array.array("f", [0.0]) * (3 * len(mesh.vertices))
+    """A core subdiv.Mesh of a Blender mesh's vertices, faces and (optionally) creases."""
+    co = np.empty(3 * len(mesh.vertices), dtype=np.float32)
     mesh.vertices.foreach_get("co", co)
-    sizes = array.array("I", [0]) * len(mesh.polygons)
+    sizes = np.empty(len(mesh.polygons), dtype=np.uint32)
     mesh.polygons.foreach_get("loop_total", sizes)
-    indices = array.array("I", [0]) * len(mesh.loops)
+    indices = np.empty(len(mesh.loops), dtype=np.uint32)
     mesh.loops.foreach_get("vertex_index", indices)
-    if not sizes:
+    if not len(sizes):
         raise SettingsError(f"'{mesh.name}' has no faces to fractalize")
     pairs, sharp = _edge_creases(mesh) if use_creases else (None, None)
     return subdiv.Mesh.create(co, sizes, indices, pairs, sharp)
 
 
 def fill_polygon_mesh(mesh, positions, sizes, indices):
+    """Replaces the geometry of `mesh` by the polygons the library made."""
+    sizes = np.asarray(sizes, dtype=np.uint32)
     mesh.clear_geometry()
     mesh.vertices.add(len(positions) // 3)
     mesh.loops.add(len(indices))
     mesh.polygons.add(len(sizes))
     mesh.vertices.foreach_set("co", positions)
     mesh.loops.foreach_set("vertex_index", indices)
-    starts = array.array("I", itertools.accumulate(itertools.chain((0,), sizes[:-1])))
+    starts = np.zeros(len(sizes), dtype=np.uint32)
+    np.cumsum(sizes[:-1], out=starts[1:])
     mesh.polygons.foreach_set("loop_start", starts)
     if not bpy.types.MeshPolygon.bl_rna.properties["loop_total"].is_readonly:
         mesh.polygons.foreach_set("loop_total", sizes)
@@ -97,7 +97,8 @@ class FRACTERRA_OT_fractalize(bpy.types.Operator):
         try:
             with ft_mesh_of(obj.data, self.use_creases) as base, WindowProgress(context) as progress, \
                     subdiv.fractalize(base, self.levels, self.hurst, self.sigma, self.seed, self.scheme, self.mode,
-                                      self.fix_boundary, self.scale_by_edge_length, progress=progress) as out:
+                                      self.fix_boundary, self.scale_by_edge_length,
+                                      threads=library_threads(context), progress=progress) as out:
                 positions, sizes, indices = out.positions(), out.face_sizes(), out.face_indices()
         except REPORTED as e:
             self.report({"ERROR"}, str(e))
@@ -113,6 +114,3 @@ class FRACTERRA_OT_fractalize(bpy.types.Operator):
         self.report({"INFO"}, f"Fractalized: {len(sizes)} faces")
         return {"FINISHED"}
 
-
-def menu_object(self, context):
-    self.layout.operator(FRACTERRA_OT_fractalize.bl_idname, icon="MOD_DISPLACE")

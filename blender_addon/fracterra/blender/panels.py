@@ -1,29 +1,18 @@
-"""The sidebar panel (View3D > Sidebar > Fracterra) and the add-on preferences."""
+"""The sidebar panels (View3D > Sidebar > Fracterra). They refer to operators by
+their id strings, so no panel imports an operator module."""
 
-import textwrap
+import math
 
 import bpy
 
-from .. import core
-from . import props
-from .terrain_ops import FRACTERRA_OT_terrain_add, FRACTERRA_OT_terrain_regenerate
+from .settings_ui import draw_settings
+from .terrain_objects import is_measurable
+from .widgets import draw_library_problem, draw_wrapped
 
-ROOT_PACKAGE = __package__.rpartition(".")[0]
-
-
-def draw_wrapped(layout, text, icon="NONE", width=60, alert=False):
-    col = layout.column(align=True)
-    col.alert = alert
-    for i, line in enumerate(textwrap.wrap(text, width)):
-        col.label(text=line, icon=icon if i == 0 else "BLANK1")
-
-
-def draw_library_problem(layout):
-    """Shows why the library cannot be used and what to do; False when it can."""
-    ok, message = core.status()
-    if not ok:
-        draw_wrapped(layout.box(), message, icon="ERROR", alert=True)
-    return not ok
+# Operators the panels show (bl_idname of each).
+TERRAIN_ADD = "mesh.fracterra_terrain_add"
+TERRAIN_REGENERATE = "object.fracterra_terrain_regenerate"
+MEASURE = "object.fracterra_measure"
 
 
 class FRACTERRA_PT_terrain(bpy.types.Panel):
@@ -39,35 +28,38 @@ class FRACTERRA_PT_terrain(bpy.types.Panel):
         settings = getattr(obj, "fracterra_terrain", None) if obj is not None else None
         if settings is None or not settings.is_terrain:
             layout.label(text="The active object is not a fractal terrain.")
-            layout.operator(FRACTERRA_OT_terrain_add.bl_idname, text="Add Fractal Terrain", icon="RNDCURVE")
+            layout.operator(TERRAIN_ADD, text="Add Fractal Terrain", icon="RNDCURVE")
             return
         row = layout.row(align=True)
-        row.operator(FRACTERRA_OT_terrain_regenerate.bl_idname, text="Regenerate", icon="FILE_REFRESH")
+        row.operator(TERRAIN_REGENERATE, text="Regenerate", icon="FILE_REFRESH")
         row.prop(settings, "auto_update", text="", icon="AUTO", toggle=True)
         if settings.last_error:
             draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True)
-        props.draw_settings(layout, settings)
+        draw_settings(layout, settings)
 
 
-class FracterraPreferences(bpy.types.AddonPreferences):
-    bl_idname = ROOT_PACKAGE
+class FRACTERRA_PT_measures(bpy.types.Panel):
+    bl_label = "Fractal Measures"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "Fracterra"
 
-    # Default 1: a 1025^2 terrain takes ~20 ms on one core, while the library's
-    # OpenMP threads, when a render or other programs keep every core busy, wait
-    # at their barriers for hundreds of ms (measured 0.46 s vs 0.018 s here).
-    threads: bpy.props.IntProperty(
-        name="Threads", default=1, min=0, max=1024,
-        description="Threads the library uses for generation (0: all cores; results never depend on it). "
-                    "1 is fastest up to ~2049^2 and whenever other programs (renders) keep the cores busy")
+    @classmethod
+    def poll(cls, context):
+        return is_measurable(context.active_object)
 
     def draw(self, context):
         layout = self.layout
-        if not draw_library_problem(layout):
-            draw_wrapped(layout, core.status()[1], icon="CHECKMARK")
-        layout.prop(self, "threads")
-
-
-def preferences(context):
-    """The add-on's preferences, or None when it runs unregistered from a script."""
-    addon = context.preferences.addons.get(ROOT_PACKAGE)
-    return addon.preferences if addon else None
+        obj = context.active_object
+        m = obj.fracterra_measures
+        layout.operator(MEASURE, icon="DRIVER_DISTANCE")
+        if not m.kind:
+            layout.label(text="Not measured yet")
+            return
+        col = layout.column(align=True)
+        names = ("hurst", "dimension", "stderr") if m.kind == "terrain" else ("eta", "chi", "gamma", "dimension", "stderr")
+        for name in names:
+            row = col.row()
+            row.label(text=m.bl_rna.properties[name].name)
+            value = getattr(m, name)
+            row.label(text="n/a" if math.isnan(value) else f"{value:.4f}")

@@ -1,7 +1,4 @@
-"""Curves: Add > Curve > Fractal Polyline, coastlines of a terrain, and measures."""
-
-import array
-import math
+"""Curves: Add > Curve > Fractal Polyline, and the coastlines of a terrain."""
 
 import bpy
 from mathutils import Matrix
@@ -9,9 +6,11 @@ from mathutils import Matrix
 from .. import core
 from ..core import params
 from . import props
-from .terrain_build import SettingsError, WindowProgress
-
-REPORTED = (core.FracterraError, SettingsError)
+from .curve_build import curve_from_polylines, link_new_object, point_cloud_from_polylines, spline_nodes
+from .prefs import library_threads
+from .reporting import REPORTED, SettingsError, WindowProgress
+from .settings_ui import draw_polyline_settings
+from .terrain_objects import heightfield_of, is_terrain
 
 
 def edge_chain(mesh):
@@ -55,8 +54,7 @@ def base_polyline(values, context):
         if not obj.data.splines:
             raise SettingsError(f"the active curve '{obj.name}' has no splines")
         spline = obj.data.splines[0]
-        pts = spline.bezier_points if spline.type == "BEZIER" else spline.points
-        nodes = [tuple(p.co[:3]) for p in pts]
+        nodes = [tuple(p) for p in spline_nodes(spline)]
         if spline.use_cyclic_u and nodes:
             nodes.append(nodes[0])
     else:
@@ -67,53 +65,6 @@ def base_polyline(values, context):
     return nodes, obj.matrix_world.copy()
 
 
-def curve_from_polylines(name, pl, bevel, z_offset=0.0, transform=None):
-    """A new curve datablock with one POLY spline per line, radii from the library."""
-    curve = bpy.data.curves.new(name, "CURVE")
-    curve.dimensions = "3D"
-    if bevel:
-        curve.bevel_depth = 1.0  # times each point's radius
-        curve.bevel_resolution = 2
-        curve.use_fill_caps = True
-    xyz, radii, offsets = pl.xyz(), pl.radii(), pl.offsets()
-    for k in range(len(offsets) - 1):
-        a, b = offsets[k], offsets[k + 1]
-        if b - a < 2:
-            continue
-        spline = curve.splines.new("POLY")
-        spline.points.add(b - a - 1)
-        co = array.array("f", [0.0]) * (4 * (b - a))
-        for i in range(a, b):
-            x, y, z = xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2] + z_offset
-            if transform:
-                x, y, z = transform(x, y, z)
-            j = 4 * (i - a)
-            co[j], co[j + 1], co[j + 2], co[j + 3] = x, y, z, 1.0
-        spline.points.foreach_set("co", co)
-        spline.points.foreach_set("radius", array.array("f", radii[a:b]))
-    return curve
-
-
-def point_cloud_from_polylines(name, pl):
-    mesh = bpy.data.meshes.new(name)
-    xyz = pl.xyz()
-    mesh.vertices.add(len(xyz) // 3)
-    mesh.vertices.foreach_set("co", array.array("f", xyz))
-    mesh.update()
-    return mesh
-
-
-def link_new_object(context, name, data, matrix):
-    obj = bpy.data.objects.new(name, data)
-    obj.matrix_world = matrix
-    context.collection.objects.link(obj)
-    for other in context.selected_objects:
-        other.select_set(False)
-    obj.select_set(True)
-    context.view_layer.objects.active = obj
-    return obj
-
-
 class FRACTERRA_OT_polyline_add(bpy.types.Operator):
     """Add a fractal polyline (FPL 2D/3D with branching, Koch, dragon, Sierpinski, IFS, profile)"""
     bl_idname = "curve.fracterra_polyline_add"
@@ -121,17 +72,15 @@ class FRACTERRA_OT_polyline_add(bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO", "PRESET"}
 
     def draw(self, context):
-        props.draw_polyline_settings(self.layout, self)
+        draw_polyline_settings(self.layout, self)
 
     def execute(self, context):
         values = params.values_of(self, params.POLYLINE_PARAMS)
         try:
-            from .panels import preferences
-            prefs = preferences(context)
             base, matrix = base_polyline(values, context)
             with WindowProgress(context) as progress, \
                     core.generate_polylines(values, base=base, progress=progress,
-                                            threads=prefs.threads if prefs else 0) as pl:
+                                            threads=library_threads(context)) as pl:
                 if values["method"] == "IFS":
                     data = point_cloud_from_polylines("Fractal Points", pl)
                 else:
@@ -148,28 +97,6 @@ class FRACTERRA_OT_polyline_add(bpy.types.Operator):
 
 
 FRACTERRA_OT_polyline_add.__annotations__ = props.terrain_annotations(param_list=params.POLYLINE_PARAMS)
-
-
-def terrain_grid_size(obj):
-    """(nx, ny) of a fracterra terrain object whose mesh is still its grid."""
-    s = obj.fracterra_terrain
-    nx, ny = ((2 ** s.levels + 1,) * 2 if s.method in params.DYADIC_METHODS else (s.width, s.height))
-    if len(obj.data.vertices) != nx * ny:
-        raise SettingsError(f"'{obj.name}' has {len(obj.data.vertices)} vertices, not its {nx} x {ny} grid "
-                            "(edited?); regenerate it first")
-    return nx, ny
-
-
-def heightfield_of(obj):
-    """A core.Heightfield of a terrain object's current vertex heights (caller closes)."""
-    nx, ny = terrain_grid_size(obj)
-    co = array.array("f", [0.0]) * (3 * nx * ny)
-    obj.data.vertices.foreach_get("co", co)
-    return core.Heightfield.from_values(nx, ny, co[2::3])
-
-
-def is_terrain(obj):
-    return obj is not None and obj.type == "MESH" and obj.fracterra_terrain.is_terrain
 
 
 class FRACTERRA_OT_coastline_add(bpy.types.Operator):
@@ -215,80 +142,3 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
         obj["fracterra_kind"] = "COASTLINE"
         self.report({"INFO"}, f"Coastline: {lines} line(s)")
         return {"FINISHED"}
-
-
-def polylines_of_curve(obj, matrix=None):
-    """A core.Polylines of a curve object's splines (world coordinates unless `matrix`)."""
-    m = matrix if matrix is not None else obj.matrix_world
-    lines, radii = [], []
-    for spline in obj.data.splines:
-        pts = spline.bezier_points if spline.type == "BEZIER" else spline.points
-        if len(pts) >= 2:
-            lines.append([tuple(m @ p.co.to_3d()) for p in pts])
-            radii.append([p.radius * max(obj.data.bevel_depth, 0.0) for p in pts])
-    if not lines:
-        raise SettingsError(f"the curve '{obj.name}' has no spline with 2 or more points")
-    return core.Polylines.from_lines(lines, radii)
-
-
-class FRACTERRA_OT_measure(bpy.types.Operator):
-    """Measure the active terrain (H, D) or curve (eta, chi, gamma, box-counting D)"""
-    bl_idname = "object.fracterra_measure"
-    bl_label = "Measure"
-    bl_options = {"REGISTER"}
-
-    @classmethod
-    def poll(cls, context):
-        obj = context.active_object
-        return obj is not None and (is_terrain(obj) or obj.type == "CURVE")
-
-    def execute(self, context):
-        obj = context.active_object
-        m = obj.fracterra_measures
-        try:
-            if obj.type == "CURVE":
-                with polylines_of_curve(obj, Matrix.Identity(4)) as pl:
-                    s = pl.measure()
-                m.kind, m.eta, m.chi, m.gamma = "polylines", s["eta"], s["chi"], s["gamma"]
-                m.dimension, m.stderr, m.hurst = s["box_dimension"], s["box_std_error"], math.nan
-            else:
-                with heightfield_of(obj) as hf:
-                    r = core.hurst_of_heightfield(hf)
-                m.kind, m.hurst, m.dimension, m.stderr = "terrain", r["hurst"], r["dimension"], r["stderr_hurst"]
-                m.eta = m.chi = m.gamma = math.nan
-        except REPORTED as e:
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
-        return {"FINISHED"}
-
-
-class FRACTERRA_PT_measures(bpy.types.Panel):
-    bl_label = "Fractal Measures"
-    bl_space_type = "VIEW_3D"
-    bl_region_type = "UI"
-    bl_category = "Fracterra"
-
-    @classmethod
-    def poll(cls, context):
-        return FRACTERRA_OT_measure.poll(context)
-
-    def draw(self, context):
-        layout = self.layout
-        obj = context.active_object
-        m = obj.fracterra_measures
-        layout.operator(FRACTERRA_OT_measure.bl_idname, icon="DRIVER_DISTANCE")
-        if not m.kind:
-            layout.label(text="Not measured yet")
-            return
-        col = layout.column(align=True)
-        names = ("hurst", "dimension", "stderr") if m.kind == "terrain" else ("eta", "chi", "gamma", "dimension", "stderr")
-        for name in names:
-            row = col.row()
-            row.label(text=m.bl_rna.properties[name].name)
-            value = getattr(m, name)
-            row.label(text="n/a" if math.isnan(value) else f"{value:.4f}")
-
-
-def menu_curve_add(self, context):
-    self.layout.operator(FRACTERRA_OT_polyline_add.bl_idname, text="Fractal Polyline", icon="IPO_ELASTIC")
-    self.layout.operator(FRACTERRA_OT_coastline_add.bl_idname, text="Terrain Coastline", icon="MOD_OCEAN")

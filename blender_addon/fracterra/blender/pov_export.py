@@ -9,18 +9,9 @@ from mathutils import Matrix, Vector
 
 from .. import core
 from ..core import povray
-from .polyline_ops import REPORTED, heightfield_of, is_terrain
-from .terrain_build import SettingsError
-
-
-def _curve_polylines(obj, matrix, shift):
-    lines, radii = [], []
-    for spline in obj.data.splines:
-        pts = spline.bezier_points if spline.type == "BEZIER" else spline.points
-        if len(pts) >= 2:
-            lines.append([tuple(matrix @ p.co.to_3d() + shift) for p in pts])
-            radii.append([p.radius * obj.data.bevel_depth for p in pts])
-    return core.Polylines.from_lines(lines, radii) if lines else None
+from .curve_build import curve_polylines
+from .reporting import REPORTED, SettingsError
+from .terrain_objects import heightfield_of, is_terrain
 
 
 def _direction_angles(v):
@@ -81,7 +72,7 @@ class FRACTERRA_OT_export_pov(bpy.types.Operator, ExportHelper):
             if self.include_curves:
                 for obj in visible:
                     if obj.type == "CURVE":
-                        pl = _curve_polylines(obj, frame @ obj.matrix_world, shift)
+                        pl = curve_polylines(obj, frame @ obj.matrix_world, shift)
                         if pl is not None:
                             kind = obj.get("fracterra_kind", "LINE")
                             kind = kind if kind in povray.LINE_KINDS else "LINE"
@@ -117,6 +108,3 @@ class FRACTERRA_OT_export_pov(bpy.types.Operator, ExportHelper):
             message += f", rendered to {png}"
         return message
 
-
-def menu_export(self, context):
-    self.layout.operator(FRACTERRA_OT_export_pov.bl_idname, text="POV-Ray (fracterra) (.pov)")

@@ -6,20 +6,26 @@ import math
 import time
 
 import bpy
+import numpy as np
 
 from .. import core
 from ..core import params
 from ..core.grid import NO_FLOOR, grid_arrays, grid_size, vertices
 from . import mesh_build
-
-
-class SettingsError(ValueError):
-    """A setting the add-on checks itself (reference object/image) is unusable."""
+from .prefs import library_threads
+from .reporting import SettingsError, WindowProgress
 
 
 def _dyadic_levels(size):
     n = size - 1
     return n.bit_length() - 1 if size >= 3 and n & (n - 1) == 0 else -1
+
+
+def _float_array(values):
+    """array.array('f') of a numpy array, for the binding (which copies from a buffer)."""
+    out = array.array("f")
+    out.frombytes(np.ascontiguousarray(values, dtype=np.float32).tobytes())
+    return out
 
 
 def reference_from_object(name):
@@ -38,10 +44,32 @@ def reference_from_object(name):
         raise SettingsError(
             f"Reference object '{obj.name}' has {n} vertices; a reference grid needs (2^m + 1)^2 vertices "
             f"(9, 25, 81, 289, 1089, ...), e.g. Add > Mesh > Grid with 8 x 8 subdivisions (9 x 9 vertices)")
-    co = array.array("f", [0.0]) * (3 * n)
+    co = np.empty(3 * n, dtype=np.float32)
     mesh.vertices.foreach_get("co", co)
-    order = sorted(range(n), key=lambda i: (co[3 * i + 1], co[3 * i]))
-    return size, [co[3 * i + 2] for i in order]
+    co = co.reshape(n, 3)
+    order = np.lexsort((co[:, 0], co[:, 1]))  # by y, then x; stable, as sorted() was
+    return size, _float_array(co[order, 2])
+
+
+def luminance(pixels):
+    """Rec. 709 luminance of an (h, w, channels) float array (one channel: itself), in float64."""
+    px = pixels.astype(np.float64)
+    if px.shape[2] >= 3:
+        return 0.2126 * px[:, :, 0] + 0.7152 * px[:, :, 1] + 0.0722 * px[:, :, 2]
+    return px[:, :, 0]
+
+
+def resample_bilinear(image, size):
+    """`image` (h, w) resampled bilinearly to size x size points spanning it corner to corner."""
+    h, w = image.shape
+    t = np.arange(size, dtype=np.float64) / (size - 1)
+    fx, fy = t * (w - 1), t * (h - 1)
+    x0, y0 = fx.astype(np.int64), fy.astype(np.int64)
+    x1, y1 = np.minimum(x0 + 1, w - 1), np.minimum(y0 + 1, h - 1)
+    tx, ty = (fx - x0)[None, :], (fy - y0)[:, None]
+    top = image[y0][:, x0] * (1 - tx) + image[y0][:, x1] * tx
+    bottom = image[y1][:, x0] * (1 - tx) + image[y1][:, x1] * tx
+    return top * (1 - ty) + bottom * ty
 
 
 def reference_from_image(name, levels, height):
@@ -54,29 +82,10 @@ def reference_from_image(name, levels, height):
     if w < 1 or h < 1:
         raise SettingsError(f"Reference image '{image.name}' has no pixels (is the file missing?)")
     channels = image.channels
-    px = array.array("f", [0.0]) * (w * h * channels)
+    px = np.empty(w * h * channels, dtype=np.float32)
     image.pixels.foreach_get(px)
-
-    def lum(x, y):
-        i = (y * w + x) * channels
-        if channels >= 3:
-            return 0.2126 * px[i] + 0.7152 * px[i + 1] + 0.0722 * px[i + 2]
-        return px[i]
-
     size = 2 ** levels + 1
-    out = []
-    for j in range(size):
-        fy = j / (size - 1) * (h - 1)
-        y0 = int(fy)
-        y1, ty = min(y0 + 1, h - 1), fy - y0
-        for i in range(size):
-            fx = i / (size - 1) * (w - 1)
-            x0 = int(fx)
-            x1, tx = min(x0 + 1, w - 1), fx - x0
-            top = lum(x0, y0) * (1 - tx) + lum(x1, y0) * tx
-            bottom = lum(x0, y1) * (1 - tx) + lum(x1, y1) * tx
-            out.append(height * (top * (1 - ty) + bottom * ty))
-    return size, out
+    return size, _float_array(height * resample_bilinear(luminance(px.reshape(h, w, channels)), size))
 
 
 def reference_for(values):
@@ -95,35 +104,12 @@ def z_floor(values):
     return values["sea_level"] if values["use_sea_level"] else NO_FLOOR
 
 
-class WindowProgress:
-    """wm.progress_begin/update/end around a library call, as its progress callback."""
-
-    def __init__(self, context):
-        self.wm = getattr(context, "window_manager", None)
-
-    def __enter__(self):
-        if self.wm:
-            self.wm.progress_begin(0, 1000)
-        return self
-
-    def __call__(self, fraction):
-        if self.wm:
-            self.wm.progress_update(int(fraction * 1000))
-        return False  # never cancels on its own; the binding supports it for scripts
-
-    def __exit__(self, *exc):
-        if self.wm:
-            self.wm.progress_end()
-
-
 def generate(values, context):
     """A core.Heightfield for the settings (caller closes it)."""
-    from .panels import preferences  # late import: panels imports the operators
     reference = reference_for(values)
-    prefs = preferences(context)
     with WindowProgress(context) as progress:
         return core.generate_terrain(values, reference=reference, progress=progress,
-                                     threads=prefs.threads if prefs else 0)
+                                     threads=library_threads(context))
 
 
 def new_terrain_mesh(values, context, name="Fractal Terrain"):

@@ -3,15 +3,11 @@
 import bpy
 from bpy_extras import object_utils
 
-from .. import core
 from ..core import params
 from . import props
-from .terrain_build import SettingsError, new_terrain_mesh, regenerate_object
-
-# Errors an operator reports instead of raising: the library's own messages
-# (bad parameters, unsupported method, missing library, memory cap) and the
-# add-on's checks of reference objects/images.
-REPORTED = (core.FracterraError, SettingsError)
+from .reporting import REPORTED
+from .settings_ui import draw_settings
+from .terrain_build import new_terrain_mesh, regenerate_object
 
 
 class FRACTERRA_OT_terrain_add(bpy.types.Operator, object_utils.AddObjectHelper):
@@ -21,7 +17,7 @@ class FRACTERRA_OT_terrain_add(bpy.types.Operator, object_utils.AddObjectHelper)
     bl_options = {"REGISTER", "UNDO", "PRESET"}
 
     def draw(self, context):
-        props.draw_settings(self.layout, self)
+        draw_settings(self.layout, self)
         col = self.layout.column()
         col.use_property_split = True
         col.prop(self, "align")
@@ -71,6 +67,3 @@ class FRACTERRA_OT_terrain_regenerate(bpy.types.Operator):
         self.report({"INFO"}, f"Fractal terrain: {summary}")
         return {"FINISHED"}
 
-
-def menu_mesh_add(self, context):
-    self.layout.operator(FRACTERRA_OT_terrain_add.bl_idname, text="Fractal Terrain", icon="RNDCURVE")

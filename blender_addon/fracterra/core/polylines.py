@@ -3,6 +3,7 @@ measures, and the ft_polylines handle."""
 
 import array
 import ctypes
+import itertools
 import math
 from ctypes import POINTER, byref, c_double, c_int64, c_void_p
 
@@ -11,6 +12,24 @@ from .handle import LibraryHandle
 from .binding import PolylineStats, library
 from .errors import InvalidArgumentError
 from .terrain import _ProgressBridge
+
+
+# Buffer formats with the same bits as array.array's "d" and "q" (numpy's int64 is "l").
+_SAME_BITS = {"d": ("d", "<d", "=d"), "q": ("q", "l", "<q", "<l", "=q", "=l")}
+
+
+def _contiguous(buf, typecode):
+    """A writable array.array(typecode) holding the values of `buf`: one copy of its
+    bytes when the buffer already has that item type, element by element otherwise."""
+    try:
+        view = memoryview(buf)
+    except TypeError:  # a list or other plain sequence
+        return array.array(typecode, buf)
+    if view.format in _SAME_BITS[typecode] and view.c_contiguous:
+        out = array.array(typecode)
+        out.frombytes(view.cast("B"))
+        return out
+    return array.array(typecode, buf)
 
 
 class Polylines(LibraryHandle):
@@ -22,19 +41,24 @@ class Polylines(LibraryHandle):
     @classmethod
     def from_lines(cls, lines, radii=None):
         """A set from a list of lines, each a list of (x, y, z); radii: matching lists or None."""
+        xyz = array.array("d", [c for line in lines for p in line for c in p[:3]])
+        rad = array.array("d", [r for line in radii for r in line]) if radii else None
+        offsets = array.array("q", itertools.accumulate((len(line) for line in lines), initial=0))
+        return cls.from_arrays(xyz, rad, offsets)
+
+    @classmethod
+    def from_arrays(cls, xyz, radii, offsets):
+        """A set from flat buffers (array.array, 1-D numpy arrays, any sequence with
+        the buffer protocol): xyz float64 (3 per vertex), radii float64 (1 per vertex) or None,
+        offsets int64 (line k is vertices offsets[k] .. offsets[k + 1] - 1)."""
         lib = library()
-        xyz = array.array("d")
-        rad = array.array("d")
-        offsets = array.array("q", [0])
-        for k, line in enumerate(lines):
-            for i, p in enumerate(line):
-                xyz.extend((p[0], p[1], p[2]))
-                rad.append(radii[k][i] if radii else 0.0)
-            offsets.append(len(xyz) // 3)
+        xyz = _contiguous(xyz, "d")
+        rad = _contiguous(radii, "d") if radii is not None else None
+        offsets = _contiguous(offsets, "q")
         out = c_void_p()
 
         def ptr(buf, ctype):
-            return (ctype * len(buf)).from_buffer(buf) if len(buf) else None
+            return (ctype * len(buf)).from_buffer(buf) if buf is not None and len(buf) else None
         lib.check(lib.ft_polylines_create(ptr(xyz, c_double), ptr(rad, c_double), len(xyz) // 3,
                                           ptr(offsets, c_int64), len(offsets) - 1, byref(out)))
         return cls(out)

@@ -10,8 +10,8 @@
 #pragma once
 
 #include "analysis/quantile.hpp"
+#include "core/gray_image.hpp"
 #include "core/heightfield.hpp"
-#include "io/png_image.hpp"
 
 namespace ft {
 

@@ -1,11 +1,11 @@
 #include <cmath>
 #include <memory>
 
+#include "analysis/polyline_stats.hpp"
 #include "capi/guard.hpp"
 #include "capi/handles.hpp"
 #include "fracterra/fracterra.h"
 #include "polyline/polyline.hpp"
-#include "polyline/polyline_stats.hpp"
 
 using ft::capi::guarded;
 

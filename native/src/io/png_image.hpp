@@ -3,18 +3,11 @@
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <string>
-#include <vector>
+
+#include "core/gray_image.hpp"
 
 namespace ft {
-
-struct GrayImage {
-  int32_t width = 0, height = 0;
-  int bit_depth = 16;             // 8 or 16
-  std::vector<uint16_t> pixels;   // row-major, row 0 = top of the image
-  std::map<std::string, std::string> text;
-};
 
 // Writes atomically; 8-bit images use the low byte range 0..255 of `pixels`.
 void write_png(const std::string& path, const GrayImage& image);

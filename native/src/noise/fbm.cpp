@@ -30,8 +30,8 @@ struct Octave {
 struct Plan {
   std::vector<Octave> octaves;
   std::vector<Octave> warp_x, warp_y;  // the domain-warp fbm, two independent fields
-  int32_t basis = FT_BASIS_GRADIENT;
-  int32_t variant = FT_FBM_STANDARD;
+  int32_t basis = kBasisGradient;
+  int32_t variant = kFbmStandard;
   bool periodic = false;
   float offset = 1;
   float scale = 1;        // applied to the sum: sigma, or sigma / sum a_i
@@ -92,7 +92,7 @@ Plan make_plan(const FbmConfig& c) {
   p.offset = float(c.offset);
   double sum = 0;
   for (const Octave& o : p.octaves) sum += o.amp;
-  const bool bounded = c.variant == FT_FBM_STANDARD || c.variant == FT_FBM_RIDGED;
+  const bool bounded = c.variant == kFbmStandard || c.variant == kFbmRidged;
   p.scale = float(bounded ? c.sigma / sum : c.sigma);
   if (c.warp > 0) {
     // Quilez's warp f(p + w q(p)) with q two independent 4-octave gradient
@@ -130,7 +130,7 @@ FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v,
     xs[i] = (a11 * u[i] + a12 * v[i]) + ox;
     ys[i] = (a21 * u[i] + a22 * v[i]) + oy;
   }
-  if constexpr (kBasis == FT_BASIS_CELLULAR_F1 || kBasis == FT_BASIS_CELLULAR_F2F1) {
+  if constexpr (kBasis == kBasisCellularF1 || kBasis == kBasisCellularF2F1) {
     float f2[kChunk];
     for (int i = 0; i < n; ++i) {
       const F12 f = cellular_noise<kPeriodic>(key, xs[i], ys[i], px, py, ipx, ipy);
@@ -139,13 +139,13 @@ FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v,
     }
     for (int i = 0; i < n; ++i) {
       const float d1 = std::sqrt(out[i]);
-      out[i] = kBasis == FT_BASIS_CELLULAR_F1 ? d1 : std::sqrt(f2[i]) - d1;
+      out[i] = kBasis == kBasisCellularF1 ? d1 : std::sqrt(f2[i]) - d1;
     }
   } else {
     for (int i = 0; i < n; ++i) {
-      if constexpr (kBasis == FT_BASIS_VALUE)
+      if constexpr (kBasis == kBasisValue)
         out[i] = value_noise<kPeriodic>(key, xs[i], ys[i], px, py, ipx, ipy);
-      else if constexpr (kBasis == FT_BASIS_GRADIENT)
+      else if constexpr (kBasis == kBasisGradient)
         out[i] = gradient_noise<kPeriodic>(key, xs[i], ys[i], px, py, ipx, ipy);
       else
         out[i] = simplex_noise(key, xs[i], ys[i]);  // periodic simplex is refused by validate_fbm
@@ -156,11 +156,11 @@ FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v,
 template <bool kPeriodic>
 FT_INLINE void noise_row(int basis, const Octave& o, int n, const float* u, const float* v, float* out) {
   switch (basis) {
-    case FT_BASIS_VALUE: return basis_row<FT_BASIS_VALUE, kPeriodic>(o, n, u, v, out);
-    case FT_BASIS_GRADIENT: return basis_row<FT_BASIS_GRADIENT, kPeriodic>(o, n, u, v, out);
-    case FT_BASIS_SIMPLEX: return basis_row<FT_BASIS_SIMPLEX, kPeriodic>(o, n, u, v, out);
-    case FT_BASIS_CELLULAR_F1: return basis_row<FT_BASIS_CELLULAR_F1, kPeriodic>(o, n, u, v, out);
-    default: return basis_row<FT_BASIS_CELLULAR_F2F1, kPeriodic>(o, n, u, v, out);
+    case kBasisValue: return basis_row<kBasisValue, kPeriodic>(o, n, u, v, out);
+    case kBasisGradient: return basis_row<kBasisGradient, kPeriodic>(o, n, u, v, out);
+    case kBasisSimplex: return basis_row<kBasisSimplex, kPeriodic>(o, n, u, v, out);
+    case kBasisCellularF1: return basis_row<kBasisCellularF1, kPeriodic>(o, n, u, v, out);
+    default: return basis_row<kBasisCellularF2F1, kPeriodic>(o, n, u, v, out);
   }
 }
 
@@ -177,10 +177,10 @@ FT_INLINE void octave_loop(const std::vector<Octave>& octs, int basis, int varia
     const float a = o.amp;
     const bool first = k == 0;
     switch (variant) {
-      case FT_FBM_STANDARD:
+      case kFbmStandard:
         for (int i = 0; i < n; ++i) sum[i] = first ? a * noise[i] : sum[i] + a * noise[i];
         break;
-      case FT_FBM_RIDGED:  // ridges where the noise crosses zero, sharpened by the octave below
+      case kFbmRidged:  // ridges where the noise crosses zero, sharpened by the octave below
         for (int i = 0; i < n; ++i) {
           const float ab = noise[i] < 0.0f ? -noise[i] : noise[i];
           float s = offset - ab;
@@ -192,7 +192,7 @@ FT_INLINE void octave_loop(const std::vector<Octave>& octs, int basis, int varia
           sum[i] = first ? a * s : sum[i] + a * s;
         }
         break;
-      case FT_FBM_HYBRID:  // detail grows where the terrain is already high
+      case kFbmHybrid:  // detail grows where the terrain is already high
         for (int i = 0; i < n; ++i) {
           const float s = (noise[i] + offset) * a;
           if (first) {
@@ -205,7 +205,7 @@ FT_INLINE void octave_loop(const std::vector<Octave>& octs, int basis, int varia
           }
         }
         break;
-      default:  // FT_FBM_HETERO: increments scaled by the height so far
+      default:  // kFbmHetero: increments scaled by the height so far
         for (int i = 0; i < n; ++i)
           sum[i] = first ? offset + noise[i] : sum[i] + ((noise[i] + offset) * a) * sum[i];
         break;
@@ -218,8 +218,8 @@ FT_INLINE void chunk_body(const Plan& p, int n, float* u, float* v, float* out) 
   if (!p.warp_x.empty()) {
     // The warp pass: displace the coordinates, then run the octaves on them.
     float wx[kChunk], wy[kChunk];
-    octave_loop<kPeriodic>(p.warp_x, FT_BASIS_GRADIENT, FT_FBM_STANDARD, 0.0f, n, u, v, wx);
-    octave_loop<kPeriodic>(p.warp_y, FT_BASIS_GRADIENT, FT_FBM_STANDARD, 0.0f, n, u, v, wy);
+    octave_loop<kPeriodic>(p.warp_x, kBasisGradient, kFbmStandard, 0.0f, n, u, v, wx);
+    octave_loop<kPeriodic>(p.warp_y, kBasisGradient, kFbmStandard, 0.0f, n, u, v, wy);
     for (int i = 0; i < n; ++i) {
       u[i] = u[i] + p.warp_u * wx[i];
       v[i] = v[i] + p.warp_v * wy[i];
@@ -291,14 +291,14 @@ void validate_fbm(const FbmConfig& c) {
   if (std::isnan(c.gain) || c.gain > 1.0)
     invalid("gain must be in (0, 1] (or <= 0 to use lacunarity^-H), got " + format_number(c.gain));
   check_range("hurst", c.hurst, 0.0, 1.0);
-  check_int_range("basis", c.basis, FT_BASIS_VALUE, FT_BASIS_CELLULAR_F2F1);
-  check_int_range("variant", c.variant, FT_FBM_STANDARD, FT_FBM_HETERO);
+  check_int_range("basis", c.basis, kBasisValue, kBasisCellularF2F1);
+  check_int_range("variant", c.variant, kFbmStandard, kFbmHetero);
   check_positive("frequency", c.frequency);
   check_finite("offset", c.offset);
   check_finite("rotation", c.rotation);
   check_range("warp", c.warp, 0.0, kMaxWarp);
   check_positive("sigma", c.sigma);
-  if (c.periodic && c.basis == FT_BASIS_SIMPLEX)
+  if (c.periodic && c.basis == kBasisSimplex)
     invalid("periodic fbm is available for the value, gradient and cellular bases, not simplex "
             "(its skewed lattice does not tile a rectangle)");
   const double m = max_lattice_coordinate(c);

@@ -16,9 +16,26 @@
 
 #include "core/heightfield.hpp"
 #include "core/progress.hpp"
-#include "fracterra/terrain.h"
 
 namespace ft {
+
+// The noise layer's own names for its bases and octave combinations. Their
+// values are the ABI's FT_BASIS_* and FT_FBM_* (terrain.cpp checks this at
+// compile time), so the terrain layer passes ft_terrain_params' fields on
+// unchanged, while this layer does not include the public terrain header.
+enum NoiseBasis : int32_t {
+  kBasisValue = 0,       // lattice values, quintic interpolation
+  kBasisGradient = 1,    // Perlin gradient noise
+  kBasisSimplex = 2,     // simplex noise (not periodic)
+  kBasisCellularF1 = 3,  // Voronoi distance to the nearest feature point
+  kBasisCellularF2F1 = 4 // Voronoi F2 - F1
+};
+enum FbmVariant : int32_t {
+  kFbmStandard = 0,
+  kFbmRidged = 1,
+  kFbmHybrid = 2,        // Musgrave's hybrid multifractal
+  kFbmHetero = 3         // Musgrave's heterogeneous terrain
+};
 
 // Lattice coordinates above this lose sub-cell resolution in float (the ulp
 // at 2^17 is 1/64 of a cell): an fbm whose finest octave reaches beyond it
@@ -33,8 +50,8 @@ struct FbmConfig {
   double lacunarity = 2.0;    // > 1
   double gain = 0.0;          // (0, 1]; <= 0: lacunarity^-H
   double hurst = 0.8;         // used when gain <= 0
-  int32_t basis = FT_BASIS_GRADIENT;
-  int32_t variant = FT_FBM_STANDARD;
+  int32_t basis = kBasisGradient;
+  int32_t variant = kFbmStandard;
   double frequency = 4.0;     // base-octave cells across the width, > 0
   double offset = 1.0;        // ridged / hybrid / hetero offset, finite
   double rotation = 0.5;      // radians per octave, finite

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "analysis/box_counting.hpp"
+#include "analysis/polyline_stats.hpp"
 #include "core/error.hpp"
-#include "polyline/polyline_stats.hpp"
 
 namespace ft {
 namespace {

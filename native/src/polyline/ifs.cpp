@@ -5,25 +5,24 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "core/rng.hpp"
-#include "fracterra/polyline.h"
 
 namespace ft {
 
 std::vector<IfsMap> ifs_preset(int preset) {
   switch (preset) {
-    case FT_IFS_FERN:
+    case kIfsFern:
       return {{0.0, 0.0, 0.0, 0.16, 0.0, 0.0, 0.01},
               {0.85, 0.04, -0.04, 0.85, 0.0, 1.6, 0.85},
               {0.2, -0.26, 0.23, 0.22, 0.0, 1.6, 0.07},
               {-0.15, 0.28, 0.26, 0.24, 0.0, 0.44, 0.07}};
-    case FT_IFS_DRAGON:  // seed 002: X' = -0.5X - 0.5Y + 490, Y' = 0.5X - 0.5Y + 120, ...
+    case kIfsDragon:  // seed 002: X' = -0.5X - 0.5Y + 490, Y' = 0.5X - 0.5Y + 120, ...
       return {{-0.5, -0.5, 0.5, -0.5, 490.0, 120.0, 0.5}, {0.5, -0.5, 0.5, 0.5, 340.0, -110.0, 0.5}};
-    case FT_IFS_KOCH:    // seed 002, the four maps of its fig. 9
+    case kIfsKoch:    // seed 002, the four maps of its fig. 9
       return {{0.333, 0.0, 0.0, 0.333, 13.333, 200.0, 0.25},
               {0.333, 0.0, 0.0, 0.333, 413.333, 200.0, 0.25},
               {0.167, 0.289, -0.289, 0.167, 130.0, 256.0, 0.25},
               {0.167, -0.289, 0.289, 0.167, 403.0, 71.0, 0.25}};
-    case FT_IFS_SIERPINSKI_GASKET: {
+    case kIfsSierpinskiGasket: {
       // seed 002: cut the central triangle out of each triangle, for ever;
       // what is left is three copies of the whole at ratio 1/2, each fixed
       // at one corner of the triangle (0, 0), (1, 0), (1/2, sqrt(3)/2).

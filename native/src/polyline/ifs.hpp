@@ -18,7 +18,12 @@ struct IfsMap {
   double a, b, c, d, e, f, p;
 };
 
-// FT_IFS_FERN / FT_IFS_DRAGON / FT_IFS_KOCH / FT_IFS_SIERPINSKI_GASKET.
+// The built-in tables. Their values are the ABI's FT_IFS_* (polyline.cpp
+// checks this at compile time), so ft_polyline_params.ifs_preset passes on
+// unchanged while this algorithm does not include the public header.
+enum IfsPreset : int32_t { kIfsFern = 0, kIfsDragon = 1, kIfsKoch = 2, kIfsSierpinskiGasket = 3 };
+
+// The table of a preset; throws FT_ERR_INVALID_ARGUMENT for any other value.
 std::vector<IfsMap> ifs_preset(int preset);
 // Checks a table: 1..64 maps, finite coefficients, p >= 0 with a positive sum.
 void validate_ifs(const std::vector<IfsMap>& maps);

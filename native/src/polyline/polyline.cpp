@@ -9,7 +9,6 @@
 #include "polyline/ifs.hpp"
 #include "polyline/lightning.hpp"
 #include "terrain/profile.hpp"
-#include "terrain/terrain.hpp"
 
 namespace ft {
 namespace {
@@ -57,6 +56,10 @@ void profile_segment(const ft_polyline_params& p, const Vec3& a, const Vec3& b, 
   out[0] = a;
   out[n] = b;
 }
+
+// ifs.hpp's preset names carry the ABI's values, so ifs_preset passes through.
+static_assert(kIfsFern == FT_IFS_FERN && kIfsDragon == FT_IFS_DRAGON && kIfsKoch == FT_IFS_KOCH &&
+              kIfsSierpinskiGasket == FT_IFS_SIERPINSKI_GASKET);
 
 }  // namespace
 

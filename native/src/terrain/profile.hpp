@@ -10,6 +10,8 @@
 
 namespace ft {
 
+inline constexpr int kMaxProfileLevels = 28;  // 2^28 + 1 floats = 1 GiB
+
 struct ProfileConfig {
   int levels = 10;
   double hurst = 0.8;

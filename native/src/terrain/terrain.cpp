@@ -46,6 +46,13 @@ void check_reference(const float* ref, int32_t size, int levels, bool periodic) 
   }
 }
 
+// The noise layer's enums carry the ABI's values, so basis and variant pass through.
+static_assert(kBasisValue == FT_BASIS_VALUE && kBasisGradient == FT_BASIS_GRADIENT &&
+              kBasisSimplex == FT_BASIS_SIMPLEX && kBasisCellularF1 == FT_BASIS_CELLULAR_F1 &&
+              kBasisCellularF2F1 == FT_BASIS_CELLULAR_F2F1);
+static_assert(kFbmStandard == FT_FBM_STANDARD && kFbmRidged == FT_FBM_RIDGED && kFbmHybrid == FT_FBM_HYBRID &&
+              kFbmHetero == FT_FBM_HETERO);
+
 FbmConfig fbm_config(const ft_terrain_params& p) {
   FbmConfig c;
   c.width = p.width, c.height = p.height, c.octaves = p.octaves, c.lacunarity = p.lacunarity;

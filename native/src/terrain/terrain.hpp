@@ -5,11 +5,11 @@
 
 #include "core/heightfield.hpp"
 #include "fracterra/terrain.h"
+#include "terrain/profile.hpp"
 
 namespace ft {
 
 inline constexpr int kMaxLevels = 15;         // 32769^2 floats = 4 GiB
-inline constexpr int kMaxProfileLevels = 28;  // 2^28 + 1 floats = 1 GiB
 
 ft_terrain_params default_terrain_params();
 // Throws ft::Error (FT_ERR_INVALID_ARGUMENT / FT_ERR_TOO_LARGE) with a message

@@ -1,4 +1,4 @@
-#include "polyline/polyline_stats.hpp"
+#include "analysis/polyline_stats.hpp"
 
 #include <cmath>
 

@@ -10,15 +10,15 @@
 
 #include "core/mesh.hpp"
 
-namespace ft {
+namespace ft::pov {
 
 // A valid POV-Ray identifier from any name: characters other than letters,
 // digits and '_' become '_', a leading digit gets a '_' in front, and a name
 // without an upper-case letter gets the prefix "FT_" (every POV-Ray keyword
 // is lower case, so the result can never be one).
-std::string pov_identifier(const std::string& name);
+std::string identifier(const std::string& name);
 
-std::string encode_pov_mesh2(const Mesh& mesh, const std::string& name);
-void write_pov_mesh2(const Mesh& mesh, const std::string& path, const std::string& name);
+std::string encode_mesh2(const Mesh& mesh, const std::string& name);
+void write_mesh2(const Mesh& mesh, const std::string& path, const std::string& name);
 
-}  // namespace ft
+}  // namespace ft::pov

@@ -1,13 +1,13 @@
-#include "io/pov_mesh2.hpp"
+#include "povray/mesh2_export.hpp"
 
 #include <cctype>
 #include <cstdio>
 
 #include "io/atomic_file.hpp"
 
-namespace ft {
+namespace ft::pov {
 
-std::string pov_identifier(const std::string& name) {
+std::string identifier(const std::string& name) {
   std::string id;
   bool upper = false;
   for (unsigned char c : name) {
@@ -20,8 +20,8 @@ std::string pov_identifier(const std::string& name) {
   return id;
 }
 
-std::string encode_pov_mesh2(const Mesh& m, const std::string& name) {
-  const std::string id = pov_identifier(name);
+std::string encode_mesh2(const Mesh& m, const std::string& name) {
+  const std::string id = identifier(name);
   const std::vector<float> normals = mesh_vertex_normals(m);
   size_t triangles = 0;
   for (int32_t n : m.face_sizes) triangles += size_t(n - 2);
@@ -57,8 +57,8 @@ std::string encode_pov_mesh2(const Mesh& m, const std::string& name) {
   return out;
 }
 
-void write_pov_mesh2(const Mesh& mesh, const std::string& path, const std::string& name) {
-  write_file_atomically(path, encode_pov_mesh2(mesh, name));
+void write_mesh2(const Mesh& mesh, const std::string& path, const std::string& name) {
+  write_file_atomically(path, encode_mesh2(mesh, name));
 }
 
-}  // namespace ft
+}  // namespace ft::pov

@@ -1,8 +1,8 @@
-#include "polyline/polyline_report.hpp"
+#include "analysis/polyline_report.hpp"
 
 #include <cmath>
 
-#include "polyline/polyline_stats.hpp"
+#include "analysis/polyline_stats.hpp"
 
 namespace ft {
 namespace {

@@ -1,0 +1,45 @@
+"""Object > Measure: H and D of a terrain, eta, chi, gamma and box-counting D of
+a curve, stored in the object's FRACTERRA_PG_measures for the sidebar."""
+
+import math
+
+import bpy
+from mathutils import Matrix
+
+from .. import core
+from .curve_build import curve_polylines
+from .reporting import REPORTED, SettingsError
+from .terrain_objects import heightfield_of, is_measurable
+
+
+class FRACTERRA_OT_measure(bpy.types.Operator):
+    """Measure the active terrain (H, D) or curve (eta, chi, gamma, box-counting D)"""
+    bl_idname = "object.fracterra_measure"
+    bl_label = "Measure"
+    bl_options = {"REGISTER"}
+
+    @classmethod
+    def poll(cls, context):
+        return is_measurable(context.active_object)
+
+    def execute(self, context):
+        obj = context.active_object
+        m = obj.fracterra_measures
+        try:
+            if obj.type == "CURVE":
+                pl = curve_polylines(obj, Matrix.Identity(4))
+                if pl is None:
+                    raise SettingsError(f"the curve '{obj.name}' has no spline with 2 or more points")
+                with pl:
+                    s = pl.measure()
+                m.kind, m.eta, m.chi, m.gamma = "polylines", s["eta"], s["chi"], s["gamma"]
+                m.dimension, m.stderr, m.hurst = s["box_dimension"], s["box_std_error"], math.nan
+            else:
+                with heightfield_of(obj) as hf:
+                    r = core.hurst_of_heightfield(hf)
+                m.kind, m.hurst, m.dimension, m.stderr = "terrain", r["hurst"], r["dimension"], r["stderr_hurst"]
+                m.eta = m.chi = m.gamma = math.nan
+        except REPORTED as e:
+            self.report({"ERROR"}, str(e))
+            return {"CANCELLED"}
+        return {"FINISHED"}

@@ -1,0 +1,36 @@
+"""Reading objects back: is an object a fracterra terrain (or measurable at
+all), a terrain's grid size, and a library heightfield of its current vertex
+heights."""
+
+import array
+
+from .. import core
+from ..core import params
+from .reporting import SettingsError
+
+
+def is_terrain(obj):
+    return obj is not None and obj.type == "MESH" and obj.fracterra_terrain.is_terrain
+
+
+def is_measurable(obj):
+    """Object > Measure works on terrains (H, D) and curves (eta, chi, gamma, D)."""
+    return obj is not None and (is_terrain(obj) or obj.type == "CURVE")
+
+
+def terrain_grid_size(obj):
+    """(nx, ny) of a fracterra terrain object whose mesh is still its grid."""
+    s = obj.fracterra_terrain
+    nx, ny = ((2 ** s.levels + 1,) * 2 if s.method in params.DYADIC_METHODS else (s.width, s.height))
+    if len(obj.data.vertices) != nx * ny:
+        raise SettingsError(f"'{obj.name}' has {len(obj.data.vertices)} vertices, not its {nx} x {ny} grid "
+                            "(edited?); regenerate it first")
+    return nx, ny
+
+
+def heightfield_of(obj):
+    """A core.Heightfield of a terrain object's current vertex heights (caller closes)."""
+    nx, ny = terrain_grid_size(obj)
+    co = array.array("f", [0.0]) * (3 * nx * ny)
+    obj.data.vertices.foreach_get("co", co)
+    return core.Heightfield.from_values(nx, ny, co[2::3])
