@@ -58,7 +58,7 @@ void profile_segment(const ft_polyline_params& p, const Vec3& a, const Vec3& b, 
 }
 
 // ifs.hpp's preset names carry the ABI's values, so ifs_preset passes through.
-static_assert(kIfsFern == FT_IFS_FERN && kIfsDragon == FT_IFS_DRAGON && kIfsKoch == FT_IFS_KOCH);
+static_assert(int(kIfsFern) == FT_IFS_FERN && int(kIfsDragon) == FT_IFS_DRAGON && int(kIfsKoch) == FT_IFS_KOCH);
 
 }  // namespace
 
