@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "analysis/polyline_stats.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "golden.hpp"
 #include "io/atomic_file.hpp"
 #include "io/polyline_io.hpp"
 #include "polyline/fpl_study.hpp"
@@ -172,6 +174,29 @@ TEST(Fpl, SameSeedSameBitsOtherSeedOtherLine) {
   const PolylineSet c = generate_polylines(fpl(0.2, 10, 78));
   EXPECT_TRUE(a.points == b.points);
   EXPECT_FALSE(a.points == c.points);
+}
+
+TEST(Fpl, GoldenChecksumsPinTheOutput) {
+  // Points, radii and line offsets of the FPL generators (see golden.hpp).
+  struct Case {
+    int method, rng;
+    double branch_prob;
+    uint64_t want;
+  };
+  const Case cases[] = {{FT_POLYLINE_FPL, FT_POLYLINE_RNG_UNIFORM, 0.0, 0x328482491f34dd36ULL},
+                        {FT_POLYLINE_FPL, FT_POLYLINE_RNG_NORMAL, 0.0, 0x2e0723d9703586dfULL},
+                        {FT_POLYLINE_FPL3D, FT_POLYLINE_RNG_NORMAL, 0.3, 0x1cb25f23c99d3f10ULL}};
+  for (const Case& c : cases) {
+    ft_polyline_params p = fpl(0.2, 10, 2024);
+    p.method = c.method, p.rng = c.rng, p.branch_prob = c.branch_prob;
+    const PolylineSet s = generate_polylines(p);
+    uint64_t got = test::fnv1a(s.points.data(), s.points.size() * sizeof(Vec3));
+    got = test::fnv1a(s.radii.data(), s.radii.size() * sizeof(double), got);
+    got = test::fnv1a(s.offsets.data(), s.offsets.size() * sizeof(int64_t), got);
+    std::printf("method %d rng %d branch %g: 0x%016llxULL\n", c.method, c.rng, c.branch_prob,
+                (unsigned long long)got);
+    EXPECT_EQ(got, c.want) << "method " << c.method << " rng " << c.rng;
+  }
 }
 
 TEST(Fpl, OutputDoesNotDependOnTheThreadCount) {

@@ -58,8 +58,8 @@ void profile_segment(const ft_polyline_params& p, const Vec3& a, const Vec3& b, 
 }
 
 // ifs.hpp's preset names carry the ABI's values, so ifs_preset passes through.
-static_assert(kIfsFern == FT_IFS_FERN && kIfsDragon == FT_IFS_DRAGON && kIfsKoch == FT_IFS_KOCH &&
-              kIfsSierpinskiGasket == FT_IFS_SIERPINSKI_GASKET);
+static_assert(int(kIfsFern) == FT_IFS_FERN && int(kIfsDragon) == FT_IFS_DRAGON && int(kIfsKoch) == FT_IFS_KOCH &&
+              int(kIfsSierpinskiGasket) == FT_IFS_SIERPINSKI_GASKET);
 
 }  // namespace
 

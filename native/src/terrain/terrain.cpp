@@ -47,11 +47,11 @@ void check_reference(const float* ref, int32_t size, int levels, bool periodic) 
 }
 
 // The noise layer's enums carry the ABI's values, so basis and variant pass through.
-static_assert(kBasisValue == FT_BASIS_VALUE && kBasisGradient == FT_BASIS_GRADIENT &&
-              kBasisSimplex == FT_BASIS_SIMPLEX && kBasisCellularF1 == FT_BASIS_CELLULAR_F1 &&
-              kBasisCellularF2F1 == FT_BASIS_CELLULAR_F2F1);
-static_assert(kFbmStandard == FT_FBM_STANDARD && kFbmRidged == FT_FBM_RIDGED && kFbmHybrid == FT_FBM_HYBRID &&
-              kFbmHetero == FT_FBM_HETERO);
+static_assert(int(kBasisValue) == FT_BASIS_VALUE && int(kBasisGradient) == FT_BASIS_GRADIENT &&
+              int(kBasisSimplex) == FT_BASIS_SIMPLEX && int(kBasisCellularF1) == FT_BASIS_CELLULAR_F1 &&
+              int(kBasisCellularF2F1) == FT_BASIS_CELLULAR_F2F1);
+static_assert(int(kFbmStandard) == FT_FBM_STANDARD && int(kFbmRidged) == FT_FBM_RIDGED &&
+              int(kFbmHybrid) == FT_FBM_HYBRID && int(kFbmHetero) == FT_FBM_HETERO);
 
 FbmConfig fbm_config(const ft_terrain_params& p) {
   FbmConfig c;
@@ -180,9 +180,10 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
       hf.set_world_size(p.world_size);
       return hf;
     }
-    default:
-      fail(FT_ERR_UNSUPPORTED, "terrain method " + std::to_string(p.method) + " is not available in this build");
   }
+  // validate_terrain_params admits only the methods above: reaching here means a
+  // method was added to the range check without a generator.
+  fail(FT_ERR_INTERNAL, "terrain method " + std::to_string(p.method) + " passed validation but has no generator");
 }
 
 ft_profile_params default_profile_params() {
