@@ -29,7 +29,6 @@ using nlohmann::json;
 struct AnalyzeCli {
   std::string file, plot, method = "auto";
   HurstOptions band;  // only the band fields are used
-  bool json_flag = false;
 };
 
 const std::vector<HurstMethod> kAllMethods = {HurstMethod::kVariogramAligned, HurstMethod::kVariogram,
@@ -252,7 +251,6 @@ Registration reg({"analyze",
                                    "spectral: highest frequency, cycles per record (0 = n / 8)")
                         ->check(CLI::NonNegativeNumber)->capture_default_str();
                     app.add_option("--plot", c->plot, "also draw the log-log fits to this .svg (or .png, through rsvg-convert)");
-                    app.add_flag("--json", c->json_flag, "accepted for compatibility: the report is always JSON");
                     return [c] { return run(*c); };
                   },
                   40});

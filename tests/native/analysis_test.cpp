@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 #include <vector>
+#include <unistd.h>
 
 #include "analysis/clouds.hpp"
 #include "analysis/hurst.hpp"
@@ -303,7 +304,8 @@ class AnalysisCli : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("ft_analysis_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("ft_analysis_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+            "_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
@@ -313,7 +315,7 @@ class AnalysisCli : public ::testing::Test {
 
 TEST_F(AnalysisCli, AnalyzeReportsRecommendedEstimateOfHeightfieldsAndProfiles) {
   write_heightfield(terrain(FT_TERRAIN_MIDPOINT, 9, 0.7, 2), path("t.npy"));
-  CliResult r = run_cli("analyze " + path("t.npy") + " --json");
+  CliResult r = run_cli("analyze " + path("t.npy"));
   ASSERT_EQ(r.status, 0) << r.out;
   nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["kind"], "heightfield");

@@ -9,7 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
@@ -125,13 +128,79 @@ TEST_F(Cli, ReferenceGridFromAFileSurvivesInTheTerrain) {
     for (int i = 0; i < 5; ++i) EXPECT_EQ(t.at(i * 16, j * 16), ref[size_t(j * 5 + i)]);
 }
 
+// One option of a --help page: its spec ("--hurst FLOAT:FLOAT in [0 - 1]=0.8")
+// and its description (CLI11 puts it on the next line when the spec is long).
+struct HelpOption {
+  std::string spec, description;
+};
+
+// The options and subcommands of one --help page.
+void parse_help(const std::string& help, std::vector<HelpOption>* options, std::vector<std::string>* subcommands) {
+  std::istringstream in(help);
+  std::string line, section;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == ':' && line[0] != ' ') {
+      section = line;
+      continue;
+    }
+    if (line.rfind("  ", 0) != 0 || line.size() < 3 || line[2] == ' ') {
+      // A description wrapped onto its own line belongs to the option above.
+      const size_t text = line.find_first_not_of(' ');
+      if (section == "Options:" && !options->empty() && options->back().description.empty() && text != std::string::npos)
+        options->back().description = line.substr(text);
+      continue;
+    }
+    const size_t gap = line.find("  ", 2);
+    const std::string head = line.substr(2, gap == std::string::npos ? std::string::npos : gap - 2);
+    const size_t text = gap == std::string::npos ? std::string::npos : line.find_first_not_of(' ', gap);
+    const std::string desc = text == std::string::npos ? "" : line.substr(text);
+    if (section == "Options:") options->push_back({head, desc});
+    if (section == "Subcommands:") subcommands->push_back(head);
+  }
+}
+
 TEST_F(Cli, HelpExplainsEveryFlagWithItsDefault) {
-  const CliRun r = run("terrain --help");
-  ASSERT_EQ(r.code, 0);
-  for (const char* flag : {"--method", "--levels", "--hurst", "--sigma", "--seed", "--periodic", "--reference",
-                           "--threads", "--out", "--stats"})
-    EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
-  EXPECT_NE(r.out.find("=0.8"), std::string::npos) << "the default of --hurst";
+  // Every option of every subcommand (found from the help pages themselves, so a
+  // new flag is checked without editing this test) has a description, and every
+  // numeric option shows its default (CLI11's "=value", or the word "default" in
+  // its description) or is required, except those listed here, which must exist.
+  const std::set<std::string> no_default = {
+      "scene --water",  // the alternative to --sea-fraction (whose default is no sea)
+  };
+  std::set<std::string> seen_without_default;
+  std::vector<std::string> pages = {""};
+  size_t checked = 0;
+  for (size_t k = 0; k < pages.size(); ++k) {
+    const CliRun r = run(pages[k] + " --help");
+    ASSERT_EQ(r.code, 0) << pages[k] << ": " << r.err;
+    std::vector<HelpOption> options;
+    std::vector<std::string> subs;
+    parse_help(r.out, &options, &subs);
+    for (const std::string& sub : subs) pages.push_back(pages[k].empty() ? sub : pages[k] + " " + sub);
+    if (k > 0 && subs.empty()) {
+      EXPECT_GT(options.size(), 1u) << pages[k] << " lists no option";
+    }
+    for (const HelpOption& o : options) {
+      if (o.spec.rfind("-h,--help", 0) == 0 || o.spec.rfind("--version", 0) == 0) continue;
+      ++checked;
+      const std::string name = pages[k] + " " + o.spec.substr(0, o.spec.find(' '));
+      EXPECT_FALSE(o.description.empty()) << name << " has no description";
+      const bool numeric = o.spec.find(" INT") != std::string::npos || o.spec.find(" UINT") != std::string::npos ||
+                           o.spec.find(" FLOAT") != std::string::npos;
+      const bool shows_default = o.spec.find('=') != std::string::npos ||
+                                 o.description.find("default") != std::string::npos ||
+                                 o.spec.find("REQUIRED") != std::string::npos;
+      if (numeric && !shows_default) {
+        seen_without_default.insert(name);
+        EXPECT_TRUE(no_default.count(name)) << name << " shows no default: \"" << o.spec << "\"";
+      }
+    }
+  }
+  EXPECT_GT(pages.size(), 10u) << "the subcommands were not found in fracterra --help";
+  EXPECT_GT(checked, 100u) << "the options were not found in the help pages";
+  EXPECT_EQ(seen_without_default, no_default) << "an entry of no_default names no such option";
+  const CliRun terrain = run("terrain --help");
+  EXPECT_NE(terrain.out.find("--hurst FLOAT:FLOAT in [0 - 1]=0.8"), std::string::npos) << "the default of --hurst";
 }
 
 TEST_F(Cli, ProfileWritesCsvWithTwoToTheLevelsPlusOneRows) {

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #include "analysis/box_counting.hpp"
 #include "analysis/quantile.hpp"
@@ -257,7 +258,7 @@ int run_cli(const std::string& args, std::string* out = nullptr) {
 }
 
 TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
-  const auto dir = std::filesystem::temp_directory_path() / "ft_coastline_cli";
+  const auto dir = std::filesystem::temp_directory_path() / ("ft_coastline_cli_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string t = (dir / "t.npy").string(), csv = (dir / "c.csv").string(), png = (dir / "p.png").string();
   write_heightfield(terrain(8, 0.7, 4), t);
@@ -270,7 +271,7 @@ TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
   EXPECT_EQ(j["islands"].get<int>(), count_kind(s, ChainKind::kIsland));
   EXPECT_TRUE(std::filesystem::exists(png));
   // The coastline file read back by analyze: a curve, D by box counting.
-  ASSERT_EQ(run_cli("analyze " + csv + " --json", &out), 0) << out;
+  ASSERT_EQ(run_cli("analyze " + csv, &out), 0) << out;
   const nlohmann::json a = nlohmann::json::parse(out);
   EXPECT_EQ(a["kind"], "polylines");
   EXPECT_EQ(a["recommended"], "box_counting");

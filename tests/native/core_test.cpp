@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <vector>
+#include <unistd.h>
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
@@ -80,7 +81,7 @@ TEST(Memory, RefusesAllocationAboveCapWithSizeInMessage) {
 }
 
 TEST(AtomicFile, UncommittedWriteLeavesOldFileIntact) {
-  const auto dir = std::filesystem::temp_directory_path() / "ft_atomic_test";
+  const auto dir = std::filesystem::temp_directory_path() / ("ft_atomic_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "f.txt").string();
   write_file_atomically(path, "old");

@@ -12,6 +12,7 @@
 #include <numeric>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
@@ -484,7 +485,7 @@ TEST(Fbm, RejectsBadParametersWithClearMessages) {
 // CLI
 
 TEST(NoiseCli, WritesAnyWidthByHeightAndRejectsBadSizes) {
-  const auto dir = std::filesystem::temp_directory_path() / "fracterra_noise_cli";
+  const auto dir = std::filesystem::temp_directory_path() / ("fracterra_noise_cli_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   for (const std::string method : {"fbm", "spectral", "interpolated"}) {
     const std::string out = (dir / (method + ".npy")).string();

@@ -172,6 +172,20 @@ def test_heightfield_stats_match_the_samples(core):
     assert s["mean"] == pytest.approx(sum(h) / len(h), rel=1e-6, abs=1e-9)
 
 
+def test_writes_through_data_mut_are_what_the_library_sees(core):
+    # ft_heightfield_data_mut lets a host edit a library heightfield in place (no
+    # copy back): copy, stats and every later call see the edit.
+    lib = core.library()
+    with core.Heightfield.from_values(2, 2, [0.0, 1.0, 2.0, 3.0]) as hf:
+        p = lib.ft_heightfield_data_mut(hf.handle)
+        assert ctypes.cast(p, ctypes.c_void_p).value == ctypes.cast(lib.ft_heightfield_data(hf.handle),
+                                                                    ctypes.c_void_p).value
+        p[3] = 10.0
+        assert list(hf.to_array()) == [0.0, 1.0, 2.0, 10.0]
+        assert hf.stats()["max"] == 10.0
+    assert not lib.ft_heightfield_data_mut(None)
+
+
 def test_profile_has_2_to_the_levels_plus_one_samples(core):
     a = core.generate_profile(levels=8, seed=4)
     assert len(a) == 257 and a == core.generate_profile(levels=8, seed=4)

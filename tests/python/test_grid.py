@@ -87,3 +87,26 @@ def test_nan_world_size_is_rejected(core):
     with core.Heightfield.from_values(2, 2, [0.0] * 4) as hf:
         with pytest.raises(core.InvalidArgumentError, match="size_x"):
             core.vertices(hf, math.nan, 1.0)
+
+
+def test_grid_heights_rewrite_only_the_z_of_an_xyz_array(core):
+    # ft_grid_heights serves hosts that keep their vertex array: with stride 3 and
+    # a pointer to the first z it rewrites heights in place and leaves x, y alone.
+    import array
+    from ctypes import POINTER, addressof, c_float, cast
+    from fracterra.core.terrain import as_pointer
+    lib = core.library()
+    values = [-2.0, -1.0, 0.0, 1.0, 2.0, 3.0]
+    with core.Heightfield.from_values(3, 2, values) as hf:
+        co = array.array("f", [7.0]) * 18
+        first_z = cast(addressof(as_pointer(co, c_float)) + 2 * 4, POINTER(c_float))
+        lib.check(lib.ft_grid_heights(hf.handle, -0.5, first_z, 3, len(co) - 2))
+        assert list(co[2::3]) == [-0.5, -0.5, 0.0, 1.0, 2.0, 3.0]
+        assert list(co[0::3]) == [7.0] * 6 and list(co[1::3]) == [7.0] * 6
+        z = array.array("f", [0.0]) * 6
+        lib.check(lib.ft_grid_heights(hf.handle, core.grid.NO_FLOOR, as_pointer(z, c_float), 1, len(z)))
+        assert list(z) == values
+        with pytest.raises(core.InvalidArgumentError):
+            lib.check(lib.ft_grid_heights(hf.handle, core.grid.NO_FLOOR, as_pointer(z, c_float), 1, 5))
+        with pytest.raises(core.InvalidArgumentError):
+            lib.check(lib.ft_grid_heights(hf.handle, core.grid.NO_FLOOR, as_pointer(z, c_float), 0, 6))

@@ -22,11 +22,14 @@ enum class Stream : uint32_t {
   kTerrainSquare = 2,
   kTerrainDiamond = 3,
   kTerrainAddOld = 4,
-  kTerrainAddNew = 5,
+  kTerrainAddNew = 5,       // additions: the points of a stage's coarse grid
+  kTerrainAddHalf = 14,     // additions: the half-offset points new at a stage
   kProfile = 6,
   kInterpolated = 7,
   kSpectral = 8,
-  kNoise = 9,
+  kNoise = 9,               // fbm octave i: level i
+  kNoiseWarpX = 15,         // domain warp, x field: level = octave
+  kNoiseWarpY = 16,         // domain warp, y field: level = octave
   kPolyline = 10,
   kPolylineBranch = 11,
   kIfs = 12,

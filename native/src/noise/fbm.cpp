@@ -38,19 +38,19 @@ struct Plan {
   float warp_u = 0, warp_v = 0;  // warp displacement per unit of warp noise, in (u, v) units
 };
 
-// Philox levels that key the octaves: the main octaves use level i, the two
-// warp fields their own ranges, so no two uses share random numbers.
-constexpr uint32_t kWarpXLevel = 1000, kWarpYLevel = 2000;
+// Octave i of a field takes its random numbers from Counter{0, i, stream}:
+// the main octaves from Stream::kNoise, the two warp fields from their own
+// streams, so no two uses share random numbers.
 constexpr int kWarpOctaves = 4;
 
 std::vector<Octave> make_octaves(const FbmConfig& c, int count, double lacunarity, double gain,
-                                 uint32_t level0) {
+                                 Stream stream) {
   std::vector<Octave> out(static_cast<size_t>(count));
   const double aspect = double(c.height) / double(c.width);
   double f = c.frequency, a = 1.0;
   for (int i = 0; i < count; ++i, f *= lacunarity, a *= gain) {
     Octave& o = out[size_t(i)];
-    const auto r = philox_block(c.seed, Counter{0, level0 + uint32_t(i), Stream::kNoise}, 0);
+    const auto r = philox_block(c.seed, Counter{0, uint32_t(i), stream}, 0);
     o.key = r.v[0];
     o.amp = float(a);
     if (c.periodic) {
@@ -85,7 +85,7 @@ std::vector<Octave> make_octaves(const FbmConfig& c, int count, double lacunarit
 Plan make_plan(const FbmConfig& c) {
   Plan p;
   const double gain = effective_gain(c);
-  p.octaves = make_octaves(c, c.octaves, c.lacunarity, gain, 0);
+  p.octaves = make_octaves(c, c.octaves, c.lacunarity, gain, Stream::kNoise);
   p.basis = c.basis;
   p.variant = c.variant;
   p.periodic = c.periodic;
@@ -97,8 +97,8 @@ Plan make_plan(const FbmConfig& c) {
   if (c.warp > 0) {
     // Quilez's warp f(p + w q(p)) with q two independent 4-octave gradient
     // fbms normalised to about [-1, 1]; w is in base-octave cells.
-    p.warp_x = make_octaves(c, kWarpOctaves, 2.0, 0.5, kWarpXLevel);
-    p.warp_y = make_octaves(c, kWarpOctaves, 2.0, 0.5, kWarpYLevel);
+    p.warp_x = make_octaves(c, kWarpOctaves, 2.0, 0.5, Stream::kNoiseWarpX);
+    p.warp_y = make_octaves(c, kWarpOctaves, 2.0, 0.5, Stream::kNoiseWarpY);
     double wsum = 0;
     for (const Octave& o : p.warp_x) wsum += o.amp;
     const double su = c.periodic ? p.octaves[0].px : c.frequency;

@@ -92,7 +92,7 @@ class Refiner {
       diamond_step(s, big, half, float(delta));
       {
         add_to_grid(s, 0, big, float(delta), Stream::kTerrainAddNew);
-        add_to_grid(s + 1000, half, big, float(delta), Stream::kTerrainAddNew);
+        add_to_grid(s, half, big, float(delta), Stream::kTerrainAddHalf);
       }
     }
     c_.progress.report(1.0);

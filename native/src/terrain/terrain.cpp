@@ -9,6 +9,7 @@
 #include "noise/fbm.hpp"
 #include "terrain/diamond_square.hpp"
 #include "terrain/interpolated.hpp"
+#include "terrain/mandelbrot.hpp"
 #include "terrain/profile.hpp"
 #include "terrain/spectral_synthesis.hpp"
 
@@ -47,11 +48,11 @@ void check_reference(const float* ref, int32_t size, int levels, bool periodic) 
 }
 
 // The noise layer's enums carry the ABI's values, so basis and variant pass through.
-static_assert(kBasisValue == FT_BASIS_VALUE && kBasisGradient == FT_BASIS_GRADIENT &&
-              kBasisSimplex == FT_BASIS_SIMPLEX && kBasisCellularF1 == FT_BASIS_CELLULAR_F1 &&
-              kBasisCellularF2F1 == FT_BASIS_CELLULAR_F2F1);
-static_assert(kFbmStandard == FT_FBM_STANDARD && kFbmRidged == FT_FBM_RIDGED && kFbmHybrid == FT_FBM_HYBRID &&
-              kFbmHetero == FT_FBM_HETERO);
+static_assert(int(kBasisValue) == FT_BASIS_VALUE && int(kBasisGradient) == FT_BASIS_GRADIENT &&
+              int(kBasisSimplex) == FT_BASIS_SIMPLEX && int(kBasisCellularF1) == FT_BASIS_CELLULAR_F1 &&
+              int(kBasisCellularF2F1) == FT_BASIS_CELLULAR_F2F1);
+static_assert(int(kFbmStandard) == FT_FBM_STANDARD && int(kFbmRidged) == FT_FBM_RIDGED &&
+              int(kFbmHybrid) == FT_FBM_HYBRID && int(kFbmHetero) == FT_FBM_HETERO);
 
 // Float range. Heights are float32: a sigma large enough to overflow them
 // (`--sigma 1e300`) used to be noticed only when the file was written, after
@@ -108,6 +109,8 @@ void check_terrain_heights(const ft_terrain_params& p) {
       return check_height_bound(p.reference_scale == FT_REFSCALE_SIGMA ? "sigma" : "the reference scale", sigma,
                                 per_sigma, top);
     }
+    case FT_TERRAIN_MANDELBROT:  // h = sigma (1 - (1 + s)^(-1/2)) lies in [0, sigma)
+      return check_height_bound("sigma", p.sigma, 1.0);
     case FT_TERRAIN_SPECTRAL:
       return check_height_bound("sigma", p.sigma, kMaxGaussian * std::sqrt(2.0 * p.width * p.height));
     case FT_TERRAIN_INTERPOLATED: {
@@ -124,6 +127,15 @@ void check_terrain_heights(const ft_terrain_params& p) {
       return check_height_bound("sigma", p.sigma, per_sigma);
     }
   }
+}
+
+MandelbrotConfig mandelbrot_config(const ft_terrain_params& p) {
+  MandelbrotConfig c;
+  c.width = p.width, c.height = p.height, c.center_x = p.center_x, c.center_y = p.center_y;
+  c.zoom = p.zoom, c.iterations = p.iterations, c.sigma = p.sigma, c.threads = p.threads;
+  c.supersample = p.supersample;
+  c.progress = Progress(p.progress, p.progress_user);
+  return c;
 }
 
 }  // namespace
@@ -162,12 +174,17 @@ ft_terrain_params default_terrain_params() {
   p.rotation = 0.5;
   p.warp = 0.0;
   p.world_size = 10.0;
+  p.center_x = -0.5;
+  p.center_y = 0.0;
+  p.zoom = 1.0;
+  p.iterations = 64;
+  p.supersample = 2;
   return p;
 }
 
 void validate_terrain_params(const ft_terrain_params& p) {
   check_struct_size(p.struct_size, sizeof(ft_terrain_params), "ft_terrain_params");
-  check_int_range("method", p.method, FT_TERRAIN_MIDPOINT, FT_TERRAIN_INTERPOLATED);
+  check_int_range("method", p.method, FT_TERRAIN_MIDPOINT, FT_TERRAIN_MANDELBROT);
   check_range("hurst", p.hurst, 0.0, 1.0);
   check_positive("sigma", p.sigma);
   check_positive("world_size", p.world_size);
@@ -188,6 +205,7 @@ void validate_terrain_params(const ft_terrain_params& p) {
     if (p.reference) invalid("reference points are supported by the midpoint and additions methods only");
     if (p.method == FT_TERRAIN_FBM) validate_fbm(fbm_config(p));
     if (p.method == FT_TERRAIN_INTERPOLATED) check_interpolated_lacunarity(p.lacunarity);
+    if (p.method == FT_TERRAIN_MANDELBROT) validate_mandelbrot(mandelbrot_config(p));
   }
   check_terrain_heights(p);
 }
@@ -224,9 +242,12 @@ Heightfield generate_terrain_samples(const ft_terrain_params& p) {
     case FT_TERRAIN_INTERPOLATED:
       return interpolated_fm({p.width, p.height, p.lacunarity, p.hurst, p.sigma, p.seed, p.periodic != 0,
                               p.threads, Progress(p.progress, p.progress_user)});
-    default:
-      fail(FT_ERR_UNSUPPORTED, "terrain method " + std::to_string(p.method) + " is not available in this build");
+    case FT_TERRAIN_MANDELBROT:
+      return mandelbrot(mandelbrot_config(p));
   }
+  // validate_terrain_params admits only the methods above: reaching here means a
+  // method was added to the range check without a generator.
+  fail(FT_ERR_INTERNAL, "terrain method " + std::to_string(p.method) + " passed validation but has no generator");
 }
 
 }  // namespace
