@@ -90,7 +90,7 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                                    "0.75 pixel at --width, or a tenth of the median segment, capped by kind")
                         ->check(CLI::NonNegativeNumber);
                     app.add_option("--radius-scale", o->radius_scales,
-                                   "multiplies every radius of the polyline set at the same position (> 0)")
+                                   "multiplies every radius of the polyline set at the same position (> 0; default 1)")
                         ->check(CLI::PositiveNumber);
                     app.add_flag("--radius-from-file", o->radius_from_file,
                                  "take the radii stored in the polyline files as world units (vertices with 0 get "
