@@ -23,7 +23,10 @@ const std::map<std::string, int> kMethods = {
     {"dragon", FT_POLYLINE_DRAGON}, {"sierpinski", FT_POLYLINE_SIERPINSKI}, {"ifs", FT_POLYLINE_IFS},
     {"profile", FT_POLYLINE_PROFILE}};
 const std::map<std::string, int> kRngs = {{"uniform", FT_POLYLINE_RNG_UNIFORM}, {"normal", FT_POLYLINE_RNG_NORMAL}};
-const std::map<std::string, int> kIfs = {{"fern", FT_IFS_FERN}, {"dragon", FT_IFS_DRAGON}, {"koch", FT_IFS_KOCH}};
+const std::map<std::string, int> kIfs = {{"fern", FT_IFS_FERN},
+                                         {"dragon", FT_IFS_DRAGON},
+                                         {"koch", FT_IFS_KOCH},
+                                         {"sierpinski_gasket", FT_IFS_SIERPINSKI_GASKET}};
 
 struct PolylineOptions {
   ft_polyline_params p = default_polyline_params();
@@ -145,7 +148,7 @@ Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch
                         ->capture_default_str();
                     app.add_option("--radius", p.radius, "vertex radius of the main line, >= 0")->capture_default_str();
                     app.add_option("--hurst", p.hurst, "profile: Hurst exponent H, 0..1")->capture_default_str();
-                    app.add_option("--ifs", p.ifs_preset, "ifs: built-in table fern, dragon or koch (seed 002)")
+                    app.add_option("--ifs", p.ifs_preset, "ifs: built-in table fern, dragon, koch or sierpinski_gasket (seed 002)")
                         ->transform(choice(kIfs))->capture_default_str();
                     app.add_option("--ifs-table", o->ifs_table,
                                    "ifs: a file of maps, one \"a,b,c,d,e,f,p\" per line: x' = a x + b y + e, "

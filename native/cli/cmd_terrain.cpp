@@ -2,13 +2,17 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "contour/marching_squares.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
+#include "io/polyline_io.hpp"
 #include "povray/scene.hpp"
+#include "terrain/mandelbrot.hpp"
 #include "terrain/terrain.hpp"
 
 namespace ft::cli {
@@ -16,7 +20,8 @@ namespace {
 
 const std::map<std::string, int> kMethods = {
     {"midpoint", FT_TERRAIN_MIDPOINT}, {"additions", FT_TERRAIN_ADDITIONS}, {"fbm", FT_TERRAIN_FBM},
-    {"spectral", FT_TERRAIN_SPECTRAL}, {"interpolated", FT_TERRAIN_INTERPOLATED}};
+    {"spectral", FT_TERRAIN_SPECTRAL}, {"interpolated", FT_TERRAIN_INTERPOLATED},
+    {"mandelbrot", FT_TERRAIN_MANDELBROT}};
 const std::map<std::string, int> kBases = {
     {"value", FT_BASIS_VALUE}, {"gradient", FT_BASIS_GRADIENT}, {"simplex", FT_BASIS_SIMPLEX},
     {"cellular", FT_BASIS_CELLULAR_F1}, {"cellular-f2f1", FT_BASIS_CELLULAR_F2F1}};
@@ -41,18 +46,49 @@ void parse_size(const std::string& text, ft_terrain_params& p) {
   p.width = w;
   p.height = h;
 }
+// "--center X,Y" (the Mandelbrot view's centre in the complex plane).
+void parse_center(const std::string& text, ft_terrain_params& p) {
+  double x = 0, y = 0;
+  char comma = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%lf%c%lf%c", &x, &comma, &y, &extra) != 3 || comma != ',')
+    invalid("--center must be X,Y (e.g. -0.745,0.11), got '" + text + "'");
+  p.center_x = x;
+  p.center_y = y;
+}
+
 const std::map<std::string, int> kRefScales = {
     {"sigma", FT_REFSCALE_SIGMA}, {"mean", FT_REFSCALE_MEAN}, {"std", FT_REFSCALE_STD}};
 
 struct TerrainOptions {
   ft_terrain_params p = default_terrain_params();
-  std::string reference, out, size, pov;
-  bool stats = false;
+  std::string reference, out, size, pov, center, curves_out;
+  std::vector<double> curves;
+  bool stats = false, curves_world = false;
 };
+
+// The Mandelbrot terrain's curves of equal escape time: the contours at the
+// heights those escape times map to, in columns and rows or world units.
+void write_escape_curves(const TerrainOptions& o, const ft_terrain_params& p, const Heightfield& hf) {
+  std::vector<double> levels;
+  for (double nu : o.curves) levels.push_back(mandelbrot_height(nu, p.sigma));
+  PolylineSet set = marching_squares(hf, levels);
+  if (o.curves_world) {
+    const double k = hf.world_size() / double(hf.width() - 1);
+    for (Vec3& v : set.points) v[0] *= k, v[1] *= k;
+  }
+  write_polylines(set, o.curves_out);
+}
 
 int run(const TerrainOptions& o) {
   ft_terrain_params p = o.p;
   if (!o.size.empty()) parse_size(o.size, p);
+  if (!o.center.empty()) parse_center(o.center, p);
+  if (!o.curves.empty() || !o.curves_out.empty()) {
+    // Refused before the work, not after it.
+    if (p.method != FT_TERRAIN_MANDELBROT) invalid("--curves: curves of equal escape time need --method mandelbrot");
+    if (o.curves.empty() || o.curves_out.empty()) invalid("give both --curves LIST and --curves-out FILE");
+    for (double nu : o.curves) check_finite("--curves value", nu);
+  }
   Heightfield reference;
   if (!o.reference.empty()) {
     reference = read_heightfield(o.reference);
@@ -67,6 +103,7 @@ int run(const TerrainOptions& o) {
   const double seconds = clock.seconds();
   if (!o.out.empty()) write_heightfield(hf, o.out);
   if (!o.pov.empty()) pov::write_terrain_scene(hf, o.pov);  // PNG beside it
+  if (!o.curves_out.empty()) write_escape_curves(o, p, hf);
   if (o.stats) {
     const HeightStats s = hf.stats();
     nlohmann::json j = {{"seconds", seconds}, {"width", hf.width()}, {"height", hf.height()},
@@ -88,10 +125,10 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     auto& p = o->p;
                     app.add_option("--method", p.method,
                                    "terrain method: midpoint and additions make (2^levels + 1)^2 grids; fbm, "
-                                   "spectral and interpolated any --size")
+                                   "spectral, interpolated and mandelbrot any --size")
                         ->transform(choice(kMethods))->default_str(name_of(kMethods, p.method));
                     app.add_option("--size", o->size,
-                                   "fbm/spectral/interpolated: N (square) or WxH samples, 2..65536 per side "
+                                   "fbm/spectral/interpolated/mandelbrot: N (square) or WxH samples, 2..65536 per side "
                                    "[default: 513]");
                     app.add_option("--levels", p.levels, "refinement steps n: (2^n + 1)^2 samples")
                         ->check(CLI::Range(1, 15))->capture_default_str();
@@ -125,6 +162,30 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                         ->capture_default_str();
                     app.add_option("--warp", p.warp, "fbm: domain-warp strength in base cells, 0 (off)..64")
                         ->capture_default_str();
+                    app.add_option("--center", o->center,
+                                   "mandelbrot: centre of the view in the complex plane, X,Y in [-4, 4] "
+                                   "(row 0 is the top) [default: -0.5,0]");
+                    app.add_option("--zoom", p.zoom,
+                                   "mandelbrot: the width spans 4 / zoom of the plane; >= 1e-3, up to where double "
+                                   "precision runs out (about 1e11 at 1025 samples across)")
+                        ->capture_default_str();
+                    app.add_option("--iterations", p.iterations,
+                                   "mandelbrot: maximum iterations, 1..16777216; points that have not escaped are "
+                                   "inside the set, a plateau at the height of this escape time")
+                        ->capture_default_str();
+                    app.add_option("--supersample", p.supersample,
+                                   "mandelbrot: k x k points of the plane averaged per sample, 1..8 (smooths the "
+                                   "boundary, k^2 times the work)")
+                        ->capture_default_str();
+                    app.add_option("--curves", o->curves,
+                                   "mandelbrot: escape times whose level curves (equipotentials) to write, e.g. "
+                                   "2,3,4,6,8")
+                        ->delimiter(',');
+                    app.add_option("--curves-out", o->curves_out,
+                                   "mandelbrot: the --curves polylines as .csv or .json (x = column, y = row, z = "
+                                   "height, as fracterra coastline writes them)");
+                    app.add_flag("--curves-world", o->curves_world,
+                                 "mandelbrot: write the curves' x, y in world units (--world-size across x)");
                     app.add_option("--reference", o->reference,
                                    "reference grid (2^m + 1)^2 as .png, .pgm or .npy; its values survive exactly")
                         ->check(CLI::ExistingFile);

@@ -124,4 +124,81 @@ TEST(CApi, PolylineHandlesRoundTrip) {
   EXPECT_EQ(ft_polylines_create(xyz, radii, 4, bad, 2, &p), FT_ERR_INVALID_ARGUMENT);
 }
 
+TEST(CApi, MandelbrotTerrainAndItsLevelCurves) {
+  ft_terrain_params p;
+  ft_terrain_params_init(&p);
+  EXPECT_EQ(p.center_x, -0.5);
+  EXPECT_EQ(p.center_y, 0.0);
+  EXPECT_EQ(p.zoom, 1.0);
+  EXPECT_EQ(p.iterations, 64);
+  EXPECT_EQ(p.supersample, 2);
+  p.method = FT_TERRAIN_MANDELBROT;
+  p.width = 129, p.height = 97;
+  ft_heightfield* hf = nullptr;
+  ASSERT_EQ(ft_terrain_generate(&p, &hf), FT_OK) << ft_last_error();
+  // c = 0 is sample ((0 - -0.5) / step + 64, 48) with step 4 / 128: inside,
+  // the plateau at the height of escape time 64, above the corner -2.5 + 1.5i.
+  double top = 0;
+  ASSERT_EQ(ft_mandelbrot_level_height(&p, 64.0, &top), FT_OK);
+  EXPECT_EQ(ft_heightfield_data(hf)[48 * 129 + 80], float(top));
+  EXPECT_LT(ft_heightfield_data(hf)[0], float(top));
+  double h3 = 0, h6 = 0;
+  ASSERT_EQ(ft_mandelbrot_level_height(&p, 5.0, &h3), FT_OK);
+  ASSERT_EQ(ft_mandelbrot_level_height(&p, 8.0, &h6), FT_OK);
+  EXPECT_LT(h3, h6);
+  double bad = 1;
+  EXPECT_EQ(ft_mandelbrot_level_height(&p, NAN, &bad), FT_ERR_INVALID_ARGUMENT);
+  const double levels[] = {h3, h6};
+  ft_polylines* curves = nullptr;
+  ASSERT_EQ(ft_level_curves(hf, levels, 2, &curves), FT_OK) << ft_last_error();
+  EXPECT_GE(ft_polylines_line_count(curves), 2);
+  ft_polylines_free(curves);
+  EXPECT_EQ(ft_level_curves(hf, levels, 0, &curves), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(curves, nullptr);
+  const double nan_level[] = {NAN};
+  EXPECT_EQ(ft_level_curves(hf, nan_level, 1, &curves), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("levels[0]"), std::string::npos) << ft_last_error();
+  ft_heightfield_free(hf);
+}
+
+TEST(CApi, MandelbrotBadInputGetsAStatusAndAMessage) {
+  ft_terrain_params p;
+  ft_terrain_params_init(&p);
+  p.method = FT_TERRAIN_MANDELBROT;
+  const struct {
+    const char* field;
+    void (*spoil)(ft_terrain_params&);
+    const char* message;
+  } cases[] = {
+      {"zoom 0", [](ft_terrain_params& q) { q.zoom = 0; }, "zoom must be"},
+      {"zoom -1", [](ft_terrain_params& q) { q.zoom = -1; }, "zoom must be"},
+      {"NaN centre", [](ft_terrain_params& q) { q.center_y = NAN; }, "center_y must be in [-4, 4], got NaN"},
+      {"iterations 0", [](ft_terrain_params& q) { q.iterations = 0; }, "iterations must be in 1..16777216"},
+      {"iterations 2^24 + 1", [](ft_terrain_params& q) { q.iterations = (1 << 24) + 1; }, "iterations"},
+      {"zoom 1e13", [](ft_terrain_params& q) { q.zoom = 1e13; }, "beyond double precision"},
+  };
+  for (const auto& c : cases) {
+    ft_terrain_params q = p;
+    c.spoil(q);
+    ft_heightfield* hf = reinterpret_cast<ft_heightfield*>(0x1);
+    EXPECT_EQ(ft_terrain_generate(&q, &hf), FT_ERR_INVALID_ARGUMENT) << c.field;
+    EXPECT_EQ(hf, nullptr);
+    EXPECT_NE(std::string(ft_last_error()).find(c.message), std::string::npos) << c.field << ": " << ft_last_error();
+  }
+}
+
+TEST(CApi, ABindingBuiltForAbi11GetsTheMandelbrotDefaults) {
+  // ABI 1.2 appended the Mandelbrot fields; a 1.1 caller's struct ends at
+  // world_size and the Mandelbrot view takes its defaults.
+  ft_terrain_params p;
+  ft_terrain_params_init(&p);
+  p.method = FT_TERRAIN_MANDELBROT;
+  p.width = p.height = 33;
+  p.zoom = -1;  // beyond the 1.1 struct: must not be read
+  p.struct_size = offsetof(ft_terrain_params, center_x);
+  ft_heightfield* hf = nullptr;
+  ASSERT_EQ(ft_terrain_generate(&p, &hf), FT_OK) << ft_last_error();
+  ft_heightfield_free(hf);
+}
+
 }  // namespace

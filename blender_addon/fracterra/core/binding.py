@@ -17,7 +17,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 1
-ABI_MINOR_MIN = 1  # ft_terrain_params.world_size arrived in 1.1
+ABI_MINOR_MIN = 2  # ft_terrain_params.world_size arrived in 1.1, the Mandelbrot fields in 1.2
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -61,6 +61,11 @@ class TerrainParams(Structure):
         ("progress_user", c_void_p),
         # ABI 1.1
         ("world_size", c_double),
+        ("center_x", c_double),
+        ("center_y", c_double),
+        ("zoom", c_double),
+        ("iterations", c_int32),
+        ("supersample", c_int32),
     ]
 
 
@@ -243,6 +248,7 @@ SIGNATURES = {
     "ft_terrain_params_init": (c_int32, [POINTER(TerrainParams)]),
     "ft_terrain_generate": (c_int32, [POINTER(TerrainParams), POINTER(_HF)]),
     "ft_terrain_side": (c_int32, [c_int32]),
+    "ft_mandelbrot_level_height": (c_int32, [POINTER(TerrainParams), c_double, POINTER(c_double)]),
     "ft_profile_params_init": (c_int32, [POINTER(ProfileParams)]),
     "ft_profile_generate": (c_int32, [POINTER(ProfileParams), _F32P, c_size_t]),
     "ft_profile_length": (c_int64, [c_int32]),
@@ -253,6 +259,7 @@ SIGNATURES = {
     "ft_hurst_profile": (c_int32, [_F32P, c_size_t, POINTER(HurstParams), POINTER(HurstResult)]),
     "ft_hurst_heightfield": (c_int32, [_HF, POINTER(HurstParams), POINTER(HurstResult)]),
     "ft_coastline": (c_int32, [_HF, c_double, c_int32, POINTER(_PL)]),
+    "ft_level_curves": (c_int32, [_HF, POINTER(c_double), c_size_t, POINTER(_PL)]),
     "ft_pov_scene_params_init": (c_int32, [POINTER(PovSceneParams)]),
     "ft_pov_write_scene": (c_int32, [POINTER(PovSceneParams), c_char_p]),
     "ft_pov_render": (c_int32, [c_char_p, c_char_p, c_int32, c_int32, c_double]),

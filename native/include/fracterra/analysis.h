@@ -69,6 +69,12 @@ FT_API ft_status ft_hurst_heightfield(const ft_heightfield* hf, const ft_hurst_p
 /// NaN samples are refused. Free *out with ft_polylines_free.
 FT_API ft_status ft_coastline(const ft_heightfield* hf, double level, int32_t level_is_quantile,
                               ft_polylines** out);
+/// The level sets at `count` heights `levels` (1..4096 finite values, in any
+/// order), one after another, each as ft_coastline gives it (z = its level):
+/// contour lines, e.g. a Mandelbrot terrain's curves of equal escape time
+/// (ft_mandelbrot_level_height). Free *out with ft_polylines_free.
+FT_API ft_status ft_level_curves(const ft_heightfield* hf, const double* levels, size_t count,
+                                 ft_polylines** out);
 
 /// Parameters of Feder's clouds (seed 001): black below the threshold, above
 /// it grey = ln(e / e_T) / ln(e_max / e_T), e = elevation above the lowest sample.

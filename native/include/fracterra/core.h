@@ -22,7 +22,7 @@ extern "C" {
 /// incompatibly; the minor one when functions or trailing struct fields are
 /// added. Bindings refuse a library whose major number differs from theirs.
 #define FT_ABI_VERSION_MAJOR 1
-#define FT_ABI_VERSION_MINOR 1
+#define FT_ABI_VERSION_MINOR 2
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -35,7 +35,9 @@ enum {
 enum {
   FT_IFS_FERN = 0,   ///< Barnsley's fern, 4 maps, p = 0.01, 0.85, 0.07, 0.07
   FT_IFS_DRAGON = 1, ///< Harter-Heighway dragon, 2 maps (640 x 350 screen units)
-  FT_IFS_KOCH = 2    ///< Koch curve, 4 maps (640 x 350 screen units)
+  FT_IFS_KOCH = 2,   ///< Koch curve, 4 maps (640 x 350 screen units)
+  FT_IFS_SIERPINSKI_GASKET = 3 ///< Sierpinski gasket, 3 maps of ratio 1/2 towards the corners of the
+                               ///< unit equilateral triangle, p = 1/3 each; dimension log 3 / log 2
 };
 
 /// Parameters of ft_polyline_generate. Fill with ft_polyline_params_init,

@@ -17,7 +17,8 @@ enum {
   FT_TERRAIN_ADDITIONS = 1,    ///< Feder/Voss successive random additions, (2^levels + 1)^2
   FT_TERRAIN_FBM = 2,          ///< sum of noise octaves (Quilez), any width x height
   FT_TERRAIN_SPECTRAL = 3,     ///< inverse-FFT spectral synthesis, any width x height, periodic
-  FT_TERRAIN_INTERPOLATED = 4  ///< Saupe's InterpolatedFM, scale factor `lacunarity` per cycle
+  FT_TERRAIN_INTERPOLATED = 4, ///< Saupe's InterpolatedFM, scale factor `lacunarity` per cycle
+  FT_TERRAIN_MANDELBROT = 5    ///< the Mandelbrot set's smooth escape time, any width x height
 };
 
 /// Noise bases for FT_TERRAIN_FBM (ft_terrain_params.basis).
@@ -83,6 +84,18 @@ typedef struct ft_terrain_params {
   /* Added in ABI 1.1 (trailing fields). */
   double world_size;         ///< extent of the terrain along x in scene units (> 0; default 10);
                              ///< y follows the aspect ratio; heights are in the same units
+  /* Added in ABI 1.2: the Mandelbrot set (FT_TERRAIN_MANDELBROT; docs/terrain.md). Heights are
+     sigma (1 - (1 + s)^-1/2), s = log2(1 + 2^nu), nu the continuous escape time (capped at
+     `iterations`); the set itself is the plateau at the cap's height, just below sigma. */
+  double center_x;           ///< real part of the centre of the view, in [-4, 4]; default -0.5
+  double center_y;           ///< imaginary part of the centre (row 0 is the top), in [-4, 4]; default 0
+  double zoom;               ///< the width spans 4 / zoom of the complex plane; >= 1e-3 and at most
+                             ///< where double runs out (neighbouring samples >= 64 ulp apart: about
+                             ///< 1e11 at 1025 samples across); default 1
+  int32_t iterations;        ///< maximum iterations; a point that has not escaped is inside the set;
+                             ///< 1..2^24, default 64 (fewer: a lower wall where slopes meet the set)
+  int32_t supersample;       ///< k x k points of the plane averaged per sample (anti-aliasing the
+                             ///< boundary), 1..8; default 2
 } ft_terrain_params;
 
 /// Fills `p` with the defaults documented above. `p` must not be NULL.
@@ -93,6 +106,11 @@ FT_API ft_status ft_terrain_generate(const ft_terrain_params* p, ft_heightfield*
 /// Samples per side of a midpoint/additions terrain of `levels` levels
 /// (2^levels + 1), or -1 when levels is out of range.
 FT_API int32_t ft_terrain_side(int32_t levels);
+/// The height that FT_TERRAIN_MANDELBROT gives the continuous escape time
+/// `iterations` (nu >= 0; any real) with vertical scale `p->sigma`: contour
+/// the terrain at this height (ft_coastline) to get the set's level curve of
+/// that escape time (an equipotential). Fails on a non-finite `iterations` or a bad sigma.
+FT_API ft_status ft_mandelbrot_level_height(const ft_terrain_params* p, double iterations, double* height);
 
 /// Parameters of ft_profile_generate: Voss 1D midpoint displacement.
 typedef struct ft_profile_params {

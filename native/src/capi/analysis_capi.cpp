@@ -1,3 +1,7 @@
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 #include "analysis/clouds.hpp"
 #include "analysis/hurst.hpp"
 #include "analysis/quantile.hpp"
@@ -104,6 +108,22 @@ FT_API ft_status ft_coastline(const ft_heightfield* hf, double level, int32_t le
     if (spec.quantile) ft::check_range("level (a quantile)", level, 0.0, 1.0);
     auto p = std::make_unique<ft_polylines>();
     p->set = ft::marching_squares(hf->hf, ft::resolve_level(hf->hf, spec));
+    *out = p.release();
+  });
+}
+
+FT_API ft_status ft_level_curves(const ft_heightfield* hf, const double* levels, size_t count,
+                                 ft_polylines** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("heightfield", hf);
+    ft::check_not_null("levels", levels);
+    ft::check_int_range("count (of levels)", int64_t(std::min<size_t>(count, 1u << 20)), 1, 4096);
+    std::vector<double> v(levels, levels + count);
+    for (size_t i = 0; i < count; ++i)
+      if (!std::isfinite(v[i])) ft::invalid("levels[" + std::to_string(i) + "] must be finite, got " + ft::format_number(v[i]));
+    auto p = std::make_unique<ft_polylines>();
+    p->set = ft::marching_squares(hf->hf, v);
     *out = p.release();
   });
 }

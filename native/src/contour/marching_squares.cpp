@@ -163,4 +163,16 @@ ChainKind chain_kind(const PolylineSet& set, int64_t i) {
   return signed_area(set, i) > 0 ? ChainKind::kIsland : ChainKind::kLake;
 }
 
+PolylineSet marching_squares(const Heightfield& hf, const std::vector<double>& levels) {
+  PolylineSet all;
+  for (double level : levels) {
+    const PolylineSet one = marching_squares(hf, level);
+    const int64_t base = all.vertex_count();
+    all.points.insert(all.points.end(), one.points.begin(), one.points.end());
+    all.radii.insert(all.radii.end(), one.radii.begin(), one.radii.end());
+    for (size_t k = 1; k < one.offsets.size(); ++k) all.offsets.push_back(base + one.offsets[k]);
+  }
+  return all;
+}
+
 }  // namespace ft

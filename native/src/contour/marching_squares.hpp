@@ -18,6 +18,8 @@
 // break.
 #pragma once
 
+#include <vector>
+
 #include "core/heightfield.hpp"
 #include "core/polyline_set.hpp"
 
@@ -27,6 +29,9 @@ namespace ft {
 // heightfield smaller than 2 x 2. A level outside the data range (or a
 // constant field) gives an empty set.
 PolylineSet marching_squares(const Heightfield& hf, double level);
+// The level sets at several levels, one after another in the order given
+// (z tells them apart), e.g. the contour lines of a map.
+PolylineSet marching_squares(const Heightfield& hf, const std::vector<double>& levels);
 
 enum class ChainKind { kOpen, kIsland, kLake };
 // Classifies polyline `i` of a marching_squares result.

@@ -22,8 +22,18 @@ std::vector<IfsMap> ifs_preset(int preset) {
               {0.333, 0.0, 0.0, 0.333, 413.333, 200.0, 0.25},
               {0.167, 0.289, -0.289, 0.167, 130.0, 256.0, 0.25},
               {0.167, -0.289, 0.289, 0.167, 403.0, 71.0, 0.25}};
+    case kIfsSierpinskiGasket: {
+      // seed 002: cut the central triangle out of each triangle, for ever;
+      // what is left is three copies of the whole at ratio 1/2, each fixed
+      // at one corner of the triangle (0, 0), (1, 0), (1/2, sqrt(3)/2).
+      const double h = std::sqrt(3.0) / 4.0;  // half the triangle's height
+      return {{0.5, 0.0, 0.0, 0.5, 0.0, 0.0, 1.0 / 3.0},
+              {0.5, 0.0, 0.0, 0.5, 0.5, 0.0, 1.0 / 3.0},
+              {0.5, 0.0, 0.0, 0.5, 0.25, h, 1.0 / 3.0}};
+    }
     default:
-      invalid("ifs_preset must be FT_IFS_FERN (0), FT_IFS_DRAGON (1) or FT_IFS_KOCH (2), got " +
+      invalid("ifs_preset must be FT_IFS_FERN (0), FT_IFS_DRAGON (1), FT_IFS_KOCH (2) or "
+              "FT_IFS_SIERPINSKI_GASKET (3), got " +
               std::to_string(preset));
   }
 }

@@ -2,7 +2,8 @@
 //   x' = a x + b y + e,   y' = c x + d y + f,
 // one chosen at each step with probability p. The tables given in seed 002:
 // Barnsley's fern (4 maps) and the Harter-Heighway dragon and Koch curve
-// coded on a 640 x 350 screen (2 and 4 maps, equal probabilities).
+// coded on a 640 x 350 screen (2 and 4 maps, equal probabilities); and the
+// Sierpinski gasket of its text (3 maps of ratio 1/2, D = log 3 / log 2).
 #pragma once
 
 #include <cstdint>
@@ -20,7 +21,7 @@ struct IfsMap {
 // The built-in tables. Their values are the ABI's FT_IFS_* (polyline.cpp
 // checks this at compile time), so ft_polyline_params.ifs_preset passes on
 // unchanged while this algorithm does not include the public header.
-enum IfsPreset : int32_t { kIfsFern = 0, kIfsDragon = 1, kIfsKoch = 2 };
+enum IfsPreset : int32_t { kIfsFern = 0, kIfsDragon = 1, kIfsKoch = 2, kIfsSierpinskiGasket = 3 };
 
 // The table of a preset; throws FT_ERR_INVALID_ARGUMENT for any other value.
 std::vector<IfsMap> ifs_preset(int preset);

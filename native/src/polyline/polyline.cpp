@@ -32,7 +32,8 @@ PolylineSet per_segment(const std::vector<Vec3>& base, int depth, double radius,
 }
 
 // ifs.hpp's preset names carry the ABI's values, so ifs_preset passes through.
-static_assert(int(kIfsFern) == FT_IFS_FERN && int(kIfsDragon) == FT_IFS_DRAGON && int(kIfsKoch) == FT_IFS_KOCH);
+static_assert(int(kIfsFern) == FT_IFS_FERN && int(kIfsDragon) == FT_IFS_DRAGON && int(kIfsKoch) == FT_IFS_KOCH &&
+              int(kIfsSierpinskiGasket) == FT_IFS_SIERPINSKI_GASKET);
 
 }  // namespace
 
@@ -89,7 +90,7 @@ void validate_polyline_params(const ft_polyline_params& p) {
     if (p.ifs_table) {
       check_int_range("ifs_maps", p.ifs_maps, 1, 64);
     } else {
-      check_int_range("ifs_preset", p.ifs_preset, FT_IFS_FERN, FT_IFS_KOCH);
+      check_int_range("ifs_preset", p.ifs_preset, FT_IFS_FERN, FT_IFS_SIERPINSKI_GASKET);
     }
     check_int_range("ifs_points", p.ifs_points, 1, int64_t(1) << 28);
     return;

@@ -8,6 +8,7 @@
 #include "noise/fbm.hpp"
 #include "terrain/diamond_square.hpp"
 #include "terrain/interpolated.hpp"
+#include "terrain/mandelbrot.hpp"
 #include "terrain/profile.hpp"
 #include "terrain/spectral_synthesis.hpp"
 
@@ -62,6 +63,15 @@ FbmConfig fbm_config(const ft_terrain_params& p) {
   return c;
 }
 
+MandelbrotConfig mandelbrot_config(const ft_terrain_params& p) {
+  MandelbrotConfig c;
+  c.width = p.width, c.height = p.height, c.center_x = p.center_x, c.center_y = p.center_y;
+  c.zoom = p.zoom, c.iterations = p.iterations, c.sigma = p.sigma, c.threads = p.threads;
+  c.supersample = p.supersample;
+  c.progress = Progress(p.progress, p.progress_user);
+  return c;
+}
+
 }  // namespace
 
 int dyadic_levels(int64_t size) {
@@ -98,12 +108,17 @@ ft_terrain_params default_terrain_params() {
   p.rotation = 0.5;
   p.warp = 0.0;
   p.world_size = 10.0;
+  p.center_x = -0.5;
+  p.center_y = 0.0;
+  p.zoom = 1.0;
+  p.iterations = 64;
+  p.supersample = 2;
   return p;
 }
 
 void validate_terrain_params(const ft_terrain_params& p) {
   check_struct_size(p.struct_size, sizeof(ft_terrain_params), "ft_terrain_params");
-  check_int_range("method", p.method, FT_TERRAIN_MIDPOINT, FT_TERRAIN_INTERPOLATED);
+  check_int_range("method", p.method, FT_TERRAIN_MIDPOINT, FT_TERRAIN_MANDELBROT);
   check_range("hurst", p.hurst, 0.0, 1.0);
   check_positive("sigma", p.sigma);
   check_positive("world_size", p.world_size);
@@ -124,6 +139,7 @@ void validate_terrain_params(const ft_terrain_params& p) {
     if (p.reference) invalid("reference points are supported by the midpoint and additions methods only");
     if (p.method == FT_TERRAIN_FBM) validate_fbm(fbm_config(p));
     if (p.method == FT_TERRAIN_INTERPOLATED) check_interpolated_lacunarity(p.lacunarity);
+    if (p.method == FT_TERRAIN_MANDELBROT) validate_mandelbrot(mandelbrot_config(p));
   }
 }
 
@@ -159,6 +175,11 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
     case FT_TERRAIN_INTERPOLATED:
       return interpolated_fm({p.width, p.height, p.lacunarity, p.hurst, p.sigma, p.seed, p.periodic != 0,
                               p.threads, Progress(p.progress, p.progress_user)});
+    case FT_TERRAIN_MANDELBROT: {
+      Heightfield hf = mandelbrot(mandelbrot_config(p));
+      hf.set_world_size(p.world_size);
+      return hf;
+    }
   }
   // validate_terrain_params admits only the methods above: reaching here means a
   // method was added to the range check without a generator.
