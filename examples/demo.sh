@@ -37,6 +37,11 @@ step "POV-Ray: height_field + coastline sweeps + lightning, rendered"
   --polyline "$out/coast.csv" --kind coastline --polyline "$out/bolt.csv" --kind lightning \
   --radius-from-file --pov "$out/scene.pov" --render "$out/scene.png" --width 800 --height 600
 
+step "the Mandelbrot set as a terrain (seed 002) and its curves of equal escape time"
+"$ft" terrain --method mandelbrot --size 513x385 --center -0.65,0 --zoom 0.85 --iterations 40 --sigma 2 \
+  --out "$out/mandelbrot.png" --curves 2,3,4,6,8 --curves-out "$out/mandelbrot-curves.csv" --stats
+"$ft" relief --in "$out/mandelbrot.png" --out "$out/mandelbrot-relief.png"
+
 step "OpenSubdiv: a fractal rock from a cube"
 "$ft" fractalize --in "$root/examples/meshes/cube.obj" --levels 6 --hurst 0.75 --sigma 0.25 \
   --seed 7 --out "$out/rock.obj"

@@ -110,7 +110,7 @@ class TerrainAddTest(unittest.TestCase):
         self.assertFalse(obj.data.polygons[0].use_smooth)
 
     def test_noise_methods_give_the_library_heights(self):
-        for method in ("FBM", "SPECTRAL", "INTERPOLATED"):
+        for method in ("FBM", "SPECTRAL", "INTERPOLATED", "MANDELBROT"):
             obj = add_terrain(method=method, width=40, height=24, seed=5)
             self.assertEqual(len(obj.data.vertices), 40 * 24)
             self.assertEqual(coords(obj.data)[2::3].tobytes(),
@@ -230,7 +230,7 @@ class DrawTest(unittest.TestCase):
         clear_scene()
         obj = add_terrain(levels=3)
         settings = obj.fracterra_terrain
-        for method in ("MIDPOINT", "ADDITIONS", "FBM", "SPECTRAL", "INTERPOLATED"):
+        for method in ("MIDPOINT", "ADDITIONS", "FBM", "SPECTRAL", "INTERPOLATED", "MANDELBROT"):
             for source in ("NONE", "OBJECT", "IMAGE"):
                 settings.method, settings.reference_source = method, source
                 log = []
@@ -366,6 +366,10 @@ class PolylineTest(unittest.TestCase):
         ifs = self.add(method="IFS", ifs_points=500, seed=1)
         self.assertEqual(ifs.type, "MESH")
         self.assertEqual(len(ifs.data.vertices), 500)
+        gasket = self.add(method="IFS", ifs_preset="SIERPINSKI_GASKET", ifs_points=300, seed=1)
+        xs = [v.co.x for v in gasket.data.vertices]
+        self.assertEqual(len(xs), 300)
+        self.assertTrue(min(xs) >= -1e-6 and max(xs) <= 1 + 1e-6)  # the unit triangle
 
     def test_active_curve_is_the_base_and_its_nodes_survive(self):
         curve = bpy.data.curves.new("base", "CURVE")

@@ -33,6 +33,16 @@ if(FT_BLENDER)
   set_tests_properties(blender_example_scene PROPERTIES LABELS blender TIMEOUT 120)
 endif()
 
+# The Mandelbrot example: terrain, level curves through the coastline operator, a tiny render.
+if(FT_BLENDER)
+  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_example_mandelbrot)
+  add_test(NAME blender_example_mandelbrot
+    COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch} FRACTERRA_LIBRARY=$<TARGET_FILE:fracterra>
+            ${FT_BLENDER} -b --factory-startup --python ${PROJECT_SOURCE_DIR}/examples/21_blender_mandelbrot.py
+            -- --out ${CMAKE_CURRENT_BINARY_DIR}/example_mandelbrot --samples-x 65 --resolution 64x48 --samples 1)
+  set_tests_properties(blender_example_mandelbrot PROPERTIES LABELS blender TIMEOUT 120)
+endif()
+
 # Undo needs a window (background Blender keeps no undo stack): run it under Xvfb.
 find_program(FT_XVFB_RUN xvfb-run)
 if(FT_BLENDER AND FT_XVFB_RUN)

@@ -177,7 +177,7 @@ TEST(Fpl, SameSeedSameBitsOtherSeedOtherLine) {
 }
 
 TEST(Fpl, GoldenChecksumsPinTheOutput) {
-  // Points, radii and line offsets of the FPL generators (see golden.hpp).
+  // Points, radii and line offsets of the FPL generators and the profile method (see golden.hpp).
   struct Case {
     int method, rng;
     double branch_prob;
@@ -185,7 +185,8 @@ TEST(Fpl, GoldenChecksumsPinTheOutput) {
   };
   const Case cases[] = {{FT_POLYLINE_FPL, FT_POLYLINE_RNG_UNIFORM, 0.0, 0x328482491f34dd36ULL},
                         {FT_POLYLINE_FPL, FT_POLYLINE_RNG_NORMAL, 0.0, 0x2e0723d9703586dfULL},
-                        {FT_POLYLINE_FPL3D, FT_POLYLINE_RNG_NORMAL, 0.3, 0x1cb25f23c99d3f10ULL}};
+                        {FT_POLYLINE_FPL3D, FT_POLYLINE_RNG_NORMAL, 0.3, 0x1cb25f23c99d3f10ULL},
+                        {FT_POLYLINE_PROFILE, FT_POLYLINE_RNG_UNIFORM, 0.0, 0xc604ca3107a79f18ULL}};
   for (const Case& c : cases) {
     ft_polyline_params p = fpl(0.2, 10, 2024);
     p.method = c.method, p.rng = c.rng, p.branch_prob = c.branch_prob;

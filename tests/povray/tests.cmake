@@ -13,3 +13,11 @@ if(FT_POVRAY_EXE)
 else()
   message(WARNING "povray not found: the POV-Ray tests are skipped (apt-get install povray povray-includes)")
 endif()
+
+# examples/13_mandelbrot.sh end to end (terrain, curves, scene, a tiny render).
+if(FT_POVRAY_EXE)
+  add_test(NAME povray_example_mandelbrot
+    COMMAND ${CMAKE_COMMAND} -E env FRACTERRA=$<TARGET_FILE:fracterra_cli> WIDTH=96 HEIGHT=72
+            bash ${PROJECT_SOURCE_DIR}/examples/13_mandelbrot.sh ${CMAKE_CURRENT_BINARY_DIR}/example_mandelbrot)
+  set_tests_properties(povray_example_mandelbrot PROPERTIES LABELS povray TIMEOUT 120)
+endif()

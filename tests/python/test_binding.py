@@ -126,6 +126,15 @@ def test_every_method_generates_its_grid(core):
             assert hf.stats()["std"] > 0, ident
 
 
+def test_mandelbrot_view_and_its_level_height(core):
+    # The default view holds c = 0 (inside: the plateau, the highest sample)
+    # and the corner -2.5 + 2i (outside, lower).
+    with core.generate_terrain(method="MANDELBROT", width=65, height=65, zoom=1.0, iterations=40) as hf:
+        h = hf.to_array()
+        assert h[32 * 65 + 40] == max(h)  # c = 0: column 32 + 0.5 / (4 / 64) = 40
+        assert h[0] < h[32 * 65 + 40]
+
+
 def test_reference_values_survive_at_their_nodes(core):
     ref = [float(i % 7) - 3.0 for i in range(25)]  # 5 x 5 = levels 2 reference
     with core.generate_terrain(levels=4, seed=5, reference=(5, ref)) as hf:

@@ -25,7 +25,8 @@ def draw_settings(layout, data, show_reference_pickers=True):
         sub.prop(data, "height")
     sub = col.column(align=True)
     for name in ("hurst", "sigma", "seed", "periodic"):
-        sub.prop(data, name)
+        if params.is_used(params.PARAMS_BY_NAME[name], method):
+            sub.prop(data, name)
     sub = col.column(align=True)
     sub.prop(data, "world_size")
     row = sub.row(heading="Sea Level", align=True)
@@ -41,6 +42,11 @@ def draw_settings(layout, data, show_reference_pickers=True):
             box.prop(data, name)
     elif method == "INTERPOLATED":
         col.prop(data, "lacunarity")
+    elif method == "MANDELBROT":
+        box = col.box().column(align=True)
+        box.label(text="Mandelbrot Set")
+        for name in ("center_x", "center_y", "zoom", "iterations", "supersample"):
+            box.prop(data, name)
     if method in params.DYADIC_METHODS:
         box = col.box().column(align=True)
         box.prop(data, "reference_source")

@@ -18,6 +18,7 @@ METHODS = (
     ("FBM", "fBm Noise", "Sum of noise octaves with gain 2^-H (Quilez), any resolution", 2),
     ("SPECTRAL", "Spectral", "Inverse-FFT spectral synthesis, any resolution, tiles seamlessly", 3),
     ("INTERPOLATED", "Interpolated", "Saupe's InterpolatedFM: scale shrinks by 1/lacunarity per cycle", 4),
+    ("MANDELBROT", "Mandelbrot", "The Mandelbrot set: smooth escape time of z <- z^2 + c, the set a plateau", 5),
 )
 DYADIC_METHODS = {"MIDPOINT", "ADDITIONS"}
 BASES = (
@@ -75,7 +76,9 @@ class Param:
 
 
 _NOISE = frozenset({"FBM"})
-_FREE = frozenset({"FBM", "SPECTRAL", "INTERPOLATED"})
+_FREE = frozenset({"FBM", "SPECTRAL", "INTERPOLATED", "MANDELBROT"})
+_MANDELBROT = frozenset({"MANDELBROT"})
+_RANDOM_TERRAIN = frozenset({"MIDPOINT", "ADDITIONS", "FBM", "SPECTRAL", "INTERPOLATED"})
 _DYADIC = frozenset(DYADIC_METHODS)
 
 TERRAIN_PARAMS = (
@@ -90,14 +93,14 @@ TERRAIN_PARAMS = (
           min=2, max=8193, field="height", methods=_FREE, geometry=True),
     Param("hurst", "float", 0.8, "Hurst H",
           "Hurst exponent: 0 is rough (fractal dimension 3), 1 is smooth (dimension 2)",
-          min=0.0, max=1.0, subtype="FACTOR", field="hurst", precision=3),
+          min=0.0, max=1.0, subtype="FACTOR", field="hurst", precision=3, methods=_RANDOM_TERRAIN),
     Param("sigma", "float", 1.0, "Sigma",
           "Vertical scale: standard deviation of the first displacement, in scene units",
           min=1e-6, max=1e6, soft_max=100.0, subtype="DISTANCE", unit="LENGTH", field="sigma"),
     Param("seed", "int", 1, "Seed", "Random seed: the same seed gives the same terrain on every machine",
-          min=0, max=2**31 - 1, field="seed"),
+          min=0, max=2**31 - 1, field="seed", methods=_RANDOM_TERRAIN),
     Param("periodic", "bool", False, "Periodic", "Wrap-around neighbours: the terrain tiles seamlessly",
-          field="periodic"),
+          field="periodic", methods=_RANDOM_TERRAIN),
     Param("world_size", "float", 20.0, "World Size", "Extent of the terrain along X in scene units "
           "(Y follows from the sample spacing)", min=1e-4, max=1e7, soft_max=10000.0,
           subtype="DISTANCE", unit="LENGTH", field="world_size"),
@@ -124,6 +127,19 @@ TERRAIN_PARAMS = (
           min=-math.pi, max=math.pi, subtype="ANGLE", unit="ROTATION", field="rotation", methods=_NOISE),
     Param("warp", "float", 0.0, "Warp", "Domain-warp strength (0 = off)", min=0.0, max=10.0,
           field="warp", methods=_NOISE),
+    # The Mandelbrot set (seed 002).
+    Param("center_x", "float", -0.5, "Center X", "Real part of the view's centre in the complex plane",
+          min=-4.0, max=4.0, soft_min=-2.0, soft_max=1.0, field="center_x", precision=6, methods=_MANDELBROT),
+    Param("center_y", "float", 0.0, "Center Y", "Imaginary part of the view's centre", min=-4.0, max=4.0,
+          soft_min=-1.5, soft_max=1.5, field="center_y", precision=6, methods=_MANDELBROT),
+    Param("zoom", "float", 1.0, "Zoom", "The width spans 4 / zoom of the plane; refused beyond double "
+          "precision (about 1e11 at 1025 samples across)", min=1e-3, max=1e15, soft_min=0.5, soft_max=1e6,
+          field="zoom", methods=_MANDELBROT),
+    Param("iterations", "int", 64, "Iterations", "Maximum iterations: points that have not escaped are the "
+          "set, a plateau; fewer make a lower wall where the slopes meet it", min=1, max=2**24,
+          soft_max=4096, field="iterations", methods=_MANDELBROT),
+    Param("supersample", "int", 2, "Supersample", "k x k points averaged per vertex (smooths the boundary; "
+          "k^2 times the work)", min=1, max=8, field="supersample", methods=_MANDELBROT),
     # Reference points (midpoint and additions).
     Param("reference_source", "enum", "NONE", "Reference", "Coarse heights the terrain must pass through",
           items=REFERENCE_SOURCES, methods=_DYADIC),
@@ -195,6 +211,7 @@ IFS_PRESETS = (
     ("FERN", "Fern", "Barnsley's fern", 0),
     ("DRAGON", "Dragon", "Harter-Heighway dragon", 1),
     ("KOCH", "Koch", "Koch curve", 2),
+    ("SIERPINSKI_GASKET", "Sierpinski Gasket", "Three maps of ratio 1/2 (dimension log 3 / log 2)", 3),
 )
 BASE_SOURCES = (
     ("POINTS", "Two Points", "From Start to End", 0),

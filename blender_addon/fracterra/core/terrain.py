@@ -109,6 +109,16 @@ def terrain_struct(values=None, **overrides):
     return p
 
 
+def mandelbrot_level_height(nu, values=None, **overrides):
+    """The height at which a Mandelbrot terrain of these settings has its
+    curve of escape time `nu` (an equipotential): contour it there."""
+    lib = library()
+    p = terrain_struct(values, **overrides)
+    out = c_double()
+    lib.check(lib.ft_mandelbrot_level_height(byref(p), float(nu), byref(out)))
+    return out.value
+
+
 def generate_terrain(values=None, reference=None, progress=None, threads=0, **overrides):
     """Generates a terrain; returns a Heightfield (close it, or use `with`).
 

@@ -8,6 +8,7 @@
 #include "polyline/classic_curves.hpp"
 #include "polyline/ifs.hpp"
 #include "polyline/lightning.hpp"
+#include "polyline/profile_curve.hpp"
 #include "terrain/profile.hpp"
 
 namespace ft {
@@ -28,33 +29,6 @@ PolylineSet per_segment(const std::vector<Vec3>& base, int depth, double radius,
   for (size_t i = 0; i + 1 < base.size(); ++i) draw(base[i], base[i + 1], s.points.data() + int64_t(i) * (per - 1), i);
   s.end_line();
   return s;
-}
-
-uint64_t mix_seed(uint64_t seed, uint64_t i) {
-  uint64_t x = seed ^ (i * 0x9e3779b97f4a7c15ULL);
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  return x ^ (x >> 31);
-}
-
-// The Voss profile of seed 000 across a -> b: its linear trend removed so
-// both nodes survive, heights in units of |ab| to the left of ab.
-void profile_segment(const ft_polyline_params& p, const Vec3& a, const Vec3& b, Vec3* out, size_t i) {
-  const int64_t n = int64_t(1) << p.depth;
-  std::vector<float> x(size_t(n) + 1);
-  ProfileConfig c;
-  c.levels = p.depth;
-  c.hurst = p.hurst;
-  c.sigma = p.spread;
-  c.seed = mix_seed(p.seed, i);
-  midpoint_profile(c, x.data());
-  const double vx = b[0] - a[0], vy = b[1] - a[1], vz = b[2] - a[2];
-  for (int64_t k = 0; k <= n; ++k) {
-    const double t = double(k) / double(n);
-    const double h = double(x[size_t(k)]) - double(x[0]) - t * (double(x[size_t(n)]) - double(x[0]));
-    out[k] = {a[0] + t * vx - h * vy, a[1] + t * vy + h * vx, a[2] + t * vz};
-  }
-  out[0] = a;
-  out[n] = b;
 }
 
 // ifs.hpp's preset names carry the ABI's values, so ifs_preset passes through.
@@ -211,8 +185,10 @@ PolylineSet generate_polylines(const ft_polyline_params& p) {
       return per_segment(base, p.depth, p.radius, arrowhead_vertex_count,
                          [&](const Vec3& a, const Vec3& b, Vec3* out, size_t) { arrowhead_curve(a, b, p.depth, out); });
     case FT_POLYLINE_PROFILE:
-      return per_segment(base, p.depth, p.radius, [](int d) { return (int64_t(1) << d) + 1; },
-                         [&](const Vec3& a, const Vec3& b, Vec3* out, size_t i) { profile_segment(p, a, b, out, i); });
+      return per_segment(base, p.depth, p.radius, profile_vertex_count,
+                         [&](const Vec3& a, const Vec3& b, Vec3* out, size_t i) {
+                           profile_curve(a, b, {p.depth, p.hurst, p.spread, p.seed}, i, out);
+                         });
     default: {
       BranchConfig b;
       b.prob = p.branch_prob;

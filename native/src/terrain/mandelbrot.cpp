@@ -44,6 +44,13 @@ inline bool in_cardioid_or_bulb(double cx, double cy) {
   return xb * xb + y2 <= 0.0625;
 }
 
+// Three significant digits: the sizes in the precision message.
+std::string short_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
 // ulp(v) for v > 0: the spacing of doubles at v.
 double ulp_of(double v) { return std::ldexp(1.0, std::ilogb(v) - 52); }
 
@@ -112,13 +119,12 @@ void validate_mandelbrot(const MandelbrotConfig& c) {
   const double scale = coordinate_scale(c.width, c.height, c.center_x, c.center_y, step);
   const double need = kMandelbrotMinUlps * ulp_of(scale);
   if (step < need) {
-    char limit[64];
-    std::snprintf(limit, sizeof limit, "%.3g", mandelbrot_max_zoom(c.width, c.center_x, c.center_y));
-    invalid("zoom " + format_number(c.zoom) + " is beyond double precision: " + std::to_string(c.width) +
-            " samples across put neighbours " + format_number(step) + " apart, but near |c| = " +
-            format_number(scale) + " doubles are " + format_number(ulp_of(scale)) +
-            " apart and samples need at least 64 of them between neighbours (" + format_number(need) +
-            "); for this width and centre the zoom can reach " + limit +
+    invalid("zoom " + short_number(c.zoom) + " is beyond double precision: " + std::to_string(c.width) +
+            " samples across put neighbours " + short_number(step) + " apart, but near |c| = " +
+            short_number(scale) + " doubles are " + short_number(ulp_of(scale)) +
+            " apart and samples need at least 64 of them between neighbours (" + short_number(need) +
+            "); for this width and centre the zoom can reach " +
+            short_number(mandelbrot_max_zoom(c.width, c.center_x, c.center_y)) +
             " (fewer samples across allow a deeper zoom)");
   }
 }
