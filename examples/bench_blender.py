@@ -5,7 +5,8 @@
 Both add-ons build a grid of about a million vertices (ours 1025^2 at levels
 10, A.N.T. 1024^2 subdivisions), then regenerate it from new settings (ours:
 Regenerate, which rewrites heights in place; A.N.T.: its Refresh operator).
-Prints the best of `--repeat` runs of each and the ratios, as wall-clock
+Prints the best and the median of `--repeat` runs of each and the ratios of
+the medians, as wall-clock
 time and as the process's CPU time (on a machine shared with other work the
 CPU time is the steadier figure; with --threads 1 it is close to the wall time
 of an idle machine). Uses the installed
@@ -97,11 +98,11 @@ def bench_ant(args):
 def line(name, vertices, times):
     wall, cpu = [t[0] for t in times], [t[1] for t in times]
     return (f"{name:<34} {vertices:>9,d} verts  wall best {min(wall):7.3f} s median {statistics.median(wall):7.3f} s"
-            f"  cpu best {min(cpu):7.3f} s")
+            f"  cpu best {min(cpu):7.3f} s median {statistics.median(cpu):7.3f} s")
 
 
-def best(times, i):
-    return min(t[i] for t in times)
+def median(times, i):
+    return statistics.median(t[i] for t in times)
 
 
 def main():
@@ -127,10 +128,10 @@ def main():
         av, aadd, arefresh = bench_ant(args)
         rows += [line("A.N.T. Landscape add", av, aadd), line("A.N.T. Landscape Refresh", av, arefresh)]
         for what, ours, theirs in (("add", add, aadd), ("refresh", regen, arefresh)):
-            rows.append(f"ratio {what:<8} A.N.T. / fracterra = {best(theirs, 0) / best(ours, 0):6.1f}x wall, "
-                        f"{best(theirs, 1) / best(ours, 1):6.1f}x cpu")
+            rows.append(f"ratio {what:<8} A.N.T. / fracterra = {median(theirs, 0) / median(ours, 0):6.1f}x wall, "
+                        f"{median(theirs, 1) / median(ours, 1):6.1f}x cpu (medians)")
     print(f"bench: Blender {bpy.app.version_string}, {status}, threads {threads or 'all'}, "
-          f"best of {args.repeat}")
+          f"{args.repeat} runs each")
     for r in rows:
         print("bench:", r)
 

@@ -35,7 +35,7 @@ top="$(python3 -c "print(f'{$px + 1.5},{$py - 1.0},{$pz + 5.0}')")"
 step "POV-Ray: height_field + coastline sweeps + lightning, rendered"
 "$ft" scene --terrain "$out/terrain.png" --vertical-scale "$vscale" --sea-fraction 0.6 \
   --polyline "$out/coast.csv" --kind coastline --polyline "$out/bolt.csv" --kind lightning \
-  --pov "$out/scene.pov" --render "$out/scene.png" --width 800 --height 600
+  --radius-from-file --pov "$out/scene.pov" --render "$out/scene.png" --width 800 --height 600
 
 step "the Mandelbrot set as a terrain (seed 002) and its curves of equal escape time"
 "$ft" terrain --method mandelbrot --size 513x385 --center -0.65,0 --zoom 0.85 --iterations 40 --sigma 2 \

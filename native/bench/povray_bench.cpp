@@ -3,16 +3,19 @@
 //      segments per piece) against one sweep, traced at 320 x 240;
 //   2. a 1025^2 terrain as height_field (16-bit PNG) against mesh2 (what
 //      Blender's POV-Ray exporter writes): file size and parse time.
-// Times are POV-Ray's own "Parse Time" / "Trace Time" figures.
-// Usage: povray_bench [folder]   (default: a temporary folder, removed after)
+// Times are POV-Ray's own "Parse Time" / "Trace Time" figures, each the
+// median of --repetitions renders (default 3) in this one run.
+// Usage: povray_bench [--repetitions N] [folder]   (default: a temporary folder, removed after)
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "core/rng.hpp"
 #include "io/atomic_file.hpp"
@@ -31,7 +34,9 @@ struct Times {
   double parse = 0, trace = 0;
 };
 
-Times render(const std::string& scene, int w, int h) {
+int g_repetitions = 3;
+
+Times render_once(const std::string& scene, int w, int h) {
   pov::RenderOptions o;
   o.width = w;
   o.height = h;
@@ -42,6 +47,20 @@ Times render(const std::string& scene, int w, int h) {
   for (auto it = std::sregex_iterator(r.messages.begin(), r.messages.end(), re); it != std::sregex_iterator(); ++it)
     ((*it)[1] == "Parse" ? t.parse : t.trace) = std::stod((*it)[2]);
   return t;
+}
+
+// The median parse and trace times of g_repetitions renders.
+Times render(const std::string& scene, int w, int h) {
+  std::vector<double> parse, trace;
+  for (int i = 0; i < g_repetitions; ++i) {
+    const Times t = render_once(scene, w, h);
+    parse.push_back(t.parse), trace.push_back(t.trace);
+  }
+  auto median = [](std::vector<double>& v) {
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  };
+  return {median(parse), median(trace)};
 }
 
 // A fractal-looking polyline across the unit square: orthogonal midpoint
@@ -96,9 +115,18 @@ std::string mesh2(const Heightfield& hf, const pov::TerrainPlacement& pl) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool temp = argc < 2;
+  std::string folder;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("--repetitions=", 0) == 0) g_repetitions = std::max(1, std::atoi(a.c_str() + 14));
+    else if (a == "--repetitions" && i + 1 < argc) g_repetitions = std::max(1, std::atoi(argv[++i]));
+    else if (a.rfind("--benchmark_repetitions=", 0) == 0) g_repetitions = std::max(1, std::atoi(a.c_str() + 24));
+    else folder = a;
+  }
+  const bool temp = folder.empty();
   const fs::path dir =
-      temp ? fs::temp_directory_path() / ("ft_povray_bench_" + std::to_string(::getpid())) : fs::path(argv[1]);
+      temp ? fs::temp_directory_path() / ("ft_povray_bench_" + std::to_string(::getpid())) : fs::path(folder);
+  std::printf("median of %d renders each\n", g_repetitions);
   fs::create_directories(dir);
   try {
     std::printf("sphere_sweep: one polyline, radius 0.002, traced at 320x240 (no anti-aliasing)\n");

@@ -1,21 +1,18 @@
 // fracterra analyze: measure H and D of a heightfield, a profile or a set of
 // polylines, print a JSON report, and optionally plot the log-log fits.
 #include <cmath>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "analysis/box_counting.hpp"
 #include "analysis/hurst.hpp"
+#include "analysis/hurst_choice.hpp"
 #include "analysis/polyline_report.hpp"
 #include "analysis/quantile.hpp"
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/plot_writer.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
@@ -58,8 +55,6 @@ json estimate_json(const HurstEstimate& e) {
   return j;
 }
 
-bool dyadic(int64_t n) { return n >= 3 && ((n - 1) & (n - 2)) == 0; }
-
 // Every estimator on a profile (surface = nullptr) or a surface. A method
 // that cannot run on this input (band too narrow, ...) reports its error.
 json hurst_report(const float* profile, size_t n, const Heightfield* surface, const AnalyzeCli& c,
@@ -79,25 +74,19 @@ json hurst_report(const float* profile, size_t n, const Heightfield* surface, co
     o.method = m;
     run(hurst_method_name(m), o);
   }
-  // The recommendation: the dyadic-aligned variogram on 2^n + 1 grids (exact
-  // for the midpoint and additions generators, which build those grids);
-  // otherwise the spectral slope when there are >= 256 samples (5 octaves in
-  // its default band): on spectral-synthesis fields the plain variogram's
-  // small lags see the spectrum's cut-off at Nyquist and read H = 0.3 as
-  // 0.38; below that the plain variogram. The transect median uses the
-  // aligned variogram on dyadic grids, the plain one otherwise.
-  const bool grid = surface ? dyadic(surface->width()) && dyadic(surface->height()) : dyadic(int64_t(n));
-  const int64_t shortest = surface ? std::min(surface->width(), surface->height()) : int64_t(n);
+  // The recommendation is the library's (FT_HURST_AUTO), so Blender's measure
+  // operator reports the same H. The transect median uses the aligned
+  // variogram on dyadic grids, the plain one otherwise.
+  const HurstChoice choice = surface ? choose_hurst_method(surface->width(), surface->height())
+                                     : choose_hurst_method(int64_t(n), 1);
   if (surface) {
     HurstOptions o = c.band;
-    o.method = grid ? HurstMethod::kVariogramAligned : HurstMethod::kVariogram;
+    o.method = choice.reason == HurstChoiceReason::kDyadicGrid ? HurstMethod::kVariogramAligned
+                                                                : HurstMethod::kVariogram;
     o.transects = true;
     run("transect_median", o);
   }
-  std::string pick = c.method != "auto" ? c.method
-                     : grid             ? "variogram_aligned"
-                     : shortest >= 256  ? "spectral"
-                                        : "variogram";
+  const std::string pick = c.method != "auto" ? c.method : hurst_method_name(choice.method);
   if (!methods.contains(pick)) invalid("--method '" + pick + "' is not one of the estimators run on this input");
   json report;
   if (methods[pick].contains("error")) {
@@ -106,6 +95,7 @@ json hurst_report(const float* profile, size_t n, const Heightfield* surface, co
     report["hurst"] = methods[pick]["hurst"], report["dimension"] = methods[pick]["dimension"];
   }
   report["recommended"] = pick;
+  if (c.method == "auto") report["recommended_because"] = choice.why;
   report["methods"] = methods;
   return report;
 }
@@ -170,30 +160,6 @@ SvgPanel box_panel(const std::string& title, const std::vector<double>& sizes, c
   char label[96];
   std::snprintf(label, sizeof label, "D = %.3f +- %.3f", dimension, std_error);
   return fit_panel(title, "box size", "boxes hit N", x, y, -dimension, my + dimension * mx, label);
-}
-
-// .svg directly; .png through rsvg-convert (Debian librsvg2-bin), written to
-// a temporary name and renamed, like every fracterra file.
-void write_plot(const std::string& path, const SvgFigure& fig) {
-  const std::string ext = extension_of(path);
-  if (ext == ".svg") return write_svg(path, fig);
-  if (ext != ".png") invalid("--plot '" + path + "': use a .svg or .png file name");
-  const std::string svg = path + ".tmp.svg", png = path + ".tmp.png";
-  write_svg(svg, fig);
-  const char* argv[] = {"rsvg-convert", "-b", "white", "-o", png.c_str(), svg.c_str(), nullptr};
-  pid_t pid;
-  int status = -1;
-  const int rc = posix_spawnp(&pid, "rsvg-convert", nullptr, nullptr, const_cast<char* const*>(argv), environ);
-  if (rc == 0) waitpid(pid, &status, 0);
-  std::error_code ec;
-  std::filesystem::remove(svg, ec);
-  if (rc != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::filesystem::remove(png, ec);
-    fail(FT_ERR_IO, "--plot '" + path + "': PNG plots need rsvg-convert (Debian package librsvg2-bin); "
-                    "it is missing or failed: write a .svg instead");
-  }
-  std::filesystem::rename(png, path, ec);
-  if (ec) fail(FT_ERR_IO, "--plot '" + path + "': " + ec.message());
 }
 
 int run(const AnalyzeCli& c) {

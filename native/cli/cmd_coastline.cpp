@@ -48,6 +48,17 @@ int run(const CoastlineCli& c) {
   const Heightfield hf = read_heightfield(c.in);
   const double level = resolve_level(hf, parse_level(c.level, "--level"));
   const PolylineSet set = marching_squares(hf, level);
+  if (set.line_count() == 0) {
+    // An empty file would look like a success (it used to be written
+    // without a word): say why there is no coastline, write nothing.
+    const HeightStats s = hf.stats();
+    const std::string range = "[" + format_number(s.min) + ", " + format_number(s.max) + "]";
+    if (level < s.min || level > s.max)
+      invalid("--level " + format_number(level) + " is outside the heights of '" + c.in + "', " + range +
+              ": there is no coastline; give a level inside that range, or a quantile such as q0.5");
+    invalid("no coastline at --level " + format_number(level) + " in '" + c.in + "' (heights " + range +
+            "): no cell has samples on both sides of it");
+  }
   if (!c.out.empty() && c.world) {
     // World units: x spans the recorded world size, y keeps the same sample
     // spacing, heights share the unit (as the POV-Ray and Blender builders

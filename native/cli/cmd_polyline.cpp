@@ -14,6 +14,8 @@
 #include "io/polyline_io.hpp"
 #include "io/svg_plot.hpp"
 #include "polyline/polyline.hpp"
+#include "povray/render.hpp"
+#include "povray/scene.hpp"
 
 namespace ft::cli {
 namespace {
@@ -28,9 +30,15 @@ const std::map<std::string, int> kIfs = {{"fern", FT_IFS_FERN},
                                          {"koch", FT_IFS_KOCH},
                                          {"sierpinski_gasket", FT_IFS_SIERPINSKI_GASKET}};
 
+const std::map<std::string, int> kKinds = {{"line", int(pov::LineKind::kGeneric)},
+                                           {"lightning", int(pov::LineKind::kLightning)},
+                                           {"coastline", int(pov::LineKind::kCoastline)}};
+
 struct PolylineOptions {
   ft_polyline_params p = default_polyline_params();
-  std::string base, normal, ifs_table, out, svg;
+  std::string base, normal, ifs_table, out, svg, pov, render;
+  int kind = -1;  // -1: lightning when the line branches, else line
+  pov::RenderOptions r;
   bool stats = false;
 };
 
@@ -108,6 +116,22 @@ int run(const PolylineOptions& o) {
   const double seconds = clock.seconds();
   if (!o.out.empty()) write_polylines(set, o.out);
   if (!o.svg.empty()) write_file_atomically(o.svg, render_polylines_svg(set, 900, 600, p.branch_prob > 0));
+  if (!o.pov.empty()) {
+    // Framed on the line over a plain ground, its tube sized from the
+    // picture (the vertex radii keep only the taper of the branches).
+    pov::SceneLines l;
+    l.set = &set;
+    l.kind = pov::LineKind(o.kind >= 0 ? o.kind : p.branch_prob > 0 ? int(pov::LineKind::kLightning)
+                                                                    : int(pov::LineKind::kGeneric));
+    l.radii_in_world_units = false;
+    pov::CameraOptions camera = pov::polyline_camera(l.kind);
+    camera.aspect = double(o.r.width) / double(o.r.height);
+    pov::write_polyline_scene(l, o.pov, camera, o.r.width);
+    if (!o.render.empty()) {
+      const auto res = pov::render_scene(o.pov, o.render, o.r);
+      if (res.warnings > 0) std::fputs(res.messages.c_str(), stderr);
+    }
+  }
   if (o.stats) {
     nlohmann::json j = polyline_report(set);
     j["seconds"] = seconds;
@@ -159,11 +183,24 @@ Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch
                         ->check(CLI::Range(0, 1024))->capture_default_str();
                     app.add_option("--out", o->out, "output .csv (x,y,z,radius; blank line between polylines) or .json");
                     app.add_option("--svg", o->svg, "also draw the x,y projection into this .svg");
+                    app.add_option("--pov", o->pov,
+                                   "also write a POV-Ray scene of the polylines (.pov): framed, over a plain ground, "
+                                   "the tube sized to show the detail at --width");
+                    app.add_option("--kind", o->kind, "--pov: draw as line, lightning (glowing) or coastline; "
+                                                      "default lightning when --branch-prob > 0, else line")
+                        ->transform(choice(kKinds));
+                    app.add_option("--render", o->render, "--pov: also render the scene with povray to this PNG");
+                    app.add_option("--width", o->r.width, "--pov/--render: image width in pixels (framing, radius)")
+                        ->check(CLI::Range(16, 16384))->capture_default_str();
+                    app.add_option("--height", o->r.height, "--pov/--render: image height in pixels")
+                        ->check(CLI::Range(16, 16384))->capture_default_str();
                     app.add_flag("--stats", o->stats,
                                  "print JSON: eta, chi, gamma (of line 0, relative to its chord), mass and "
                                  "box-counting dimensions, seconds");
                     return [o] {
-                      if (o->out.empty() && o->svg.empty() && !o->stats) invalid("give --out FILE, --svg FILE and/or --stats");
+                      if (!o->render.empty() && o->pov.empty()) invalid("--render needs --pov FILE (the scene it renders)");
+                      if (o->out.empty() && o->svg.empty() && o->pov.empty() && !o->stats)
+                        invalid("give --out FILE, --svg FILE, --pov FILE and/or --stats");
                       return run(*o);
                     };
                   },

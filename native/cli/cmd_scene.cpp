@@ -22,7 +22,8 @@ struct SceneOptions {
   std::string terrain, pov, render;
   std::vector<std::string> polylines;
   std::vector<int> kinds;
-  std::vector<double> radii;
+  std::vector<double> radii, radius_scales;
+  bool radius_from_file = false;
   double size = 0, vertical_scale = 0, sea_fraction = NAN, water = NAN;
   pov::CameraOptions camera;
   double sun_azimuth = 235, sun_elevation = 35;
@@ -45,11 +46,18 @@ int run(SceneOptions& o) {
   }
   if (o.kinds.size() > o.polylines.size()) invalid("more --kind options than --polyline files");
   if (o.radii.size() > o.polylines.size()) invalid("more --radius options than --polyline files");
+  if (o.radius_scales.size() > o.polylines.size()) invalid("more --radius-scale options than --polyline files");
   for (size_t i = 0; i < o.polylines.size(); ++i) {
     sets[i] = read_polylines(o.polylines[i]);
-    const auto kind = pov::LineKind(i < o.kinds.size() ? o.kinds[i] : int(pov::LineKind::kGeneric));
-    p.lines.push_back({&sets[i], kind, i < o.radii.size() ? o.radii[i] : 0.0});
+    pov::SceneLines l;
+    l.set = &sets[i];
+    l.kind = pov::LineKind(i < o.kinds.size() ? o.kinds[i] : int(pov::LineKind::kGeneric));
+    l.radius = i < o.radii.size() ? o.radii[i] : 0.0;
+    l.radius_scale = i < o.radius_scales.size() ? o.radius_scales[i] : 1.0;
+    l.radii_in_world_units = o.radius_from_file;
+    p.lines.push_back(l);
   }
+  p.image_width = o.r.width;
   if (!o.render.empty()) o.camera.aspect = double(o.r.width) / double(o.r.height);
   p.camera = o.camera;
   p.sun_azimuth_deg = o.sun_azimuth;
@@ -77,8 +85,16 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                                    "coastline (thin, on the sea); default line")
                         ->transform(choice(kKinds));
                     app.add_option("--radius", o->radii,
-                                   "sweep radius of the polyline set at the same position where its vertices have "
-                                   "none; 0 = by kind and scene size (default)");
+                                   "tube radius (world units) of the polyline set at the same position, overriding "
+                                   "the radii in its file (they keep only its taper); 0 = automatic (default): "
+                                   "0.75 pixel at --width, or a tenth of the median segment, capped by kind")
+                        ->check(CLI::NonNegativeNumber);
+                    app.add_option("--radius-scale", o->radius_scales,
+                                   "multiplies every radius of the polyline set at the same position (> 0; default 1)")
+                        ->check(CLI::PositiveNumber);
+                    app.add_flag("--radius-from-file", o->radius_from_file,
+                                 "take the radii stored in the polyline files as world units (vertices with 0 get "
+                                 "--radius or the automatic one)");
                     app.add_option("--pov", o->pov, "scene to write (.pov); the terrain PNG goes beside it")->required();
                     app.add_option("--size", o->size,
                                    "terrain width in world units (x); depth follows the grid; default: the world "

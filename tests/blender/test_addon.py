@@ -422,6 +422,10 @@ class TerrainToolsTest(unittest.TestCase):
         x, y, _ = expected[0][0]
         self.assertAlmostEqual(lines[0][0][0], (x / 32 - 0.5) * 8.0, places=5)
         self.assertAlmostEqual(lines[0][0][1], (y / 32 - 0.5) * 8.0, places=5)
+        # A level above every height: a clear report, not an empty curve.
+        bpy.context.view_layer.objects.active = terrain
+        expect_report(self, lambda: bpy.ops.curve.fracterra_coastline_add(use_quantile=False, level=1e6),
+                      "no coastline at level 1e+06")
 
     def test_measures_of_a_terrain_and_a_curve(self):
         add_terrain(levels=7, seed=1, hurst=0.7)
@@ -430,6 +434,14 @@ class TerrainToolsTest(unittest.TestCase):
         self.assertEqual(m.kind, "terrain")
         self.assertAlmostEqual(m.hurst, 0.7, delta=0.15)  # one realisation of 129^2: a loose check
         self.assertAlmostEqual(m.dimension, 3 - m.hurst, places=5)
+        self.assertEqual(m.estimator, "variogram_aligned")  # a 2^n + 1 grid
+        # Not a 2^n + 1 grid: the library's recommendation, as `fracterra analyze` reports it
+        # (the operator used to take the aligned variogram on every grid).
+        add_terrain(method="FBM", width=300, height=260, seed=2)
+        self.assertEqual(bpy.ops.object.fracterra_measure(), {"FINISHED"})
+        m = bpy.context.active_object.fracterra_measures
+        self.assertEqual(m.estimator, "spectral")
+        self.assertIn("256", m.estimator_reason)
         bpy.ops.curve.fracterra_polyline_add(depth=8, spread=0.2, seed=5, end=(1, 0, 0))
         self.assertEqual(bpy.ops.object.fracterra_measure(), {"FINISHED"})
         m = bpy.context.active_object.fracterra_measures

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -66,6 +67,65 @@ TEST(AnalysisCapi, HurstRefusesBadArgumentsWithAMessage) {
   ft_hurst_params_init(&p);
   p.lag_min = NAN;
   EXPECT_EQ(ft_hurst_profile(w.data(), w.size(), &p, &r), FT_ERR_INVALID_ARGUMENT);
+}
+
+ft_heightfield* make_fbm(int width, int height) {
+  ft_terrain_params p;
+  ft_terrain_params_init(&p);
+  p.method = FT_TERRAIN_FBM, p.width = width, p.height = height, p.seed = 4;
+  ft_heightfield* hf = nullptr;
+  EXPECT_EQ(ft_terrain_generate(&p, &hf), FT_OK) << ft_last_error();
+  return hf;
+}
+
+// FT_HURST_AUTO: the recommendation `fracterra analyze` reports, so the CLI
+// and Blender's measure operator show one H for one terrain.
+TEST(AnalysisCapi, HurstAutoChoosesByTheGridAndSaysWhy) {
+  struct Case {
+    ft_heightfield* hf;
+    int32_t method, reason;
+  };
+  for (const Case& c : {Case{make_terrain(8, 0.6, 3), FT_HURST_VARIOGRAM_ALIGNED, FT_HURST_REASON_DYADIC_GRID},
+                        Case{make_fbm(300, 260), FT_HURST_SPECTRAL, FT_HURST_REASON_LONG_RECORD},
+                        Case{make_fbm(100, 90), FT_HURST_VARIOGRAM, FT_HURST_REASON_SHORT_RECORD}}) {
+    ft_hurst_params p;
+    ft_hurst_params_init(&p);
+    p.method = FT_HURST_AUTO;
+    ft_hurst_result a, named;
+    ASSERT_EQ(ft_hurst_heightfield(c.hf, &p, &a), FT_OK) << ft_last_error();
+    EXPECT_EQ(a.method, c.method);
+    EXPECT_EQ(a.auto_reason, c.reason);
+    ASSERT_NE(a.auto_reason_text, nullptr);
+    EXPECT_GT(std::strlen(a.auto_reason_text), 20u);
+    p.method = c.method;
+    ASSERT_EQ(ft_hurst_heightfield(c.hf, &p, &named), FT_OK) << ft_last_error();
+    EXPECT_EQ(a.hurst, named.hurst);
+    ft_heightfield_free(c.hf);
+  }
+  // A profile: the same rule along its length.
+  std::vector<float> w(300);
+  for (size_t i = 0; i < w.size(); ++i) w[i] = float(std::sin(0.3 * double(i)) + 0.01 * double(i));
+  ft_hurst_params p;
+  ft_hurst_params_init(&p);
+  p.method = FT_HURST_AUTO;
+  ft_hurst_result r;
+  ASSERT_EQ(ft_hurst_profile(w.data(), w.size(), &p, &r), FT_OK) << ft_last_error();
+  EXPECT_EQ(r.method, FT_HURST_SPECTRAL);
+  ASSERT_EQ(ft_hurst_profile(w.data(), 257, &p, &r), FT_OK) << ft_last_error();
+  EXPECT_EQ(r.method, FT_HURST_VARIOGRAM_ALIGNED);
+}
+
+// A caller built before ABI 1.2 has a result struct that ends after
+// `points`: a named method never writes past it.
+TEST(AnalysisCapi, NamedHurstMethodsLeaveTheAutoFieldsUntouched) {
+  ft_heightfield* hf = make_terrain(6, 0.6, 3);
+  ft_hurst_result r;
+  std::memset(&r, 0xAB, sizeof r);
+  ASSERT_EQ(ft_hurst_heightfield(hf, nullptr, &r), FT_OK) << ft_last_error();
+  const auto* tail = reinterpret_cast<const unsigned char*>(&r) + offsetof(ft_hurst_result, auto_reason);
+  for (size_t i = 0; i < sizeof r - offsetof(ft_hurst_result, auto_reason); ++i) EXPECT_EQ(tail[i], 0xAB) << i;
+  EXPECT_EQ(r.points, 3);  // lags 1, 2, 4: the result was written
+  ft_heightfield_free(hf);
 }
 
 TEST(AnalysisCapi, CoastlineIsAPolylineHandle) {

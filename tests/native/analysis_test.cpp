@@ -10,11 +10,13 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 #include <unistd.h>
 
 #include "analysis/clouds.hpp"
 #include "analysis/hurst.hpp"
+#include "analysis/hurst_choice.hpp"
 #include "analysis/quantile.hpp"
 #include "core/error.hpp"
 #include "core/rng.hpp"
@@ -332,6 +334,32 @@ TEST_F(AnalysisCli, AnalyzeReportsRecommendedEstimateOfHeightfieldsAndProfiles) 
   EXPECT_EQ(j["recommended"], "madogram");
   EXPECT_NEAR(j["hurst"].get<double>(), 0.4, 0.1);
   EXPECT_DOUBLE_EQ(j["dimension"].get<double>(), 2 - j["hurst"].get<double>());
+}
+
+// The recommendation is the library's (FT_HURST_AUTO, used by Blender's
+// measure operator too): analyze reports exactly its estimate and reason.
+TEST_F(AnalysisCli, AnalyzeReportsTheLibrarysAutoChoice) {
+  for (auto [w, h] : {std::pair{300, 260}, std::pair{100, 90}, std::pair{257, 257}}) {
+    ft_terrain_params p = default_terrain_params();
+    p.method = FT_TERRAIN_FBM, p.width = w, p.height = h, p.seed = 4;
+    const Heightfield hf = generate_terrain(p);
+    write_heightfield(hf, path("f.npy"));
+    const CliResult r = run_cli("analyze " + path("f.npy"));
+    ASSERT_EQ(r.status, 0) << r.out;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    const HurstChoice c = choose_hurst_method(w, h);
+    HurstOptions o;
+    o.method = c.method;
+    EXPECT_EQ(j["recommended"], hurst_method_name(c.method)) << w;
+    EXPECT_EQ(j["recommended_because"], c.why) << w;
+    EXPECT_NEAR(j["hurst"].get<double>(), estimate_hurst_surface(hf, o).hurst, 1e-12) << w;
+  }
+  EXPECT_EQ(choose_hurst_method(300, 260).method, HurstMethod::kSpectral);
+  EXPECT_EQ(choose_hurst_method(100, 90).method, HurstMethod::kVariogram);
+  EXPECT_EQ(choose_hurst_method(257, 257).method, HurstMethod::kVariogramAligned);
+  EXPECT_EQ(choose_hurst_method(257, 1).method, HurstMethod::kVariogramAligned);  // a profile
+  EXPECT_EQ(choose_hurst_method(300, 1).method, HurstMethod::kSpectral);
+  EXPECT_EQ(choose_hurst_method(257, 300).method, HurstMethod::kSpectral);  // one side dyadic is not a grid
 }
 
 TEST_F(AnalysisCli, AnalyzeRecommendsTheSpectralSlopeOffDyadicGrids) {

@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -293,6 +297,48 @@ TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
   EXPECT_EQ(run_cli("coastline --in " + t + " --level qhalf --out " + csv, &out), 1);
   EXPECT_NE(out.find("--level"), std::string::npos) << out;
   EXPECT_EQ(run_cli("coastline --in " + (dir / "none.npy").string() + " --out " + csv, &out), 1);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CoastlineCli, ALevelOutsideTheHeightsIsAClearErrorAndWritesNothing) {
+  const auto dir = std::filesystem::temp_directory_path() / ("ft_coastline_level_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string t = (dir / "t.npy").string(), csv = (dir / "c.csv").string();
+  const Heightfield hf = terrain(6, 0.7, 4);
+  write_heightfield(hf, t);
+  const HeightStats s = hf.stats();
+  std::string out;
+  for (double level : {s.max + 1, s.min - 1, 1e6}) {
+    char arg[64];
+    std::snprintf(arg, sizeof arg, "%.9g", level);
+    EXPECT_EQ(run_cli("coastline --in " + t + " --level " + arg + " --out " + csv, &out), 1) << level;
+    EXPECT_NE(out.find("outside the heights"), std::string::npos) << out;
+    EXPECT_NE(out.find("q0.5"), std::string::npos) << out;  // says what to do instead
+    EXPECT_FALSE(std::filesystem::exists(csv));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// Every terrain method records its world size, so `coastline --world` works
+// on all of them (it used to fail with "records no world size" for fbm,
+// spectral and interpolated).
+TEST(CoastlineCli, WorldUnitsFromTerrainsOfEveryMethod) {
+  const auto dir = std::filesystem::temp_directory_path() / ("ft_coastline_world_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string t = (dir / "t.png").string(), csv = (dir / "c.csv").string();
+  for (const char* method : {"fbm", "spectral", "interpolated", "midpoint"}) {
+    std::string out;
+    const std::string size = std::string(method) == "midpoint" ? " --levels 7" : " --size 129";
+    ASSERT_EQ(run_cli(std::string("terrain --method ") + method + size + " --world-size 40 --out " + t, &out), 0)
+        << out;
+    ASSERT_EQ(run_cli("coastline --in " + t + " --world --out " + csv, &out), 0) << method << ": " << out;
+    const PolylineSet w = read_polylines(csv);
+    ASSERT_GT(w.vertex_count(), 0) << method;
+    double hi = 0;
+    for (const Vec3& p : w.points) hi = std::max({hi, p[0], p[1]});
+    EXPECT_LE(hi, 40.0) << method;
+    EXPECT_GT(hi, 20.0) << method;  // columns (up to 128) were scaled by 40 / 128
+  }
   std::filesystem::remove_all(dir);
 }
 

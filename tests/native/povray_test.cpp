@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <regex>
+#include <vector>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -172,6 +173,90 @@ TEST(PovScene, RejectsBadParametersBeforeWritingAnything) {
   p.water_level = NAN;
   EXPECT_THROW(write_scene(p, (dir / "a.pov").string()), Error);
   EXPECT_TRUE(std::filesystem::is_empty(dir));
+  std::filesystem::remove_all(dir);
+}
+
+// `fracterra terrain --pov` places the terrain in its recorded world units,
+// heights unscaled; it used to ignore the world size (always 1 wide).
+TEST(PovScene, TerrainSceneUsesTheRecordedWorldSize) {
+  const auto dir = std::filesystem::temp_directory_path() / ("ft_pov_world_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  Heightfield hf(33, 17);
+  for (size_t i = 0; i < hf.size(); ++i) hf.data()[i] = float(std::sin(double(i)));
+  hf.set_world_size(40);
+  SceneSummary sum = write_terrain_scene(hf, (dir / "w.pov").string());
+  EXPECT_DOUBLE_EQ(sum.terrain.size_x, 40);
+  EXPECT_DOUBLE_EQ(sum.terrain.size_y, 20);  // 40 * 16 / 32
+  EXPECT_DOUBLE_EQ(sum.terrain.vertical_scale, 1);
+  EXPECT_NEAR(sum.hi[0] - sum.lo[0], 40, 1e-9);
+  hf.set_world_size(0);  // none recorded: 1 wide, relief 20% of that
+  sum = write_terrain_scene(hf, (dir / "n.pov").string());
+  EXPECT_DOUBLE_EQ(sum.terrain.size_x, 1);
+  std::filesystem::remove_all(dir);
+}
+
+// The radii written for the sweeps of a scene, in file order.
+std::vector<double> sweep_radii(const std::string& sdl) {
+  std::vector<double> r;
+  static const std::regex point(R"(\n  <[^>]*>, ([-+0-9.e]+)(?=\n))");
+  for (auto it = std::sregex_iterator(sdl.begin(), sdl.end(), point); it != std::sregex_iterator(); ++it)
+    r.push_back(std::stod((*it)[1]));
+  return r;
+}
+
+// A fractal line of 2^14 + 1 points across the unit square.
+PolylineSet fine_line() {
+  PolylineSet s;
+  const int n = 16384;
+  for (int i = 0; i <= n; ++i) {
+    const double t = double(i) / n;
+    s.add({t, 0.5 + 0.05 * std::sin(t * 97) + 0.01 * std::sin(t * 2113), 0}, 0.01);  // the CSV's radius
+  }
+  s.end_line();
+  return s;
+}
+
+TEST(PovScene, AutomaticRadiusIsThreeQuartersOfAPixelOnFineLines) {
+  const auto dir = std::filesystem::temp_directory_path() / ("ft_pov_radius_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const PolylineSet line = fine_line();
+  SceneLines l{&line, LineKind::kGeneric};
+  l.radii_in_world_units = false;
+  const std::string f = (dir / "fine.pov").string();
+  const SceneSummary sum = write_polyline_scene(l, f, polyline_camera(), 800);
+  // The pixel footprint at the line's box centre, computed here again.
+  const Vec3 c{(sum.lo[0] + sum.hi[0]) / 2, (sum.lo[1] + sum.hi[1]) / 2, (sum.lo[2] + sum.hi[2]) / 2};
+  const Vec3& e = sum.camera.location;
+  const double d = std::hypot(c[0] - e[0], c[1] - e[1], c[2] - e[2]);
+  const double pixel = 2 * d * std::tan(sum.camera.fov_deg * M_PI / 360) / 800;
+  const std::vector<double> r = sweep_radii(read_file(f));
+  ASSERT_EQ(r.size(), line.points.size() + 16384 / 32 - 1);  // pieces of 32 segments share their ends
+  for (double x : r) EXPECT_NEAR(x, 0.75 * pixel, 1e-6 * pixel);
+  EXPECT_LT(r[0], 0.01 / 5);  // the CSV's 0.01 was a worm 7 pixels wide
+  // Twice the width in pixels: half the radius.
+  write_polyline_scene(l, f, polyline_camera(), 1600);
+  EXPECT_NEAR(sweep_radii(read_file(f))[0], 0.375 * pixel, 1e-6 * pixel);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PovScene, RadiusOverridesScaleAndTaperOrTheFileRadii) {
+  const auto dir = std::filesystem::temp_directory_path() / ("ft_pov_taper_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  PolylineSet s;  // a main line (radius 0.02) and a branch (0.01)
+  s.add({0, 0, 0}, 0.02), s.add({1, 0.2, 0}, 0.02), s.end_line();
+  s.add({0.5, 0.1, 0}, 0.01), s.add({0.7, 0.5, 0}, 0.01), s.end_line();
+  const std::string f = (dir / "t.pov").string();
+  SceneLines l{&s, LineKind::kGeneric, 0.004};
+  l.radii_in_world_units = false;  // the file's radii as taper
+  write_polyline_scene(l, f, polyline_camera());
+  EXPECT_EQ(sweep_radii(read_file(f)), (std::vector<double>{0.004, 0.004, 0.002, 0.002}));
+  l.radius_scale = 2.5;
+  write_polyline_scene(l, f, polyline_camera());
+  EXPECT_EQ(sweep_radii(read_file(f)), (std::vector<double>{0.01, 0.01, 0.005, 0.005}));
+  l.radii_in_world_units = true;  // the file's radii as they are (the C ABI's rule)
+  l.radius_scale = 1;
+  write_polyline_scene(l, f, polyline_camera());
+  EXPECT_EQ(sweep_radii(read_file(f)), (std::vector<double>{0.02, 0.02, 0.01, 0.01}));
   std::filesystem::remove_all(dir);
 }
 

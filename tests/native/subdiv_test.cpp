@@ -450,6 +450,42 @@ TEST(ObjIo, ReportsMissingAndFacelessFiles) {
   expect_error([] { decode_obj("v 0 0 0\nv 1 0 0\n", "points.obj"); }, FT_ERR_FORMAT, "points.obj' has no faces");
 }
 
+// Lines tinyobjloader used to take on trust (see obj_io.cpp): each now a
+// clear FT_ERR_FORMAT naming the line, where it was undefined behaviour, an
+// infinite vertex or a silently wrong face.
+TEST(ObjIo, RefusesNumbersAndFacesTheReaderCannotHold) {
+  const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  expect_error([&] { decode_obj("v 0 0 1e39\n" + quad + "f 2 3 4\n", "big.obj"); }, FT_ERR_FORMAT,
+               "'big.obj': line 1: '1e39' is beyond the float range");
+  expect_error([&] { decode_obj(quad + "f 1 2 99999999999\n", "idx.obj"); }, FT_ERR_FORMAT,
+               "line 5: '99999999999' is not an integer in the 32-bit range");
+  expect_error([&] { decode_obj(quad + "f 1 0 2\n", "zero.obj"); }, FT_ERR_FORMAT, "line 5: vertex index 0");
+  expect_error([&] { decode_obj("v 0 nan 0\n" + quad + "f 2 3 4\n"); }, FT_ERR_FORMAT, "'nan' is not a finite number");
+  expect_error([&] { decode_obj(quad + "f 1 2 3\nt crease 2/1/0 0 1\n"); }, FT_ERR_FORMAT, "line 6: the tag's counts");
+  std::string ring;
+  for (int i = 0; i < 300; ++i) ring += "v " + std::to_string(std::cos(i * 0.0209)) + " " + std::to_string(std::sin(i * 0.0209)) + " 0\n";
+  ring += "f";
+  for (int i = 1; i <= 300; ++i) ring += " " + std::to_string(i);
+  expect_error([&] { decode_obj(ring + "\n"); }, FT_ERR_FORMAT, "a face of 300 vertices; at most 255");
+}
+
+TEST(ObjIo, IgnoresWhatItDoesNotUseAndKeepsWhatItDoes) {
+  // Normals, texture coordinates, weights (the fuzzer's `vw` of 1e300),
+  // groups, materials; v/vt/vn faces; comments; CRLF; a '+' sign; w.
+  const Mesh m = decode_obj(
+      "# a comment\r\nmtllib x.mtl\r\no a\r\nv 0 0 0 1\r\nv +1 0 0\r\nv 1 1 0 # corner\r\nvn 0 0 1\r\n"
+      "vt 0.5 0.5\r\nvw 1 0333333333333333333333333333333333333333333333 00\r\nusemtl m\r\ns 1\r\n"
+      "f 1/1/1 2/1/1 -1/1/1\r\nl 1 2\r\nt crease 2/1/0 0 1 2.5\r\nt corner 1/1/0 2 4\r\nt interpolateboundary 1/0/0 1\r\n"
+      "v 1e-300 -2e-60 3.5\r\n");  // underflows are zero, as in a float
+  EXPECT_EQ(m.positions, (std::vector<float>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 3.5f}));
+  EXPECT_EQ(m.face_sizes, (std::vector<int32_t>{3}));
+  EXPECT_EQ(m.face_indices, (std::vector<int32_t>{0, 1, 2}));
+  EXPECT_EQ(m.crease_pairs, (std::vector<int32_t>{0, 1}));
+  EXPECT_EQ(m.crease_sharpness, (std::vector<float>{2.5f}));
+  EXPECT_EQ(m.corner_vertices, (std::vector<int32_t>{2}));
+  EXPECT_EQ(m.corner_sharpness, (std::vector<float>{4.0f}));
+}
+
 TEST(PovMesh2, IdentifiersAreValidAndNeverKeywords) {
   EXPECT_EQ(pov::identifier("FT_Rock"), "FT_Rock");
   EXPECT_EQ(pov::identifier("sphere"), "FT_sphere");

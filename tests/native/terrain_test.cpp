@@ -347,6 +347,71 @@ TEST(BadInput, WorldSizeMustBePositiveAndFinite) {
   }
 }
 
+// Small settings of every method, for the checks that apply to all.
+std::vector<ft_terrain_params> every_method() {
+  std::vector<ft_terrain_params> all;
+  for (int m : {FT_TERRAIN_MIDPOINT, FT_TERRAIN_ADDITIONS, FT_TERRAIN_FBM, FT_TERRAIN_SPECTRAL,
+                FT_TERRAIN_INTERPOLATED}) {
+    ft_terrain_params p = terrain(m, 5, 0.7, 3);
+    p.width = 40, p.height = 24;
+    all.push_back(p);
+  }
+  return all;
+}
+
+TEST(WorldSize, EveryMethodRecordsTheWorldSizeItWasGiven) {
+  // It used to be set by the midpoint and additions branch only.
+  for (ft_terrain_params p : every_method()) {
+    p.world_size = 40;
+    EXPECT_EQ(generate_terrain(p).world_size(), 40.0) << "method " << p.method;
+  }
+}
+
+TEST(BadInput, SigmaThatCouldOverflowFloatIsRefusedBeforeAnyWork) {
+  for (ft_terrain_params p : every_method()) {
+    for (double s : {1e300, 1e39}) {
+      p.sigma = s;
+      std::string msg;
+      EXPECT_EQ(status_of(p, &msg), FT_ERR_INVALID_ARGUMENT) << "method " << p.method << " sigma " << s;
+      EXPECT_NE(msg.find("sigma"), std::string::npos) << msg;
+      EXPECT_NE(msg.find("float range"), std::string::npos) << msg;
+    }
+  }
+  ft_profile_params q = default_profile_params();
+  q.sigma = 1e300;
+  std::vector<float> x((size_t(1) << q.levels) + 1);
+  EXPECT_THROW(generate_profile(q, x.data(), x.size()), Error);
+}
+
+// The bound is an upper bound: at the largest sigma it allows, every method
+// makes finite heights whose range (max - min) is finite too. The message
+// states that largest sigma; take it from there.
+TEST(BadInput, TheLargestAllowedSigmaGivesFiniteHeights) {
+  for (ft_terrain_params p : every_method()) {
+    p.sigma = 1e300;
+    std::string msg;
+    ASSERT_EQ(status_of(p, &msg), FT_ERR_INVALID_ARGUMENT);
+    const size_t at = msg.find("at most ");
+    ASSERT_NE(at, std::string::npos) << msg;
+    const double largest = std::strtod(msg.c_str() + at + 8, nullptr);
+    ASSERT_GT(largest, 1e30) << msg;  // sane sigmas stay far inside
+    p.sigma = largest * 0.999;
+    const Heightfield hf = generate_terrain(p);
+    const HeightStats st = hf.stats();
+    EXPECT_TRUE(std::isfinite(st.min) && std::isfinite(st.max)) << "method " << p.method;
+    EXPECT_TRUE(std::isfinite(float(st.max) - float(st.min))) << "method " << p.method;
+  }
+}
+
+TEST(BadInput, FbmOffsetThatOverflowsTheOctaveSumIsRefused) {
+  ft_terrain_params p = every_method()[2];
+  p.variant = FT_FBM_HETERO;
+  p.offset = 1e20;  // sum *= 1 + (n + offset) a per octave: 1e160 after 8
+  std::string msg;
+  EXPECT_EQ(status_of(p, &msg), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(msg.find("offset"), std::string::npos) << msg;
+}
+
 TEST(BadInput, LevelsOutOfRangeAreRejected) {
   for (int levels : {0, -3, 16, 1000}) {
     std::string msg;

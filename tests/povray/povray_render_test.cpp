@@ -74,6 +74,17 @@ Stats pixel_stats(const GrayImage& img) {
 double luma(const GrayImage& img, int x, int y) {
   return img.pixels[size_t(y) * img.width + x] / (img.bit_depth == 16 ? 65535.0 : 255.0);
 }
+// Pixels that stand out from the picture's median grey by more than 0.08:
+// a thin line over a plain ground (whose own shading varies by < 0.02).
+int64_t standout_pixels(const GrayImage& img) {
+  const double full = img.bit_depth == 16 ? 65535.0 : 255.0;
+  std::vector<uint16_t> v(img.pixels);
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+  const double med = v[v.size() / 2] / full;
+  int64_t n = 0;
+  for (uint16_t p : img.pixels) n += std::fabs(p / full - med) > 0.08;
+  return n;
+}
 // A rendered picture is "not blank" when its pixels vary: a uniform image has
 // sd 0 and even a plain sky gradient has sd < 0.02 at this size.
 void expect_not_blank(const GrayImage& img, const std::string& what) {
@@ -256,8 +267,12 @@ TEST_F(PovTest, PolylineSceneRendersForEveryKind) {
   const PolylineSet line = wiggle(257);
   for (auto kind : {pov::LineKind::kGeneric, pov::LineKind::kLightning, pov::LineKind::kCoastline}) {
     const std::string f = path("line" + std::to_string(int(kind)) + ".pov");
-    pov::write_polyline_scene(line, f, kind);
-    expect_not_blank(render(f), "polyline scene of kind " + std::to_string(int(kind)));
+    // Sized for the 160-pixel render: the automatic radius follows the picture.
+    pov::write_polyline_scene(pov::SceneLines{&line, kind}, f, pov::polyline_camera(kind), 160);
+    // The wiggle crosses ~85% of 160 pixels: a line >= 1 pixel wide and its
+    // shadow stand out in >= 200 pixels (measured 1012, 5573 with the glow,
+    // 1202); a blank picture has none.
+    EXPECT_GE(standout_pixels(render(f)), 200) << "polyline scene of kind " << int(kind);
   }
 }
 
@@ -305,6 +320,54 @@ TEST_F(PovTest, SceneCommandWritesAndRendersTerrainWithPolylines) {
             0)
       << out;
   expect_not_blank(read_png(path("s.png")), "fracterra scene --render");
+}
+
+// `fracterra polyline ... --pov` (asked for, and missing before): a framed
+// sphere_sweep scene of the line that the real POV-Ray renders.
+TEST_F(PovTest, PolylineCommandWritesAFramedSceneThatRenders) {
+  std::string out;
+  ASSERT_EQ(run_cli("polyline --method fpl --depth 10 --seed 3 --out '" + path("l.csv") + "' --pov '" +
+                        path("l.pov") + "' --render '" + path("l.png") + "' --width 160 --height 120",
+                    out),
+            0)
+      << out;
+  const std::string sdl = read_file(path("l.pov"));
+  EXPECT_NE(sdl.find("sphere_sweep { linear_spline"), std::string::npos);
+  EXPECT_NE(sdl.find("camera {"), std::string::npos);
+  EXPECT_NE(sdl.find("the file's radii as taper"), std::string::npos);
+  EXPECT_GE(standout_pixels(read_png(path("l.png"))), 200) << "fracterra polyline --pov --render";
+  // Branching lines are drawn as lightning unless --kind says otherwise.
+  ASSERT_EQ(run_cli("polyline --method fpl3d --depth 7 --branch-prob 0.05 --pov '" + path("b.pov") + "'", out), 0)
+      << out;
+  EXPECT_NE(read_file(path("b.pov")).find(": lightning,"), std::string::npos);
+  ASSERT_EQ(run_cli("polyline --method fpl --depth 7 --kind coastline --pov '" + path("c.pov") + "'", out), 0) << out;
+  EXPECT_NE(read_file(path("c.pov")).find(": coastline,"), std::string::npos);
+  EXPECT_EQ(run_cli("polyline --method fpl --depth 4 --render '" + path("x.png") + "'", out), 1);
+  EXPECT_NE(out.find("--render needs --pov"), std::string::npos) << out;
+}
+
+// `scene --radius` overrides the radii stored in a polyline file (before, it
+// applied only to vertices without one), `--radius-scale` multiplies, and
+// `--radius-from-file` keeps the stored ones as world units.
+TEST_F(PovTest, SceneRadiusOptionsOverrideScaleOrKeepTheFileRadii) {
+  std::ofstream(path("l.csv")) << "0,0,0,0.01\n1,0.3,0,0.01\n1.5,0.1,0,0.01\n";
+  auto radius_comment = [&](const std::string& flags) {
+    std::string out;
+    EXPECT_EQ(run_cli("scene --polyline '" + path("l.csv") + "' " + flags + " --pov '" + path("s.pov") + "'", out), 0)
+        << out;
+    const std::string sdl = read_file(path("s.pov"));
+    const size_t at = sdl.find(" vertices, radius ");
+    return at == std::string::npos ? -1.0 : std::stod(sdl.substr(at + 18));
+  };
+  const double automatic = radius_comment("");
+  EXPECT_GT(automatic, 0);
+  EXPECT_LT(automatic, 0.01);  // sized from the picture, not the file's 0.01
+  EXPECT_DOUBLE_EQ(radius_comment("--radius 0.002"), 0.002);
+  EXPECT_DOUBLE_EQ(radius_comment("--radius 0.002 --radius-scale 3"), 0.006);
+  EXPECT_NE(read_file(path("s.pov")).find(", 0.006\n"), std::string::npos);
+  radius_comment("--radius-from-file");
+  EXPECT_NE(read_file(path("s.pov")).find(", 0.01\n"), std::string::npos);  // the stored radius
+  EXPECT_GE(standout_pixels(render(path("s.pov"))), 200) << "scene with the file's radii";
 }
 
 TEST_F(PovTest, MacrosFailWithClearErrorsOnBadInput) {

@@ -78,6 +78,19 @@ def test_hurst_estimate_of_a_midpoint_terrain(core):
         r = core.hurst_of_heightfield(hf)
     assert r["hurst"] == pytest.approx(0.6, abs=0.1)
     assert r["dimension"] == pytest.approx(3 - r["hurst"])
+    assert r["estimator"] == "variogram_aligned"  # AUTO on a 2^n + 1 grid
+    assert "2^n + 1" in r["reason"]
+
+
+def test_auto_hurst_estimator_follows_the_grid(core):
+    # The library's recommendation (FT_HURST_AUTO): the same value as the named method it chose.
+    with core.generate_terrain(method="FBM", width=300, height=260, seed=3) as hf:
+        auto = core.hurst_of_heightfield(hf)
+        spectral = core.hurst_of_heightfield(hf, method="SPECTRAL")
+    assert auto["estimator"] == "spectral" and auto["auto_reason"] == 2
+    assert auto["hurst"] == spectral["hurst"]
+    with core.generate_terrain(method="FBM", width=100, height=90, seed=3) as hf:
+        assert core.hurst_of_heightfield(hf)["estimator"] == "variogram"
 
 
 def test_pov_scene_is_written(core, tmp_path):

@@ -36,8 +36,9 @@ class FRACTERRA_OT_measure(bpy.types.Operator):
                 m.dimension, m.stderr, m.hurst = s["box_dimension"], s["box_std_error"], math.nan
             else:
                 with heightfield_of(obj) as hf:
-                    r = core.hurst_of_heightfield(hf)
+                    r = core.hurst_of_heightfield(hf)  # the library's recommended estimator, as the CLI's
                 m.kind, m.hurst, m.dimension, m.stderr = "terrain", r["hurst"], r["dimension"], r["stderr_hurst"]
+                m.estimator, m.estimator_reason = r["estimator"], r["reason"]
                 m.eta = m.chi = m.gamma = math.nan
         except REPORTED as e:
             self.report({"ERROR"}, str(e))

@@ -57,6 +57,8 @@ class FRACTERRA_PT_measures(bpy.types.Panel):
             layout.label(text="Not measured yet")
             return
         col = layout.column(align=True)
+        if m.kind == "terrain" and m.estimator:
+            col.label(text=f"Estimator: {m.estimator}")
         names = ("hurst", "dimension", "stderr") if m.kind == "terrain" else ("eta", "chi", "gamma", "dimension", "stderr")
         for name in names:
             row = col.row()

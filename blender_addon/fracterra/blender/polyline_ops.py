@@ -127,6 +127,13 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
                 size_x, size_y = core.grid_size(terrain.fracterra_terrain.world_size, nx, ny)
                 level = self.quantile if self.use_quantile else self.level
                 with core.coastline(hf, level, quantile=self.use_quantile) as pl:
+                    if pl.line_count == 0:
+                        # Not an empty curve without a word: say why.
+                        s = hf.stats()
+                        what = f"quantile {level:g}" if self.use_quantile else f"level {level:g}"
+                        self.report({"ERROR"}, f"no coastline at {what}: the terrain's heights are "
+                                               f"[{s['min']:g}, {s['max']:g}] and no cell crosses it")
+                        return {"CANCELLED"}
                     def to_local(x, y, z):
                         return (x / (nx - 1) - 0.5) * size_x, (y / (ny - 1) - 0.5) * size_y, z
                     curve = curve_from_polylines("Coastline", pl, bevel=False, transform=to_local)

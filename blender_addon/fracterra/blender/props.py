@@ -77,7 +77,10 @@ def copy_settings(src, dst):
 class FRACTERRA_PG_measures(bpy.types.PropertyGroup):
     """Measures of an object, filled by object.fracterra_measure (the panel only shows them)."""
     kind: StringProperty(name="Measured", default="", description="What was measured: terrain or polylines")
-    hurst: FloatProperty(name="H", description="Hurst exponent (variogram over dyadic lags)")
+    hurst: FloatProperty(name="H", description="Hurst exponent, by the library's recommended estimator for the "
+                                               "grid (the one `fracterra analyze` reports)")
+    estimator: StringProperty(name="Estimator", default="", description="The Hurst estimator used")
+    estimator_reason: StringProperty(name="Why", default="", description="Why the estimator was chosen")
     dimension: FloatProperty(name="D", description="Fractal dimension (terrain: 3 - H; polylines: box counting)")
     stderr: FloatProperty(name="Std Error", description="Standard error of the fitted slope")
     eta: FloatProperty(name="eta", description="Max deviation of the main line from its chord / chord length")

@@ -17,7 +17,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 1
-ABI_MINOR_MIN = 2  # ft_terrain_params.world_size arrived in 1.1, the Mandelbrot fields in 1.2
+ABI_MINOR_MIN = 2  # 1.1: ft_terrain_params.world_size; 1.2: the Mandelbrot fields, FT_HURST_AUTO
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -159,6 +159,9 @@ class HurstResult(Structure):
         ("band_hi", c_double),
         ("band_is_frequency", c_int32),
         ("points", c_int32),
+        # ABI 1.2, written for FT_HURST_AUTO only: why it chose `method`.
+        ("auto_reason", c_int32),
+        ("auto_reason_text", c_char_p),
     ]
 
 

@@ -132,8 +132,12 @@ def generate_polylines(values=None, base=None, plane_normal=None, progress=None,
     return Polylines(out)
 
 
-def hurst_of_heightfield(hf, method="VARIOGRAM_ALIGNED"):
-    """{'hurst', 'dimension', 'stderr_hurst', ...} of a heightfield (analysis.h)."""
+def hurst_of_heightfield(hf, method="AUTO"):
+    """{'hurst', 'dimension', 'stderr_hurst', 'estimator', 'reason', ...} of a heightfield (analysis.h).
+
+    AUTO is the library's recommendation for the grid (the one `fracterra analyze`
+    reports); 'estimator' names the method used and 'reason' says why.
+    """
     from .binding import HurstResult
     lib = library()
     p = lib.hurst_params_type()
@@ -141,10 +145,14 @@ def hurst_of_heightfield(hf, method="VARIOGRAM_ALIGNED"):
     p.method = HURST_METHODS[method]
     r = HurstResult()
     lib.check(lib.ft_hurst_heightfield(hf.handle, byref(p), byref(r)))
-    return {name: getattr(r, name) for name, _ in HurstResult._fields_}
+    out = {name: getattr(r, name) for name, _ in HurstResult._fields_}
+    out["estimator"] = next(k for k, v in HURST_METHODS.items() if v == r.method).lower()
+    out["reason"] = (r.auto_reason_text or b"").decode() if method == "AUTO" else "asked for by name"
+    return out
 
 
-HURST_METHODS = {"VARIOGRAM": 0, "MADOGRAM": 1, "VARIOGRAM_ALIGNED": 2, "MADOGRAM_ALIGNED": 3, "SPECTRAL": 4}
+HURST_METHODS = {"VARIOGRAM": 0, "MADOGRAM": 1, "VARIOGRAM_ALIGNED": 2, "MADOGRAM_ALIGNED": 3, "SPECTRAL": 4,
+                 "AUTO": 5}
 
 
 def coastline(hf, level, quantile=False):

@@ -19,14 +19,28 @@ enum {
   FT_HURST_VARIOGRAM_ALIGNED = 2,  ///< variogram over dyadic-grid pairs only (tau = 2^j, t multiple of tau):
                                    ///< exact for midpoint displacement
   FT_HURST_MADOGRAM_ALIGNED = 3,   ///< madogram over dyadic-grid pairs only
-  FT_HURST_SPECTRAL = 4            ///< power spectrum P(f) ~ f^-(2H + 1) of the profile, or of every row
+  FT_HURST_SPECTRAL = 4,           ///< power spectrum P(f) ~ f^-(2H + 1) of the profile, or of every row
                                    ///< and column of a surface; detrended, Hann window, 8 log bins per octave
+  FT_HURST_AUTO = 5                ///< (ABI 1.2) the recommended one for this input, as `fracterra analyze`
+                                   ///< reports it: FT_HURST_VARIOGRAM_ALIGNED on 2^n + 1 samples per side,
+                                   ///< else FT_HURST_SPECTRAL from 256 samples on the shorter side, else
+                                   ///< FT_HURST_VARIOGRAM. The result's `method` and `auto_reason` say
+                                   ///< which and why.
+};
+
+/// Why FT_HURST_AUTO chose its estimator (ft_hurst_result.auto_reason).
+enum {
+  FT_HURST_REASON_NONE = 0,        ///< a method was asked for by name
+  FT_HURST_REASON_DYADIC_GRID = 1, ///< 2^n + 1 samples per side: the aligned variogram is exact there
+  FT_HURST_REASON_LONG_RECORD = 2, ///< >= 256 samples per side: the spectral slope
+  FT_HURST_REASON_SHORT_RECORD = 3 ///< fewer: the plain variogram
 };
 
 /// Parameters of the Hurst estimates. Fill with ft_hurst_params_init.
 typedef struct ft_hurst_params {
   uint32_t struct_size;   ///< sizeof(ft_hurst_params); set by _init
-  int32_t method;         ///< FT_HURST_*; default FT_HURST_VARIOGRAM_ALIGNED
+  int32_t method;         ///< FT_HURST_*; default FT_HURST_VARIOGRAM_ALIGNED (FT_HURST_AUTO
+                          ///< recommends one for the input)
   double lag_min;         ///< smallest lag in samples (increment methods); 0 (default) = 1
   double lag_max;         ///< largest lag in samples; 0 (default) = max(2, (n - 1) / 16), n = the
                           ///< profile length or the shorter side of a heightfield
@@ -49,6 +63,10 @@ typedef struct ft_hurst_result {
   double band_hi;          ///< last lag or highest frequency fitted
   int32_t band_is_frequency; ///< 1 for the spectral method, 0 for lags
   int32_t points;          ///< points in the log-log fit
+  /* Added in ABI 1.2, and written only when the params asked for FT_HURST_AUTO
+     (a caller that knows that value was built with these fields): */
+  int32_t auto_reason;     ///< FT_HURST_REASON_*: why FT_HURST_AUTO chose `method`
+  const char* auto_reason_text; ///< the same in words (static storage, never NULL)
 } ft_hurst_result;
 
 FT_API ft_status ft_hurst_params_init(ft_hurst_params* p);

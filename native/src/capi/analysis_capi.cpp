@@ -1,9 +1,13 @@
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <optional>
 #include <vector>
 
 #include "analysis/clouds.hpp"
 #include "analysis/hurst.hpp"
+#include "analysis/hurst_choice.hpp"
 #include "analysis/quantile.hpp"
 #include "capi/guard.hpp"
 #include "capi/handles.hpp"
@@ -22,13 +26,21 @@ ft_hurst_params default_hurst_params() {
   return p;
 }
 
-ft::HurstOptions to_options(const ft_hurst_params* params) {
+// The options for an input of width x height samples (a profile: height 1);
+// FT_HURST_AUTO is resolved here and `choice` says what it chose.
+ft::HurstOptions to_options(const ft_hurst_params* params, int64_t width, int64_t height,
+                            std::optional<ft::HurstChoice>& choice) {
   const ft_hurst_params p = params ? *params : default_hurst_params();
   ft::check_struct_size(p.struct_size, sizeof(ft_hurst_params), "ft_hurst_params");
-  ft::check_int_range("method", p.method, FT_HURST_VARIOGRAM, FT_HURST_SPECTRAL);
+  ft::check_int_range("method", p.method, FT_HURST_VARIOGRAM, FT_HURST_AUTO);
   for (double v : {p.lag_min, p.lag_max, p.freq_min, p.freq_max}) ft::check_finite("band limit", v);
   ft::HurstOptions o;
-  o.method = ft::HurstMethod(p.method);
+  if (p.method == FT_HURST_AUTO) {
+    choice = ft::choose_hurst_method(width, height);
+    o.method = choice->method;
+  } else {
+    o.method = ft::HurstMethod(p.method);
+  }
   o.lag_min = p.lag_min, o.lag_max = p.lag_max, o.freq_min = p.freq_min, o.freq_max = p.freq_max;
   o.transects = p.transects != 0;
   return o;
@@ -45,6 +57,19 @@ void to_result(const ft::HurstEstimate& e, ft_hurst_result* out) {
   out->band_hi = e.band_hi;
   out->band_is_frequency = !ft::hurst_method_uses_lags(e.method);
   out->points = e.fit.points;
+}
+
+// Only for FT_HURST_AUTO: older callers' results end before these fields.
+void to_result(const ft::HurstEstimate& e, const std::optional<ft::HurstChoice>& choice, ft_hurst_result* out) {
+  if (!choice) {
+    ft_hurst_result r;
+    to_result(e, &r);
+    std::memcpy(out, &r, offsetof(ft_hurst_result, auto_reason));
+    return;
+  }
+  to_result(e, out);
+  out->auto_reason = int32_t(choice->reason);
+  out->auto_reason_text = choice->why;
 }
 
 ft_clouds_params default_clouds_params() {
@@ -85,7 +110,9 @@ FT_API ft_status ft_hurst_profile(const float* samples, size_t count, const ft_h
   return guarded([&] {
     ft::check_not_null("out", out);
     ft::check_not_null("samples", samples);
-    to_result(ft::estimate_hurst_profile(samples, count, to_options(params)), out);
+    std::optional<ft::HurstChoice> choice;
+    const ft::HurstOptions o = to_options(params, int64_t(count), 1, choice);
+    to_result(ft::estimate_hurst_profile(samples, count, o), choice, out);
   });
 }
 
@@ -94,7 +121,9 @@ FT_API ft_status ft_hurst_heightfield(const ft_heightfield* hf, const ft_hurst_p
   return guarded([&] {
     ft::check_not_null("out", out);
     ft::check_not_null("heightfield", hf);
-    to_result(ft::estimate_hurst_surface(hf->hf, to_options(params)), out);
+    std::optional<ft::HurstChoice> choice;
+    const ft::HurstOptions o = to_options(params, hf->hf.width(), hf->hf.height(), choice);
+    to_result(ft::estimate_hurst_surface(hf->hf, o), choice, out);
   });
 }
 

@@ -1,7 +1,9 @@
-// Wavefront OBJ meshes. Reading goes through Debian's tinyobjloader: every
-// shape of the file is merged into one mesh of shared vertices and polygons
-// (up to 255 vertices per face, tinyobjloader's limit); normals, texture
-// coordinates, materials, lines and points are ignored. Subdivision tags in
+// Wavefront OBJ meshes. Reading screens the text (v, f and t lines checked
+// and rewritten in canonical form, see obj_io.cpp), then goes through
+// Debian's tinyobjloader: every shape of the file is merged into one mesh of
+// shared vertices and polygons (up to 255 vertices per face, tinyobjloader's
+// limit, refused beyond); normals, texture coordinates, materials, lines and
+// points are ignored. Subdivision tags in
 // OpenSubdiv's shape syntax are honoured, 0-based:
 //   t crease 2/1/0 a b sharpness     (a chain: n/1/0 v0 .. v(n-1) sharpness)
 //   t corner 1/1/0 v sharpness

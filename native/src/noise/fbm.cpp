@@ -277,6 +277,35 @@ double max_lattice_coordinate(const FbmConfig& c) {
 
 }  // namespace
 
+double fbm_height_bound(const FbmConfig& c, double* unscaled) {
+  const double nb = c.basis == kBasisCellularF1 || c.basis == kBasisCellularF2F1 ? 3.0 : 1.0;
+  const double off = std::fabs(c.offset), gain = effective_gain(c);
+  double amp = 1, amp_sum = 0, sum = 0, weight = 0;
+  for (int k = 0; k < c.octaves; ++k, amp *= gain) {
+    amp_sum += amp;
+    switch (c.variant) {
+      case kFbmStandard: sum += amp * nb; break;
+      // s = (offset - |n|)^2 times a weight clamped to [0, 1].
+      case kFbmRidged: sum += amp * (off + nb) * (off + nb); break;
+      case kFbmHybrid: {
+        // s = (n + offset) a; the weight min(w, 1) is at most 1 above and
+        // unbounded below, so |w| <= max(1, |previous weight|).
+        const double s = (nb + off) * amp;
+        const double w = k == 0 ? 1.0 : std::max(1.0, weight);
+        sum += w * s;
+        weight = w * s;
+        break;
+      }
+      default:  // hetero: sum_0 = offset + n, then sum *= 1 + (n + offset) a
+        sum = k == 0 ? off + nb : sum * (1 + (nb + off) * amp);
+        break;
+    }
+  }
+  if (unscaled) *unscaled = sum;
+  const bool bounded = c.variant == kFbmStandard || c.variant == kFbmRidged;
+  return bounded ? sum / amp_sum : sum;
+}
+
 double effective_gain(const FbmConfig& c) {
   return c.gain > 0 ? c.gain : std::pow(c.lacunarity, -c.hurst);
 }

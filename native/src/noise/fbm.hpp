@@ -68,6 +68,13 @@ struct FbmConfig {
 void validate_fbm(const FbmConfig& c);
 // The amplitude ratio actually used (gain, or lacunarity^-H).
 double effective_gain(const FbmConfig& c);
+// An upper bound on |height| / sigma over every sample fbm() can make with
+// these settings, and (in `unscaled`) on the octave sum before its scale is
+// applied. From the octave loop's recurrences with every noise value at its
+// bound (1 for value, gradient and simplex noise; 3 for the cellular bases,
+// whose F1 <= 1.17 and F2 <= 2 sqrt 2 cells within their 3 x 3 search), so
+// sigma can be checked against float range before any work is done.
+double fbm_height_bound(const FbmConfig& c, double* unscaled = nullptr);
 // Validates, then fills a width x height heightfield. Output scale: standard
 // and ridged are divided by sum a_i, so standard value/gradient/simplex fbm
 // stays within [-sigma, sigma]; hybrid and hetero are multiplied by sigma only.

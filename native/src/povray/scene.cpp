@@ -32,35 +32,57 @@ const char* kind_name(LineKind k) {
   }
 }
 
-// Scene-level materials, each replaceable by declaring it before including
-// the scene (the povray tests do that to paint the terrain flat).
-const char* kSceneMaterials = R"(#ifndef(FT_Lightning_Tex)
-#declare FT_Lightning_Tex = texture {
-   pigment { rgb <0.85, 0.88, 1.0> }
-   finish { emission 3 diffuse 0 }
+double median(std::vector<double>& v) {
+  if (v.empty()) return NAN;
+  const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
 }
-#end
-#ifndef(FT_Lightning_Glow_Tex)
-#declare FT_Lightning_Glow_Tex = texture {
-   pigment { rgbt <0.55, 0.65, 1.0, 0.85> }
-   finish { emission 0.8 diffuse 0 }
+
+// The file's vertex radii as taper only: `base` times each radius over the
+// set's largest (0 = `base`).
+PolylineSet tapered(const PolylineSet& set, double base) {
+  PolylineSet out = set;
+  double top = 0;
+  for (double r : set.radii) top = std::max(top, r);
+  for (double& r : out.radii) r = top > 0 && r > 0 ? base * (r / top) : base;
+  return out;
 }
-#end
-#ifndef(FT_Coast_Tex)
-#declare FT_Coast_Tex = texture {
-   pigment { rgb <0.96, 0.97, 1.0> }
-   finish { emission 0.35 diffuse 0.7 }
-}
-#end
-#ifndef(FT_Line_Tex)
-#declare FT_Line_Tex = texture {
-   pigment { rgb <0.95, 0.42, 0.08> }
-   finish { diffuse 0.8 specular 0.3 roughness 0.02 }
-}
-#end
-)";
 
 }  // namespace
+
+// A tube thinner than about a pixel breaks up into dots; one much thicker
+// than the smallest detail the image resolves (a pixel) hides it: 16385
+// points of an FPL at a radius of 1% of the line were a smooth beaded worm.
+// So the radius is 0.75 pixel at the distance of the lines (a tube 1.5 px
+// wide), or a tenth of the median segment where that is larger (coarse
+// lines: Koch depth 3 reads as a tube, not a hairline), but never more than
+// the kind's style cap, the fixed fractions of the scene used before.
+double automatic_line_radius(const SceneLines& l, const Camera& cam, double extent, int32_t image_width) {
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  std::vector<double> seg;
+  for (int64_t i = 0; i < l.set->line_count(); ++i)
+    for (int64_t v = l.set->line_begin(i); v < l.set->line_end(i); ++v) {
+      const Vec3& a = l.set->points[size_t(v)];
+      grow(lo, hi, to_pov(a));
+      if (v + 1 < l.set->line_end(i)) {
+        const Vec3& b = l.set->points[size_t(v + 1)];
+        const double d = std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+        if (d > 0) seg.push_back(d);
+      }
+    }
+  const double cap = (l.kind == LineKind::kLightning   ? 0.0035
+                      : l.kind == LineKind::kCoastline ? 0.0012
+                                                       : 0.003) * extent;
+  double pixel = 0;
+  if (lo[0] <= hi[0]) {
+    const Vec3 c{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+    const double d = std::hypot(c[0] - cam.location[0], c[1] - cam.location[1], c[2] - cam.location[2]);
+    pixel = 2 * d * std::tan(cam.fov_deg * kPi / 360) / image_width;
+  }
+  const double m = median(seg);
+  return std::max(0.75 * pixel, std::isnan(m) ? cap : std::min(0.1 * m, cap));
+}
 
 void validate_scene_params(const SceneParams& p) {
   if (p.terrain) validate_terrain(*p.terrain, p.size_x, p.size_y, p.vertical_scale);
@@ -75,7 +97,9 @@ void validate_scene_params(const SceneParams& p) {
               std::to_string(int(l.kind)));
     if (!(l.radius >= 0) || !std::isfinite(l.radius))
       invalid("polyline radius must be finite and >= 0 (0 = automatic), got " + format_number(l.radius));
+    check_positive("polyline radius_scale", l.radius_scale);
   }
+  check_int_range("image_width", p.image_width, 16, 16384);
   if (!p.terrain && p.lines.empty()) invalid("a scene needs a terrain or at least one polyline set");
 }
 
@@ -133,9 +157,10 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   s += "// ---- povray_macros/ft_terrain.inc, embedded so the scene stands alone ----\n";
   s += kFtTerrainInc;
   s += "// ---- end of ft_terrain.inc ----\n\n";
-  s += kSceneMaterials;
-  s += std::string("#ifndef(FT_Ground_Tex)\n#declare FT_Ground_Tex = texture {\n   pigment { rgb ") +
-       (stormy ? "<0.10, 0.10, 0.11>" : "<0.55, 0.55, 0.52>") + " }\n   finish { diffuse 0.8 }\n}\n#end\n";
+  s += std::string("#ifndef(FT_Stormy) #declare FT_Stormy = ") + (stormy ? "1" : "0") + "; #end\n";
+  s += "// ---- povray_macros/ft_scene_materials.inc, embedded ----\n";
+  s += kFtSceneMaterialsInc;
+  s += "// ---- end of ft_scene_materials.inc ----\n";
   s += "\n#declare FT_Scene_Min = " + vec(lo) + ";\n#declare FT_Scene_Max = " + vec(hi) + ";\n\n";
 
   s += "camera {\n  perspective\n  location " + vec(cam.location) + "\n  sky " +
@@ -185,10 +210,10 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   for (size_t i = 0; i < p.lines.size(); ++i) {
     const SceneLines& l = p.lines[i];
     SweepOptions o;
-    const double auto_r = l.kind == LineKind::kLightning   ? 0.0035 * extent
-                          : l.kind == LineKind::kCoastline ? 0.0012 * extent
-                                                           : 0.003 * extent;
-    o.default_radius = l.radius > 0 ? l.radius : auto_r;
+    o.default_radius = l.radius > 0 ? l.radius : automatic_line_radius(l, cam, extent, p.image_width);
+    o.radius_scale = l.radius_scale;
+    PolylineSet sized;
+    const PolylineSet& set = l.radii_in_world_units ? *l.set : (sized = tapered(*l.set, o.default_radius));
     if (l.kind == LineKind::kCoastline && p.has_water) o.use_z_override = true, o.z_override = water;
     const char* tex = l.kind == LineKind::kLightning   ? "FT_Lightning_Tex"
                       : l.kind == LineKind::kCoastline ? "FT_Coast_Tex"
@@ -197,15 +222,16 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
                              (l.kind == LineKind::kLightning ? "  no_shadow\n" : "");
     s += "// polyline set " + std::to_string(i + 1) + ": " + kind_name(l.kind) + ", " +
          std::to_string(l.set->line_count()) + " lines, " + std::to_string(l.set->vertex_count()) +
-         " vertices\n";
-    s += sweeps_sdl(*l.set, o, mods);
+         " vertices, radius " + number(o.default_radius * o.radius_scale) +
+         (l.radii_in_world_units ? " where a vertex has none" : " (the file's radii as taper)") + "\n";
+    s += sweeps_sdl(set, o, mods);
     if (l.kind == LineKind::kLightning) {
       // A faint wide tube around the bolt reads as its glow. A `merge` would
       // hide the faint overlap of the pieces' end spheres but renders 3x
       // slower; at 85% transmit the overlap is barely visible.
       SweepOptions g = o;
-      g.radius_scale = 4;
-      const std::string glow = sweeps_sdl(*l.set, g, "  texture { FT_Lightning_Glow_Tex }\n  no_shadow\n");
+      g.radius_scale = 4 * o.radius_scale;
+      const std::string glow = sweeps_sdl(set, g, "  texture { FT_Lightning_Glow_Tex }\n  no_shadow\n");
       s += glow;
     }
     if (l.kind == LineKind::kLightning && !l.set->points.empty()) {
@@ -253,17 +279,22 @@ void set_scene_terrain(SceneParams& p, const Heightfield& hf, double size_x, dou
 
 SceneSummary write_terrain_scene(const Heightfield& hf, const std::string& pov_path) {
   SceneParams p;
-  set_scene_terrain(p, hf);
+  // A terrain that records its world size is placed in those units with its
+  // heights unscaled (they share the unit, as in Blender); one that does not
+  // is 1 wide with a relief of 20% of that.
+  if (hf.world_size() > 0) set_scene_terrain(p, hf, hf.world_size(), 1.0);
+  else set_scene_terrain(p, hf);
   p.title = "terrain " + std::to_string(hf.width()) + " x " + std::to_string(hf.height());
   return write_scene(p, pov_path);
 }
 
-SceneSummary write_polyline_scene(const PolylineSet& set, const std::string& pov_path, LineKind kind,
-                                  double radius, const CameraOptions& camera) {
+SceneSummary write_polyline_scene(const SceneLines& lines, const std::string& pov_path, const CameraOptions& camera,
+                                  int32_t image_width) {
   SceneParams p;
-  p.lines.push_back({&set, kind, radius});
+  p.lines.push_back(lines);
   p.camera = camera;
-  p.title = std::string(kind_name(kind)) + " polylines";
+  p.image_width = image_width;
+  p.title = std::string(kind_name(lines.kind)) + " polylines";
   return write_scene(p, pov_path);
 }
 

@@ -20,7 +20,18 @@ enum class LineKind : int32_t { kGeneric = 0, kLightning = 1, kCoastline = 2 };
 struct SceneLines {
   const PolylineSet* set = nullptr;  // world units, not owned
   LineKind kind = LineKind::kGeneric;
-  double radius = 0;  // world units where a vertex has none; 0 = by kind and scene size
+  // Radius of the tube in world units; 0 = automatic: never under 0.75 pixel
+  // at the lines' distance (for an image SceneParams::image_width wide), else
+  // a tenth of their median segment, capped by their kind's style (0.35%,
+  // 0.12% or 0.3% of the scene for lightning, coastlines, lines), so the
+  // tube never hides the fractal detail the image can show.
+  double radius = 0;
+  // The vertex radii of the file: world units where > 0, `radius` where 0
+  // (true; the C ABI's rule), or only the taper (false): each vertex gets
+  // `radius` times its radius over the set's largest, so branches keep their
+  // relative thickness while the size follows the picture (the CLI's default).
+  bool radii_in_world_units = true;
+  double radius_scale = 1;  // multiplies every radius; > 0
 };
 
 struct SceneParams {
@@ -34,6 +45,7 @@ struct SceneParams {
   // The terrain PNG; "" = beside the scene, named after it ("x.pov" -> "x.terrain.png").
   std::string image_path;
   std::string title;                     // written as a comment
+  int32_t image_width = 800;             // pixels the automatic line radius is sized for, 16..16384
 };
 
 struct SceneSummary {
@@ -54,7 +66,8 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path);
 // [0, 1) puts the sea at that quantile of the heights (NaN: no sea).
 void set_scene_terrain(SceneParams& p, const Heightfield& hf, double size_x = 1, double vertical_scale = 0,
                        double sea_fraction = 0.3);
-// `fracterra terrain ... --pov`: the terrain alone with defaults as above.
+// `fracterra terrain ... --pov`: the terrain alone, in its recorded world size
+// with heights unscaled (or, without one, with the defaults above).
 SceneSummary write_terrain_scene(const Heightfield& hf, const std::string& pov_path);
 
 // Camera defaults for a polyline alone: seen from high above (70 degrees),
@@ -67,16 +80,22 @@ inline CameraOptions polyline_camera(LineKind kind = LineKind::kGeneric) {
 
 // `fracterra polyline ... --pov`: one polyline set alone, framed, over a
 // plain ground, as a lightning, coastline or generic line.
-SceneSummary write_polyline_scene(const PolylineSet& set, const std::string& pov_path, LineKind kind,
-                                  double radius, const CameraOptions& camera);
-// The same with the automatic radius and the camera defaults of its kind.
+SceneSummary write_polyline_scene(const SceneLines& lines, const std::string& pov_path, const CameraOptions& camera,
+                                  int32_t image_width = 800);
+// The same with the automatic radius (vertex radii as world units) and the
+// camera defaults of its kind.
 inline SceneSummary write_polyline_scene(const PolylineSet& set, const std::string& pov_path,
                                          LineKind kind = LineKind::kGeneric) {
-  return write_polyline_scene(set, pov_path, kind, 0, polyline_camera(kind));
+  return write_polyline_scene(SceneLines{&set, kind}, pov_path, polyline_camera(kind));
 }
+
+// The automatic radius of `lines` (see SceneLines::radius) in a scene whose
+// content spans `extent`, seen by `camera` in an image `image_width` wide.
+double automatic_line_radius(const SceneLines& lines, const Camera& camera, double extent, int32_t image_width);
 
 // The include files of povray_macros/ this writer embeds in every scene so
 // a scene needs nothing beside its PNG (generated from the .inc at build).
 extern const char* const kFtTerrainInc;
+extern const char* const kFtSceneMaterialsInc;
 
 }  // namespace ft::pov

@@ -1,5 +1,6 @@
 #include "terrain/terrain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -53,6 +54,36 @@ static_assert(int(kBasisValue) == FT_BASIS_VALUE && int(kBasisGradient) == FT_BA
 static_assert(int(kFbmStandard) == FT_FBM_STANDARD && int(kFbmRidged) == FT_FBM_RIDGED &&
               int(kFbmHybrid) == FT_FBM_HYBRID && int(kFbmHetero) == FT_FBM_HETERO);
 
+// Float range. Heights are float32: a sigma large enough to overflow them
+// (`--sigma 1e300`) used to be noticed only when the file was written, after
+// the work. The check bounds the largest |height| a method can make, B =
+// max|reference| + sigma * S, with S the largest possible sum of the
+// displacements that reach one sample in units of sigma:
+//  - one Gaussian is at most kMaxGaussian: Box-Muller's radius sqrt(-2 ln u)
+//    at the smallest uniform the RNG gives, u = 2^-25 (24 bits, half a step
+//    from 0): sqrt(50 ln 2) = 5.89;
+//  - midpoint / additions: the corners, then at most 4 displacements per
+//    level (its creation, and the additions of the square and diamond
+//    steps), each at most sigma: S = 6 (1 + 4 levels) (Voss 1985);
+//  - the Voss profile: one per level: S = 6 (1 + levels);
+//  - interpolated: the corners plus one per cycle, each <= sigma;
+//  - spectral: |sum c_k| <= sqrt(N) (sum |c_k|^2)^(1/2) over the N = W H
+//    coefficients (Cauchy-Schwarz), whose power is scaled to sigma^2 with
+//    |g| <= 6 on both parts: S = 6 sqrt(2 W H);
+//  - fbm: fbm_height_bound, the octave recurrences at the noise's bound.
+// B must stay below FLT_MAX / 8: the generators add four neighbours before
+// averaging and every consumer takes max - min.
+constexpr double kMaxGaussian = 5.9;
+constexpr double kHeightLimit = 3.4028234663852886e38 / 8;
+
+void check_height_bound(const std::string& what, double sigma, double per_sigma, double base = 0) {
+  const double bound = base + sigma * per_sigma;
+  if (bound <= kHeightLimit) return;
+  invalid(what + " " + format_number(sigma) + " is too large: heights could reach " + format_number(bound) +
+          ", beyond the float range (" + format_number(kHeightLimit) + " with headroom); for these settings it must "
+          "be at most " + format_number((kHeightLimit - base) / per_sigma));
+}
+
 FbmConfig fbm_config(const ft_terrain_params& p) {
   FbmConfig c;
   c.width = p.width, c.height = p.height, c.octaves = p.octaves, c.lacunarity = p.lacunarity;
@@ -61,6 +92,41 @@ FbmConfig fbm_config(const ft_terrain_params& p) {
   c.sigma = p.sigma, c.periodic = p.periodic != 0, c.seed = p.seed, c.threads = p.threads;
   c.progress = Progress(p.progress, p.progress_user);
   return c;
+}
+
+// The float-range check above for each method (after the other checks, so
+// the sizes and counts it uses are valid).
+void check_terrain_heights(const ft_terrain_params& p) {
+  switch (p.method) {
+    case FT_TERRAIN_MIDPOINT:
+    case FT_TERRAIN_ADDITIONS: {
+      const double per_sigma = kMaxGaussian * (1 + 4.0 * p.levels);
+      if (!p.reference) return check_height_bound("sigma", p.sigma, per_sigma);
+      const size_t n = size_t(p.reference_size) * size_t(p.reference_size);
+      double top = 0;
+      for (size_t i = 0; i < n; ++i) top = std::max(top, double(std::fabs(p.reference[i])));
+      const double sigma = reference_scale(p.reference_scale, p.sigma, p.reference, n);
+      return check_height_bound(p.reference_scale == FT_REFSCALE_SIGMA ? "sigma" : "the reference scale", sigma,
+                                per_sigma, top);
+    }
+    case FT_TERRAIN_MANDELBROT:  // h = sigma (1 - (1 + s)^(-1/2)) lies in [0, sigma)
+      return check_height_bound("sigma", p.sigma, 1.0);
+    case FT_TERRAIN_SPECTRAL:
+      return check_height_bound("sigma", p.sigma, kMaxGaussian * std::sqrt(2.0 * p.width * p.height));
+    case FT_TERRAIN_INTERPOLATED: {
+      const double d0 = std::max(p.width, p.height);
+      return check_height_bound("sigma", p.sigma, kMaxGaussian * (2 + std::ceil(std::log(d0) / std::log(p.lacunarity))));
+    }
+    default: {
+      double unscaled = 0;
+      const double per_sigma = fbm_height_bound(fbm_config(p), &unscaled);
+      if (!(unscaled <= kHeightLimit))
+        invalid("the fbm octave sum could reach " + format_number(unscaled) + " with offset " +
+                format_number(p.offset) + " and " + std::to_string(p.octaves) +
+                " octaves, beyond the float range; use a smaller |offset| or fewer octaves");
+      return check_height_bound("sigma", p.sigma, per_sigma);
+    }
+  }
 }
 
 MandelbrotConfig mandelbrot_config(const ft_terrain_params& p) {
@@ -141,10 +207,13 @@ void validate_terrain_params(const ft_terrain_params& p) {
     if (p.method == FT_TERRAIN_INTERPOLATED) check_interpolated_lacunarity(p.lacunarity);
     if (p.method == FT_TERRAIN_MANDELBROT) validate_mandelbrot(mandelbrot_config(p));
   }
+  check_terrain_heights(p);
 }
 
-Heightfield generate_terrain(const ft_terrain_params& p) {
-  validate_terrain_params(p);
+namespace {
+
+// The generator of one method, without the world size.
+Heightfield generate_terrain_samples(const ft_terrain_params& p) {
   switch (p.method) {
     case FT_TERRAIN_MIDPOINT:
     case FT_TERRAIN_ADDITIONS: {
@@ -163,9 +232,7 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
         c.sigma = reference_scale(p.reference_scale, p.sigma, p.reference,
                                   size_t(p.reference_size) * size_t(p.reference_size));
       }
-      Heightfield hf = diamond_square(c);
-      hf.set_world_size(p.world_size);
-      return hf;
+      return diamond_square(c);
     }
     case FT_TERRAIN_FBM:
       return fbm(fbm_config(p));
@@ -175,15 +242,24 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
     case FT_TERRAIN_INTERPOLATED:
       return interpolated_fm({p.width, p.height, p.lacunarity, p.hurst, p.sigma, p.seed, p.periodic != 0,
                               p.threads, Progress(p.progress, p.progress_user)});
-    case FT_TERRAIN_MANDELBROT: {
-      Heightfield hf = mandelbrot(mandelbrot_config(p));
-      hf.set_world_size(p.world_size);
-      return hf;
-    }
+    case FT_TERRAIN_MANDELBROT:
+      return mandelbrot(mandelbrot_config(p));
   }
   // validate_terrain_params admits only the methods above: reaching here means a
   // method was added to the range check without a generator.
   fail(FT_ERR_INTERNAL, "terrain method " + std::to_string(p.method) + " passed validation but has no generator");
+}
+
+}  // namespace
+
+Heightfield generate_terrain(const ft_terrain_params& p) {
+  validate_terrain_params(p);
+  // Every method records the world size here, in one place: it used to be
+  // set by the midpoint branch only, so fbm, spectral and interpolated
+  // terrains lost it (and `coastline --world` refused them).
+  Heightfield hf = generate_terrain_samples(p);
+  hf.set_world_size(p.world_size);
+  return hf;
 }
 
 ft_profile_params default_profile_params() {
@@ -205,14 +281,22 @@ void validate_profile_params(const ft_profile_params& p) {
   check_range("hurst", p.hurst, 0.0, 1.0);
   check_positive("sigma", p.sigma);
   check_int_range("reference_scale", p.reference_scale, FT_REFSCALE_SIGMA, FT_REFSCALE_STD);
+  const double per_sigma = kMaxGaussian * (1 + p.levels);
   if (p.reference) {
     const int m = dyadic_levels(p.reference_size);
     if (m < 1 || m > p.levels)
       invalid("reference_size must be 2^m + 1 with 1 <= m <= levels (" + std::to_string(p.levels) + "); got " +
               std::to_string(p.reference_size));
-    for (int32_t i = 0; i < p.reference_size; ++i)
+    double top = 0;
+    for (int32_t i = 0; i < p.reference_size; ++i) {
       if (!std::isfinite(p.reference[i]))
         invalid("reference value " + std::to_string(i) + " is " + format_number(p.reference[i]) + "; all must be finite");
+      top = std::max(top, double(std::fabs(p.reference[i])));
+    }
+    const double sigma = reference_scale(p.reference_scale, p.sigma, p.reference, size_t(p.reference_size));
+    check_height_bound(p.reference_scale == FT_REFSCALE_SIGMA ? "sigma" : "the reference scale", sigma, per_sigma, top);
+  } else {
+    check_height_bound("sigma", p.sigma, per_sigma);
   }
 }
 
