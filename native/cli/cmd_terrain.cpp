@@ -187,7 +187,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_flag("--curves-world", o->curves_world,
                                  "mandelbrot: write the curves' x, y in world units (--world-size across x)");
                     app.add_option("--reference", o->reference,
-                                   "reference grid (2^m + 1)^2 as .png, .pgm or .npy; its values survive exactly")
+                                   "reference grid (2^m + 1)^2 as .png, .pgm, .npy, .exr, .raw/.r16 or any raster GDAL reads; its values survive exactly")
                         ->check(CLI::ExistingFile);
                     app.add_option("--reference-scale", p.reference_scale,
                                    "displacement scale when refining references: sigma as given, or the mean "
@@ -197,7 +197,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                         ->capture_default_str();
                     app.add_option("--threads", p.threads, "worker threads, 0 = all cores (output never depends on it)")
                         ->check(CLI::Range(0, 1024))->capture_default_str();
-                    app.add_option("--out", o->out, "output .png (16-bit), .pgm (16-bit) or .npy (float32)");
+                    app.add_option("--out", o->out, "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), .exr (float) or .raw/.r16 (RAW16 + sidecar .json)");
                     app.add_option("--pov", o->pov, "also write a POV-Ray scene (.pov, with its PNG beside it)");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, min, max, mean, std");
                     return [o] {
