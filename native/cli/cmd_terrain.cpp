@@ -187,7 +187,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_flag("--curves-world", o->curves_world,
                                  "mandelbrot: write the curves' x, y in world units (--world-size across x)");
                     app.add_option("--reference", o->reference,
-                                   "reference grid (2^m + 1)^2 as .png, .pgm, .npy, .exr, .raw/.r16 or any raster GDAL reads; its values survive exactly")
+                                   "reference grid (2^m + 1)^2: " + std::string(kHeightfieldReadHelp) + "; its values survive exactly (a DEM: see fracterra refine)")
                         ->check(CLI::ExistingFile);
                     app.add_option("--reference-scale", p.reference_scale,
                                    "displacement scale when refining references: sigma as given, or the mean "

@@ -9,10 +9,11 @@
 // degrees: their width is turned into metres on the CRS's ellipsoid at the
 // raster's centre latitude, as heights are in metres.
 //
-// Nodata (the band's nodata value, and NaN): refused with the count, or filled
+// Nodata (the band's nodata value, and NaN): refused with the count, filled
 // by GDAL's GDALFillNodata (inverse-distance weighting of the nearest valid
-// samples found along rays from each hole, no smoothing). Valid samples are
-// never changed.
+// samples found along rays from each hole, no smoothing; valid samples are
+// never changed), or kept as NaN for a caller that works around it (the DEM
+// refinement picks a window without nodata).
 #pragma once
 
 #include <string>
@@ -21,7 +22,7 @@
 
 namespace ft {
 
-enum class NodataPolicy { refuse, fill };
+enum class NodataPolicy { refuse, fill, keep };
 
 Heightfield read_gdal(const std::string& path, NodataPolicy nodata = NodataPolicy::refuse);
 // The same from bytes in memory (through GDAL's /vsimem/); `extension`

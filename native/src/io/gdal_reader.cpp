@@ -81,7 +81,7 @@ Heightfield read_dataset(GDALDatasetH ds, const std::string& name, NodataPolicy 
     if (!std::isfinite(z[i])) z[i] = std::nanf(""), ++missing;
   }
   if (missing == hf.size()) fail(FT_ERR_FORMAT, "'" + name + "' holds no valid sample (all are nodata)");
-  if (missing > 0) {
+  if (missing > 0 && policy != NodataPolicy::keep) {
     if (policy == NodataPolicy::refuse)
       fail(FT_ERR_FORMAT, "'" + name + "' has " + std::to_string(missing) + " nodata samples of " +
                               std::to_string(hf.size()) + " (fill them with --nodata fill, or choose a window "

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "fracterra/core.h"
+#include "core/error.hpp"
 
 namespace ft {
 

@@ -32,5 +32,7 @@ Heightfield decode_heightfield(const std::string& bytes, const std::string& exte
 
 // The extensions write_heightfield knows, for messages and help texts.
 inline constexpr const char* kHeightfieldWriteFormats = ".png, .pgm, .npy, .tif, .exr, .raw or .r16";
+inline constexpr const char* kHeightfieldReadHelp =
+    "heightfield .png, .pgm, .npy, .exr, .raw/.r16, or any raster GDAL reads (.tif, .hgt, .asc, ...)";
 
 }  // namespace ft
