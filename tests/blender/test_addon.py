@@ -189,6 +189,17 @@ class TerrainAddTest(unittest.TestCase):
             levels=2, reference_source="IMAGE", reference_image=img.name, reference_levels=3),
             "reference_size must be 2^m + 1")
 
+    def test_levels_beyond_blenders_limit_are_refused_before_any_work(self):
+        # Levels 13 used to run ~35 s, peak at 11 GB and end in a traceback from foreach_set.
+        expect_report(self, lambda: bpy.ops.mesh.fracterra_terrain_add(levels=13),
+                      "Refused before generating", "8193 x 8193", "face corners")
+        self.assertEqual((len(bpy.data.objects), len(bpy.data.meshes)), (0, 0))
+        obj = add_terrain(levels=3, seed=1)
+        before = coords(obj.data)
+        obj.fracterra_terrain.levels = 13
+        expect_report(self, bpy.ops.object.fracterra_terrain_regenerate, "Refused before generating")
+        self.assertEqual(coords(obj.data), before)
+
     def test_memory_cap_is_an_error_report(self):
         lib = core().library()
         lib.ft_set_memory_cap(1 << 20)
@@ -425,6 +436,25 @@ class TerrainToolsTest(unittest.TestCase):
         bpy.context.view_layer.objects.active = terrain
         expect_report(self, lambda: bpy.ops.curve.fracterra_coastline_add(use_quantile=False, level=1e6),
                       "no coastline at level 1e+06")
+
+    def test_coastline_defaults_to_the_sea_level_and_is_visible(self):
+        terrain = add_terrain(levels=5, seed=2, world_size=10.0, use_sea_level=True, sea_level=-0.5)
+        self.assertEqual(bpy.ops.curve.fracterra_coastline_add(), {"FINISHED"})
+        coast = bpy.context.active_object
+        self.assertGreater(len(coast.data.splines), 0)
+        self.assertAlmostEqual(coast.data.bevel_depth, 10.0 / 500, places=6)  # the tube's radius
+        radii = array.array("f", [0.0]) * len(coast.data.splines[0].points)
+        coast.data.splines[0].points.foreach_get("radius", radii)
+        self.assertEqual(set(radii), {1.0})
+        # Every point on the coast: between a flat-sea vertex and land, so at or just above the sea.
+        z = [p[2] for line in spline_points(coast) for p in line]
+        self.assertTrue(all(-0.5 <= h < -0.49 for h in z), (min(z), max(z)))
+        # The coastline is active now; the operator (its redo) still finds the terrain.
+        self.assertTrue(bpy.ops.curve.fracterra_coastline_add.poll())
+        self.assertEqual(bpy.ops.curve.fracterra_coastline_add(use_quantile=True), {"FINISHED"})
+        self.assertEqual(bpy.context.active_object.parent, terrain)
+        bpy.ops.mesh.primitive_cube_add()
+        self.assertFalse(bpy.ops.curve.fracterra_coastline_add.poll())
 
     def test_measures_of_a_terrain_and_a_curve(self):
         add_terrain(levels=7, seed=1, hurst=0.7)

@@ -7,7 +7,8 @@ import bpy
 
 from .settings_ui import draw_settings
 from .terrain_objects import is_measurable
-from .widgets import draw_library_problem, draw_wrapped
+from ..core import params
+from .widgets import draw_library_problem, draw_size, draw_wrapped
 
 # Operators the panels show (bl_idname of each).
 TERRAIN_ADD = "mesh.fracterra_terrain_add"
@@ -36,6 +37,7 @@ class FRACTERRA_PT_terrain(bpy.types.Panel):
         if settings.last_error:
             draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True)
         draw_settings(layout, settings)
+        draw_size(layout, params.values_of(settings))
 
 
 class FRACTERRA_PT_measures(bpy.types.Panel):

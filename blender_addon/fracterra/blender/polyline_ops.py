@@ -99,6 +99,21 @@ class FRACTERRA_OT_polyline_add(bpy.types.Operator):
 FRACTERRA_OT_polyline_add.__annotations__ = props.terrain_annotations(param_list=params.POLYLINE_PARAMS)
 
 
+# Why Terrain Coastline is greyed out, shown in its tooltip.
+COASTLINE_NEEDS = "Select a fractal terrain (Add > Mesh > Fractal Terrain) in Object Mode to draw its coastline"
+
+
+def coastline_terrain(obj):
+    """The terrain a coastline is drawn for: the active terrain, or the parent of
+    the active coastline (what is active right after the operator, when its redo
+    panel re-runs it)."""
+    if is_terrain(obj):
+        return obj
+    if obj is not None and obj.get("fracterra_kind") == "COASTLINE" and is_terrain(obj.parent):
+        return obj.parent
+    return None
+
+
 class FRACTERRA_OT_coastline_add(bpy.types.Operator):
     """Add the coastline (level set) of the active fractal terrain as a curve"""
     bl_idname = "curve.fracterra_coastline_add"
@@ -111,38 +126,58 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
     quantile: bpy.props.FloatProperty(name="Quantile", default=0.5, min=0.0, max=1.0, subtype="FACTOR",
                                       description="Fraction of the terrain below the coastline")
     level: bpy.props.FloatProperty(name="Level", default=0.0, subtype="DISTANCE", unit="LENGTH",
-                                   description="Height of the coastline (local z)")
-    radius: bpy.props.FloatProperty(name="Radius", default=0.02, min=0.0, subtype="DISTANCE", unit="LENGTH",
-                                    description="Bevel radius of the coastline curve (0: a bare line)")
+                                   description="Height of the coastline (local z); at a terrain's flat sea it "
+                                               "is taken just above it")
+    radius: bpy.props.FloatProperty(name="Radius", default=0.0, min=0.0, soft_max=1.0, subtype="DISTANCE",
+                                    unit="LENGTH", description="Radius of the coastline's tube (0: a bare line); "
+                                                               "when not given, 1/500 of the terrain's size")
 
     @classmethod
     def poll(cls, context):
-        return is_terrain(context.active_object) and context.mode == "OBJECT"
+        if context.mode == "OBJECT" and coastline_terrain(context.active_object) is not None:
+            return True
+        cls.poll_message_set(COASTLINE_NEEDS)
+        return False
+
+    def defaults_from(self, settings):
+        """What the caller left unset comes from the terrain: its sea level when it
+        has one, and a tube visible at its size."""
+        is_set = self.properties.is_property_set
+        if settings.use_sea_level and not (is_set("use_quantile") or is_set("quantile") or is_set("level")):
+            self.use_quantile, self.level = False, settings.sea_level
+        if not is_set("radius"):
+            self.radius = settings.world_size / 500
 
     def execute(self, context):
-        terrain = context.active_object
+        terrain = coastline_terrain(context.active_object)
+        settings = terrain.fracterra_terrain
+        self.defaults_from(settings)
         try:
             with heightfield_of(terrain) as hf:
                 nx, ny = hf.width, hf.height
-                size_x, size_y = core.grid_size(terrain.fracterra_terrain.world_size, nx, ny)
+                size_x, size_y = core.grid_size(settings.world_size, nx, ny)
+                s = hf.stats()
                 level = self.quantile if self.use_quantile else self.level
+                if not self.use_quantile and settings.use_sea_level and level <= settings.sea_level:
+                    # The flattened sea lies exactly at the sea level and counts as land
+                    # there (land: height >= level): take the level just above it.
+                    level = settings.sea_level + 1e-5 * max(s["max"] - s["min"], 1e-6)
                 with core.coastline(hf, level, quantile=self.use_quantile) as pl:
                     if pl.line_count == 0:
                         # Not an empty curve without a word: say why.
-                        s = hf.stats()
                         what = f"quantile {level:g}" if self.use_quantile else f"level {level:g}"
                         self.report({"ERROR"}, f"no coastline at {what}: the terrain's heights are "
                                                f"[{s['min']:g}, {s['max']:g}] and no cell crosses it")
                         return {"CANCELLED"}
                     def to_local(x, y, z):
                         return (x / (nx - 1) - 0.5) * size_x, (y / (ny - 1) - 0.5) * size_y, z
-                    curve = curve_from_polylines("Coastline", pl, bevel=False, transform=to_local)
+                    curve = curve_from_polylines("Coastline", pl, bevel=False, transform=to_local,
+                                                 unit_radius=True)
                     lines = pl.line_count
         except REPORTED as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
-        if self.radius > 0:
-            curve.bevel_depth = self.radius
+        curve.bevel_depth = self.radius  # times each point's radius of 1
         obj = link_new_object(context, f"{terrain.name} Coastline", curve, terrain.matrix_world.copy())
         obj.parent = terrain
         obj.matrix_parent_inverse = terrain.matrix_world.inverted()

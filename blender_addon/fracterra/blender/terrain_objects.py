@@ -6,6 +6,7 @@ import array
 
 from .. import core
 from ..core import params
+from ..core.mesh_limits import grid_shape
 from .reporting import SettingsError
 
 
@@ -20,8 +21,7 @@ def is_measurable(obj):
 
 def terrain_grid_size(obj):
     """(nx, ny) of a fracterra terrain object whose mesh is still its grid."""
-    s = obj.fracterra_terrain
-    nx, ny = ((2 ** s.levels + 1,) * 2 if s.method in params.DYADIC_METHODS else (s.width, s.height))
+    nx, ny = grid_shape(params.values_of(obj.fracterra_terrain))
     if len(obj.data.vertices) != nx * ny:
         raise SettingsError(f"'{obj.name}' has {len(obj.data.vertices)} vertices, not its {nx} x {ny} grid "
                             "(edited?); regenerate it first")
