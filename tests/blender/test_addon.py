@@ -16,8 +16,7 @@ import bpy  # noqa: E402
 
 
 def core():
-    import fracterra.core
-    return fracterra.core
+    return addon_harness.submodule("core")
 
 
 def clear_scene():
@@ -226,7 +225,7 @@ def operator_exists(idname):
 
 class DrawTest(unittest.TestCase):
     def test_settings_ui_draws_only_existing_properties_for_every_method(self):
-        from fracterra.blender import panels, settings_ui
+        panels, settings_ui = (addon_harness.submodule(f"blender.{m}") for m in ("panels", "settings_ui"))
         clear_scene()
         obj = add_terrain(levels=3)
         settings = obj.fracterra_terrain
@@ -244,7 +243,7 @@ class DrawTest(unittest.TestCase):
     def test_panels_and_menus_name_registered_operators(self):
         # Panels and menus refer to operators by id string: a typo would only show as a
         # missing button, so every id they draw must resolve to a registered operator.
-        from fracterra.blender import menus, panels
+        menus, panels = (addon_harness.submodule(f"blender.{m}") for m in ("menus", "panels"))
         clear_scene()
         operators = []
         fake = type("P", (), {"layout": RecordingLayout([], operators)})()
@@ -483,7 +482,11 @@ class TerrainToolsTest(unittest.TestCase):
             cube = bpy.context.active_object
             if creased:
                 crease = array.array("f", [1.0]) * len(cube.data.edges)
-                cube.data.edges.foreach_set("crease", crease)
+                if bpy.app.version >= (4, 0, 0):  # edge creases became the attribute crease_edge
+                    layer = cube.data.attributes.new("crease_edge", "FLOAT", "EDGE")
+                    layer.data.foreach_set("value", crease)
+                else:
+                    cube.data.edges.foreach_set("crease", crease)
             self.assertEqual(bpy.ops.object.fracterra_fractalize(levels=2, sigma=0.0, use_creases=True),
                              {"FINISHED"})
             extents[creased] = max(abs(c) for c in coords(cube.data))
