@@ -500,6 +500,7 @@ class TerrainToolsTest(unittest.TestCase):
         self.assertEqual(bpy.ops.object.fracterra_fractalize(levels=2, sigma=0.05, seed=1), {"FINISHED"})
         self.assertEqual(len(cube.data.polygons), 6 * 16)
         self.assertFalse(cube.data.validate(verbose=False))
+        self.assertTrue(all(p.use_smooth for p in cube.data.polygons), "Fractalize came out flat-shaded")
         expect_report(self, lambda: bpy.ops.object.fracterra_fractalize(levels=1, scheme="LOOP"), "triang")
 
     def test_fractalize_keeps_creased_edges_sharp(self):
@@ -522,6 +523,19 @@ class TerrainToolsTest(unittest.TestCase):
             extents[creased] = max(abs(c) for c in coords(cube.data))
         self.assertAlmostEqual(extents[True], 1.0, places=6)
         self.assertLess(extents[False], 0.9)
+
+    def test_measures_are_stale_once_the_object_changes(self):
+        fingerprint = addon_harness.submodule("blender.terrain_objects").geometry_fingerprint
+        panels = addon_harness.submodule("blender.panels")
+        obj = add_terrain(levels=5, seed=1, hurst=0.76)
+        self.assertEqual(bpy.ops.object.fracterra_measure(), {"FINISHED"})
+        self.assertEqual(obj.fracterra_measures.geometry, fingerprint(obj))
+        obj.fracterra_terrain.hurst = 0.3
+        bpy.ops.object.fracterra_terrain_regenerate()
+        self.assertNotEqual(obj.fracterra_measures.geometry, fingerprint(obj))  # drawn as stale
+        panels.FRACTERRA_PT_measures.draw(type("P", (), {"layout": RecordingLayout([])})(), bpy.context)
+        bpy.ops.object.fracterra_measure()
+        self.assertEqual(obj.fracterra_measures.geometry, fingerprint(obj))
 
     def test_measures_of_a_straight_bezier_curve(self):
         curve = bpy.data.curves.new("bezier", "CURVE")

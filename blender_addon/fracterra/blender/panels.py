@@ -6,7 +6,7 @@ import math
 import bpy
 
 from .settings_ui import draw_settings
-from .terrain_objects import is_measurable
+from .terrain_objects import geometry_fingerprint, is_measurable
 from ..core import params
 from .widgets import draw_library_problem, draw_size, draw_wrapped
 
@@ -59,6 +59,11 @@ class FRACTERRA_PT_measures(bpy.types.Panel):
             layout.label(text="Not measured yet")
             return
         col = layout.column(align=True)
+        if m.geometry != geometry_fingerprint(obj):
+            # Measured before the last change (Regenerate, an edit): never shown as current.
+            draw_wrapped(layout, "Stale: the object changed since it was measured; press Measure again",
+                         icon="ERROR", alert=True)
+            col.enabled = False
         if m.kind == "terrain" and m.estimator:
             col.label(text=f"Estimator: {m.estimator}")
         names = ("hurst", "dimension", "stderr") if m.kind == "terrain" else ("eta", "chi", "gamma", "dimension", "stderr")

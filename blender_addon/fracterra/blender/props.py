@@ -86,3 +86,6 @@ class FRACTERRA_PG_measures(bpy.types.PropertyGroup):
     eta: FloatProperty(name="eta", description="Max deviation of the main line from its chord / chord length")
     chi: FloatProperty(name="chi", description="Mean deviation from the chord / chord length")
     gamma: FloatProperty(name="gamma", description="Line length / chord length (elongation)")
+    geometry: StringProperty(name="Geometry", default="",
+                             description="Fingerprint of the geometry that was measured: when the object's "
+                                         "differs, the measures are shown as stale")

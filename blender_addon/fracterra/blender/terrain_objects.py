@@ -3,10 +3,14 @@ all), a terrain's grid size, and a library heightfield of its current vertex
 heights."""
 
 import array
+import zlib
+
+import numpy as np
 
 from .. import core
 from ..core import params
 from ..core.mesh_limits import grid_shape
+from .curve_build import spline_nodes
 from .reporting import SettingsError
 
 
@@ -34,3 +38,18 @@ def heightfield_of(obj):
     co = array.array("f", [0.0]) * (3 * nx * ny)
     obj.data.vertices.foreach_get("co", co)
     return core.Heightfield.from_values(nx, ny, co[2::3])
+
+
+def geometry_fingerprint(obj):
+    """A cheap digest (CRC-32 of every coordinate) of a mesh's vertices or a
+    curve's points: the measures it was taken of are stale once it differs."""
+    if obj.type == "MESH":
+        co = np.empty(3 * len(obj.data.vertices), dtype=np.float32)
+        obj.data.vertices.foreach_get("co", co)
+        parts = [co]
+    else:
+        parts = [spline_nodes(spline) for spline in obj.data.splines]
+    crc = 0
+    for part in parts:
+        crc = zlib.crc32(np.ascontiguousarray(part).tobytes(), crc)
+    return f"{obj.type}:{sum(len(p) for p in parts)}:{crc:08x}"
