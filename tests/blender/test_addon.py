@@ -363,12 +363,61 @@ class PolylineTest(unittest.TestCase):
         self.assertEqual(obj.data.bevel_depth, 1.0)
 
     def test_branching_fpl3d_gives_one_spline_per_line(self):
-        obj = self.add(method="FPL3D", depth=6, seed=2, branch_prob=0.8, spread=0.1)
+        obj = self.add(method="FPL3D", depth=6, seed=2, branch_prob=0.8, spread=0.1, start=(0, 0, 0), end=(10, 0, 0))
         with core().generate_polylines(method="FPL3D", depth=6, seed=2, branch_prob=f32(0.8), spread=f32(0.1),
                                        base=[(0, 0, 0), (10, 0, 0)]) as pl:
             expected = [line for line, _ in pl.lines() if len(line) >= 2]
         self.assertGreater(len(expected), 1)
         self.assertEqual(spline_points(obj), [as_f32(line) for line in expected])
+
+    def test_default_is_a_visible_vertical_bolt_at_the_3d_cursor(self):
+        bpy.context.scene.cursor.location = (1.0, 2.0, 3.0)
+        obj = self.add()
+        self.assertEqual(tuple(obj.location), (1.0, 2.0, 3.0))
+        settings = obj.fracterra_polyline
+        self.assertTrue(settings.is_polyline)
+        self.assertEqual(settings.method, "FPL3D")
+        self.assertAlmostEqual(settings.radius, 10.0 / 200, places=6)  # follows the 10 m length
+        self.assertEqual(obj.data.bevel_depth, 1.0)
+        main = spline_points(obj)[0]
+        self.assertEqual((main[0], main[-1]), ((0.0, 0.0, 10.0), (0.0, 0.0, 0.0)))
+        self.assertGreater(len(obj.data.splines), 1, "a bolt with no branch")
+        radius = obj.data.splines[0].points[0].radius
+        self.assertAlmostEqual(radius, 0.05, places=6)
+        thick = self.add(radius=0.2)  # a radius given is kept
+        self.assertAlmostEqual(thick.data.splines[0].points[0].radius, 0.2, places=6)
+
+    def test_a_polyline_is_re_edited_in_place(self):
+        obj = self.add(depth=5, seed=1, branch_prob=0.0)
+        name = obj.name
+        cube_material = bpy.data.materials.new("kept")
+        obj.data.materials.append(cube_material)
+        bpy.ops.mesh.primitive_cube_add()  # move on to another object, then come back
+        bpy.context.view_layer.objects.active = obj
+        self.assertTrue(bpy.ops.object.fracterra_polyline_regenerate.poll())
+        obj.fracterra_polyline.seed = 9
+        self.assertEqual(bpy.ops.object.fracterra_polyline_regenerate(), {"FINISHED"})
+        self.assertEqual(bpy.context.active_object.name, name)
+        with core().generate_polylines(method="FPL3D", depth=5, seed=9, branch_prob=0.0, spread=f32(0.1),
+                                       base=[(0, 0, 10), (0, 0, 0)]) as pl:
+            expected = [line for line, _ in pl.lines() if len(line) >= 2]
+        self.assertEqual(spline_points(obj), [as_f32(line) for line in expected])
+        self.assertEqual(obj.data.materials[0], cube_material)
+        # Auto Update regenerates on a change, as a terrain does.
+        obj.fracterra_polyline.auto_update = True
+        obj.fracterra_polyline.depth = 3
+        self.assertEqual(len(spline_points(obj)[0]), 2 ** 3 + 1)
+        # The panel draws its settings, not "not a fractal terrain".
+        panels = addon_harness.submodule("blender.panels")
+        self.assertTrue(panels.FRACTERRA_PT_polyline.poll(bpy.context))
+        self.assertFalse(panels.FRACTERRA_PT_terrain.poll(bpy.context))
+        log = []
+        panels.FRACTERRA_PT_polyline.draw(type("P", (), {"layout": RecordingLayout(log)})(), bpy.context)
+        self.assertIn("depth", [name for _, name in log])
+        # IFS is a point mesh: switching the curve to it is a report, not a traceback.
+        obj.fracterra_polyline.auto_update = False
+        obj.fracterra_polyline.method = "IFS"
+        expect_report(self, bpy.ops.object.fracterra_polyline_regenerate, "object type")
 
     def test_koch_and_ifs(self):
         koch = self.add(method="KOCH", depth=2)
@@ -397,6 +446,13 @@ class PolylineTest(unittest.TestCase):
         self.assertEqual(len(line), 2 * 2 ** 3 + 1)
         self.assertEqual([line[0], line[8], line[16]], nodes)
         self.assertEqual(tuple(obj.location), (1.0, 2.0, 3.0))
+        # Its nodes are kept on it: it regenerates along them after the base is gone.
+        bpy.data.objects.remove(base)
+        obj.fracterra_polyline.seed = 5
+        bpy.context.view_layer.objects.active = obj
+        self.assertEqual(bpy.ops.object.fracterra_polyline_regenerate(), {"FINISHED"})
+        line = spline_points(obj)[0]
+        self.assertEqual([line[0], line[8], line[16]], nodes)
 
     def test_active_mesh_edge_chain_is_the_base(self):
         mesh = bpy.data.meshes.new("chain")

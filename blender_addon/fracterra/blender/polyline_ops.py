@@ -1,16 +1,19 @@
 """Curves: Add > Curve > Fractal Polyline, and the coastlines of a terrain."""
 
+import json
+
 import bpy
+from bpy_extras import object_utils
 from mathutils import Matrix
 
 from .. import core
 from ..core import params
 from . import props
-from .curve_build import curve_from_polylines, link_new_object, point_cloud_from_polylines, spline_nodes
-from .prefs import library_threads
-from .reporting import REPORTED, SettingsError, WindowProgress
+from .curve_build import curve_from_polylines, link_new_object, spline_nodes
+from .polyline_build import default_radius, polyline_data, regenerate_polyline
+from .reporting import REPORTED, SettingsError
 from .settings_ui import draw_polyline_settings
-from .terrain_objects import heightfield_of, is_terrain
+from .terrain_objects import heightfield_of, is_polyline, is_terrain
 
 
 def edge_chain(mesh):
@@ -65,38 +68,71 @@ def base_polyline(values, context):
     return nodes, obj.matrix_world.copy()
 
 
-class FRACTERRA_OT_polyline_add(bpy.types.Operator):
-    """Add a fractal polyline (FPL 2D/3D with branching, Koch, dragon, Sierpinski, IFS, profile)"""
+class FRACTERRA_OT_polyline_add(bpy.types.Operator, object_utils.AddObjectHelper):
+    """Add a fractal polyline (FPL 2D/3D with branching, Koch, dragon, Sierpinski, IFS, profile) at the 3D cursor"""
     bl_idname = "curve.fracterra_polyline_add"
     bl_label = "Fractal Polyline"
     bl_options = {"REGISTER", "UNDO", "PRESET"}
 
     def draw(self, context):
         draw_polyline_settings(self.layout, self)
+        if self.base_source == "POINTS":
+            col = self.layout.column()
+            col.use_property_split = True
+            col.prop(self, "align")
+            col.prop(self, "location")
+            col.prop(self, "rotation")
 
     def execute(self, context):
         values = params.values_of(self, params.POLYLINE_PARAMS)
         try:
             base, matrix = base_polyline(values, context)
-            with WindowProgress(context) as progress, \
-                    core.generate_polylines(values, base=base, progress=progress,
-                                            threads=library_threads(context)) as pl:
-                if values["method"] == "IFS":
-                    data = point_cloud_from_polylines("Fractal Points", pl)
-                else:
-                    data = curve_from_polylines("Fractal Polyline", pl, values["bevel"])
-                lines, vertices = pl.line_count, pl.vertex_count
+            if not self.properties.is_property_set("radius"):
+                self.radius = values["radius"] = default_radius(base)
+            data, summary = polyline_data(values, base, context)
         except REPORTED as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
-        obj = link_new_object(context, data.name, data, matrix)
+        if values["base_source"] == "POINTS":
+            # At the 3D cursor (or Location), aligned as asked, like Blender's own primitives.
+            obj = object_utils.object_data_add(context, data, operator=self)
+        else:
+            obj = link_new_object(context, data.name, data, matrix)
+        settings = obj.fracterra_polyline
+        props.copy_settings(self, settings, params.POLYLINE_PARAMS)
+        settings.base_nodes = json.dumps([list(p) for p in base]) if values["base_source"] == "ACTIVE" else ""
+        settings.is_polyline = True
         # How exporters should show it (POV-Ray: glowing lightning or a plain tube).
         obj["fracterra_kind"] = "LIGHTNING" if values["method"] == "FPL3D" else "LINE"
-        self.report({"INFO"}, f"Fractal polyline: {lines} line(s), {vertices} vertices")
+        self.report({"INFO"}, f"Fractal polyline: {summary}")
         return {"FINISHED"}
 
 
 FRACTERRA_OT_polyline_add.__annotations__ = props.terrain_annotations(param_list=params.POLYLINE_PARAMS)
+
+
+class FRACTERRA_OT_polyline_regenerate(bpy.types.Operator):
+    """Regenerate the active fractal polyline from its settings, in place"""
+    bl_idname = "object.fracterra_polyline_regenerate"
+    bl_label = "Regenerate Polyline"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return is_polyline(context.active_object) and context.mode == "OBJECT"
+
+    def execute(self, context):
+        obj = context.active_object
+        try:
+            summary = regenerate_polyline(obj, context)
+        except REPORTED as e:
+            obj.fracterra_polyline.last_error = str(e)
+            self.report({"ERROR"}, str(e))
+            return {"CANCELLED"}
+        obj.fracterra_polyline.last_error = ""
+        obj["fracterra_kind"] = "LIGHTNING" if obj.fracterra_polyline.method == "FPL3D" else "LINE"
+        self.report({"INFO"}, f"Fractal polyline: {summary}")
+        return {"FINISHED"}
 
 
 # Why Terrain Coastline is greyed out, shown in its tooltip.

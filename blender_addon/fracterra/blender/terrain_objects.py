@@ -18,6 +18,11 @@ def is_terrain(obj):
     return obj is not None and obj.type == "MESH" and obj.fracterra_terrain.is_terrain
 
 
+def is_polyline(obj):
+    """Made by Add > Curve > Fractal Polyline (a curve, or a point mesh for IFS)."""
+    return obj is not None and obj.type in {"CURVE", "MESH"} and obj.fracterra_polyline.is_polyline
+
+
 def is_measurable(obj):
     """Object > Measure works on terrains (H, D) and curves (eta, chi, gamma, D)."""
     return obj is not None and (is_terrain(obj) or obj.type == "CURVE")
