@@ -158,7 +158,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                         ->capture_default_str();
                     app.add_option("--offset", p.offset, "fbm: offset of the ridged, hybrid and hetero variants")
                         ->capture_default_str();
-                    app.add_option("--rotation", p.rotation, "fbm: domain rotation per octave, radians")
+                    app.add_option("--octave-rotation", p.octave_rotation, "fbm: domain rotation per octave, radians")
                         ->capture_default_str();
                     app.add_option("--warp", p.warp, "fbm: domain-warp strength in base cells, 0 (off)..64")
                         ->capture_default_str();

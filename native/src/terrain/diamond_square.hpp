@@ -28,6 +28,7 @@ struct DiamondSquareConfig {
 };
 
 // Validates nothing (callers do, see terrain.cpp); fills a (2^levels + 1)^2 grid.
+// The refiner behind it is in refiner.hpp.
 Heightfield diamond_square(const DiamondSquareConfig& config);
 
 }  // namespace ft
