@@ -21,6 +21,7 @@
 #include "erosion/drainage_stats.hpp"
 #include "erosion/erosion.hpp"
 #include "erosion/flow_graph.hpp"
+#include "erosion/presets.hpp"
 #include "terrain/terrain.hpp"
 
 namespace ft::erosion {
@@ -370,6 +371,37 @@ TEST(Erosion, MapsAreInWorldUnits) {
     }
   EXPECT_NEAR(outlets, 65 * 65 * cell, 1e-3) << "all the area reaches the outlets";
   EXPECT_GT(m.water_depth.stats().max, 0.0);
+}
+
+TEST(DrainageStatistics, FluvialErosionMakesRealLandscapes) {
+  // Real landscapes: Hack's h about 0.5-0.6, concavity theta about 0.35-0.7.
+  // Ensemble: 4 fBm terrains (H = 0.8, 129^2, seeds 1-4) eroded by the
+  // "valleys" preset (stream power with uplift, 60 steps: close to steady
+  // state, where theta = m / n = 0.5). Tolerance: the ensemble mean must lie
+  // in the ranges themselves; each member may leave them by at most 3 of its
+  // own fit standard errors (those are 0.004-0.012 for h and 0.004-0.006 for
+  // theta on these grids, so a member is allowed about +-0.03 / +-0.02; the
+  // spread measured between seeds, 0.013 for h and 0.004 for theta, sits
+  // inside that). Control: the same terrains before erosion have theta of
+  // 0.04-0.22 (no graded channels), outside the range, so the test can fail.
+  double h_sum = 0, theta_sum = 0, raw_theta_sum = 0;
+  const int members = 4;
+  for (int seed = 1; seed <= members; ++seed) {
+    const Heightfield hf = fbm_terrain(129, uint64_t(seed));
+    raw_theta_sum += drainage_stats(hf, false).theta;
+    ErosionConfig c = erosion_preset("valleys");
+    const DrainageStats s = drainage_stats(erode(hf, c, nullptr), false);
+    EXPECT_GE(s.hack_h, 0.5 - 3 * s.hack_h_stderr) << seed;
+    EXPECT_LE(s.hack_h, 0.6 + 3 * s.hack_h_stderr) << seed;
+    EXPECT_GE(s.theta, 0.35 - 3 * s.theta_stderr) << seed;
+    EXPECT_LE(s.theta, 0.7 + 3 * s.theta_stderr) << seed;
+    h_sum += s.hack_h, theta_sum += s.theta;
+  }
+  EXPECT_GE(h_sum / members, 0.5);
+  EXPECT_LE(h_sum / members, 0.6);
+  EXPECT_GE(theta_sum / members, 0.35);
+  EXPECT_LE(theta_sum / members, 0.7);
+  EXPECT_LT(raw_theta_sum / members, 0.35) << "control: uneroded terrains must fail the theta range";
 }
 
 TEST(ErodeCli, WritesTheTerrainAndSixMapsWithTheirRanges) {

@@ -13,7 +13,12 @@ std::vector<std::string> erosion_preset_names() { return {"valleys", "rain", "sc
 
 ErosionConfig erosion_preset(const std::string& name) {
   ErosionConfig c;
-  if (name == "valleys" || name == "land") c.fluvial.steps = 30;
+  if (name == "valleys" || name == "land") {
+    // Uplift balanced by incision: close to steady state after 60 steps,
+    // graded channels (slope ~ area^-m) rather than a decaying landscape.
+    c.fluvial.steps = 60;
+    c.fluvial.uplift = 1e-4;
+  }
   if (name == "rain" || name == "land") c.hydraulic.iterations = name == "land" ? 60 : 120;
   if (name == "scree" || name == "land") c.thermal.iterations = name == "land" ? 10 : 40;
   if (c.fluvial.steps + c.hydraulic.iterations + c.thermal.iterations == 0) {
