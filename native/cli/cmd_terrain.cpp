@@ -9,6 +9,8 @@
 #include "cli/command.hpp"
 #include "contour/marching_squares.hpp"
 #include "core/error.hpp"
+#include "erosion/erosion.hpp"
+#include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
 #include "povray/scene.hpp"
@@ -61,7 +63,7 @@ const std::map<std::string, int> kRefScales = {
 
 struct TerrainOptions {
   ft_terrain_params p = default_terrain_params();
-  std::string reference, out, size, pov, center, curves_out;
+  std::string reference, out, size, pov, center, curves_out, erode;
   std::vector<double> curves;
   bool stats = false, curves_world = false;
 };
@@ -100,6 +102,15 @@ int run(const TerrainOptions& o) {
   }
   Stopwatch clock;
   Heightfield hf = generate_terrain(p);
+  if (!o.erode.empty()) {
+    erosion::ErosionConfig e = erosion::erosion_preset(o.erode);
+    // Spectral terrains tile with period W x H (the FFT grid); the others'
+    // periodic grids repeat their first row and column, which a torus of
+    // W x H would not keep equal, so they erode bounded.
+    e.periodic = p.method == FT_TERRAIN_SPECTRAL;
+    e.threads = p.threads;
+    hf = erosion::erode(hf, e, nullptr);
+  }
   const double seconds = clock.seconds();
   if (!o.out.empty()) write_heightfield(hf, o.out);
   if (!o.pov.empty()) pov::write_terrain_scene(hf, o.pov);  // PNG beside it
@@ -158,7 +169,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                         ->capture_default_str();
                     app.add_option("--offset", p.offset, "fbm: offset of the ridged, hybrid and hetero variants")
                         ->capture_default_str();
-                    app.add_option("--rotation", p.rotation, "fbm: domain rotation per octave, radians")
+                    app.add_option("--octave-rotation", p.octave_rotation, "fbm: domain rotation per octave, radians")
                         ->capture_default_str();
                     app.add_option("--warp", p.warp, "fbm: domain-warp strength in base cells, 0 (off)..64")
                         ->capture_default_str();
@@ -187,7 +198,8 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_flag("--curves-world", o->curves_world,
                                  "mandelbrot: write the curves' x, y in world units (--world-size across x)");
                     app.add_option("--reference", o->reference,
-                                   "reference grid (2^m + 1)^2: " + std::string(kHeightfieldReadHelp) + "; its values survive exactly (a DEM: see fracterra refine)")
+                                   "reference grid (2^m + 1)^2: " + std::string(kHeightfieldReadHelp) +
+                                       "; its values survive exactly (a DEM: see fracterra refine)")
                         ->check(CLI::ExistingFile);
                     app.add_option("--reference-scale", p.reference_scale,
                                    "displacement scale when refining references: sigma as given, or the mean "
@@ -197,7 +209,12 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                         ->capture_default_str();
                     app.add_option("--threads", p.threads, "worker threads, 0 = all cores (output never depends on it)")
                         ->check(CLI::Range(0, 1024))->capture_default_str();
-                    app.add_option("--out", o->out, "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), .exr (float) or .raw/.r16 (RAW16 + sidecar .json)");
+                    app.add_option("--erode", o->erode,
+                                   "then erode it with a preset: valleys (fluvial), rain (hydraulic), scree "
+                                   "(thermal) or land (all three); see fracterra erode");
+                    app.add_option("--out", o->out,
+                                   "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), "
+                                   ".exr (float) or .raw/.r16 (RAW16 + sidecar .json)");
                     app.add_option("--pov", o->pov, "also write a POV-Ray scene (.pov, with its PNG beside it)");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, min, max, mean, std");
                     return [o] {

@@ -54,3 +54,18 @@ if(FT_BLENDER AND FT_XVFB_RUN)
             --python ${CMAKE_CURRENT_LIST_DIR}/test_undo.py -- --zip ${FT_BLENDER_ZIP})
   set_tests_properties(blender_undo PROPERTIES LABELS blender TIMEOUT 180)
 endif()
+
+# The zip needs nothing beyond glibc, the C++ runtime and what it bundles.
+find_package(Python3 COMPONENTS Interpreter)
+if(Python3_Interpreter_FOUND)
+  add_test(NAME addon_zip_self_contained
+    COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_zip.py ${FT_BLENDER_ADDON_ZIP})
+  set_tests_properties(addon_zip_self_contained PROPERTIES LABELS blender TIMEOUT 60)
+endif()
+
+# The zip as an extension in Blender 4.3, inside a Debian trixie root built once
+# into /var/cache/fracterra (about a minute on a fresh machine, then reused):
+# no host Blender, libraries or environment variables. Skipped (77) without root.
+add_test(NAME blender4_extension
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/blender4_extension.sh ${PROJECT_SOURCE_DIR} ${FT_BLENDER_ADDON_ZIP})
+set_tests_properties(blender4_extension PROPERTIES LABELS blender TIMEOUT 600 SKIP_RETURN_CODE 77)

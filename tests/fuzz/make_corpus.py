@@ -173,7 +173,7 @@ class TerrainParams(ctypes.Structure):
                 ("threads", ctypes.c_int32), ("reference", ctypes.c_void_p), ("reference_size", ctypes.c_int32),
                 ("reference_scale", ctypes.c_int32), ("octaves", ctypes.c_int32), ("lacunarity", ctypes.c_double),
                 ("gain", ctypes.c_double), ("basis", ctypes.c_int32), ("variant", ctypes.c_int32),
-                ("frequency", ctypes.c_double), ("offset", ctypes.c_double), ("rotation", ctypes.c_double),
+                ("frequency", ctypes.c_double), ("offset", ctypes.c_double), ("octave_rotation", ctypes.c_double),
                 ("warp", ctypes.c_double), ("progress", ctypes.c_void_p), ("progress_user", ctypes.c_void_p),
                 ("world_size", ctypes.c_double)]  # ABI 1.1
 
@@ -188,7 +188,7 @@ class ProfileParams(ctypes.Structure):
 def terrain(**kw):
     p = TerrainParams(struct_size=ctypes.sizeof(TerrainParams), method=0, levels=4, width=9, height=9, hurst=0.8,
                       sigma=1.0, seed=1, reference_scale=0, octaves=8, lacunarity=2.0, basis=1, frequency=4.0,
-                      offset=1.0, rotation=0.5, world_size=10.0)
+                      offset=1.0, octave_rotation=0.5, world_size=10.0)
     for k, v in kw.items():
         setattr(p, k, v)
     return p

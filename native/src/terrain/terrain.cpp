@@ -12,6 +12,7 @@
 #include "terrain/mandelbrot.hpp"
 #include "terrain/profile.hpp"
 #include "terrain/spectral_synthesis.hpp"
+#include "terrain/terrain_params.hpp"
 
 namespace ft {
 namespace {
@@ -88,7 +89,7 @@ FbmConfig fbm_config(const ft_terrain_params& p) {
   FbmConfig c;
   c.width = p.width, c.height = p.height, c.octaves = p.octaves, c.lacunarity = p.lacunarity;
   c.gain = p.gain, c.hurst = p.hurst, c.basis = p.basis, c.variant = p.variant;
-  c.frequency = p.frequency, c.offset = p.offset, c.rotation = p.rotation, c.warp = p.warp;
+  c.frequency = p.frequency, c.offset = p.offset, c.rotation = p.octave_rotation, c.warp = p.warp;
   c.sigma = p.sigma, c.periodic = p.periodic != 0, c.seed = p.seed, c.threads = p.threads;
   c.progress = Progress(p.progress, p.progress_user);
   return c;
@@ -149,57 +150,20 @@ int dyadic_levels(int64_t size) {
   return m;
 }
 
-ft_terrain_params default_terrain_params() {
-  ft_terrain_params p{};
-  p.struct_size = sizeof(ft_terrain_params);
-  p.method = FT_TERRAIN_MIDPOINT;
-  p.levels = 9;
-  p.width = 513;
-  p.height = 513;
-  p.hurst = 0.8;
-  p.sigma = 1.0;
-  p.seed = 1;
-  p.periodic = 0;
-  p.threads = 0;
-  p.reference = nullptr;
-  p.reference_size = 0;
-  p.reference_scale = FT_REFSCALE_SIGMA;
-  p.octaves = 8;
-  p.lacunarity = 2.0;
-  p.gain = 0.0;
-  p.basis = FT_BASIS_GRADIENT;
-  p.variant = FT_FBM_STANDARD;
-  p.frequency = 4.0;
-  p.offset = 1.0;
-  p.rotation = 0.5;
-  p.warp = 0.0;
-  p.world_size = 10.0;
-  p.center_x = -0.5;
-  p.center_y = 0.0;
-  p.zoom = 1.0;
-  p.iterations = 64;
-  p.supersample = 2;
-  return p;
-}
+ft_terrain_params default_terrain_params() { return defaults_of<ft_terrain_params>(terrain_param_table()); }
 
 void validate_terrain_params(const ft_terrain_params& p) {
   check_struct_size(p.struct_size, sizeof(ft_terrain_params), "ft_terrain_params");
-  check_int_range("method", p.method, FT_TERRAIN_MIDPOINT, FT_TERRAIN_MANDELBROT);
-  check_range("hurst", p.hurst, 0.0, 1.0);
-  check_positive("sigma", p.sigma);
-  check_positive("world_size", p.world_size);
-  check_int_range("threads", p.threads, 0, 1024);
-  check_int_range("reference_scale", p.reference_scale, FT_REFSCALE_SIGMA, FT_REFSCALE_STD);
+  // The ranges of every field the method uses come from the table; what
+  // follows relates fields to each other.
+  check_ranges(terrain_param_table(), &p);
   if (p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS) {
-    check_int_range("levels", p.levels, 1, kMaxLevels);
     const uint64_t side = (uint64_t(1) << p.levels) + 1;
     check_allocation(checked_bytes(side, side, sizeof(float)),
                      "a terrain of levels " + std::to_string(p.levels) + " (" + std::to_string(side) +
                          " x " + std::to_string(side) + " samples)");
     if (p.reference) check_reference(p.reference, p.reference_size, p.levels, p.periodic != 0);
   } else {
-    check_int_range("width", p.width, 2, 65536);
-    check_int_range("height", p.height, 2, 65536);
     check_allocation(checked_bytes(uint64_t(p.width), uint64_t(p.height), sizeof(float)),
                      "a " + std::to_string(p.width) + " x " + std::to_string(p.height) + " terrain");
     if (p.reference) invalid("reference points are supported by the midpoint and additions methods only");
