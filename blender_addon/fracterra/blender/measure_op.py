@@ -9,7 +9,7 @@ from mathutils import Matrix
 from .. import core
 from .curve_build import curve_polylines
 from .reporting import REPORTED, SettingsError
-from .terrain_objects import heightfield_of, is_measurable
+from .terrain_objects import geometry_fingerprint, heightfield_of, is_measurable
 
 
 class FRACTERRA_OT_measure(bpy.types.Operator):
@@ -43,4 +43,5 @@ class FRACTERRA_OT_measure(bpy.types.Operator):
         except REPORTED as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
+        m.geometry = geometry_fingerprint(obj)
         return {"FINISHED"}

@@ -11,6 +11,7 @@ import numpy as np
 from .. import core
 from ..core import params
 from ..core.grid import NO_FLOOR, grid_arrays, grid_size, vertices
+from ..core.mesh_limits import check_grid, grid_shape
 from . import mesh_build
 from .prefs import library_threads
 from .reporting import SettingsError, WindowProgress
@@ -105,7 +106,9 @@ def z_floor(values):
 
 
 def generate(values, context):
-    """A core.Heightfield for the settings (caller closes it)."""
+    """A core.Heightfield for the settings (caller closes it); a grid that
+    Blender cannot hold is refused first, before any memory is taken."""
+    check_grid(*grid_shape(values))
     reference = reference_for(values)
     with WindowProgress(context) as progress:
         return core.generate_terrain(values, reference=reference, progress=progress,

@@ -8,6 +8,7 @@ from . import props
 from .reporting import REPORTED
 from .settings_ui import draw_settings
 from .terrain_build import new_terrain_mesh, regenerate_object
+from .widgets import draw_size
 
 
 class FRACTERRA_OT_terrain_add(bpy.types.Operator, object_utils.AddObjectHelper):
@@ -18,6 +19,7 @@ class FRACTERRA_OT_terrain_add(bpy.types.Operator, object_utils.AddObjectHelper)
 
     def draw(self, context):
         draw_settings(self.layout, self)
+        draw_size(self.layout, params.values_of(self))
         col = self.layout.column()
         col.use_property_split = True
         col.prop(self, "align")

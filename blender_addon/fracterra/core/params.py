@@ -33,6 +33,9 @@ BLENDER_OVERRIDES = {
         "height": (257, _INTERACTIVE),
     },
     "polyline": {
+        "method": ("FPL3D", "Add > Curve > Fractal Polyline starts as a lightning bolt, which must not be "
+                            "flat: FPL 3D displaces it in all three axes"),
+        "branch_prob": (0.3, "a lightning bolt forks; 0.3 gives a few side branches at depth 8"),
         "ifs_points": (20000, "every IFS point becomes a one-point spline of a curve object; 100 000 of "
                               "them take Blender seconds to build and draw"),
     },
@@ -262,7 +265,7 @@ _FPL = frozenset({"FPL", "FPL3D"})
 _RANDOM = frozenset({"FPL", "FPL3D", "PROFILE", "IFS"})
 
 POLYLINE_PARAMS = (
-    Param("method", "enum", "FPL", "Method", "Which fractal curve", items=POLYLINE_METHODS, field="method"),
+    Param("method", "enum", "FPL3D", "Method", "Which fractal curve", items=POLYLINE_METHODS, field="method"),
     Param("rng", "enum", "UNIFORM", "Generator", "Random generator of the displacements", items=POLYLINE_RNGS,
           field="rng", methods=_FPL),
     Param("spread", "float", 0.1, "Spread", "Displacement per unit segment length: s (uniform) or sigma "
@@ -273,7 +276,7 @@ POLYLINE_PARAMS = (
     Param("min_length", "float", 0.0, "Min Length", "Segments shorter than this are not split (delta)",
           min=0.0, max=1e6, subtype="DISTANCE", unit="LENGTH", field="min_length", methods=_FPL),
     Param("seed", "int", 1, "Seed", "Random seed", min=0, max=2**31 - 1, field="seed", methods=_RANDOM),
-    Param("branch_prob", "float", 0.0, "Branching", "Probability that a midpoint forks a side branch "
+    Param("branch_prob", "float", 0.3, "Branching", "Probability that a midpoint forks a side branch "
           "(scaled by 2^(-level/2)); 0 = a single line", min=0.0, max=1.0, subtype="FACTOR",
           field="branch_prob", methods=_FPL),
     Param("branch_decay", "float", 0.5, "Branch Decay", "Length and radius factor per branch generation",
@@ -289,9 +292,10 @@ POLYLINE_PARAMS = (
     Param("radius", "float", 0.01, "Radius", "Radius at the start of the main line (branches taper)",
           min=0.0, max=1e4, soft_max=1.0, subtype="DISTANCE", unit="LENGTH", field="radius"),
     Param("base_source", "enum", "POINTS", "Base", "The base polyline the fractal follows", items=BASE_SOURCES),
-    Param("start", "vector", (0.0, 0.0, 0.0), "Start", "First point of the base segment",
+    # A vertical bolt striking the 3D cursor from 10 m above (in the object's frame).
+    Param("start", "vector", (0.0, 0.0, 10.0), "Start", "First point of the base segment",
           subtype="TRANSLATION", unit="LENGTH"),
-    Param("end", "vector", (10.0, 0.0, 0.0), "End", "Last point of the base segment",
+    Param("end", "vector", (0.0, 0.0, 0.0), "End", "Last point of the base segment",
           subtype="TRANSLATION", unit="LENGTH"),
     Param("bevel", "bool", True, "Bevel", "Give the curve thickness: bevel depth 1 times each point's radius"),
 )
