@@ -42,14 +42,18 @@ BLENDER_OVERRIDES = {
 }
 
 # Limits of Blender that are narrower than the library's hard range: (min, max, reason).
-_MESH = ("a Blender mesh of more than 2^24 vertices (levels 13: 67 M) cannot be filled by foreach_set "
-         "within memory; the CLI makes such terrains as files")
+def _largest_levels():
+    from .mesh_limits import too_large
+    return max(n for n in range(1, 16) if too_large(2 ** n + 1, 2 ** n + 1) is None)
+
+
+_MESH = ("a Blender mesh array holds at most 2 GiB (core/mesh_limits.py): levels 13 (8193^2 vertices, "
+         "2^28 face corners) overflows it, so Blender does not offer it; the CLI makes such terrains as files. "
+         "Width x height is checked the same way before any work")
 _INT32 = "Blender's IntProperty is a signed 32-bit integer"
 BLENDER_LIMITS = {
     "terrain": {
-        "levels": (1, 12, _MESH),
-        "width": (2, 4097, _MESH),
-        "height": (2, 4097, _MESH),
+        "levels": (1, _largest_levels(), _MESH),
         "seed": (0, 2**31 - 1, _INT32),
     },
 }
