@@ -10,6 +10,8 @@
 #include "cli/param_flags.hpp"
 #include "contour/marching_squares.hpp"
 #include "core/error.hpp"
+#include "erosion/erosion.hpp"
+#include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
 #include "povray/scene.hpp"
@@ -43,7 +45,7 @@ void parse_center(const std::string& text, ft_terrain_params& p) {
 
 struct TerrainOptions {
   ft_terrain_params p = default_terrain_params();
-  std::string reference, out, size, pov, center, curves_out;
+  std::string reference, out, size, pov, center, curves_out, erode;
   std::vector<double> curves;
   bool stats = false, curves_world = false;
 };
@@ -82,6 +84,15 @@ int run(const TerrainOptions& o) {
   }
   Stopwatch clock;
   Heightfield hf = generate_terrain(p);
+  if (!o.erode.empty()) {
+    erosion::ErosionConfig e = erosion::erosion_preset(o.erode);
+    // Spectral terrains tile with period W x H (the FFT grid); the others'
+    // periodic grids repeat their first row and column, which a torus of
+    // W x H would not keep equal, so they erode bounded.
+    e.periodic = p.method == FT_TERRAIN_SPECTRAL;
+    e.threads = p.threads;
+    hf = erosion::erode(hf, e, nullptr);
+  }
   const double seconds = clock.seconds();
   if (!o.out.empty()) write_heightfield(hf, o.out);
   if (!o.pov.empty()) pov::write_terrain_scene(hf, o.pov);  // PNG beside it
@@ -124,6 +135,9 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_option("--reference", o->reference,
                                    "reference grid (2^m + 1)^2 as .png, .pgm or .npy; its values survive exactly")
                         ->check(CLI::ExistingFile);
+                    app.add_option("--erode", o->erode,
+                                   "then erode it with a preset: valleys (fluvial), rain (hydraulic), scree "
+                                   "(thermal) or land (all three); see fracterra erode");
                     app.add_option("--out", o->out, "output .png (16-bit), .pgm (16-bit) or .npy (float32)");
                     app.add_option("--pov", o->pov, "also write a POV-Ray scene (.pov, with its PNG beside it)");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, min, max, mean, std");
