@@ -1,0 +1,12 @@
+# Tests on a real DEM (tests/raster/dem_test.cpp): the fixture fetches it
+# from a Debian package once per build tree (fetch_dem.sh).
+set(FT_DEM_DIR ${CMAKE_BINARY_DIR}/real-dem)
+add_test(NAME fetch_real_dem COMMAND ${CMAKE_CURRENT_LIST_DIR}/fetch_dem.sh ${FT_DEM_DIR})
+set_tests_properties(fetch_real_dem PROPERTIES FIXTURES_SETUP real_dem LABELS native TIMEOUT 300)
+
+add_executable(dem_test ${CMAKE_CURRENT_LIST_DIR}/dem_test.cpp)
+target_link_libraries(dem_test PRIVATE fracterra_core GTest::gtest GTest::gtest_main)
+target_compile_definitions(dem_test PRIVATE FT_CLI_PATH="$<TARGET_FILE:fracterra_cli>")
+add_dependencies(dem_test fracterra_cli)
+gtest_discover_tests(dem_test DISCOVERY_TIMEOUT 60
+  PROPERTIES LABELS native FIXTURES_REQUIRED real_dem ENVIRONMENT "FT_REAL_DEM=${FT_DEM_DIR}/elev.tif")
