@@ -30,7 +30,7 @@ def test_every_declared_symbol_has_argtypes_and_restype(core):
 def test_binding_declares_every_exported_function_of_its_headers(core, header_dir):
     # Every ft_ function declared in the headers the binding covers has a signature.
     from fracterra.core.binding import SIGNATURES
-    for header in ("core.h", "terrain.h", "mesh.h", "polyline.h", "subdiv.h", "params.h"):
+    for header in ("core.h", "terrain.h", "mesh.h", "polyline.h", "subdiv.h", "params.h", "raster.h"):
         text = (header_dir / header).read_text()
         for name in re.findall(r"FT_API [^(;]*?\b(ft_\w+)\s*\(", text):
             assert name in SIGNATURES, f"{name} from {header} has no ctypes signature"

@@ -17,7 +17,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 1
-ABI_MINOR_MIN = 3  # 1.1: ft_terrain_params.world_size; 1.2: the Mandelbrot fields, FT_HURST_AUTO; 1.3: ft_params_describe, ft_params_field
+ABI_MINOR_MIN = 4  # 1.1: ft_terrain_params.world_size; 1.2: the Mandelbrot fields, FT_HURST_AUTO; 1.3: ft_params_describe, ft_params_field; 1.4: raster.h
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -325,6 +325,11 @@ SIGNATURES = {
     "ft_grid_topology": (c_int32, [c_int32, c_int32, _I32P, _I32P, c_size_t, _I32P, c_size_t,
                                    _I32P, _I32P, c_size_t]),
     "ft_grid_uvs": (c_int32, [c_int32, c_int32, _F32P, c_size_t]),
+    # raster.h (ABI 1.4); its structs are in core/raster.py.
+    "ft_heightfield_read": (c_int32, [c_char_p, c_int32, POINTER(_HF)]),
+    "ft_heightfield_write": (c_int32, [_HF, c_char_p]),
+    "ft_dem_refine_params_init": (None, [c_void_p]),
+    "ft_dem_refine": (c_int32, [_HF, c_void_p, POINTER(_HF), c_void_p]),
 }
 
 

@@ -15,5 +15,6 @@
 #include "polyline.h"
 #include "povray.h"
 #include "params.h"
+#include "raster.h"
 
 #endif
