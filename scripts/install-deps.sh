@@ -8,7 +8,7 @@ build_pkgs=(cmake make g++ pkg-config libpng-dev libfftw3-dev librandom123-dev l
             nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libosd-dev
             libtinyobjloader-dev libnoise-dev)
 run_pkgs=(povray povray-includes blender python3 python3-numpy librsvg2-bin)
-test_pkgs=(python3-pytest clang libclang-rt-14-dev libomp-dev xvfb xauth debootstrap)
+test_pkgs=(python3-pytest clang libclang-rt-14-dev libomp-dev xvfb xauth xdotool debootstrap)
 
 case "${1:-test}" in
   build) want=("${build_pkgs[@]}") ;;
