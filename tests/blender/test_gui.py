@@ -6,7 +6,7 @@ screenshot after each step (artifacts a person can open: --out).
 
 It also checks what needs a window: undo after Regenerate restores the
 heights (a hash of the vertex data), the coastline's redo changes its level,
-levels beyond Blender's limit are a report, and a polyline is re-edited in
+sizes beyond Blender's limit are a report, and a polyline is re-edited in
 place from its sidebar panel. Panel and menu drawing errors only print a
 traceback, so ctest fails on any "Traceback" in the log (FAIL_REGULAR_EXPRESSION).
 
@@ -246,17 +246,18 @@ def scenario(shot):
           f"the coastline's redo did not move it to level {level:.3f}")
     shot("coastline-after-redo")
 
-    # Levels beyond Blender's limit: a report, nothing added, no traceback.
+    # Beyond Blender's limit (levels 13 is not offered; 8193 x 8193 samples): a report,
+    # nothing added, no traceback.
     count = len(bpy.data.objects)
     try:
         with in_view3d():
-            bpy.ops.mesh.fracterra_terrain_add("INVOKE_DEFAULT", levels=13)
-        check(False, "levels 13 was not refused")
+            bpy.ops.mesh.fracterra_terrain_add("INVOKE_DEFAULT", method="FBM", width=8193, height=8193)
+        check(False, "an 8193 x 8193 terrain was not refused")
     except RuntimeError as e:  # a script sees the error report as RuntimeError; the user sees the report
-        check(str(e).startswith("Error: Refused before generating"), f"levels 13: {e}")
+        check(str(e).startswith("Error: Refused before generating"), f"8193 x 8193: {e}")
     yield STEP
     check(len(bpy.data.objects) == count, "a refused terrain left an object")
-    shot("levels-13-report")
+    shot("too-large-report")
 
     # Add > Curve > Fractal Polyline at the 3D cursor, re-edited in place from its panel.
     bpy.context.scene.cursor.location = (3.0, 0.0, 0.0)
