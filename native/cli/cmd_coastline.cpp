@@ -95,7 +95,7 @@ Registration reg({"coastline",
                   "Level set (coastline) of a heightfield as polylines: marching squares, land on the left",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<CoastlineCli>();
-                    app.add_option("--in", c->in, "heightfield .png, .pgm or .npy")->required();
+                    app.add_option("--in", c->in, kHeightfieldReadHelp)->required();
                     app.add_option("--level", c->level,
                                    "height of the level set, or a quantile of the samples as qF with F in [0, 1] "
                                    "(q0.5 = the median)")

@@ -18,7 +18,7 @@ struct ReliefCli {
 Registration reg({"relief", "Draw a shaded-relief preview PNG of a heightfield",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<ReliefCli>();
-                    app.add_option("--in", c->in, "heightfield .png, .pgm or .npy")->required()->check(CLI::ExistingFile);
+                    app.add_option("--in", c->in, kHeightfieldReadHelp)->required()->check(CLI::ExistingFile);
                     app.add_option("--out", c->out, "output RGB .png")->required();
                     app.add_option("--sea-level", c->o.sea_level, "fraction of the height range under water, 0..1")
                         ->capture_default_str();

@@ -77,7 +77,7 @@ int run(SceneOptions& o) {
 Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (and render it)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<SceneOptions>();
-                    app.add_option("--terrain", o->terrain, "heightfield .png, .pgm or .npy")->check(CLI::ExistingFile);
+                    app.add_option("--terrain", o->terrain, kHeightfieldReadHelp)->check(CLI::ExistingFile);
                     app.add_option("--polyline", o->polylines, "polyline set .csv or .json (world units); repeatable")
                         ->check(CLI::ExistingFile);
                     app.add_option("--kind", o->kinds,

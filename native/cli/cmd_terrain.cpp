@@ -133,12 +133,15 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_flag("--curves-world", o->curves_world,
                                  "mandelbrot: write the curves' x, y in world units (--world-size across x)");
                     app.add_option("--reference", o->reference,
-                                   "reference grid (2^m + 1)^2 as .png, .pgm or .npy; its values survive exactly")
+                                   "reference grid (2^m + 1)^2: " + std::string(kHeightfieldReadHelp) +
+                                       "; its values survive exactly (a DEM: see fracterra refine)")
                         ->check(CLI::ExistingFile);
                     app.add_option("--erode", o->erode,
                                    "then erode it with a preset: valleys (fluvial), rain (hydraulic), scree "
                                    "(thermal) or land (all three); see fracterra erode");
-                    app.add_option("--out", o->out, "output .png (16-bit), .pgm (16-bit) or .npy (float32)");
+                    app.add_option("--out", o->out,
+                                   "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), "
+                                   ".exr (float) or .raw/.r16 (RAW16 + sidecar .json)");
                     app.add_option("--pov", o->pov, "also write a POV-Ray scene (.pov, with its PNG beside it)");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, min, max, mean, std");
                     return [o] {
