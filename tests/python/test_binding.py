@@ -9,7 +9,7 @@ import pytest
 
 def test_library_reports_matching_abi_and_version(core):
     lib = core.library()
-    assert lib.abi_major == 1
+    assert lib.abi_major == 2
     assert re.fullmatch(r"\d+\.\d+\.\d+", lib.version)
     ok, message = core.status()
     assert ok and lib.version in message

@@ -149,3 +149,15 @@ def test_cli_terrain_help_has_every_setting_with_the_librarys_default(lib):
             assert default == ident.lower().replace("_", "-"), flag
         else:
             assert float(default) == pytest.approx(row["default_value"]), flag
+
+
+def test_soversion_follows_the_abi_major(lib):
+    import re
+    import shutil
+    import subprocess
+    if not shutil.which("readelf"):
+        pytest.skip("readelf (binutils) is not installed")
+    dynamic = subprocess.run(["readelf", "-d", str(lib.path)], check=True, capture_output=True, text=True).stdout
+    soname = re.search(r"Library soname: \[(.*?)\]", dynamic).group(1)
+    assert soname == f"libfracterra.so.{lib.abi_major}"
+    assert lib.abi_major == binding.ABI_MAJOR == 2
