@@ -75,7 +75,7 @@ int run(const CoastlineCli& c) {
   if (!c.preview.empty()) {
     ReliefOptions ro;
     const HeightStats s = hf.stats();
-    ro.sea_level = s.max > s.min ? std::clamp((level - s.min) / (s.max - s.min), 0.0, 1.0) : 0.0;
+    ro.sea_fraction = s.max > s.min ? std::clamp((level - s.min) / (s.max - s.min), 0.0, 1.0) : 0.0;
     std::vector<uint8_t> rgb = shaded_relief(hf, ro);
     draw_chains(rgb, hf.width(), hf.height(), set);
     write_png_rgb(c.preview, hf.width(), hf.height(), rgb.data());

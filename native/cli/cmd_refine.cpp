@@ -75,7 +75,7 @@ int run(RefineCli& o) {
   if (r.hurst_measured)
     j["hurst_estimate"] = {{"method", hurst_method_name(r.estimate.method)},
                            {"hurst", r.estimate.hurst},
-                           {"stderr", r.estimate.stderr_hurst},
+                           {"std_error", r.estimate.std_error},
                            {"lags", {r.estimate.band_lo, r.estimate.band_hi}}};
   std::printf("%s\n", j.dump(2).c_str());
   return 0;

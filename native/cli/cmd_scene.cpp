@@ -40,9 +40,9 @@ int run(SceneOptions& o) {
     // The terrain's own world size (recorded by fracterra) unless --size says otherwise.
     const double size = o.size > 0 ? o.size : hf.world_size() > 0 ? hf.world_size() : 1.0;
     pov::set_scene_terrain(p, hf, size, o.vertical_scale, o.sea_fraction);
-    if (!std::isnan(o.water)) p.has_water = true, p.water_level = o.water;
+    if (!std::isnan(o.water)) p.has_sea = true, p.sea_level = o.water;
   } else if (!std::isnan(o.water)) {
-    p.has_water = true, p.water_level = o.water;
+    p.has_sea = true, p.sea_level = o.water;
   }
   if (o.kinds.size() > o.polylines.size()) invalid("more --kind options than --polyline files");
   if (o.radii.size() > o.polylines.size()) invalid("more --radius options than --polyline files");

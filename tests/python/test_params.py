@@ -53,8 +53,8 @@ def test_a_value_outside_a_hard_range_is_refused_with_the_range(core, lib):
 
 
 def _addon_params(core, kind_name):
-    return {p.field: p for p in {"terrain": core.params.TERRAIN_PARAMS,
-                                 "polyline": core.params.POLYLINE_PARAMS}[kind_name] if p.field}
+    lists = {"terrain": core.params.TERRAIN_PARAMS, "polyline": core.params.POLYLINE_PARAMS}
+    return {p.field: p for p in lists.get(kind_name, ()) if p.field}
 
 
 def test_addon_defaults_are_the_librarys_or_a_stated_override(core, lib):
@@ -149,3 +149,15 @@ def test_cli_terrain_help_has_every_setting_with_the_librarys_default(lib):
             assert default == ident.lower().replace("_", "-"), flag
         else:
             assert float(default) == pytest.approx(row["default_value"]), flag
+
+
+def test_soversion_follows_the_abi_major(lib):
+    import re
+    import shutil
+    import subprocess
+    if not shutil.which("readelf"):
+        pytest.skip("readelf (binutils) is not installed")
+    dynamic = subprocess.run(["readelf", "-d", str(lib.path)], check=True, capture_output=True, text=True).stdout
+    soname = re.search(r"Library soname: \[(.*?)\]", dynamic).group(1)
+    assert soname == f"libfracterra.so.{lib.abi_major}"
+    assert lib.abi_major == binding.ABI_MAJOR == 2

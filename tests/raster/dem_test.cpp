@@ -109,7 +109,7 @@ TEST(RealDem, RefinedScalingContinuesTheDemsLineAcrossTheJunction) {
   Heightfield window(r.window_side, r.window_side);
   for (int y = 0; y < r.window_side; ++y)
     for (int x = 0; x < r.window_side; ++x) window.at(x, y) = dem.at(r.window_x + x, r.window_y + y);
-  const double sigma_h = r.estimate.stderr_hurst;
+  const double sigma_h = r.estimate.std_error;
   ASSERT_GT(sigma_h, 0.0);
   for (int k = 0; k <= K; ++k) {  // added lags, up to the junction (one DEM pixel)
     const double log2_r = k - K;

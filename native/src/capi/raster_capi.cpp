@@ -77,7 +77,7 @@ FT_API ft_status ft_dem_refine(const ft_heightfield* dem, const ft_dem_refine_pa
       report->window_y = r.window_y;
       report->window_side = r.window_side;
       report->hurst = r.hurst;
-      report->hurst_stderr = r.hurst_measured ? r.estimate.stderr_hurst : 0.0;
+      report->hurst_stderr = r.hurst_measured ? r.estimate.std_error : 0.0;
       report->sigma = r.sigma;
       report->increment_variance = r.v1;
       report->hurst_measured = r.hurst_measured;
