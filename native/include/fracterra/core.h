@@ -24,7 +24,8 @@ extern "C" {
 #define FT_ABI_VERSION_MAJOR 1
 /// 1.1: ft_terrain_params.world_size. 1.2: the Mandelbrot fields; FT_HURST_AUTO
 /// and its reason in ft_hurst_result. 1.3: params.h, the parameter tables.
-#define FT_ABI_VERSION_MINOR 3
+/// 1.4: erosion.h (ft_erode, its maps, ft_drainage_statistics).
+#define FT_ABI_VERSION_MINOR 4
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.
