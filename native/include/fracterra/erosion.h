@@ -31,7 +31,7 @@ typedef struct ft_erosion_params {
   double erodibility;            ///< stream-power K (>= 0); default 2e-4
   double area_exponent;          ///< m in K A^m S (0..2, n = 1); default 0.5
   double diffusion;              ///< hillslope diffusivity, world units^2 / yr (>= 0); default 1e-7
-  double uplift;                 ///< world units / yr (>= 0) of every non-outlet cell; default 0
+  double uplift;                 ///< world units / yr (>= 0); bounded edges erode towards the lowest input height; default 0
   int32_t hydraulic_iterations;  ///< virtual-pipe passes; 0 = off
   double hydraulic_dt;           ///< seconds per pass (1e-6..1); default 0.02
   double rain;                   ///< water depth per pass, world units (>= 0); default 0.01
