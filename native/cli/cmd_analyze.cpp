@@ -55,7 +55,7 @@ struct Named {
 json estimate_json(const HurstEstimate& e) {
   json j = {{"hurst", e.hurst},
             {"dimension", e.dimension},
-            {"stderr", e.stderr_hurst},
+            {"std_error", e.std_error},
             {"band", {{"unit", hurst_method_uses_lags(e.method) ? "lag (samples)" : "frequency (cycles per record)"},
                       {"lo", e.band_lo},
                       {"hi", e.band_hi}}},
@@ -112,7 +112,7 @@ json hurst_report(const float* profile, size_t n, const Heightfield* surface, co
 }
 
 json box_json(const BoxCountResult& b) {
-  return {{"dimension", b.dimension}, {"stderr", b.std_error}, {"min_size", b.min_size},
+  return {{"dimension", b.dimension}, {"std_error", b.std_error}, {"min_size", b.min_size},
           {"max_size", b.max_size},   {"sizes", b.sizes},       {"counts", b.counts}};
 }
 
@@ -153,7 +153,7 @@ SvgPanel fit_panel(const std::string& title, const std::string& xl, const std::s
 SvgPanel estimate_panel(const Named& n) {
   const HurstEstimate& e = n.e;
   char label[96];
-  std::snprintf(label, sizeof label, "H = %.3f +- %.3f, D = %.3f", e.hurst, e.stderr_hurst, e.dimension);
+  std::snprintf(label, sizeof label, "H = %.3f +- %.3f, D = %.3f", e.hurst, e.std_error, e.dimension);
   const bool lags = hurst_method_uses_lags(e.method);
   const bool mad = e.method == HurstMethod::kMadogram || e.method == HurstMethod::kMadogramAligned;
   std::string title = n.name;

@@ -189,14 +189,17 @@ class TerrainAddTest(unittest.TestCase):
             levels=2, reference_source="IMAGE", reference_image=img.name, reference_levels=3),
             "reference_size must be 2^m + 1")
 
-    def test_levels_beyond_blenders_limit_are_refused_before_any_work(self):
-        # Levels 13 used to run ~35 s, peak at 11 GB and end in a traceback from foreach_set.
-        expect_report(self, lambda: bpy.ops.mesh.fracterra_terrain_add(levels=13),
+    def test_sizes_beyond_blenders_limit_are_refused_before_any_work(self):
+        # Levels 13 used to run ~35 s, peak at 11 GB and end in a traceback from foreach_set. The
+        # levels property now stops at 12 (tests/blender/test_params.py); the same grid through
+        # width x height is refused before any work.
+        big = dict(method="FBM", width=8193, height=8193)
+        expect_report(self, lambda: bpy.ops.mesh.fracterra_terrain_add(**big),
                       "Refused before generating", "8193 x 8193", "face corners")
         self.assertEqual((len(bpy.data.objects), len(bpy.data.meshes)), (0, 0))
-        obj = add_terrain(levels=3, seed=1)
+        obj = add_terrain(method="FBM", width=9, height=9, seed=1)
         before = coords(obj.data)
-        obj.fracterra_terrain.levels = 13
+        obj.fracterra_terrain.width = obj.fracterra_terrain.height = 8193
         expect_report(self, bpy.ops.object.fracterra_terrain_regenerate, "Refused before generating")
         self.assertEqual(coords(obj.data), before)
 

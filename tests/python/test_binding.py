@@ -9,7 +9,7 @@ import pytest
 
 def test_library_reports_matching_abi_and_version(core):
     lib = core.library()
-    assert lib.abi_major == 1
+    assert lib.abi_major == 2
     assert re.fullmatch(r"\d+\.\d+\.\d+", lib.version)
     ok, message = core.status()
     assert ok and lib.version in message
@@ -120,7 +120,7 @@ def test_bad_levels_raise_invalid_argument(core):
 
 
 def test_every_method_generates_its_grid(core):
-    for ident, *_ in core.params.METHODS:
+    for ident, *_ in core.params.PARAMS_BY_NAME["method"].items:
         with core.generate_terrain(method=ident, levels=4, width=20, height=12, seed=3) as hf:
             side = 2 ** 4 + 1
             expected = (side, side) if ident in core.params.DYADIC_METHODS else (20, 12)

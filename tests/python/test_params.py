@@ -95,3 +95,69 @@ def test_addon_ranges_lie_within_the_librarys(core, lib):
                 assert p.min >= row["hard_min"], row["name"]
             if p.max is not None:
                 assert p.max <= row["hard_max"], row["name"]
+
+
+def _cli():
+    import os
+    from pathlib import Path
+    path = os.environ.get("FRACTERRA_CLI") or str(Path(__file__).resolve().parents[2] / "build/native/fracterra")
+    if not Path(path).is_file():
+        pytest.skip("the fracterra CLI is not built (ctest sets FRACTERRA_CLI)")
+    return path
+
+
+def _run(*args):
+    import subprocess
+    return subprocess.run([_cli(), *args], check=True, capture_output=True, text=True).stdout
+
+
+def test_cli_params_json_is_the_librarys_table(lib):
+    import json
+    tables = json.loads(_run("params", "--json"))
+    for kind_name, kind in binding.PARAMS_KINDS.items():
+        name, size, rows = lib.describe(kind)
+        cli = tables[name]
+        assert cli["kind"] == kind and cli["size"] == size
+        assert [f["name"] for f in cli["fields"]] == [r["name"] for r in rows]
+        for f, r in zip(cli["fields"], rows):
+            for key in ("offset", "size", "default", "hard_min", "hard_max", "soft_min", "soft_max"):
+                want = r["default_value"] if key == "default" else r[key]
+                got = f[key]
+                assert (got is None and abs(want) >= 1.7e308) or got == pytest.approx(want), (r["name"], key)
+            assert [i["value"] for i in f.get("items", [])] == [v for *_x, v in r["items"]]
+
+
+def test_cli_terrain_help_has_every_setting_with_the_librarys_default(lib):
+    import re
+    text = _run("terrain", "--help")
+    # The terrain command offers width/height as --size WxH and center_x/center_y as --center X,Y.
+    own_form = {"width": "--size", "height": "--size", "center_x": "--center", "center_y": "--center"}
+    for row in lib.param_rows["terrain"]:
+        if row["flags"] & (binding.FLAG_STRUCT_SIZE | binding.FLAG_DATA) or row["type"] in ("pointer", "callback"):
+            continue
+        flag = "--" + row["name"].replace("_", "-")
+        if row["name"] in own_form:
+            assert own_form[row["name"]] in text
+            continue
+        m = re.search(re.escape(flag) + r"(?: (\S+))?\s", text)
+        assert m, flag
+        if row["type"] == "bool":
+            continue
+        default = m.group(1).rsplit("=", 1)[1]
+        if row["type"] == "enum":
+            ident = next(n for n, _l, _d, v in row["items"] if v == row["default_value"])
+            assert default == ident.lower().replace("_", "-"), flag
+        else:
+            assert float(default) == pytest.approx(row["default_value"]), flag
+
+
+def test_soversion_follows_the_abi_major(lib):
+    import re
+    import shutil
+    import subprocess
+    if not shutil.which("readelf"):
+        pytest.skip("readelf (binutils) is not installed")
+    dynamic = subprocess.run(["readelf", "-d", str(lib.path)], check=True, capture_output=True, text=True).stdout
+    soname = re.search(r"Library soname: \[(.*?)\]", dynamic).group(1)
+    assert soname == f"libfracterra.so.{lib.abi_major}"
+    assert lib.abi_major == binding.ABI_MAJOR == 2

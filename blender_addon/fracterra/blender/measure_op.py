@@ -33,11 +33,11 @@ class FRACTERRA_OT_measure(bpy.types.Operator):
                 with pl:
                     s = pl.measure()
                 m.kind, m.eta, m.chi, m.gamma = "polylines", s["eta"], s["chi"], s["gamma"]
-                m.dimension, m.stderr, m.hurst = s["box_dimension"], s["box_std_error"], math.nan
+                m.dimension, m.stderr, m.hurst = s["box_dimension"], s["box_dimension_std_error"], math.nan
             else:
                 with heightfield_of(obj) as hf:
                     r = core.hurst_of_heightfield(hf)  # the library's recommended estimator, as the CLI's
-                m.kind, m.hurst, m.dimension, m.stderr = "terrain", r["hurst"], r["dimension"], r["stderr_hurst"]
+                m.kind, m.hurst, m.dimension, m.stderr = "terrain", r["hurst"], r["dimension"], r["std_error"]
                 m.estimator, m.estimator_reason = r["estimator"], r["reason"]
                 m.eta = m.chi = m.gamma = math.nan
         except REPORTED as e:

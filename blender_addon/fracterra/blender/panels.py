@@ -93,7 +93,7 @@ class FRACTERRA_PT_measures(bpy.types.Panel):
             col.enabled = False
         if m.kind == "terrain" and m.estimator:
             col.label(text=f"Estimator: {m.estimator}")
-        names = ("hurst", "dimension", "stderr") if m.kind == "terrain" else ("eta", "chi", "gamma", "dimension", "stderr")
+        names = ("hurst", "dimension", "std_error") if m.kind == "terrain" else ("eta", "chi", "gamma", "dimension", "std_error")
         for name in names:
             row = col.row()
             row.label(text=m.bl_rna.properties[name].name)

@@ -191,7 +191,7 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
         try:
             with heightfield_of(terrain) as hf:
                 nx, ny = hf.width, hf.height
-                size_x, size_y = core.grid_size(settings.world_size, nx, ny)
+                world_size_x, world_size_y = core.grid_size(settings.world_size, nx, ny)
                 s = hf.stats()
                 level = self.quantile if self.use_quantile else self.level
                 if not self.use_quantile and settings.use_sea_level and level <= settings.sea_level:
@@ -206,7 +206,7 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
                                                f"[{s['min']:g}, {s['max']:g}] and no cell crosses it")
                         return {"CANCELLED"}
                     def to_local(x, y, z):
-                        return (x / (nx - 1) - 0.5) * size_x, (y / (ny - 1) - 0.5) * size_y, z
+                        return (x / (nx - 1) - 0.5) * world_size_x, (y / (ny - 1) - 0.5) * world_size_y, z
                     curve = curve_from_polylines("Coastline", pl, bevel=False, transform=to_local,
                                                  unit_radius=True)
                     lines = pl.line_count

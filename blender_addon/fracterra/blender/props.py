@@ -109,7 +109,7 @@ class FRACTERRA_PG_measures(bpy.types.PropertyGroup):
     estimator: StringProperty(name="Estimator", default="", description="The Hurst estimator used")
     estimator_reason: StringProperty(name="Why", default="", description="Why the estimator was chosen")
     dimension: FloatProperty(name="D", description="Fractal dimension (terrain: 3 - H; polylines: box counting)")
-    stderr: FloatProperty(name="Std Error", description="Standard error of the fitted slope")
+    std_error: FloatProperty(name="Std Error", description="Standard error of the fitted slope")
     eta: FloatProperty(name="eta", description="Max deviation of the main line from its chord / chord length")
     chi: FloatProperty(name="chi", description="Mean deviation from the chord / chord length")
     gamma: FloatProperty(name="gamma", description="Line length / chord length (elongation)")

@@ -144,8 +144,8 @@ def regenerate_object(obj, context):
         nx, ny = hf.width, hf.height
         same_grid = len(mesh.vertices) == nx * ny and len(mesh.polygons) == (nx - 1) * (ny - 1)
         if same_grid:
-            size_x, size_y = grid_size(values["world_size"], nx, ny)
-            co = vertices(hf, size_x, size_y, z_floor(values))
+            world_size_x, world_size_y = grid_size(values["world_size"], nx, ny)
+            co = vertices(hf, world_size_x, world_size_y, z_floor(values))
             mesh_build.rewrite_positions(mesh, co)
             if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
                 mesh_build.set_uvs(mesh, grid_arrays(hf, values["world_size"], uvs=True).uv

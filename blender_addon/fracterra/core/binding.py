@@ -16,8 +16,8 @@ from pathlib import Path
 
 from .errors import LibraryNotFoundError, error_for_status
 
-ABI_MAJOR = 1
-ABI_MINOR_MIN = 3  # 1.1: ft_terrain_params.world_size; 1.2: the Mandelbrot fields, FT_HURST_AUTO; 1.3: ft_params_describe, ft_params_field
+ABI_MAJOR = 2
+ABI_MINOR_MIN = 0  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -165,7 +165,7 @@ class PolylineStats(Structure):
         ("length", c_double),
         ("mass_dimension", c_double),
         ("box_dimension", c_double),
-        ("box_std_error", c_double),
+        ("box_dimension_std_error", c_double),
         ("box_min_size", c_double),
         ("box_max_size", c_double),
         ("box_sizes", c_int32),
@@ -189,16 +189,16 @@ class HurstParams(Structure):
 class HurstResult(Structure):
     """ft_hurst_result (fracterra/analysis.h)."""
     _fields_ = [
+        ("struct_size", c_uint32),
         ("method", c_int32),
         ("transects", c_int32),
+        ("points", c_int32),
         ("hurst", c_double),
         ("dimension", c_double),
-        ("stderr_hurst", c_double),
+        ("std_error", c_double),
         ("band_lo", c_double),
         ("band_hi", c_double),
         ("band_is_frequency", c_int32),
-        ("points", c_int32),
-        # ABI 1.2, written for FT_HURST_AUTO only: why it chose `method`.
         ("auto_reason", c_int32),
         ("auto_reason_text", c_char_p),
     ]
@@ -214,11 +214,11 @@ class PovSceneParams(Structure):
     _fields_ = [
         ("struct_size", c_uint32),
         ("terrain", c_void_p),
-        ("size_x", c_double),
-        ("size_y", c_double),
+        ("world_size_x", c_double),
+        ("world_size_y", c_double),
         ("vertical_scale", c_double),
-        ("has_water", c_int32),
-        ("water_level", c_double),
+        ("has_sea", c_int32),
+        ("sea_level", c_double),
         ("lines", POINTER(PovSceneLines)),
         ("line_set_count", c_int32),
         ("camera_azimuth_deg", c_double),

@@ -12,7 +12,6 @@ stores narrower per-attribute arrays; one limit serves both.
 """
 
 from .errors import TooLargeError
-from .params import DYADIC_METHODS
 
 INT_MAX = 2 ** 31 - 1
 RECORD_BYTES = {"vertices": 16, "edges": 12, "face corners": 12, "faces": 12}
@@ -28,6 +27,7 @@ SHOW_ESTIMATE_FROM = 1_000_000
 
 def grid_shape(values):
     """(nx, ny) of the terrain that settings `values` (a dict) describe."""
+    from .params import DYADIC_METHODS  # here: params takes its levels limit from this module
     if values["method"] in DYADIC_METHODS:
         side = 2 ** values["levels"] + 1
         return side, side

@@ -32,10 +32,8 @@ FT_API ft_status ft_polyline_measure(const ft_polylines* p, ft_polyline_stats* o
   return guarded([&] {
     ft::check_not_null("polylines", p);
     ft::check_not_null("out", out);
-    ft::check_struct_size(out->struct_size, sizeof(ft_polyline_stats), "ft_polyline_stats");
     const ft::PolylineMeasures m = ft::measure_polylines(p->set);
     ft_polyline_stats s{};
-    s.struct_size = sizeof(ft_polyline_stats);
     s.line_count = p->set.line_count();
     s.vertex_count = p->set.vertex_count();
     s.eta = m.main.eta;
@@ -44,11 +42,11 @@ FT_API ft_status ft_polyline_measure(const ft_polylines* p, ft_polyline_stats* o
     s.length = m.total_length;
     s.mass_dimension = m.mass_dimension;
     s.box_dimension = m.box_ok ? m.box.dimension : NAN;
-    s.box_std_error = m.box_ok ? m.box.std_error : NAN;
+    s.box_dimension_std_error = m.box_ok ? m.box.std_error : NAN;
     s.box_min_size = m.box_ok ? m.box.min_size : NAN;
     s.box_max_size = m.box_ok ? m.box.max_size : NAN;
     s.box_sizes = m.box_ok ? int32_t(m.box.sizes.size()) : 0;
-    *out = s;
+    ft::capi::write_result(out, s, sizeof(ft_polyline_stats), "ft_polyline_stats");
   });
 }
 

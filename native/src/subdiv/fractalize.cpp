@@ -46,7 +46,7 @@ ft_fractalize_params default_fractalize_params() {
   p.sigma = 0.1;
   p.seed = 1;
   p.scheme = FT_SCHEME_CATMARK;
-  p.mode = FT_FRACTALIZE_VOSS;
+  p.mode = FT_FRACTALIZE_MIDPOINT;
   return p;
 }
 
@@ -185,7 +185,7 @@ class Fractalizer {
     // edges of the parent level (a face's child is never on a boundary).
     skip_.assign(size_t(nv), 0);
     for (int v = 0; v < parent.GetNumVertices(); ++v)
-      if (p_.mode == FT_FRACTALIZE_VOSS || (p_.fix_boundary && parent.IsVertexBoundary(v)))
+      if (p_.mode == FT_FRACTALIZE_MIDPOINT || (p_.fix_boundary && parent.IsVertexBoundary(v)))
         skip_[size_t(parent.GetVertexChildVertex(v))] = 1;
     if (p_.fix_boundary)
       for (int e = 0; e < parent.GetNumEdges(); ++e)
@@ -258,7 +258,7 @@ Mesh fractalize(const Mesh& mesh, const ft_fractalize_params& p) {
   if (!(p.sigma >= 0.0) || !std::isfinite(p.sigma))
     invalid("sigma must be a finite number >= 0, got " + format_number(p.sigma));
   check_int_range("scheme (0 catmark, 1 loop, 2 bilinear)", p.scheme, FT_SCHEME_CATMARK, FT_SCHEME_BILINEAR);
-  check_int_range("mode (0 voss, 1 additions)", p.mode, FT_FRACTALIZE_VOSS, FT_FRACTALIZE_ADDITIONS);
+  check_int_range("mode (0 voss, 1 additions)", p.mode, FT_FRACTALIZE_MIDPOINT, FT_FRACTALIZE_ADDITIONS);
   resolve_threads(p.threads);
   validate_mesh(mesh);
   if (p.scheme == FT_SCHEME_LOOP) validate_triangles(mesh);

@@ -1,0 +1,19 @@
+#include "tables/param_registry.hpp"
+
+#include <string>
+
+#include "core/error.hpp"
+#include "terrain/terrain_params.hpp"
+
+namespace ft {
+
+const ParamTable& param_table(int32_t kind) {
+  switch (kind) {
+    case FT_PARAMS_TERRAIN: return terrain_param_table();
+    default:
+      invalid("params kind must be in 0.." + std::to_string(FT_PARAMS_KIND_COUNT - 1) + ", got " +
+              std::to_string(kind));
+  }
+}
+
+}  // namespace ft
