@@ -101,6 +101,26 @@ class TerrainAddTest(unittest.TestCase):
         self.assertEqual((settings.levels, settings.seed, settings.method), (5, 7, "MIDPOINT"))
         self.assertAlmostEqual(settings.hurst, 0.6, places=6)
 
+    def test_height_and_slope_attributes_follow_the_vertices(self):
+        import math
+        obj = add_terrain(levels=4, seed=3, world_size=8.0)
+        for how in ("added", "regenerated"):
+            mesh = obj.data
+            co = coords(mesh)
+            z = co[2::3]
+            height = array.array("f", [0.0]) * len(mesh.vertices)
+            slope = array.array("f", [0.0]) * len(mesh.vertices)
+            mesh.attributes["fracterra_height"].data.foreach_get("value", height)
+            mesh.attributes["fracterra_slope"].data.foreach_get("value", slope)
+            self.assertEqual((min(height), max(height)), (0.0, 1.0), how)
+            i = 7 * 17 + 9  # an interior vertex: central differences on the 0.5 m grid
+            gx = (z[i + 1] - z[i - 1]) / (co[3 * (i + 1)] - co[3 * (i - 1)])
+            gy = (z[i + 17] - z[i - 17]) / (co[3 * (i + 17) + 1] - co[3 * (i - 17) + 1])
+            self.assertAlmostEqual(slope[i], math.atan(math.hypot(gx, gy)) / (math.pi / 2), places=5, msg=how)
+            self.assertAlmostEqual(height[i], (z[i] - min(z)) / (max(z) - min(z)), places=5, msg=how)
+            obj.fracterra_terrain.seed = 4
+            bpy.ops.object.fracterra_terrain_regenerate()
+
     def test_additions_gives_the_library_heights(self):
         obj = add_terrain(method="ADDITIONS", levels=4, hurst=0.5, seed=3, uvs=False, smooth=False)
         self.assertEqual(coords(obj.data)[2::3].tobytes(),
@@ -175,6 +195,22 @@ class TerrainAddTest(unittest.TestCase):
         n = 17
         for (row, col), v in {(0, 0): 0.0, (0, n - 1): 4.0, (n - 1, 0): 1.0, (n - 1, n - 1): 3.0}.items():
             self.assertAlmostEqual(z[row * n + col], v, places=5)
+
+    def test_open_button_loads_a_reference_image_file(self):
+        import tempfile
+        img = bpy.data.images.new("to-save", 9, 9)
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "ridge.png")
+            img.filepath_raw, img.file_format = path, "PNG"
+            img.save()
+            obj = add_terrain(levels=4, seed=1)
+            self.assertEqual(bpy.ops.object.fracterra_reference_image_open(filepath=path), {"FINISHED"})
+            settings = obj.fracterra_terrain
+            self.assertEqual((settings.reference_source, bpy.data.images[settings.reference_image].filepath),
+                             ("IMAGE", path))
+            self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
+            expect_report(self, lambda: bpy.ops.object.fracterra_reference_image_open(
+                filepath=os.path.join(d, "missing.png")), "cannot open", "missing.png")
 
     def test_non_grid_reference_object_is_an_error_report(self):
         bpy.ops.mesh.primitive_cube_add()

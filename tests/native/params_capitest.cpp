@@ -37,6 +37,36 @@ const std::vector<Field> kTerrainFields = {
     FT_FIELD(ft_terrain_params, iterations), FT_FIELD(ft_terrain_params, supersample),
 };
 
+const std::vector<Field> kProfileFields = {
+    FT_FIELD(ft_profile_params, struct_size), FT_FIELD(ft_profile_params, levels),
+    FT_FIELD(ft_profile_params, hurst), FT_FIELD(ft_profile_params, sigma), FT_FIELD(ft_profile_params, seed),
+    FT_FIELD(ft_profile_params, reference), FT_FIELD(ft_profile_params, reference_size),
+    FT_FIELD(ft_profile_params, reference_scale), FT_FIELD(ft_profile_params, progress),
+    FT_FIELD(ft_profile_params, progress_user),
+};
+const std::vector<Field> kPolylineFields = {
+    FT_FIELD(ft_polyline_params, struct_size), FT_FIELD(ft_polyline_params, method),
+    FT_FIELD(ft_polyline_params, rng), FT_FIELD(ft_polyline_params, depth),
+    FT_FIELD(ft_polyline_params, spread), FT_FIELD(ft_polyline_params, min_length),
+    FT_FIELD(ft_polyline_params, seed), FT_FIELD(ft_polyline_params, base),
+    FT_FIELD(ft_polyline_params, base_count), FT_FIELD(ft_polyline_params, plane_normal),
+    FT_FIELD(ft_polyline_params, branch_prob), FT_FIELD(ft_polyline_params, branch_decay),
+    FT_FIELD(ft_polyline_params, branch_generations), FT_FIELD(ft_polyline_params, ifs_preset),
+    FT_FIELD(ft_polyline_params, radius), FT_FIELD(ft_polyline_params, hurst),
+    FT_FIELD(ft_polyline_params, ifs_table), FT_FIELD(ft_polyline_params, ifs_maps),
+    FT_FIELD(ft_polyline_params, threads), FT_FIELD(ft_polyline_params, ifs_points),
+    FT_FIELD(ft_polyline_params, progress), FT_FIELD(ft_polyline_params, progress_user),
+};
+const std::vector<Field> kFractalizeFields = {
+    FT_FIELD(ft_fractalize_params, struct_size), FT_FIELD(ft_fractalize_params, levels),
+    FT_FIELD(ft_fractalize_params, hurst), FT_FIELD(ft_fractalize_params, sigma),
+    FT_FIELD(ft_fractalize_params, seed), FT_FIELD(ft_fractalize_params, scheme),
+    FT_FIELD(ft_fractalize_params, mode), FT_FIELD(ft_fractalize_params, fix_boundary),
+    FT_FIELD(ft_fractalize_params, scale_by_edge_length), FT_FIELD(ft_fractalize_params, weights),
+    FT_FIELD(ft_fractalize_params, threads), FT_FIELD(ft_fractalize_params, progress),
+    FT_FIELD(ft_fractalize_params, progress_user),
+};
+
 struct Kind {
   int32_t kind;
   const char* name;
@@ -45,6 +75,9 @@ struct Kind {
 };
 const Kind kKinds[] = {
     {FT_PARAMS_TERRAIN, "ft_terrain_params", sizeof(ft_terrain_params), &kTerrainFields},
+    {FT_PARAMS_PROFILE, "ft_profile_params", sizeof(ft_profile_params), &kProfileFields},
+    {FT_PARAMS_POLYLINE, "ft_polyline_params", sizeof(ft_polyline_params), &kPolylineFields},
+    {FT_PARAMS_FRACTALIZE, "ft_fractalize_params", sizeof(ft_fractalize_params), &kFractalizeFields},
 };
 
 std::vector<const ft_param_info*> rows_of(int32_t kind) {

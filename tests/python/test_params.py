@@ -53,8 +53,8 @@ def test_a_value_outside_a_hard_range_is_refused_with_the_range(core, lib):
 
 
 def _addon_params(core, kind_name):
-    return {p.field: p for p in {"terrain": core.params.TERRAIN_PARAMS,
-                                 "polyline": core.params.POLYLINE_PARAMS}[kind_name] if p.field}
+    lists = {"terrain": core.params.TERRAIN_PARAMS, "polyline": core.params.POLYLINE_PARAMS}
+    return {p.field: p for p in lists.get(kind_name, ()) if p.field}
 
 
 def test_addon_defaults_are_the_librarys_or_a_stated_override(core, lib):

@@ -20,6 +20,7 @@ classes = (
     props.FRACTERRA_PG_polyline,
     terrain_ops.FRACTERRA_OT_terrain_add,
     terrain_ops.FRACTERRA_OT_terrain_regenerate,
+    terrain_ops.FRACTERRA_OT_reference_image_open,
     polyline_ops.FRACTERRA_OT_polyline_add,
     polyline_ops.FRACTERRA_OT_polyline_regenerate,
     polyline_ops.FRACTERRA_OT_coastline_add,

@@ -123,6 +123,7 @@ def new_terrain_mesh(values, context, name="Fractal Terrain"):
     mesh = bpy.data.meshes.new(name)
     try:
         mesh_build.fill_grid_mesh(mesh, g, smooth=values["smooth"])
+        mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
     except BaseException:
         bpy.data.meshes.remove(mesh)
         raise
@@ -147,6 +148,7 @@ def regenerate_object(obj, context):
             world_size_x, world_size_y = grid_size(values["world_size"], nx, ny)
             co = vertices(hf, world_size_x, world_size_y, z_floor(values))
             mesh_build.rewrite_positions(mesh, co)
+            mesh_build.set_height_slope(mesh, co, nx, ny)
             if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
                 mesh_build.set_uvs(mesh, grid_arrays(hf, values["world_size"], uvs=True).uv
                                    if values["uvs"] else None)
@@ -155,5 +157,6 @@ def regenerate_object(obj, context):
         else:
             g = grid_arrays(hf, values["world_size"], z_floor(values), uvs=values["uvs"])
             mesh_build.fill_grid_mesh(mesh, g, smooth=values["smooth"])
+            mesh_build.set_height_slope(mesh, g.co, nx, ny)
             how = "mesh rebuilt"
     return f"{nx} x {ny} terrain {how} in {time.perf_counter() - t0:.2f} s"

@@ -51,7 +51,7 @@ class ParamInfo(Structure):
 
 
 # fracterra/params.h: the described structs and field types.
-PARAMS_KINDS = {"terrain": 0}
+PARAMS_KINDS = {"terrain": 0, "profile": 1, "polyline": 2, "fractalize": 3}
 FT_PARAM = ("uint32", "int32", "int64", "uint64", "float", "double", "bool", "enum", "pointer", "string",
             "callback", "opaque")
 FLAG_STRUCT_SIZE, FLAG_DATA, FLAG_MIN_EXCLUSIVE, FLAG_MAX_EXCLUSIVE = 1, 2, 4, 8
@@ -106,50 +106,6 @@ class _Described:
 
     def __init__(self, kind):
         self.kind = kind
-
-
-class ProfileParams(Structure):
-    """ft_profile_params (fracterra/terrain.h)."""
-    _fields_ = [
-        ("struct_size", c_uint32),
-        ("levels", c_int32),
-        ("hurst", c_double),
-        ("sigma", c_double),
-        ("seed", c_uint64),
-        ("reference", POINTER(c_float)),
-        ("reference_size", c_int32),
-        ("reference_scale", c_int32),
-        ("progress", PROGRESS_FN),
-        ("progress_user", c_void_p),
-    ]
-
-
-class PolylineParams(Structure):
-    """ft_polyline_params (fracterra/polyline.h)."""
-    _fields_ = [
-        ("struct_size", c_uint32),
-        ("method", c_int32),
-        ("rng", c_int32),
-        ("depth", c_int32),
-        ("spread", c_double),
-        ("min_length", c_double),
-        ("seed", c_uint64),
-        ("base", POINTER(c_double)),
-        ("base_count", c_int64),
-        ("plane_normal", c_double * 3),
-        ("branch_prob", c_double),
-        ("branch_decay", c_double),
-        ("branch_generations", c_int32),
-        ("ifs_preset", c_int32),
-        ("radius", c_double),
-        ("hurst", c_double),
-        ("ifs_table", POINTER(c_double)),
-        ("ifs_maps", c_int32),
-        ("threads", c_int32),
-        ("ifs_points", c_int64),
-        ("progress", PROGRESS_FN),
-        ("progress_user", c_void_p),
-    ]
 
 
 class PolylineStats(Structure):
@@ -232,25 +188,6 @@ class PovSceneParams(Structure):
     ]
 
 
-class FractalizeParams(Structure):
-    """ft_fractalize_params (fracterra/subdiv.h)."""
-    _fields_ = [
-        ("struct_size", c_uint32),
-        ("levels", c_int32),
-        ("hurst", c_double),
-        ("sigma", c_double),
-        ("seed", c_uint64),
-        ("scheme", c_int32),
-        ("mode", c_int32),
-        ("fix_boundary", c_int32),
-        ("scale_by_edge_length", c_int32),
-        ("weights", POINTER(c_float)),
-        ("threads", c_int32),
-        ("progress", PROGRESS_FN),
-        ("progress_user", c_void_p),
-    ]
-
-
 class GridCounts(Structure):
     """ft_grid_counts (fracterra/mesh.h)."""
     _fields_ = [("vertices", c_int64), ("edges", c_int64), ("faces", c_int64), ("loops", c_int64)]
@@ -293,11 +230,11 @@ SIGNATURES = {
     "ft_terrain_generate": (c_int32, [_Described("terrain"), POINTER(_HF)]),
     "ft_terrain_side": (c_int32, [c_int32]),
     "ft_mandelbrot_level_height": (c_int32, [_Described("terrain"), c_double, POINTER(c_double)]),
-    "ft_profile_params_init": (c_int32, [POINTER(ProfileParams)]),
-    "ft_profile_generate": (c_int32, [POINTER(ProfileParams), _F32P, c_size_t]),
+    "ft_profile_params_init": (c_int32, [_Described("profile")]),
+    "ft_profile_generate": (c_int32, [_Described("profile"), _F32P, c_size_t]),
     "ft_profile_length": (c_int64, [c_int32]),
-    "ft_polyline_params_init": (c_int32, [POINTER(PolylineParams)]),
-    "ft_polyline_generate": (c_int32, [POINTER(PolylineParams), POINTER(_PL)]),
+    "ft_polyline_params_init": (c_int32, [_Described("polyline")]),
+    "ft_polyline_generate": (c_int32, [_Described("polyline"), POINTER(_PL)]),
     "ft_polyline_measure": (c_int32, [_PL, POINTER(PolylineStats)]),
     "ft_hurst_params_init": (c_int32, [POINTER(HurstParams)]),
     "ft_hurst_profile": (c_int32, [_F32P, c_size_t, POINTER(HurstParams), POINTER(HurstResult)]),
@@ -317,8 +254,8 @@ SIGNATURES = {
     "ft_mesh_face_index_count": (c_int64, [c_void_p]),
     "ft_mesh_face_indices": (_I32P, [c_void_p]),
     "ft_mesh_free": (None, [c_void_p]),
-    "ft_fractalize_params_init": (c_int32, [POINTER(FractalizeParams)]),
-    "ft_fractalize": (c_int32, [c_void_p, POINTER(FractalizeParams), POINTER(c_void_p)]),
+    "ft_fractalize_params_init": (c_int32, [_Described("fractalize")]),
+    "ft_fractalize": (c_int32, [c_void_p, _Described("fractalize"), POINTER(c_void_p)]),
     "ft_grid_counts_get": (c_int32, [c_int32, c_int32, POINTER(GridCounts)]),
     "ft_grid_vertices": (c_int32, [_HF, c_double, c_double, c_double, _F32P, c_size_t]),
     "ft_grid_heights": (c_int32, [_HF, c_double, _F32P, c_size_t, c_size_t]),
@@ -365,11 +302,11 @@ class Library:
         # _init write into a roomy buffer first, then size ours to match, so the
         # library never reads or writes past the end of what we pass.
         self.terrain_params_type = self.struct_types[PARAMS_KINDS["terrain"]]
-        self.profile_params_type = self._sized(ProfileParams, self.ft_profile_params_init)
-        self.polyline_params_type = self._sized(PolylineParams, self.ft_polyline_params_init)
+        self.profile_params_type = self.struct_types[PARAMS_KINDS["profile"]]
+        self.polyline_params_type = self.struct_types[PARAMS_KINDS["polyline"]]
         self.hurst_params_type = self._sized(HurstParams, self.ft_hurst_params_init)
         self.pov_scene_params_type = self._sized(PovSceneParams, self.ft_pov_scene_params_init)
-        self.fractalize_params_type = self._sized(FractalizeParams, self.ft_fractalize_params_init)
+        self.fractalize_params_type = self.struct_types[PARAMS_KINDS["fractalize"]]
 
     def _bind(self, signatures):
         """Declares restype and argtypes of each symbol; returns the names the library lacks."""

@@ -20,7 +20,10 @@ extern "C" {
 /// The described structs (the `kind` argument below).
 enum {
   FT_PARAMS_TERRAIN = 0,         ///< ft_terrain_params (terrain.h)
-  FT_PARAMS_KIND_COUNT = 1       ///< number of kinds; kinds are 0 .. count - 1
+  FT_PARAMS_PROFILE = 1,         ///< ft_profile_params (terrain.h)
+  FT_PARAMS_POLYLINE = 2,        ///< ft_polyline_params (polyline.h)
+  FT_PARAMS_FRACTALIZE = 3,      ///< ft_fractalize_params (subdiv.h)
+  FT_PARAMS_KIND_COUNT = 4       ///< number of kinds; kinds are 0 .. count - 1
 };
 
 /// Field types. Integers and doubles are the C types of the same name;

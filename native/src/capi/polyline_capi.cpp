@@ -3,6 +3,7 @@
 
 #include "analysis/polyline_stats.hpp"
 #include "capi/guard.hpp"
+#include "polyline/polyline_params.hpp"
 #include "capi/handles.hpp"
 #include "fracterra/fracterra.h"
 #include "polyline/polyline.hpp"
@@ -23,7 +24,7 @@ FT_API ft_status ft_polyline_generate(const ft_polyline_params* p, ft_polylines*
     ft::capi::reset_out(out);
     ft::check_not_null("params", p);
     auto h = std::make_unique<ft_polylines>();
-    h->set = ft::generate_polylines(*p);
+    h->set = ft::generate_polylines(ft::upgraded(ft::polyline_param_table(), *p));
     *out = h.release();
   });
 }

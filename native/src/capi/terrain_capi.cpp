@@ -54,7 +54,7 @@ FT_API ft_status ft_profile_params_init(ft_profile_params* p) {
 FT_API ft_status ft_profile_generate(const ft_profile_params* p, float* dst, size_t count) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    ft::generate_profile(*p, dst, count);
+    ft::generate_profile(ft::upgraded(ft::profile_param_table(), *p), dst, count);
   });
 }
 

@@ -226,25 +226,11 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
   return hf;
 }
 
-ft_profile_params default_profile_params() {
-  ft_profile_params p{};
-  p.struct_size = sizeof(ft_profile_params);
-  p.levels = 10;
-  p.hurst = 0.8;
-  p.sigma = 1.0;
-  p.seed = 1;
-  p.reference = nullptr;
-  p.reference_size = 0;
-  p.reference_scale = FT_REFSCALE_SIGMA;
-  return p;
-}
+ft_profile_params default_profile_params() { return defaults_of<ft_profile_params>(profile_param_table()); }
 
 void validate_profile_params(const ft_profile_params& p) {
   check_struct_size(p.struct_size, sizeof(ft_profile_params), "ft_profile_params");
-  check_int_range("levels", p.levels, 1, kMaxProfileLevels);
-  check_range("hurst", p.hurst, 0.0, 1.0);
-  check_positive("sigma", p.sigma);
-  check_int_range("reference_scale", p.reference_scale, FT_REFSCALE_SIGMA, FT_REFSCALE_STD);
+  check_ranges(profile_param_table(), &p);
   const double per_sigma = kMaxGaussian * (1 + p.levels);
   if (p.reference) {
     const int m = dyadic_levels(p.reference_size);

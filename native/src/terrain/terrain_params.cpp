@@ -190,7 +190,53 @@ constexpr ft_param_info kTerrainRows[] = {
 FT_PARAM_TABLE_END
 #undef ROW
 
+#define ROW(field, type) FT_PARAM_ROW(ft_profile_params, field, type)
+FT_PARAM_TABLE_BEGIN
+constexpr ft_param_info kProfileRows[] = {
+    {ROW(struct_size, FT_PARAM_UINT32), .flags = FT_PARAM_FLAG_STRUCT_SIZE, .element_kind = -1,
+     .default_value = sizeof(ft_profile_params), .hard_min = 0, .hard_max = 4294967295.0, .unit = "bytes",
+     .label = "Struct Size", .doc = "sizeof(ft_profile_params), set by ft_profile_params_init",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(levels, FT_PARAM_INT32), .element_kind = -1, .default_value = 10, .hard_min = 1,
+     .hard_max = kMaxProfileLevels, .soft_min = 1, .soft_max = 20, .unit = "levels", .label = "Detail Levels",
+     .doc = "Refinement steps n of Voss's 1D midpoint displacement (1985, seed 000): 2^n + 1 samples",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(hurst, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.8, .hard_min = 0, .hard_max = 1,
+     .soft_min = 0, .soft_max = 1, .unit = "", .label = "Smoothness",
+     .doc = "Hurst exponent H (Mandelbrot & Van Ness 1968; Voss 1985): 0 rough, 1 smooth",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(sigma, FT_PARAM_DOUBLE), .flags = kAbove, .element_kind = -1, .default_value = 1, .hard_min = 0,
+     .hard_max = kInf, .soft_min = 0.01, .soft_max = 100, .unit = "scene units", .label = "Height Scale",
+     .doc = "Vertical scale sigma: the standard deviation of the first displacement (Voss 1985)",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(seed, FT_PARAM_UINT64), .element_kind = -1, .default_value = 1, .hard_min = 0,
+     .hard_max = 18446744073709551615.0, .soft_min = 0, .soft_max = 2147483647.0, .unit = "", .label = "Seed",
+     .doc = "Random seed (Philox key)", .methods = FT_PARAM_ALL_METHODS},
+    {ROW(reference, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_FLOAT, .element_kind = -1,
+     .unit = "scene units", .label = "Reference Points",
+     .doc = "NULL or 2^m + 1 values taken as steps 1..m (Voss 1985, seed 000)", .methods = FT_PARAM_ALL_METHODS},
+    {ROW(reference_size, FT_PARAM_INT32), .flags = kData, .element_kind = -1, .hard_min = 0,
+     .hard_max = 268435457.0, .unit = "samples", .label = "Reference Size",
+     .doc = "2^m + 1 with 1 <= m <= levels", .methods = FT_PARAM_ALL_METHODS},
+    {ROW(reference_scale, FT_PARAM_ENUM), .element_kind = -1, .default_value = FT_REFSCALE_SIGMA,
+     .hard_min = FT_REFSCALE_SIGMA, .hard_max = FT_REFSCALE_STD, .soft_min = FT_REFSCALE_SIGMA,
+     .soft_max = FT_REFSCALE_STD, .unit = "", .label = "Refinement Scale",
+     .doc = "Displacement scale of the steps after the reference values (Voss 1985, seed 000, fig. 7 a, b)",
+     .methods = FT_PARAM_ALL_METHODS, .enum_count = 3, .enum_items = kReferenceScales},
+    {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .element_kind = -1, .unit = "", .label = "Progress",
+     .doc = "Progress callback; may cancel; NULL: none", .methods = FT_PARAM_ALL_METHODS},
+    {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
+     .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback", .methods = FT_PARAM_ALL_METHODS},
+};
+FT_PARAM_TABLE_END
+#undef ROW
+
 }  // namespace
+
+const ParamTable& profile_param_table() {
+  static const ParamTable table{"ft_profile_params", sizeof(ft_profile_params), kProfileRows};
+  return table;
+}
 
 const ParamTable& terrain_param_table() {
   static const ParamTable table{"ft_terrain_params", sizeof(ft_terrain_params), kTerrainRows};

@@ -7,5 +7,6 @@
 namespace ft {
 
 const ParamTable& terrain_param_table();
+const ParamTable& profile_param_table();
 
 }  // namespace ft
