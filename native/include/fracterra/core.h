@@ -26,9 +26,10 @@ extern "C" {
 /// has_sea/sea_level, octave_rotation, std_error, FT_FRACTALIZE_MIDPOINT); params.h, the
 /// parameter tables. (1.1: ft_terrain_params.world_size; 1.2: the Mandelbrot fields and
 /// FT_HURST_AUTO; ft_terrain_params keeps their layout, so its 1.x sizes are still accepted.)
-/// 2.1: raster.h (read and write by extension, ft_dem_refine).
 /// The shared library's SOVERSION is this major number.
-#define FT_ABI_VERSION_MINOR 1
+/// 2.1: erosion.h (ft_erode, its maps, ft_drainage_statistics).
+/// 2.2: raster.h (read and write by extension, ft_dem_refine).
+#define FT_ABI_VERSION_MINOR 2
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

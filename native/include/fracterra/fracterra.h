@@ -15,6 +15,7 @@
 #include "polyline.h"
 #include "povray.h"
 #include "params.h"
+#include "erosion.h"
 #include "raster.h"
 
 #endif
