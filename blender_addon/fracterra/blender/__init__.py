@@ -4,14 +4,14 @@ Modules import only downwards, never in a circle:
     reporting, widgets, prefs, mesh_build, curve_build   (leaves: core and bpy only)
     <- terrain_build, polyline_build, terrain_objects, settings_ui
     <- props (PropertyGroups; auto-update calls terrain_build)
-    <- terrain_ops, polyline_ops, measure_op, fractalize_op, pov_export (operators)
+    <- terrain_ops, polyline_ops, measure_op, fractalize_op, pov_export, dem_io_ops (operators)
     <- panels, menus (refer to operators by their id strings)
 tests/python/test_addon_layers.py checks this order.
 """
 
 import bpy
 
-from . import fractalize_op, measure_op, panels, polyline_ops, pov_export, prefs, presets, props, terrain_ops
+from . import dem_io_ops, fractalize_op, measure_op, panels, polyline_ops, pov_export, prefs, presets, props, terrain_ops
 from .menus import MENUS
 
 classes = (
@@ -27,6 +27,8 @@ classes = (
     measure_op.FRACTERRA_OT_measure,
     pov_export.FRACTERRA_OT_export_pov,
     fractalize_op.FRACTERRA_OT_fractalize,
+    dem_io_ops.FRACTERRA_OT_import_dem,
+    dem_io_ops.FRACTERRA_OT_export_heights,
     panels.FRACTERRA_PT_terrain,
     panels.FRACTERRA_PT_polyline,
     panels.FRACTERRA_PT_measures,

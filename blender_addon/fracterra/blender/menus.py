@@ -14,6 +14,11 @@ def menu_curve_add(self, context):
 
 def menu_file_export(self, context):
     self.layout.operator("export_scene.fracterra_pov", text="POV-Ray (fracterra) (.pov)")
+    self.layout.operator("export_scene.fracterra_heights", text="Terrain Heights (fracterra) (.tif/.exr/.raw)")
+
+
+def menu_file_import(self, context):
+    self.layout.operator("import_scene.fracterra_dem", text="DEM as Terrain (fracterra) (.tif/.hgt/.asc/...)")
 
 
 def menu_object(self, context):
@@ -25,5 +30,6 @@ MENUS = (
     (bpy.types.VIEW3D_MT_mesh_add, menu_mesh_add),
     (bpy.types.VIEW3D_MT_curve_add, menu_curve_add),
     (bpy.types.TOPBAR_MT_file_export, menu_file_export),
+    (bpy.types.TOPBAR_MT_file_import, menu_file_import),
     (bpy.types.VIEW3D_MT_object, menu_object),
 )
