@@ -45,12 +45,12 @@ class DemTest(unittest.TestCase):
         obj = bpy.context.active_object
         co = coords(obj.data)
         self.assertEqual(len(co) // 3, 45)
-        # The highest vertex is in the north-west corner (+y, -x), the lowest in the south-west.
+        # The highest vertex is in the north-east corner (+y), the lowest in the south-west (-y).
         top = max(range(45), key=lambda i: co[3 * i + 2])
         low = min(range(45), key=lambda i: co[3 * i + 2])
         self.assertGreater(co[3 * top + 1], 0)
         self.assertLess(co[3 * low + 1], 0)
-        self.assertEqual((co[3 * top + 2], co[3 * low + 2]), (140.0, 100.0))
+        self.assertEqual((co[3 * top + 2], co[3 * low + 2]), (148.0, 100.0))
 
     def test_export_writes_every_format_readable_again(self):
         bpy.ops.mesh.fracterra_terrain_add(levels=3)
