@@ -24,7 +24,7 @@ extern "C" {
 #define FT_ABI_VERSION_MAJOR 1
 /// 1.1: ft_terrain_params.world_size. 1.2: the Mandelbrot fields; FT_HURST_AUTO
 /// and its reason in ft_hurst_result.
-#define FT_ABI_VERSION_MINOR 2
+#define FT_ABI_VERSION_MINOR 3
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.
