@@ -13,7 +13,8 @@ a layer of lower rank, never one of the same rank (sideways) or higher
     3  polyline/                               polylines (the profile method uses terrain/;
                                                the FPL study uses analysis/)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
-    5  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
+    5  tables/                                 the parameter tables of every layer, by kind
+    6  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
                                                by side: both link the static core, neither
                                                includes the other
 
@@ -46,7 +47,8 @@ RANK = {
     # Ranked ahead for layers being added on other branches (DEM refinement uses
     # terrain/; erosion uses analysis/); add them to the README's picture on landing.
     "refine": 3, "erosion": 4,
-    "capi": 5, "cli": 5,
+    "tables": 5,  # every capability's parameter table, by kind
+    "capi": 6, "cli": 6,
 }
 TOP = {"capi", "cli"}  # may include any public header
 # Third-party include prefixes and the only layers that may include them.

@@ -97,8 +97,8 @@ std::string mesh2(const Heightfield& hf, const pov::TerrainPlacement& pl) {
   char buf[160];
   for (int y = 0; y < hf.height(); ++y)
     for (int x = 0; x < hf.width(); ++x) {
-      std::snprintf(buf, sizeof buf, "  <%.6f, %.6f, %.6f>,\n", x * pl.size_x / (hf.width() - 1),
-                    hf.at(x, y) * pl.vertical_scale, y * pl.size_y / (hf.height() - 1));
+      std::snprintf(buf, sizeof buf, "  <%.6f, %.6f, %.6f>,\n", x * pl.world_size_x / (hf.width() - 1),
+                    hf.at(x, y) * pl.vertical_scale, y * pl.world_size_y / (hf.height() - 1));
       s += buf;
     }
   const int64_t faces = int64_t(hf.width() - 1) * (hf.height() - 1) * 2;

@@ -14,6 +14,7 @@
 #include "cli/command.hpp"
 #include "cli/plot_writer.hpp"
 #include "core/error.hpp"
+#include "erosion/drainage_stats.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
 #include "contour/marching_squares.hpp"
@@ -29,7 +30,17 @@ using nlohmann::json;
 struct AnalyzeCli {
   std::string file, plot, method = "auto";
   HurstOptions band;  // only the band fields are used
+  bool drainage = false, periodic = false;
 };
+
+// Hack's law and slope-area concavity of a heightfield (erosion/drainage_stats.hpp).
+json drainage_report(const Heightfield& hf, bool periodic) {
+  const erosion::DrainageStats s = erosion::drainage_stats(hf, periodic);
+  return {{"hack_h", s.hack_h},         {"hack_h_stderr", s.hack_h_stderr}, {"hack_bins", s.hack_bins},
+          {"theta", s.theta},           {"theta_stderr", s.theta_stderr},   {"theta_bins", s.theta_bins},
+          {"min_area", s.min_area},     {"max_area", s.max_area},
+          {"note", "real landscapes: Hack h about 0.5-0.6, theta about 0.35-0.7; areas in world units^2"}};
+}
 
 const std::vector<HurstMethod> kAllMethods = {HurstMethod::kVariogramAligned, HurstMethod::kVariogram,
                                               HurstMethod::kMadogramAligned, HurstMethod::kMadogram,
@@ -44,7 +55,7 @@ struct Named {
 json estimate_json(const HurstEstimate& e) {
   json j = {{"hurst", e.hurst},
             {"dimension", e.dimension},
-            {"stderr", e.stderr_hurst},
+            {"std_error", e.std_error},
             {"band", {{"unit", hurst_method_uses_lags(e.method) ? "lag (samples)" : "frequency (cycles per record)"},
                       {"lo", e.band_lo},
                       {"hi", e.band_hi}}},
@@ -101,7 +112,7 @@ json hurst_report(const float* profile, size_t n, const Heightfield* surface, co
 }
 
 json box_json(const BoxCountResult& b) {
-  return {{"dimension", b.dimension}, {"stderr", b.std_error}, {"min_size", b.min_size},
+  return {{"dimension", b.dimension}, {"std_error", b.std_error}, {"min_size", b.min_size},
           {"max_size", b.max_size},   {"sizes", b.sizes},       {"counts", b.counts}};
 }
 
@@ -142,7 +153,7 @@ SvgPanel fit_panel(const std::string& title, const std::string& xl, const std::s
 SvgPanel estimate_panel(const Named& n) {
   const HurstEstimate& e = n.e;
   char label[96];
-  std::snprintf(label, sizeof label, "H = %.3f +- %.3f, D = %.3f", e.hurst, e.stderr_hurst, e.dimension);
+  std::snprintf(label, sizeof label, "H = %.3f +- %.3f, D = %.3f", e.hurst, e.std_error, e.dimension);
   const bool lags = hurst_method_uses_lags(e.method);
   const bool mad = e.method == HurstMethod::kMadogram || e.method == HurstMethod::kMadogramAligned;
   std::string title = n.name;
@@ -190,6 +201,10 @@ int run(const AnalyzeCli& c) {
       report.update(hurst_report(nullptr, 0, &hf, c, fits));
       BoxCountResult coast;
       report["coastline"] = coastline_report(hf, &coast);
+      if (c.drainage) {
+        if (hf.world_size() <= 0) hf.set_world_size(10.0);
+        report["drainage"] = drainage_report(hf, c.periodic);
+      }
       if (!coast.sizes.empty())
         fig.panels.push_back(box_panel("median coastline: box counting", coast.sizes, coast.counts, coast.dimension,
                                        coast.std_error));
@@ -251,6 +266,9 @@ Registration reg({"analyze",
                                    "spectral: highest frequency, cycles per record (0 = n / 8)")
                         ->check(CLI::NonNegativeNumber)->capture_default_str();
                     app.add_option("--plot", c->plot, "also draw the log-log fits to this .svg (or .png, through rsvg-convert)");
+                    app.add_flag("--drainage", c->drainage,
+                                 "heightfields: also report drainage statistics (Hack's h, slope-area theta)");
+                    app.add_flag("--periodic", c->periodic, "--drainage: the terrain tiles (route it as a torus)");
                     return [c] { return run(*c); };
                   },
                   40});

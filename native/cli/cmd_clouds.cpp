@@ -19,7 +19,7 @@ Registration reg({"clouds",
                   "Clouds from a heightfield (Feder): black below the threshold, above it grey ~ log(elevation)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<CloudsCli>();
-                    app.add_option("--in", c->in, "heightfield .png, .pgm or .npy")->required();
+                    app.add_option("--in", c->in, kHeightfieldReadHelp)->required();
                     app.add_option("--threshold", c->threshold,
                                    "height below which the sky is black, or a quantile qF with F in [0, 1]")
                         ->capture_default_str();

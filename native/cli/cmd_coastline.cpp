@@ -75,7 +75,7 @@ int run(const CoastlineCli& c) {
   if (!c.preview.empty()) {
     ReliefOptions ro;
     const HeightStats s = hf.stats();
-    ro.sea_level = s.max > s.min ? std::clamp((level - s.min) / (s.max - s.min), 0.0, 1.0) : 0.0;
+    ro.sea_fraction = s.max > s.min ? std::clamp((level - s.min) / (s.max - s.min), 0.0, 1.0) : 0.0;
     std::vector<uint8_t> rgb = shaded_relief(hf, ro);
     draw_chains(rgb, hf.width(), hf.height(), set);
     write_png_rgb(c.preview, hf.width(), hf.height(), rgb.data());
@@ -95,7 +95,7 @@ Registration reg({"coastline",
                   "Level set (coastline) of a heightfield as polylines: marching squares, land on the left",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<CoastlineCli>();
-                    app.add_option("--in", c->in, "heightfield .png, .pgm or .npy")->required();
+                    app.add_option("--in", c->in, kHeightfieldReadHelp)->required();
                     app.add_option("--level", c->level,
                                    "height of the level set, or a quantile of the samples as qF with F in [0, 1] "
                                    "(q0.5 = the median)")

@@ -18,7 +18,7 @@ namespace {
 
 const std::map<std::string, int> kSchemes = {
     {"catmark", FT_SCHEME_CATMARK}, {"loop", FT_SCHEME_LOOP}, {"bilinear", FT_SCHEME_BILINEAR}};
-const std::map<std::string, int> kModes = {{"voss", FT_FRACTALIZE_VOSS}, {"additions", FT_FRACTALIZE_ADDITIONS}};
+const std::map<std::string, int> kModes = {{"voss", FT_FRACTALIZE_MIDPOINT}, {"additions", FT_FRACTALIZE_ADDITIONS}};
 
 struct FractalizeOptions {
   ft_fractalize_params p = default_fractalize_params();

@@ -18,15 +18,15 @@ struct ReliefCli {
 Registration reg({"relief", "Draw a shaded-relief preview PNG of a heightfield",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<ReliefCli>();
-                    app.add_option("--in", c->in, "heightfield .png, .pgm or .npy")->required()->check(CLI::ExistingFile);
+                    app.add_option("--in", c->in, kHeightfieldReadHelp)->required()->check(CLI::ExistingFile);
                     app.add_option("--out", c->out, "output RGB .png")->required();
-                    app.add_option("--sea-level", c->o.sea_level, "fraction of the height range under water, 0..1")
+                    app.add_option("--sea-fraction", c->o.sea_fraction, "fraction of the height range under water, 0..1")
                         ->capture_default_str();
                     app.add_option("--exaggeration", c->o.exaggeration,
                                    "vertical exaggeration (0 = automatic)")->capture_default_str();
                     app.add_option("--sun-azimuth", c->o.sun_azimuth, "degrees clockwise from image up")
                         ->capture_default_str();
-                    app.add_option("--sun-altitude", c->o.sun_altitude, "degrees above the horizon, 0..90")
+                    app.add_option("--sun-elevation", c->o.sun_elevation, "degrees above the horizon, 0..90")
                         ->capture_default_str();
                     return [c] {
                       const Heightfield hf = read_heightfield(c->in);

@@ -40,9 +40,9 @@ int run(SceneOptions& o) {
     // The terrain's own world size (recorded by fracterra) unless --size says otherwise.
     const double size = o.size > 0 ? o.size : hf.world_size() > 0 ? hf.world_size() : 1.0;
     pov::set_scene_terrain(p, hf, size, o.vertical_scale, o.sea_fraction);
-    if (!std::isnan(o.water)) p.has_water = true, p.water_level = o.water;
+    if (!std::isnan(o.water)) p.has_sea = true, p.sea_level = o.water;
   } else if (!std::isnan(o.water)) {
-    p.has_water = true, p.water_level = o.water;
+    p.has_sea = true, p.sea_level = o.water;
   }
   if (o.kinds.size() > o.polylines.size()) invalid("more --kind options than --polyline files");
   if (o.radii.size() > o.polylines.size()) invalid("more --radius options than --polyline files");
@@ -77,7 +77,7 @@ int run(SceneOptions& o) {
 Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (and render it)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<SceneOptions>();
-                    app.add_option("--terrain", o->terrain, "heightfield .png, .pgm or .npy")->check(CLI::ExistingFile);
+                    app.add_option("--terrain", o->terrain, kHeightfieldReadHelp)->check(CLI::ExistingFile);
                     app.add_option("--polyline", o->polylines, "polyline set .csv or .json (world units); repeatable")
                         ->check(CLI::ExistingFile);
                     app.add_option("--kind", o->kinds,

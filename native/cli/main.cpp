@@ -17,7 +17,9 @@ int main(int argc, char** argv) {
   using namespace ft::cli;
   CLI::App app{"fracterra: fractal terrains and polylines for Blender and POV-Ray"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("fracterra 0.1.0"));
+  // Wide enough that "--octave-rotation FLOAT=0.5" keeps two spaces before its text.
+  app.get_formatter()->column_width(40);
+  app.set_version_flag("--version", std::string("fracterra " FT_VERSION_STRING));
   auto& commands = registry();
   std::stable_sort(commands.begin(), commands.end(),
                    [](const Command& a, const Command& b) { return a.order < b.order; });

@@ -3,9 +3,13 @@ temporary user scripts folder (BLENDER_USER_SCRIPTS, set by ctest), enable it,
 and run a unittest module; the exit code tells ctest the result.
 
 Run as: blender -b --factory-startup --python-exit-code 1 --python <test.py> -- --zip fracterra.zip
+or, in Blender 4.2+ after `blender --command extension install-file --repo user_default
+--enable fracterra.zip`: blender -b --python-exit-code 1 --python <test.py> -- --installed
+(the add-on is then the module bl_ext.user_default.fracterra).
 """
 
 import argparse
+import importlib
 import os
 import sys
 import unittest
@@ -13,12 +17,24 @@ import unittest
 import addon_utils
 import bpy
 
+# The add-on's top-level module name: "fracterra" when installed as a legacy
+# add-on, "bl_ext.<repo>.fracterra" as a Blender 4.2+ extension.
+PACKAGE = "fracterra"
+
 
 def args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     parser = argparse.ArgumentParser()
-    parser.add_argument("--zip", required=True, help="the add-on zip built by CMake")
+    group = parser.add_mutually_exclusive_group(required=True)
+    group.add_argument("--zip", help="the add-on zip built by CMake, installed here")
+    group.add_argument("--installed", action="store_true",
+                       help="the add-on is already installed and enabled as an extension")
     return parser.parse_args(argv)
+
+
+def submodule(name):
+    """The add-on's module `name` (e.g. "core", "blender.panels"), whatever the package is called."""
+    return importlib.import_module(f"{PACKAGE}.{name}")
 
 
 def install_and_enable(zip_path):
@@ -31,8 +47,20 @@ def install_and_enable(zip_path):
     return module
 
 
+def find_enabled():
+    """The enabled add-on whose module is fracterra or ends in .fracterra (an extension)."""
+    names = [a.module for a in bpy.context.preferences.addons
+             if a.module == "fracterra" or a.module.endswith(".fracterra")]
+    assert len(names) == 1, f"expected one enabled fracterra add-on, found {names}"
+    return importlib.import_module(names[0])
+
+
 def run(test_module_globals):
-    install_and_enable(args().zip)
+    global PACKAGE
+    options = args()
+    module = find_enabled() if options.installed else install_and_enable(options.zip)
+    PACKAGE = module.__name__
+    print(f"testing the add-on {PACKAGE} in Blender {bpy.app.version_string}", flush=True)
     loader = unittest.TestLoader()
     suite = unittest.TestSuite()
     for obj in list(test_module_globals.values()):

@@ -16,8 +16,7 @@ import bpy  # noqa: E402
 
 
 def core():
-    import fracterra.core
-    return fracterra.core
+    return addon_harness.submodule("core")
 
 
 def clear_scene():
@@ -102,6 +101,26 @@ class TerrainAddTest(unittest.TestCase):
         self.assertEqual((settings.levels, settings.seed, settings.method), (5, 7, "MIDPOINT"))
         self.assertAlmostEqual(settings.hurst, 0.6, places=6)
 
+    def test_height_and_slope_attributes_follow_the_vertices(self):
+        import math
+        obj = add_terrain(levels=4, seed=3, world_size=8.0)
+        for how in ("added", "regenerated"):
+            mesh = obj.data
+            co = coords(mesh)
+            z = co[2::3]
+            height = array.array("f", [0.0]) * len(mesh.vertices)
+            slope = array.array("f", [0.0]) * len(mesh.vertices)
+            mesh.attributes["fracterra_height"].data.foreach_get("value", height)
+            mesh.attributes["fracterra_slope"].data.foreach_get("value", slope)
+            self.assertEqual((min(height), max(height)), (0.0, 1.0), how)
+            i = 7 * 17 + 9  # an interior vertex: central differences on the 0.5 m grid
+            gx = (z[i + 1] - z[i - 1]) / (co[3 * (i + 1)] - co[3 * (i - 1)])
+            gy = (z[i + 17] - z[i - 17]) / (co[3 * (i + 17) + 1] - co[3 * (i - 17) + 1])
+            self.assertAlmostEqual(slope[i], math.atan(math.hypot(gx, gy)) / (math.pi / 2), places=5, msg=how)
+            self.assertAlmostEqual(height[i], (z[i] - min(z)) / (max(z) - min(z)), places=5, msg=how)
+            obj.fracterra_terrain.seed = 4
+            bpy.ops.object.fracterra_terrain_regenerate()
+
     def test_additions_gives_the_library_heights(self):
         obj = add_terrain(method="ADDITIONS", levels=4, hurst=0.5, seed=3, uvs=False, smooth=False)
         self.assertEqual(coords(obj.data)[2::3].tobytes(),
@@ -177,6 +196,22 @@ class TerrainAddTest(unittest.TestCase):
         for (row, col), v in {(0, 0): 0.0, (0, n - 1): 4.0, (n - 1, 0): 1.0, (n - 1, n - 1): 3.0}.items():
             self.assertAlmostEqual(z[row * n + col], v, places=5)
 
+    def test_open_button_loads_a_reference_image_file(self):
+        import tempfile
+        img = bpy.data.images.new("to-save", 9, 9)
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "ridge.png")
+            img.filepath_raw, img.file_format = path, "PNG"
+            img.save()
+            obj = add_terrain(levels=4, seed=1)
+            self.assertEqual(bpy.ops.object.fracterra_reference_image_open(filepath=path), {"FINISHED"})
+            settings = obj.fracterra_terrain
+            self.assertEqual((settings.reference_source, bpy.data.images[settings.reference_image].filepath),
+                             ("IMAGE", path))
+            self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
+            expect_report(self, lambda: bpy.ops.object.fracterra_reference_image_open(
+                filepath=os.path.join(d, "missing.png")), "cannot open", "missing.png")
+
     def test_non_grid_reference_object_is_an_error_report(self):
         bpy.ops.mesh.primitive_cube_add()
         cube = bpy.context.active_object.name
@@ -189,6 +224,20 @@ class TerrainAddTest(unittest.TestCase):
         expect_report(self, lambda: bpy.ops.mesh.fracterra_terrain_add(
             levels=2, reference_source="IMAGE", reference_image=img.name, reference_levels=3),
             "reference_size must be 2^m + 1")
+
+    def test_sizes_beyond_blenders_limit_are_refused_before_any_work(self):
+        # Levels 13 used to run ~35 s, peak at 11 GB and end in a traceback from foreach_set. The
+        # levels property now stops at 12 (tests/blender/test_params.py); the same grid through
+        # width x height is refused before any work.
+        big = dict(method="FBM", width=8193, height=8193)
+        expect_report(self, lambda: bpy.ops.mesh.fracterra_terrain_add(**big),
+                      "Refused before generating", "8193 x 8193", "face corners")
+        self.assertEqual((len(bpy.data.objects), len(bpy.data.meshes)), (0, 0))
+        obj = add_terrain(method="FBM", width=9, height=9, seed=1)
+        before = coords(obj.data)
+        obj.fracterra_terrain.width = obj.fracterra_terrain.height = 8193
+        expect_report(self, bpy.ops.object.fracterra_terrain_regenerate, "Refused before generating")
+        self.assertEqual(coords(obj.data), before)
 
     def test_memory_cap_is_an_error_report(self):
         lib = core().library()
@@ -226,7 +275,7 @@ def operator_exists(idname):
 
 class DrawTest(unittest.TestCase):
     def test_settings_ui_draws_only_existing_properties_for_every_method(self):
-        from fracterra.blender import panels, settings_ui
+        panels, settings_ui = (addon_harness.submodule(f"blender.{m}") for m in ("panels", "settings_ui"))
         clear_scene()
         obj = add_terrain(levels=3)
         settings = obj.fracterra_terrain
@@ -244,7 +293,7 @@ class DrawTest(unittest.TestCase):
     def test_panels_and_menus_name_registered_operators(self):
         # Panels and menus refer to operators by id string: a typo would only show as a
         # missing button, so every id they draw must resolve to a registered operator.
-        from fracterra.blender import menus, panels
+        menus, panels = (addon_harness.submodule(f"blender.{m}") for m in ("menus", "panels"))
         clear_scene()
         operators = []
         fake = type("P", (), {"layout": RecordingLayout([], operators)})()
@@ -353,12 +402,61 @@ class PolylineTest(unittest.TestCase):
         self.assertEqual(obj.data.bevel_depth, 1.0)
 
     def test_branching_fpl3d_gives_one_spline_per_line(self):
-        obj = self.add(method="FPL3D", depth=6, seed=2, branch_prob=0.8, spread=0.1)
+        obj = self.add(method="FPL3D", depth=6, seed=2, branch_prob=0.8, spread=0.1, start=(0, 0, 0), end=(10, 0, 0))
         with core().generate_polylines(method="FPL3D", depth=6, seed=2, branch_prob=f32(0.8), spread=f32(0.1),
                                        base=[(0, 0, 0), (10, 0, 0)]) as pl:
             expected = [line for line, _ in pl.lines() if len(line) >= 2]
         self.assertGreater(len(expected), 1)
         self.assertEqual(spline_points(obj), [as_f32(line) for line in expected])
+
+    def test_default_is_a_visible_vertical_bolt_at_the_3d_cursor(self):
+        bpy.context.scene.cursor.location = (1.0, 2.0, 3.0)
+        obj = self.add()
+        self.assertEqual(tuple(obj.location), (1.0, 2.0, 3.0))
+        settings = obj.fracterra_polyline
+        self.assertTrue(settings.is_polyline)
+        self.assertEqual(settings.method, "FPL3D")
+        self.assertAlmostEqual(settings.radius, 10.0 / 200, places=6)  # follows the 10 m length
+        self.assertEqual(obj.data.bevel_depth, 1.0)
+        main = spline_points(obj)[0]
+        self.assertEqual((main[0], main[-1]), ((0.0, 0.0, 10.0), (0.0, 0.0, 0.0)))
+        self.assertGreater(len(obj.data.splines), 1, "a bolt with no branch")
+        radius = obj.data.splines[0].points[0].radius
+        self.assertAlmostEqual(radius, 0.05, places=6)
+        thick = self.add(radius=0.2)  # a radius given is kept
+        self.assertAlmostEqual(thick.data.splines[0].points[0].radius, 0.2, places=6)
+
+    def test_a_polyline_is_re_edited_in_place(self):
+        obj = self.add(depth=5, seed=1, branch_prob=0.0)
+        name = obj.name
+        cube_material = bpy.data.materials.new("kept")
+        obj.data.materials.append(cube_material)
+        bpy.ops.mesh.primitive_cube_add()  # move on to another object, then come back
+        bpy.context.view_layer.objects.active = obj
+        self.assertTrue(bpy.ops.object.fracterra_polyline_regenerate.poll())
+        obj.fracterra_polyline.seed = 9
+        self.assertEqual(bpy.ops.object.fracterra_polyline_regenerate(), {"FINISHED"})
+        self.assertEqual(bpy.context.active_object.name, name)
+        with core().generate_polylines(method="FPL3D", depth=5, seed=9, branch_prob=0.0, spread=f32(0.1),
+                                       base=[(0, 0, 10), (0, 0, 0)]) as pl:
+            expected = [line for line, _ in pl.lines() if len(line) >= 2]
+        self.assertEqual(spline_points(obj), [as_f32(line) for line in expected])
+        self.assertEqual(obj.data.materials[0], cube_material)
+        # Auto Update regenerates on a change, as a terrain does.
+        obj.fracterra_polyline.auto_update = True
+        obj.fracterra_polyline.depth = 3
+        self.assertEqual(len(spline_points(obj)[0]), 2 ** 3 + 1)
+        # The panel draws its settings, not "not a fractal terrain".
+        panels = addon_harness.submodule("blender.panels")
+        self.assertTrue(panels.FRACTERRA_PT_polyline.poll(bpy.context))
+        self.assertFalse(panels.FRACTERRA_PT_terrain.poll(bpy.context))
+        log = []
+        panels.FRACTERRA_PT_polyline.draw(type("P", (), {"layout": RecordingLayout(log)})(), bpy.context)
+        self.assertIn("depth", [name for _, name in log])
+        # IFS is a point mesh: switching the curve to it is a report, not a traceback.
+        obj.fracterra_polyline.auto_update = False
+        obj.fracterra_polyline.method = "IFS"
+        expect_report(self, bpy.ops.object.fracterra_polyline_regenerate, "object type")
 
     def test_koch_and_ifs(self):
         koch = self.add(method="KOCH", depth=2)
@@ -387,6 +485,13 @@ class PolylineTest(unittest.TestCase):
         self.assertEqual(len(line), 2 * 2 ** 3 + 1)
         self.assertEqual([line[0], line[8], line[16]], nodes)
         self.assertEqual(tuple(obj.location), (1.0, 2.0, 3.0))
+        # Its nodes are kept on it: it regenerates along them after the base is gone.
+        bpy.data.objects.remove(base)
+        obj.fracterra_polyline.seed = 5
+        bpy.context.view_layer.objects.active = obj
+        self.assertEqual(bpy.ops.object.fracterra_polyline_regenerate(), {"FINISHED"})
+        line = spline_points(obj)[0]
+        self.assertEqual([line[0], line[8], line[16]], nodes)
 
     def test_active_mesh_edge_chain_is_the_base(self):
         mesh = bpy.data.meshes.new("chain")
@@ -426,6 +531,25 @@ class TerrainToolsTest(unittest.TestCase):
         bpy.context.view_layer.objects.active = terrain
         expect_report(self, lambda: bpy.ops.curve.fracterra_coastline_add(use_quantile=False, level=1e6),
                       "no coastline at level 1e+06")
+
+    def test_coastline_defaults_to_the_sea_level_and_is_visible(self):
+        terrain = add_terrain(levels=5, seed=2, world_size=10.0, use_sea_level=True, sea_level=-0.5)
+        self.assertEqual(bpy.ops.curve.fracterra_coastline_add(), {"FINISHED"})
+        coast = bpy.context.active_object
+        self.assertGreater(len(coast.data.splines), 0)
+        self.assertAlmostEqual(coast.data.bevel_depth, 10.0 / 500, places=6)  # the tube's radius
+        radii = array.array("f", [0.0]) * len(coast.data.splines[0].points)
+        coast.data.splines[0].points.foreach_get("radius", radii)
+        self.assertEqual(set(radii), {1.0})
+        # Every point on the coast: between a flat-sea vertex and land, so at or just above the sea.
+        z = [p[2] for line in spline_points(coast) for p in line]
+        self.assertTrue(all(-0.5 <= h < -0.49 for h in z), (min(z), max(z)))
+        # The coastline is active now; the operator (its redo) still finds the terrain.
+        self.assertTrue(bpy.ops.curve.fracterra_coastline_add.poll())
+        self.assertEqual(bpy.ops.curve.fracterra_coastline_add(use_quantile=True), {"FINISHED"})
+        self.assertEqual(bpy.context.active_object.parent, terrain)
+        bpy.ops.mesh.primitive_cube_add()
+        self.assertFalse(bpy.ops.curve.fracterra_coastline_add.poll())
 
     def test_measures_of_a_terrain_and_a_curve(self):
         add_terrain(levels=7, seed=1, hurst=0.7)
@@ -471,6 +595,7 @@ class TerrainToolsTest(unittest.TestCase):
         self.assertEqual(bpy.ops.object.fracterra_fractalize(levels=2, sigma=0.05, seed=1), {"FINISHED"})
         self.assertEqual(len(cube.data.polygons), 6 * 16)
         self.assertFalse(cube.data.validate(verbose=False))
+        self.assertTrue(all(p.use_smooth for p in cube.data.polygons), "Fractalize came out flat-shaded")
         expect_report(self, lambda: bpy.ops.object.fracterra_fractalize(levels=1, scheme="LOOP"), "triang")
 
     def test_fractalize_keeps_creased_edges_sharp(self):
@@ -483,12 +608,29 @@ class TerrainToolsTest(unittest.TestCase):
             cube = bpy.context.active_object
             if creased:
                 crease = array.array("f", [1.0]) * len(cube.data.edges)
-                cube.data.edges.foreach_set("crease", crease)
+                if bpy.app.version >= (4, 0, 0):  # edge creases became the attribute crease_edge
+                    layer = cube.data.attributes.new("crease_edge", "FLOAT", "EDGE")
+                    layer.data.foreach_set("value", crease)
+                else:
+                    cube.data.edges.foreach_set("crease", crease)
             self.assertEqual(bpy.ops.object.fracterra_fractalize(levels=2, sigma=0.0, use_creases=True),
                              {"FINISHED"})
             extents[creased] = max(abs(c) for c in coords(cube.data))
         self.assertAlmostEqual(extents[True], 1.0, places=6)
         self.assertLess(extents[False], 0.9)
+
+    def test_measures_are_stale_once_the_object_changes(self):
+        fingerprint = addon_harness.submodule("blender.terrain_objects").geometry_fingerprint
+        panels = addon_harness.submodule("blender.panels")
+        obj = add_terrain(levels=5, seed=1, hurst=0.76)
+        self.assertEqual(bpy.ops.object.fracterra_measure(), {"FINISHED"})
+        self.assertEqual(obj.fracterra_measures.geometry, fingerprint(obj))
+        obj.fracterra_terrain.hurst = 0.3
+        bpy.ops.object.fracterra_terrain_regenerate()
+        self.assertNotEqual(obj.fracterra_measures.geometry, fingerprint(obj))  # drawn as stale
+        panels.FRACTERRA_PT_measures.draw(type("P", (), {"layout": RecordingLayout([])})(), bpy.context)
+        bpy.ops.object.fracterra_measure()
+        self.assertEqual(obj.fracterra_measures.geometry, fingerprint(obj))
 
     def test_measures_of_a_straight_bezier_curve(self):
         curve = bpy.data.curves.new("bezier", "CURVE")

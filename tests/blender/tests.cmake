@@ -3,7 +3,7 @@
 find_program(FT_BLENDER blender)
 if(FT_BLENDER)
   set(FT_BLENDER_ZIP ${PROJECT_BINARY_DIR}/blender_addon/fracterra.zip)
-  foreach(name addon missing_library)
+  foreach(name addon missing_library params)
     set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_${name})
     add_test(NAME blender_${name}
       COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch}
@@ -13,12 +13,13 @@ if(FT_BLENDER)
       FIXTURES_REQUIRED blender_scratch)
   endforeach()
   # The installed add-on must use its bundled library, except in the test of a missing one.
-  set_tests_properties(blender_addon PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
+  set_tests_properties(blender_addon blender_params PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
   set_tests_properties(blender_missing_library PROPERTIES
     ENVIRONMENT "FRACTERRA_LIBRARY=${CMAKE_CURRENT_BINARY_DIR}/no-such-dir/libfracterra.so")
   add_test(NAME blender_scratch_clean
     COMMAND ${CMAKE_COMMAND} -E rm -rf ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_addon
-            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_missing_library)
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_missing_library
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_params)
   set_tests_properties(blender_scratch_clean PROPERTIES FIXTURES_SETUP blender_scratch LABELS blender)
 endif()
 
@@ -53,4 +54,36 @@ if(FT_BLENDER AND FT_XVFB_RUN)
             ${FT_BLENDER} --factory-startup --python-exit-code 1
             --python ${CMAKE_CURRENT_LIST_DIR}/test_undo.py -- --zip ${FT_BLENDER_ZIP})
   set_tests_properties(blender_undo PROPERTIES LABELS blender TIMEOUT 180)
+endif()
+
+# The zip needs nothing beyond glibc, the C++ runtime and what it bundles.
+find_package(Python3 COMPONENTS Interpreter)
+if(Python3_Interpreter_FOUND)
+  add_test(NAME addon_zip_self_contained
+    COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_zip.py ${FT_BLENDER_ADDON_ZIP})
+  set_tests_properties(addon_zip_self_contained PROPERTIES LABELS blender TIMEOUT 60)
+endif()
+
+# The zip as an extension in Blender 4.3, inside a Debian trixie root built once
+# into /var/cache/fracterra (about a minute on a fresh machine, then reused):
+# no host Blender, libraries or environment variables. Skipped (77) without root.
+add_test(NAME blender4_extension
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/blender4_extension.sh ${PROJECT_SOURCE_DIR} ${FT_BLENDER_ADDON_ZIP})
+set_tests_properties(blender4_extension PROPERTIES LABELS blender TIMEOUT 600 SKIP_RETURN_CODE 77)
+
+# The add-on in the real GUI under Xvfb, driven through the event loop with
+# xdotool: menus, redo panels, sidebar panels, preferences, undo, redo; the
+# screenshots land in blender_gui_shots/. Drawing code prints (not raises) its
+# errors, so any traceback in the log fails the test.
+find_program(FT_XDOTOOL xdotool)
+if(FT_BLENDER AND FT_XVFB_RUN AND FT_XDOTOOL)
+  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_gui)
+  add_test(NAME blender_gui
+    COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch} --unset=FRACTERRA_LIBRARY
+            ${FT_XVFB_RUN} -a -s "-screen 0 1280x800x24"
+            ${FT_BLENDER} --factory-startup --window-geometry 0 0 1280 800
+            --python ${CMAKE_CURRENT_LIST_DIR}/test_gui.py
+            -- --zip ${FT_BLENDER_ZIP} --out ${CMAKE_CURRENT_BINARY_DIR}/blender_gui_shots)
+  set_tests_properties(blender_gui PROPERTIES LABELS blender TIMEOUT 180
+    FAIL_REGULAR_EXPRESSION "Traceback|GUI test FAILED")
 endif()

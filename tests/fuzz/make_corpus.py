@@ -8,6 +8,7 @@ import io
 import json
 import os
 import struct
+import sys
 import zlib
 
 import numpy as np
@@ -165,40 +166,32 @@ for k, (knobs, text) in objs.items():
     put("obj", k, bytes([knobs]) + text.encode())
 
 # ---------------------------------------------------------------- C ABI params
-# The structs as ctypes lays them out (mirrors native/include/fracterra/terrain.h).
-class TerrainParams(ctypes.Structure):
-    _fields_ = [("struct_size", ctypes.c_uint32), ("method", ctypes.c_int32), ("levels", ctypes.c_int32),
-                ("width", ctypes.c_int32), ("height", ctypes.c_int32), ("hurst", ctypes.c_double),
-                ("sigma", ctypes.c_double), ("seed", ctypes.c_uint64), ("periodic", ctypes.c_int32),
-                ("threads", ctypes.c_int32), ("reference", ctypes.c_void_p), ("reference_size", ctypes.c_int32),
-                ("reference_scale", ctypes.c_int32), ("octaves", ctypes.c_int32), ("lacunarity", ctypes.c_double),
-                ("gain", ctypes.c_double), ("basis", ctypes.c_int32), ("variant", ctypes.c_int32),
-                ("frequency", ctypes.c_double), ("offset", ctypes.c_double), ("rotation", ctypes.c_double),
-                ("warp", ctypes.c_double), ("progress", ctypes.c_void_p), ("progress_user", ctypes.c_void_p),
-                ("world_size", ctypes.c_double)]  # ABI 1.1
+# The params structs as the library describes them (fracterra/params.h): the
+# add-on's ctypes binding builds them from the loaded library
+# (FRACTERRA_LIBRARY, else build/native/libfracterra.so), so this file keeps
+# no copy of their layout; ft_*_params_init gives the defaults.
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "blender_addon"))
+os.environ.setdefault("FRACTERRA_LIBRARY", os.path.join(ROOT, "build", "native", "libfracterra.so"))
+from fracterra.core.binding import library  # noqa: E402
+
+LIB = library()
 
 
-class ProfileParams(ctypes.Structure):
-    _fields_ = [("struct_size", ctypes.c_uint32), ("levels", ctypes.c_int32), ("hurst", ctypes.c_double),
-                ("sigma", ctypes.c_double), ("seed", ctypes.c_uint64), ("reference", ctypes.c_void_p),
-                ("reference_size", ctypes.c_int32), ("reference_scale", ctypes.c_int32),
-                ("progress", ctypes.c_void_p), ("progress_user", ctypes.c_void_p)]
+def initialised(kind, **kw):
+    p = getattr(LIB, f"{kind}_params_type")()
+    LIB.check(getattr(LIB, f"ft_{kind}_params_init")(ctypes.byref(p)))
+    for k, v in kw.items():
+        setattr(p, k, v)
+    return p
 
 
 def terrain(**kw):
-    p = TerrainParams(struct_size=ctypes.sizeof(TerrainParams), method=0, levels=4, width=9, height=9, hurst=0.8,
-                      sigma=1.0, seed=1, reference_scale=0, octaves=8, lacunarity=2.0, basis=1, frequency=4.0,
-                      offset=1.0, rotation=0.5, world_size=10.0)
-    for k, v in kw.items():
-        setattr(p, k, v)
-    return p
+    return initialised("terrain", **{"levels": 4, "width": 9, "height": 9, **kw})
 
 
 def profile(**kw):
-    p = ProfileParams(struct_size=ctypes.sizeof(ProfileParams), levels=6, hurst=0.8, sigma=1.0, seed=1)
-    for k, v in kw.items():
-        setattr(p, k, v)
-    return p
+    return initialised("profile", **{"levels": 6, **kw})
 
 
 # Layout of an input: [which: even = terrain, odd = profile] [struct bytes]
@@ -215,7 +208,7 @@ capi("terrain_fbm_ridged_warp", 0, terrain(method=2, width=33, height=17, varian
 capi("terrain_fbm_cellular", 0, terrain(method=2, width=20, height=20, basis=4, octaves=3))
 capi("terrain_spectral", 0, terrain(method=3, width=32, height=24))
 capi("terrain_interpolated", 0, terrain(method=4, width=40, height=40, lacunarity=3.0))
-capi("terrain_abi_1_0_size", 0, terrain(struct_size=152), fixups=0)
+capi("terrain_abi_1_0_size", 0, terrain(struct_size=LIB.terrain_params_type.world_size.offset), fixups=0)
 capi("terrain_too_large", 0, terrain(levels=12))
 capi("terrain_nan_hurst", 0, terrain(hurst=float("nan")))
 capi("terrain_struct_size_0", 0, terrain(struct_size=0), fixups=0)
@@ -229,40 +222,13 @@ capi("profile_null_dst", 1, profile(), fixups=5)
 capi("profile_levels_28", 1, profile(levels=28))
 
 
-# Polyline and fractalize parameters: the structs as ctypes lays them out
-# (mirrors polyline.h and subdiv.h). [which = 2 / 3] [struct] [fixups] ...
-class PolylineParams(ctypes.Structure):
-    _fields_ = [("struct_size", ctypes.c_uint32), ("method", ctypes.c_int32), ("rng", ctypes.c_int32),
-                ("depth", ctypes.c_int32), ("spread", ctypes.c_double), ("min_length", ctypes.c_double),
-                ("seed", ctypes.c_uint64), ("base", ctypes.c_void_p), ("base_count", ctypes.c_int64),
-                ("plane_normal", ctypes.c_double * 3), ("branch_prob", ctypes.c_double),
-                ("branch_decay", ctypes.c_double), ("branch_generations", ctypes.c_int32),
-                ("ifs_preset", ctypes.c_int32), ("radius", ctypes.c_double), ("hurst", ctypes.c_double),
-                ("ifs_table", ctypes.c_void_p), ("ifs_maps", ctypes.c_int32), ("threads", ctypes.c_int32),
-                ("ifs_points", ctypes.c_int64), ("progress", ctypes.c_void_p), ("progress_user", ctypes.c_void_p)]
-
-
-class FractalizeParams(ctypes.Structure):
-    _fields_ = [("struct_size", ctypes.c_uint32), ("levels", ctypes.c_int32), ("hurst", ctypes.c_double),
-                ("sigma", ctypes.c_double), ("seed", ctypes.c_uint64), ("scheme", ctypes.c_int32),
-                ("mode", ctypes.c_int32), ("fix_boundary", ctypes.c_int32), ("scale_by_edge_length", ctypes.c_int32),
-                ("weights", ctypes.c_void_p), ("threads", ctypes.c_int32), ("progress", ctypes.c_void_p),
-                ("progress_user", ctypes.c_void_p)]
-
-
+# Polyline and fractalize parameters. [which = 2 / 3] [struct] [fixups] ...
 def polyline(**kw):
-    p = PolylineParams(struct_size=ctypes.sizeof(PolylineParams), method=0, depth=6, spread=0.1, seed=1,
-                       branch_decay=0.5, branch_generations=3, radius=0.01, hurst=0.8, ifs_points=1000)
-    for k, v in kw.items():
-        setattr(p, k, v)
-    return p
+    return initialised("polyline", **{"depth": 6, "ifs_points": 1000, **kw})
 
 
 def fractalize(**kw):
-    p = FractalizeParams(struct_size=ctypes.sizeof(FractalizeParams), levels=2, hurst=0.8, sigma=0.1, seed=1)
-    for k, v in kw.items():
-        setattr(p, k, v)
-    return p
+    return initialised("fractalize", **{"levels": 2, **kw})
 
 
 def put_polyline(name, params, fixups=1, cancel=0, base=(), table=()):

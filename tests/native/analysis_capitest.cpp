@@ -29,6 +29,7 @@ TEST(AnalysisCapi, HurstOfAHeightfieldAndAProfile) {
   ASSERT_EQ(ft_hurst_params_init(&p), FT_OK);
   EXPECT_EQ(p.method, FT_HURST_VARIOGRAM_ALIGNED);
   ft_hurst_result r;
+  r.struct_size = sizeof r;
   ASSERT_EQ(ft_hurst_heightfield(hf, &p, &r), FT_OK) << ft_last_error();
   EXPECT_NEAR(r.hurst, 0.6, 0.08);
   EXPECT_DOUBLE_EQ(r.dimension, 3 - r.hurst);
@@ -49,6 +50,7 @@ TEST(AnalysisCapi, HurstOfAHeightfieldAndAProfile) {
 
 TEST(AnalysisCapi, HurstRefusesBadArgumentsWithAMessage) {
   ft_hurst_result r;
+  r.struct_size = sizeof r;
   float v[4] = {1, 2, 3, 4};
   EXPECT_EQ(ft_hurst_profile(v, 4, nullptr, &r), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("at least 8"), std::string::npos) << ft_last_error();
@@ -92,6 +94,7 @@ TEST(AnalysisCapi, HurstAutoChoosesByTheGridAndSaysWhy) {
     ft_hurst_params_init(&p);
     p.method = FT_HURST_AUTO;
     ft_hurst_result a, named;
+    a.struct_size = named.struct_size = sizeof a;
     ASSERT_EQ(ft_hurst_heightfield(c.hf, &p, &a), FT_OK) << ft_last_error();
     EXPECT_EQ(a.method, c.method);
     EXPECT_EQ(a.auto_reason, c.reason);
@@ -109,6 +112,7 @@ TEST(AnalysisCapi, HurstAutoChoosesByTheGridAndSaysWhy) {
   ft_hurst_params_init(&p);
   p.method = FT_HURST_AUTO;
   ft_hurst_result r;
+  r.struct_size = sizeof r;
   ASSERT_EQ(ft_hurst_profile(w.data(), w.size(), &p, &r), FT_OK) << ft_last_error();
   EXPECT_EQ(r.method, FT_HURST_SPECTRAL);
   ASSERT_EQ(ft_hurst_profile(w.data(), 257, &p, &r), FT_OK) << ft_last_error();
@@ -117,14 +121,28 @@ TEST(AnalysisCapi, HurstAutoChoosesByTheGridAndSaysWhy) {
 
 // A caller built before ABI 1.2 has a result struct that ends after
 // `points`: a named method never writes past it.
-TEST(AnalysisCapi, NamedHurstMethodsLeaveTheAutoFieldsUntouched) {
+TEST(AnalysisCapi, AResultIsWrittenUpToTheCallersStructSize) {
   ft_heightfield* hf = make_terrain(6, 0.6, 3);
+  // A caller of a later ABI with a longer struct: this library writes its own fields only.
+  struct Longer {
+    ft_hurst_result r;
+    unsigned char later[16];
+  } big;
+  std::memset(&big, 0xAB, sizeof big);
+  big.r.struct_size = sizeof big;
+  ASSERT_EQ(ft_hurst_heightfield(hf, nullptr, &big.r), FT_OK) << ft_last_error();
+  for (unsigned char c : big.later) EXPECT_EQ(c, 0xAB);
+  EXPECT_EQ(big.r.struct_size, sizeof big);
+  EXPECT_EQ(big.r.points, 3);  // lags 1, 2, 4: the result was written
+  EXPECT_EQ(big.r.auto_reason, FT_HURST_REASON_NONE);  // a named method
+  EXPECT_STREQ(big.r.auto_reason_text, "");
+  // A size no 2.x struct ever had is refused, and nothing is written.
   ft_hurst_result r;
   std::memset(&r, 0xAB, sizeof r);
-  ASSERT_EQ(ft_hurst_heightfield(hf, nullptr, &r), FT_OK) << ft_last_error();
-  const auto* tail = reinterpret_cast<const unsigned char*>(&r) + offsetof(ft_hurst_result, auto_reason);
-  for (size_t i = 0; i < sizeof r - offsetof(ft_hurst_result, auto_reason); ++i) EXPECT_EQ(tail[i], 0xAB) << i;
-  EXPECT_EQ(r.points, 3);  // lags 1, 2, 4: the result was written
+  r.struct_size = offsetof(ft_hurst_result, auto_reason);
+  EXPECT_EQ(ft_hurst_heightfield(hf, nullptr, &r), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("ft_hurst_result.struct_size"), std::string::npos) << ft_last_error();
+  EXPECT_EQ(r.points, int32_t(0xABABABAB));
   ft_heightfield_free(hf);
 }
 

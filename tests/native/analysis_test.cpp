@@ -88,8 +88,8 @@ TEST(HurstEstimator, AlignedVariogramRecoversHurstOfMidpointProfiles) {
       EXPECT_DOUBLE_EQ(e.dimension, 2 - e.hurst);
       EXPECT_EQ(e.band_lo, 1);
       EXPECT_EQ(e.band_hi, 4096);  // (n - 1) / 16
-      EXPECT_GT(e.stderr_hurst, 0);
-      EXPECT_LT(e.stderr_hurst, 0.02);
+      EXPECT_GT(e.std_error, 0);
+      EXPECT_LT(e.std_error, 0.02);
     }
 }
 
@@ -150,7 +150,7 @@ TEST(HurstEstimator, SpectralRecoversSlopeOfPowerLawSignals) {
       EXPECT_NEAR(e.hurst, h, 0.1) << "seed " << seed;
       EXPECT_EQ(e.band_lo, 8);
       EXPECT_EQ(e.band_hi, 2048);
-      EXPECT_LT(e.stderr_hurst, 0.05);
+      EXPECT_LT(e.std_error, 0.05);
     }
 }
 
@@ -323,7 +323,7 @@ TEST_F(AnalysisCli, AnalyzeReportsRecommendedEstimateOfHeightfieldsAndProfiles) 
   EXPECT_NEAR(j["hurst"].get<double>(), 0.7, 0.08);
   EXPECT_DOUBLE_EQ(j["dimension"].get<double>(), 3 - j["hurst"].get<double>());
   for (const char* m : {"variogram", "madogram", "variogram_aligned", "madogram_aligned", "spectral", "transect_median"})
-    EXPECT_TRUE(j["methods"][m].contains("stderr")) << m;
+    EXPECT_TRUE(j["methods"][m].contains("std_error")) << m;
 
   const auto v = midpoint_profile(12, 0.4, 3);
   write_npy(path("p.npy"), {int64_t(v.size())}, v.data());

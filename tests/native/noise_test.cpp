@@ -271,7 +271,7 @@ TEST(Fbm, HasNoAxisAlignedArtefacts) {
     p.frequency = 8;
     p.octaves = 5;
     const double rotated = axis_to_diagonal_power(generate_terrain(p), 8, 64);
-    p.rotation = 0;
+    p.octave_rotation = 0;
     const double aligned = axis_to_diagonal_power(generate_terrain(p), 8, 64);
     EXPECT_GT(rotated, 0.8) << "basis " << basis;
     EXPECT_LT(rotated, 1.25) << "basis " << basis;
@@ -459,7 +459,7 @@ TEST(Fbm, RejectsBadParametersWithClearMessages) {
   expect_invalid(fbm([](auto& p) { p.frequency = 0; }), "frequency");
   expect_invalid(fbm([&](auto& p) { p.frequency = nan; }), "frequency");
   expect_invalid(fbm([&](auto& p) { p.offset = nan; }), "offset");
-  expect_invalid(fbm([&](auto& p) { p.rotation = inf; }), "rotation");
+  expect_invalid(fbm([&](auto& p) { p.octave_rotation = inf; }), "rotation");
   expect_invalid(fbm([&](auto& p) { p.warp = nan; }), "warp");
   expect_invalid(fbm([](auto& p) { p.warp = 100; }), "warp");
   expect_invalid(fbm([](auto& p) { p.basis = 9; }), "basis");

@@ -44,7 +44,7 @@ TEST(PovCapi, WritesASceneWithTerrainAndLines) {
   ASSERT_EQ(ft_pov_scene_params_init(&p), FT_OK);
   p.terrain = hf;
   p.vertical_scale = 0.1;
-  p.has_water = 1;
+  p.has_sea = 1;
   ft_pov_scene_lines lines = {pl, FT_POV_LIGHTNING, 0};
   p.lines = &lines;
   p.line_set_count = 1;

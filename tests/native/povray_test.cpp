@@ -163,14 +163,14 @@ TEST(PovScene, RejectsBadParametersBeforeWritingAnything) {
   for (size_t i = 0; i < hf.size(); ++i) hf.data()[i] = float(i);
   SceneParams p;
   p.terrain = &hf;
-  p.size_x = -1;
+  p.world_size_x = -1;
   EXPECT_THROW(write_scene(p, (dir / "a.pov").string()), Error);
-  p.size_x = 1;
+  p.world_size_x = 1;
   p.camera.elevation_deg = 0;
   EXPECT_THROW(write_scene(p, (dir / "a.pov").string()), Error);
   p.camera = {};
-  p.has_water = true;
-  p.water_level = NAN;
+  p.has_sea = true;
+  p.sea_level = NAN;
   EXPECT_THROW(write_scene(p, (dir / "a.pov").string()), Error);
   EXPECT_TRUE(std::filesystem::is_empty(dir));
   std::filesystem::remove_all(dir);
@@ -185,13 +185,13 @@ TEST(PovScene, TerrainSceneUsesTheRecordedWorldSize) {
   for (size_t i = 0; i < hf.size(); ++i) hf.data()[i] = float(std::sin(double(i)));
   hf.set_world_size(40);
   SceneSummary sum = write_terrain_scene(hf, (dir / "w.pov").string());
-  EXPECT_DOUBLE_EQ(sum.terrain.size_x, 40);
-  EXPECT_DOUBLE_EQ(sum.terrain.size_y, 20);  // 40 * 16 / 32
+  EXPECT_DOUBLE_EQ(sum.terrain.world_size_x, 40);
+  EXPECT_DOUBLE_EQ(sum.terrain.world_size_y, 20);  // 40 * 16 / 32
   EXPECT_DOUBLE_EQ(sum.terrain.vertical_scale, 1);
   EXPECT_NEAR(sum.hi[0] - sum.lo[0], 40, 1e-9);
   hf.set_world_size(0);  // none recorded: 1 wide, relief 20% of that
   sum = write_terrain_scene(hf, (dir / "n.pov").string());
-  EXPECT_DOUBLE_EQ(sum.terrain.size_x, 1);
+  EXPECT_DOUBLE_EQ(sum.terrain.world_size_x, 1);
   std::filesystem::remove_all(dir);
 }
 

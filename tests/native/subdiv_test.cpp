@@ -225,7 +225,7 @@ void expect_closed(const Mesh& m) {
 }
 
 TEST(Fractalize, ClosedInputStaysClosed) {
-  for (int mode : {FT_FRACTALIZE_VOSS, FT_FRACTALIZE_ADDITIONS}) {
+  for (int mode : {FT_FRACTALIZE_MIDPOINT, FT_FRACTALIZE_ADDITIONS}) {
     ft_fractalize_params p = params(4, 0.3);
     p.mode = mode;
     const Mesh rock = fractalize(cube(), p);

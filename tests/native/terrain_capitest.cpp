@@ -13,7 +13,7 @@ namespace {
 
 TEST(CApi, VersionMatchesTheHeader) {
   EXPECT_EQ(ft_abi_version(), uint32_t(FT_ABI_VERSION));
-  EXPECT_STREQ(ft_version_string(), "0.1.0");
+  EXPECT_STREQ(ft_version_string(), FT_PROJECT_VERSION);  // the CMake project version
 }
 
 TEST(CApi, GeneratesATerrainIntoALibraryOwnedHandle) {

@@ -183,10 +183,10 @@ TEST_F(PovTest, HighestPointLandsWhereTheCameraSays) {
     for (int x = 0; x < n; ++x) hf.at(x, y) = float(std::max(0.0, 1 - std::hypot(x - cx, y - cy) / 8));
   pov::SceneParams p;
   p.terrain = &hf;
-  p.size_x = p.size_y = 1;
+  p.world_size_x = p.world_size_y = 1;
   p.vertical_scale = 0.3;
-  p.has_water = true;
-  p.water_level = 0.01;
+  p.has_sea = true;
+  p.sea_level = 0.01;
   p.camera.aspect = 160.0 / 120.0;
   p.camera.distance_scale = 2;  // the framing fits the cone tightly; leave room above it
   const auto sum = pov::write_scene(p, path("peak.pov"));

@@ -9,17 +9,20 @@ import pytest
 
 def test_library_reports_matching_abi_and_version(core):
     lib = core.library()
-    assert lib.abi_major == 1
+    assert lib.abi_major == 2
     assert re.fullmatch(r"\d+\.\d+\.\d+", lib.version)
     ok, message = core.status()
     assert ok and lib.version in message
 
 
 def test_every_declared_symbol_has_argtypes_and_restype(core):
-    from fracterra.core.binding import SIGNATURES
+    from fracterra.core.binding import PARAMS_KINDS, SIGNATURES, _Described
     lib = core.library()
     for name, (restype, argtypes) in SIGNATURES.items():
         fn = getattr(lib, name)
+        # A described struct's pointer type is made at load time from the library's table.
+        argtypes = [ctypes.POINTER(lib.struct_types[PARAMS_KINDS[a.kind]]) if isinstance(a, _Described) else a
+                    for a in argtypes]
         assert fn.argtypes == argtypes, name
         assert fn.restype == restype, name
 
@@ -27,7 +30,7 @@ def test_every_declared_symbol_has_argtypes_and_restype(core):
 def test_binding_declares_every_exported_function_of_its_headers(core, header_dir):
     # Every ft_ function declared in the headers the binding covers has a signature.
     from fracterra.core.binding import SIGNATURES
-    for header in ("core.h", "terrain.h", "mesh.h", "polyline.h", "subdiv.h"):
+    for header in ("core.h", "terrain.h", "mesh.h", "polyline.h", "subdiv.h", "params.h"):
         text = (header_dir / header).read_text()
         for name in re.findall(r"FT_API [^(;]*?\b(ft_\w+)\s*\(", text):
             assert name in SIGNATURES, f"{name} from {header} has no ctypes signature"
@@ -42,18 +45,17 @@ def _struct_fields(header_text, struct):
 
 def test_ctypes_structs_follow_the_header_field_order(core, header_dir):
     from fracterra.core import binding as b
-    from fracterra.core.binding import GridCounts, ProfileParams, TerrainParams
-    terrain_h = (header_dir / "terrain.h").read_text()
-    mesh_h = (header_dir / "mesh.h").read_text()
-    assert [f for f, _ in TerrainParams._fields_] == _struct_fields(terrain_h, "ft_terrain_params")
-    assert [f for f, _ in ProfileParams._fields_] == _struct_fields(terrain_h, "ft_profile_params")
-    for header, struct, cls in (("polyline.h", "ft_polyline_params", b.PolylineParams),
+    from fracterra.core.binding import GridCounts
+    lib = core.library()  # the params structs are built from the library's description
+    for header, struct, cls in (("terrain.h", "ft_terrain_params", lib.terrain_params_type),
+                                ("terrain.h", "ft_profile_params", lib.profile_params_type),
+                                ("polyline.h", "ft_polyline_params", lib.polyline_params_type),
                                 ("polyline.h", "ft_polyline_stats", b.PolylineStats),
                                 ("analysis.h", "ft_hurst_params", b.HurstParams),
                                 ("analysis.h", "ft_hurst_result", b.HurstResult),
                                 ("povray.h", "ft_pov_scene_lines", b.PovSceneLines),
                                 ("povray.h", "ft_pov_scene_params", b.PovSceneParams),
-                                ("subdiv.h", "ft_fractalize_params", b.FractalizeParams)):
+                                ("subdiv.h", "ft_fractalize_params", lib.fractalize_params_type)):
         fields = _struct_fields((header_dir / header).read_text(), struct)
         fields = [f.split("[")[0] for f in fields]
         assert [f for f, _ in cls._fields_] == fields, struct
@@ -78,8 +80,7 @@ def test_parameter_enums_match_the_header_values(core, header_dir):
 
 
 def test_every_c_field_parameter_names_a_struct_field(core):
-    from fracterra.core.binding import TerrainParams
-    fields = {f for f, _ in TerrainParams._fields_}
+    fields = {f for f, _ in core.library().terrain_params_type._fields_}
     for p in core.params.TERRAIN_PARAMS:
         if p.field:
             assert p.field in fields, p.name
@@ -118,7 +119,7 @@ def test_bad_levels_raise_invalid_argument(core):
 
 
 def test_every_method_generates_its_grid(core):
-    for ident, *_ in core.params.METHODS:
+    for ident, *_ in core.params.PARAMS_BY_NAME["method"].items:
         with core.generate_terrain(method=ident, levels=4, width=20, height=12, seed=3) as hf:
             side = 2 ** 4 + 1
             expected = (side, side) if ident in core.params.DYADIC_METHODS else (20, 12)

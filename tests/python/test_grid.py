@@ -85,7 +85,7 @@ def test_too_small_buffers_are_rejected(core):
 
 def test_nan_world_size_is_rejected(core):
     with core.Heightfield.from_values(2, 2, [0.0] * 4) as hf:
-        with pytest.raises(core.InvalidArgumentError, match="size_x"):
+        with pytest.raises(core.InvalidArgumentError, match="world_size_x"):
             core.vertices(hf, math.nan, 1.0)
 
 

@@ -96,7 +96,7 @@ def test_auto_hurst_estimator_follows_the_grid(core):
 def test_pov_scene_is_written(core, tmp_path):
     from fracterra.core import povray
     with core.generate_terrain(levels=4, seed=1) as hf, core.generate_polylines(depth=3) as pl:
-        povray.write_scene(str(tmp_path / "s.pov"), terrain=hf, size_x=10, size_y=10,
+        povray.write_scene(str(tmp_path / "s.pov"), terrain=hf, world_size_x=10, world_size_y=10,
                            line_sets=[(pl, "LINE", 0.0)], camera={"azimuth": 30, "elevation": 40},
                            sun={"azimuth": 200, "elevation": 30})
     assert "height_field" in (tmp_path / "s.pov").read_text()

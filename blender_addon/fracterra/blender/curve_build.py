@@ -8,11 +8,12 @@ import numpy as np
 from .. import core
 
 
-def curve_from_polylines(name, pl, bevel, transform=None):
+def curve_from_polylines(name, pl, bevel, transform=None, unit_radius=False):
     """A new curve datablock with one POLY spline per line of `pl`, radii from the library.
 
     transform: None or f(x, y, z) -> (x, y, z) on float64 arrays (e.g. sample
-    units to local coordinates).
+    units to local coordinates). unit_radius: every point's radius is 1 (lines
+    the library gives no radii, e.g. coastlines), so bevel_depth is the radius.
     """
     curve = bpy.data.curves.new(name, "CURVE")
     curve.dimensions = "3D"
@@ -21,7 +22,7 @@ def curve_from_polylines(name, pl, bevel, transform=None):
         curve.bevel_resolution = 2
         curve.use_fill_caps = True
     xyz = np.asarray(pl.xyz(), dtype=np.float64).reshape(-1, 3)
-    radii = np.asarray(pl.radii(), dtype=np.float32)
+    radii = np.ones(pl.vertex_count, np.float32) if unit_radius else np.asarray(pl.radii(), dtype=np.float32)
     offsets = pl.offsets()
     if transform:
         xyz = np.stack(transform(xyz[:, 0], xyz[:, 1], xyz[:, 2]), axis=1)

@@ -4,6 +4,7 @@ import bpy
 import numpy as np
 
 from ..core import subdiv
+from .mesh_build import set_smooth
 from .prefs import library_threads
 from .reporting import REPORTED, SettingsError, WindowProgress
 
@@ -86,6 +87,8 @@ class FRACTERRA_OT_fractalize(bpy.types.Operator):
         name="Relative Sigma", default=False, description="Sigma is a fraction of the local edge length")
     use_creases: bpy.props.BoolProperty(name="Edge Creases", default=True,
                                         description="Honour the mesh's edge creases")
+    smooth: bpy.props.BoolProperty(name="Smooth Shading", default=True,
+                                   description="Shade the fractal surface smooth (off: every facet flat)")
 
     @classmethod
     def poll(cls, context):
@@ -105,6 +108,7 @@ class FRACTERRA_OT_fractalize(bpy.types.Operator):
             return {"CANCELLED"}
         mesh = bpy.data.meshes.new(obj.data.name + " Fractal")
         fill_polygon_mesh(mesh, positions, sizes, indices)
+        set_smooth(mesh, self.smooth)
         for mat in obj.data.materials:
             mesh.materials.append(mat)
         old = obj.data

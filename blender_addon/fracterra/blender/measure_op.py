@@ -9,7 +9,7 @@ from mathutils import Matrix
 from .. import core
 from .curve_build import curve_polylines
 from .reporting import REPORTED, SettingsError
-from .terrain_objects import heightfield_of, is_measurable
+from .terrain_objects import geometry_fingerprint, heightfield_of, is_measurable
 
 
 class FRACTERRA_OT_measure(bpy.types.Operator):
@@ -33,14 +33,15 @@ class FRACTERRA_OT_measure(bpy.types.Operator):
                 with pl:
                     s = pl.measure()
                 m.kind, m.eta, m.chi, m.gamma = "polylines", s["eta"], s["chi"], s["gamma"]
-                m.dimension, m.stderr, m.hurst = s["box_dimension"], s["box_std_error"], math.nan
+                m.dimension, m.stderr, m.hurst = s["box_dimension"], s["box_dimension_std_error"], math.nan
             else:
                 with heightfield_of(obj) as hf:
                     r = core.hurst_of_heightfield(hf)  # the library's recommended estimator, as the CLI's
-                m.kind, m.hurst, m.dimension, m.stderr = "terrain", r["hurst"], r["dimension"], r["stderr_hurst"]
+                m.kind, m.hurst, m.dimension, m.stderr = "terrain", r["hurst"], r["dimension"], r["std_error"]
                 m.estimator, m.estimator_reason = r["estimator"], r["reason"]
                 m.eta = m.chi = m.gamma = math.nan
         except REPORTED as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
+        m.geometry = geometry_fingerprint(obj)
         return {"FINISHED"}

@@ -3,6 +3,7 @@
 import array
 
 import bpy
+import numpy as np
 
 
 def _loop_total_writable():
@@ -59,3 +60,25 @@ def rewrite_positions(mesh, co):
     """Rewrites every vertex position with one foreach_set (topology untouched)."""
     mesh.vertices.foreach_set("co", co)
     mesh.update()
+
+
+# Point attributes for materials (Attribute node, type Geometry/Instancer: the name):
+HEIGHT_ATTRIBUTE = "fracterra_height"  # 0 at the lowest vertex, 1 at the highest
+SLOPE_ATTRIBUTE = "fracterra_slope"  # 0 flat, 1 vertical: the slope angle / 90 degrees
+
+
+def set_height_slope(mesh, co, nx, ny):
+    """Writes the height and slope attributes of a grid mesh from its vertex
+    positions `co` (3 floats per vertex, rows of nx along X): relative to the
+    terrain's own range, so one material fits any size and sea level."""
+    xyz = np.frombuffer(co, dtype=np.float32).reshape(ny, nx, 3).astype(np.float64)
+    z = xyz[:, :, 2]
+    span = z.max() - z.min()
+    height = (z - z.min()) / span if span > 0 else np.zeros_like(z)
+    dx = (xyz[0, -1, 0] - xyz[0, 0, 0]) / (nx - 1)
+    dy = (xyz[-1, 0, 1] - xyz[0, 0, 1]) / (ny - 1)
+    gy, gx = np.gradient(z, dy, dx)
+    slope = np.arctan(np.hypot(gx, gy)) / (np.pi / 2)
+    for name, values in ((HEIGHT_ATTRIBUTE, height), (SLOPE_ATTRIBUTE, slope)):
+        layer = mesh.attributes.get(name) or mesh.attributes.new(name, "FLOAT", "POINT")
+        layer.data.foreach_set("value", values.astype(np.float32).ravel())

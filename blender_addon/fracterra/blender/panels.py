@@ -5,13 +5,15 @@ import math
 
 import bpy
 
-from .settings_ui import draw_settings
-from .terrain_objects import is_measurable
-from .widgets import draw_library_problem, draw_wrapped
+from .settings_ui import draw_polyline_settings, draw_settings
+from .terrain_objects import geometry_fingerprint, is_measurable, is_polyline
+from ..core import params
+from .widgets import draw_library_problem, draw_size, draw_wrapped
 
 # Operators the panels show (bl_idname of each).
 TERRAIN_ADD = "mesh.fracterra_terrain_add"
 TERRAIN_REGENERATE = "object.fracterra_terrain_regenerate"
+POLYLINE_REGENERATE = "object.fracterra_polyline_regenerate"
 MEASURE = "object.fracterra_measure"
 
 
@@ -20,6 +22,10 @@ class FRACTERRA_PT_terrain(bpy.types.Panel):
     bl_space_type = "VIEW_3D"
     bl_region_type = "UI"
     bl_category = "Fracterra"
+
+    @classmethod
+    def poll(cls, context):
+        return not is_polyline(context.active_object)  # a polyline has its own panel
 
     def draw(self, context):
         layout = self.layout
@@ -32,10 +38,33 @@ class FRACTERRA_PT_terrain(bpy.types.Panel):
             return
         row = layout.row(align=True)
         row.operator(TERRAIN_REGENERATE, text="Regenerate", icon="FILE_REFRESH")
-        row.prop(settings, "auto_update", text="", icon="AUTO", toggle=True)
+        row.prop(settings, "auto_update", toggle=True)
         if settings.last_error:
             draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True)
         draw_settings(layout, settings)
+        draw_size(layout, params.values_of(settings))
+
+
+class FRACTERRA_PT_polyline(bpy.types.Panel):
+    bl_label = "Fractal Polyline"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "Fracterra"
+
+    @classmethod
+    def poll(cls, context):
+        return is_polyline(context.active_object)
+
+    def draw(self, context):
+        layout = self.layout
+        draw_library_problem(layout)
+        settings = context.active_object.fracterra_polyline
+        row = layout.row(align=True)
+        row.operator(POLYLINE_REGENERATE, text="Regenerate", icon="FILE_REFRESH")
+        row.prop(settings, "auto_update", toggle=True)
+        if settings.last_error:
+            draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True)
+        draw_polyline_settings(layout, settings)
 
 
 class FRACTERRA_PT_measures(bpy.types.Panel):
@@ -57,9 +86,14 @@ class FRACTERRA_PT_measures(bpy.types.Panel):
             layout.label(text="Not measured yet")
             return
         col = layout.column(align=True)
+        if m.geometry != geometry_fingerprint(obj):
+            # Measured before the last change (Regenerate, an edit): never shown as current.
+            draw_wrapped(layout, "Stale: the object changed since it was measured; press Measure again",
+                         icon="ERROR", alert=True)
+            col.enabled = False
         if m.kind == "terrain" and m.estimator:
             col.label(text=f"Estimator: {m.estimator}")
-        names = ("hurst", "dimension", "stderr") if m.kind == "terrain" else ("eta", "chi", "gamma", "dimension", "stderr")
+        names = ("hurst", "dimension", "std_error") if m.kind == "terrain" else ("eta", "chi", "gamma", "dimension", "std_error")
         for name in names:
             row = col.row()
             row.label(text=m.bl_rna.properties[name].name)

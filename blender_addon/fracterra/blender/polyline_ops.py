@@ -1,16 +1,19 @@
 """Curves: Add > Curve > Fractal Polyline, and the coastlines of a terrain."""
 
+import json
+
 import bpy
+from bpy_extras import object_utils
 from mathutils import Matrix
 
 from .. import core
 from ..core import params
 from . import props
-from .curve_build import curve_from_polylines, link_new_object, point_cloud_from_polylines, spline_nodes
-from .prefs import library_threads
-from .reporting import REPORTED, SettingsError, WindowProgress
+from .curve_build import curve_from_polylines, link_new_object, spline_nodes
+from .polyline_build import default_radius, polyline_data, regenerate_polyline
+from .reporting import REPORTED, SettingsError
 from .settings_ui import draw_polyline_settings
-from .terrain_objects import heightfield_of, is_terrain
+from .terrain_objects import heightfield_of, is_polyline, is_terrain
 
 
 def edge_chain(mesh):
@@ -65,38 +68,86 @@ def base_polyline(values, context):
     return nodes, obj.matrix_world.copy()
 
 
-class FRACTERRA_OT_polyline_add(bpy.types.Operator):
-    """Add a fractal polyline (FPL 2D/3D with branching, Koch, dragon, Sierpinski, IFS, profile)"""
+class FRACTERRA_OT_polyline_add(bpy.types.Operator, object_utils.AddObjectHelper):
+    """Add a fractal polyline (FPL 2D/3D with branching, Koch, dragon, Sierpinski, IFS, profile) at the 3D cursor"""
     bl_idname = "curve.fracterra_polyline_add"
     bl_label = "Fractal Polyline"
     bl_options = {"REGISTER", "UNDO", "PRESET"}
 
     def draw(self, context):
         draw_polyline_settings(self.layout, self)
+        if self.base_source == "POINTS":
+            col = self.layout.column()
+            col.use_property_split = True
+            col.prop(self, "align")
+            col.prop(self, "location")
+            col.prop(self, "rotation")
 
     def execute(self, context):
         values = params.values_of(self, params.POLYLINE_PARAMS)
         try:
             base, matrix = base_polyline(values, context)
-            with WindowProgress(context) as progress, \
-                    core.generate_polylines(values, base=base, progress=progress,
-                                            threads=library_threads(context)) as pl:
-                if values["method"] == "IFS":
-                    data = point_cloud_from_polylines("Fractal Points", pl)
-                else:
-                    data = curve_from_polylines("Fractal Polyline", pl, values["bevel"])
-                lines, vertices = pl.line_count, pl.vertex_count
+            if not self.properties.is_property_set("radius"):
+                self.radius = values["radius"] = default_radius(base)
+            data, summary = polyline_data(values, base, context)
         except REPORTED as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
-        obj = link_new_object(context, data.name, data, matrix)
+        if values["base_source"] == "POINTS":
+            # At the 3D cursor (or Location), aligned as asked, like Blender's own primitives.
+            obj = object_utils.object_data_add(context, data, operator=self)
+        else:
+            obj = link_new_object(context, data.name, data, matrix)
+        settings = obj.fracterra_polyline
+        props.copy_settings(self, settings, params.POLYLINE_PARAMS)
+        settings.base_nodes = json.dumps([list(p) for p in base]) if values["base_source"] == "ACTIVE" else ""
+        settings.is_polyline = True
         # How exporters should show it (POV-Ray: glowing lightning or a plain tube).
         obj["fracterra_kind"] = "LIGHTNING" if values["method"] == "FPL3D" else "LINE"
-        self.report({"INFO"}, f"Fractal polyline: {lines} line(s), {vertices} vertices")
+        self.report({"INFO"}, f"Fractal polyline: {summary}")
         return {"FINISHED"}
 
 
 FRACTERRA_OT_polyline_add.__annotations__ = props.terrain_annotations(param_list=params.POLYLINE_PARAMS)
+
+
+class FRACTERRA_OT_polyline_regenerate(bpy.types.Operator):
+    """Regenerate the active fractal polyline from its settings, in place"""
+    bl_idname = "object.fracterra_polyline_regenerate"
+    bl_label = "Regenerate Polyline"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return is_polyline(context.active_object) and context.mode == "OBJECT"
+
+    def execute(self, context):
+        obj = context.active_object
+        try:
+            summary = regenerate_polyline(obj, context)
+        except REPORTED as e:
+            obj.fracterra_polyline.last_error = str(e)
+            self.report({"ERROR"}, str(e))
+            return {"CANCELLED"}
+        obj.fracterra_polyline.last_error = ""
+        obj["fracterra_kind"] = "LIGHTNING" if obj.fracterra_polyline.method == "FPL3D" else "LINE"
+        self.report({"INFO"}, f"Fractal polyline: {summary}")
+        return {"FINISHED"}
+
+
+# Why Terrain Coastline is greyed out, shown in its tooltip.
+COASTLINE_NEEDS = "Select a fractal terrain (Add > Mesh > Fractal Terrain) in Object Mode to draw its coastline"
+
+
+def coastline_terrain(obj):
+    """The terrain a coastline is drawn for: the active terrain, or the parent of
+    the active coastline (what is active right after the operator, when its redo
+    panel re-runs it)."""
+    if is_terrain(obj):
+        return obj
+    if obj is not None and obj.get("fracterra_kind") == "COASTLINE" and is_terrain(obj.parent):
+        return obj.parent
+    return None
 
 
 class FRACTERRA_OT_coastline_add(bpy.types.Operator):
@@ -111,38 +162,58 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
     quantile: bpy.props.FloatProperty(name="Quantile", default=0.5, min=0.0, max=1.0, subtype="FACTOR",
                                       description="Fraction of the terrain below the coastline")
     level: bpy.props.FloatProperty(name="Level", default=0.0, subtype="DISTANCE", unit="LENGTH",
-                                   description="Height of the coastline (local z)")
-    radius: bpy.props.FloatProperty(name="Radius", default=0.02, min=0.0, subtype="DISTANCE", unit="LENGTH",
-                                    description="Bevel radius of the coastline curve (0: a bare line)")
+                                   description="Height of the coastline (local z); at a terrain's flat sea it "
+                                               "is taken just above it")
+    radius: bpy.props.FloatProperty(name="Radius", default=0.0, min=0.0, soft_max=1.0, subtype="DISTANCE",
+                                    unit="LENGTH", description="Radius of the coastline's tube (0: a bare line); "
+                                                               "when not given, 1/500 of the terrain's size")
 
     @classmethod
     def poll(cls, context):
-        return is_terrain(context.active_object) and context.mode == "OBJECT"
+        if context.mode == "OBJECT" and coastline_terrain(context.active_object) is not None:
+            return True
+        cls.poll_message_set(COASTLINE_NEEDS)
+        return False
+
+    def defaults_from(self, settings):
+        """What the caller left unset comes from the terrain: its sea level when it
+        has one, and a tube visible at its size."""
+        is_set = self.properties.is_property_set
+        if settings.use_sea_level and not (is_set("use_quantile") or is_set("quantile") or is_set("level")):
+            self.use_quantile, self.level = False, settings.sea_level
+        if not is_set("radius"):
+            self.radius = settings.world_size / 500
 
     def execute(self, context):
-        terrain = context.active_object
+        terrain = coastline_terrain(context.active_object)
+        settings = terrain.fracterra_terrain
+        self.defaults_from(settings)
         try:
             with heightfield_of(terrain) as hf:
                 nx, ny = hf.width, hf.height
-                size_x, size_y = core.grid_size(terrain.fracterra_terrain.world_size, nx, ny)
+                world_size_x, world_size_y = core.grid_size(settings.world_size, nx, ny)
+                s = hf.stats()
                 level = self.quantile if self.use_quantile else self.level
+                if not self.use_quantile and settings.use_sea_level and level <= settings.sea_level:
+                    # The flattened sea lies exactly at the sea level and counts as land
+                    # there (land: height >= level): take the level just above it.
+                    level = settings.sea_level + 1e-5 * max(s["max"] - s["min"], 1e-6)
                 with core.coastline(hf, level, quantile=self.use_quantile) as pl:
                     if pl.line_count == 0:
                         # Not an empty curve without a word: say why.
-                        s = hf.stats()
                         what = f"quantile {level:g}" if self.use_quantile else f"level {level:g}"
                         self.report({"ERROR"}, f"no coastline at {what}: the terrain's heights are "
                                                f"[{s['min']:g}, {s['max']:g}] and no cell crosses it")
                         return {"CANCELLED"}
                     def to_local(x, y, z):
-                        return (x / (nx - 1) - 0.5) * size_x, (y / (ny - 1) - 0.5) * size_y, z
-                    curve = curve_from_polylines("Coastline", pl, bevel=False, transform=to_local)
+                        return (x / (nx - 1) - 0.5) * world_size_x, (y / (ny - 1) - 0.5) * world_size_y, z
+                    curve = curve_from_polylines("Coastline", pl, bevel=False, transform=to_local,
+                                                 unit_radius=True)
                     lines = pl.line_count
         except REPORTED as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
-        if self.radius > 0:
-            curve.bevel_depth = self.radius
+        curve.bevel_depth = self.radius  # times each point's radius of 1
         obj = link_new_object(context, f"{terrain.name} Coastline", curve, terrain.matrix_world.copy())
         obj.parent = terrain
         obj.matrix_parent_inverse = terrain.matrix_world.inverted()

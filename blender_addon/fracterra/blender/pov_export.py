@@ -62,12 +62,12 @@ class FRACTERRA_OT_export_pov(bpy.types.Operator, ExportHelper):
             if terrain is not None:
                 hf = heightfield_of(terrain)
                 settings = terrain.fracterra_terrain
-                size_x, size_y = core.grid_size(settings.world_size, hf.width, hf.height)
+                world_size_x, world_size_y = core.grid_size(settings.world_size, hf.width, hf.height)
                 frame = terrain.matrix_world.inverted()
-                shift = Vector((size_x / 2, size_y / 2, 0.0))  # the writer's terrain spans 0..size
+                shift = Vector((world_size_x / 2, world_size_y / 2, 0.0))  # the writer's terrain spans 0..size
                 water = settings.sea_level if settings.use_sea_level else None
             else:
-                size_x = size_y = 1.0
+                world_size_x = world_size_y = 1.0
                 frame, shift, water = Matrix.Identity(4), Vector((0, 0, 0)), None
             if self.include_curves:
                 for obj in visible:
@@ -94,7 +94,7 @@ class FRACTERRA_OT_export_pov(bpy.types.Operator, ExportHelper):
                     to_sun = frame.to_3x3() @ lamp.matrix_world.to_3x3() @ Vector((0.0, 0.0, 1.0))
                     az, el = _direction_angles(to_sun)
                     sun = {"azimuth": az, "elevation": el}
-            povray.write_scene(self.filepath, terrain=hf, size_x=size_x, size_y=size_y, water_level=water,
+            povray.write_scene(self.filepath, terrain=hf, world_size_x=world_size_x, world_size_y=world_size_y, sea_level=water,
                                line_sets=line_sets, camera=camera, sun=sun)
         finally:
             if hf is not None:

@@ -1,11 +1,12 @@
 """Blender properties made from the one parameter list (core.params), and the
-PropertyGroups kept on objects (terrain settings, measures)."""
+PropertyGroups kept on objects (terrain and polyline settings, measures)."""
 
 import bpy
 from bpy.props import (BoolProperty, EnumProperty, FloatProperty, FloatVectorProperty, IntProperty,
                        StringProperty)
 
 from ..core import params
+from .polyline_build import regenerate_polyline
 from .terrain_build import regenerate_object
 
 
@@ -68,10 +69,36 @@ FRACTERRA_PG_terrain.__annotations__ = {
 }
 
 
-def copy_settings(src, dst):
-    """Copies every terrain setting between operators and PropertyGroups."""
-    for p in params.TERRAIN_PARAMS:
+def copy_settings(src, dst, param_list=None):
+    """Copies every setting (terrain unless another list is given) between operators and PropertyGroups."""
+    for p in param_list or params.TERRAIN_PARAMS:
         setattr(dst, p.name, getattr(src, p.name))
+
+
+def _on_polyline_setting_changed(self, context):
+    if self.auto_update and self.is_polyline:
+        try:
+            regenerate_polyline(self.id_data, context)
+        except Exception as e:  # an update callback cannot report; show it in the panel
+            self.last_error = str(e)
+        else:
+            self.last_error = ""
+
+
+class FRACTERRA_PG_polyline(bpy.types.PropertyGroup):
+    """The settings of a fractal polyline, kept on its object for re-editing."""
+
+
+FRACTERRA_PG_polyline.__annotations__ = {
+    "is_polyline": BoolProperty(name="Fractal Polyline", default=False,
+                                description="This object was made by Add > Curve > Fractal Polyline"),
+    "auto_update": BoolProperty(name="Auto Update", default=False,
+                                description="Regenerate the polyline whenever a setting changes"),
+    "last_error": StringProperty(name="Last Error", default="", options={"SKIP_SAVE"}),
+    "base_nodes": StringProperty(name="Base Nodes", default="",
+                                 description="The nodes of the object it was made along (JSON), in its own frame"),
+    **terrain_annotations(_on_polyline_setting_changed, params.POLYLINE_PARAMS),
+}
 
 
 class FRACTERRA_PG_measures(bpy.types.PropertyGroup):
@@ -82,7 +109,10 @@ class FRACTERRA_PG_measures(bpy.types.PropertyGroup):
     estimator: StringProperty(name="Estimator", default="", description="The Hurst estimator used")
     estimator_reason: StringProperty(name="Why", default="", description="Why the estimator was chosen")
     dimension: FloatProperty(name="D", description="Fractal dimension (terrain: 3 - H; polylines: box counting)")
-    stderr: FloatProperty(name="Std Error", description="Standard error of the fitted slope")
+    std_error: FloatProperty(name="Std Error", description="Standard error of the fitted slope")
     eta: FloatProperty(name="eta", description="Max deviation of the main line from its chord / chord length")
     chi: FloatProperty(name="chi", description="Mean deviation from the chord / chord length")
     gamma: FloatProperty(name="gamma", description="Line length / chord length (elongation)")
+    geometry: StringProperty(name="Geometry", default="",
+                             description="Fingerprint of the geometry that was measured: when the object's "
+                                         "differs, the measures are shown as stale")

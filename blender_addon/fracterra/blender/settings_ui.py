@@ -56,7 +56,10 @@ def draw_settings(layout, data, show_reference_pickers=True):
             box.prop(data, "reference_scale")
         elif data.reference_source == "IMAGE":
             if show_reference_pickers:
-                box.prop_search(data, "reference_image", bpy.data, "images")
+                row = box.row(align=True)
+                row.prop_search(data, "reference_image", bpy.data, "images")
+                if isinstance(data, bpy.types.PropertyGroup):  # the sidebar: open a file for this terrain
+                    row.operator("object.fracterra_reference_image_open", text="", icon="FILEBROWSER")
             box.prop(data, "reference_levels")
             box.prop(data, "reference_height")
             box.prop(data, "reference_scale")

@@ -11,6 +11,7 @@ import numpy as np
 from .. import core
 from ..core import params
 from ..core.grid import NO_FLOOR, grid_arrays, grid_size, vertices
+from ..core.mesh_limits import check_grid, grid_shape
 from . import mesh_build
 from .prefs import library_threads
 from .reporting import SettingsError, WindowProgress
@@ -105,7 +106,9 @@ def z_floor(values):
 
 
 def generate(values, context):
-    """A core.Heightfield for the settings (caller closes it)."""
+    """A core.Heightfield for the settings (caller closes it); a grid that
+    Blender cannot hold is refused first, before any memory is taken."""
+    check_grid(*grid_shape(values))
     reference = reference_for(values)
     with WindowProgress(context) as progress:
         return core.generate_terrain(values, reference=reference, progress=progress,
@@ -120,6 +123,7 @@ def new_terrain_mesh(values, context, name="Fractal Terrain"):
     mesh = bpy.data.meshes.new(name)
     try:
         mesh_build.fill_grid_mesh(mesh, g, smooth=values["smooth"])
+        mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
     except BaseException:
         bpy.data.meshes.remove(mesh)
         raise
@@ -141,9 +145,10 @@ def regenerate_object(obj, context):
         nx, ny = hf.width, hf.height
         same_grid = len(mesh.vertices) == nx * ny and len(mesh.polygons) == (nx - 1) * (ny - 1)
         if same_grid:
-            size_x, size_y = grid_size(values["world_size"], nx, ny)
-            co = vertices(hf, size_x, size_y, z_floor(values))
+            world_size_x, world_size_y = grid_size(values["world_size"], nx, ny)
+            co = vertices(hf, world_size_x, world_size_y, z_floor(values))
             mesh_build.rewrite_positions(mesh, co)
+            mesh_build.set_height_slope(mesh, co, nx, ny)
             if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
                 mesh_build.set_uvs(mesh, grid_arrays(hf, values["world_size"], uvs=True).uv
                                    if values["uvs"] else None)
@@ -152,5 +157,6 @@ def regenerate_object(obj, context):
         else:
             g = grid_arrays(hf, values["world_size"], z_floor(values), uvs=values["uvs"])
             mesh_build.fill_grid_mesh(mesh, g, smooth=values["smooth"])
+            mesh_build.set_height_slope(mesh, g.co, nx, ny)
             how = "mesh rebuilt"
     return f"{nx} x {ny} terrain {how} in {time.perf_counter() - t0:.2f} s"

@@ -3,14 +3,24 @@ all), a terrain's grid size, and a library heightfield of its current vertex
 heights."""
 
 import array
+import zlib
+
+import numpy as np
 
 from .. import core
 from ..core import params
+from ..core.mesh_limits import grid_shape
+from .curve_build import spline_nodes
 from .reporting import SettingsError
 
 
 def is_terrain(obj):
     return obj is not None and obj.type == "MESH" and obj.fracterra_terrain.is_terrain
+
+
+def is_polyline(obj):
+    """Made by Add > Curve > Fractal Polyline (a curve, or a point mesh for IFS)."""
+    return obj is not None and obj.type in {"CURVE", "MESH"} and obj.fracterra_polyline.is_polyline
 
 
 def is_measurable(obj):
@@ -20,8 +30,7 @@ def is_measurable(obj):
 
 def terrain_grid_size(obj):
     """(nx, ny) of a fracterra terrain object whose mesh is still its grid."""
-    s = obj.fracterra_terrain
-    nx, ny = ((2 ** s.levels + 1,) * 2 if s.method in params.DYADIC_METHODS else (s.width, s.height))
+    nx, ny = grid_shape(params.values_of(obj.fracterra_terrain))
     if len(obj.data.vertices) != nx * ny:
         raise SettingsError(f"'{obj.name}' has {len(obj.data.vertices)} vertices, not its {nx} x {ny} grid "
                             "(edited?); regenerate it first")
@@ -34,3 +43,18 @@ def heightfield_of(obj):
     co = array.array("f", [0.0]) * (3 * nx * ny)
     obj.data.vertices.foreach_get("co", co)
     return core.Heightfield.from_values(nx, ny, co[2::3])
+
+
+def geometry_fingerprint(obj):
+    """A cheap digest (CRC-32 of every coordinate) of a mesh's vertices or a
+    curve's points: the measures it was taken of are stale once it differs."""
+    if obj.type == "MESH":
+        co = np.empty(3 * len(obj.data.vertices), dtype=np.float32)
+        obj.data.vertices.foreach_get("co", co)
+        parts = [co]
+    else:
+        parts = [spline_nodes(spline) for spline in obj.data.splines]
+    crc = 0
+    for part in parts:
+        crc = zlib.crc32(np.ascontiguousarray(part).tobytes(), crc)
+    return f"{obj.type}:{sum(len(p) for p in parts)}:{crc:08x}"

@@ -2,12 +2,14 @@
 
 import bpy
 from bpy_extras import object_utils
+from bpy_extras.io_utils import ImportHelper
 
 from ..core import params
 from . import props
 from .reporting import REPORTED
 from .settings_ui import draw_settings
 from .terrain_build import new_terrain_mesh, regenerate_object
+from .widgets import draw_size
 
 
 class FRACTERRA_OT_terrain_add(bpy.types.Operator, object_utils.AddObjectHelper):
@@ -18,6 +20,7 @@ class FRACTERRA_OT_terrain_add(bpy.types.Operator, object_utils.AddObjectHelper)
 
     def draw(self, context):
         draw_settings(self.layout, self)
+        draw_size(self.layout, params.values_of(self))
         col = self.layout.column()
         col.use_property_split = True
         col.prop(self, "align")
@@ -67,3 +70,30 @@ class FRACTERRA_OT_terrain_regenerate(bpy.types.Operator):
         self.report({"INFO"}, f"Fractal terrain: {summary}")
         return {"FINISHED"}
 
+
+
+class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
+    """Open an image file as the active terrain's reference (its brightness becomes the heights)"""
+    bl_idname = "object.fracterra_reference_image_open"
+    bl_label = "Open Reference Image"
+    bl_options = {"REGISTER", "UNDO"}
+
+    filter_glob: bpy.props.StringProperty(
+        default="*.png;*.jpg;*.jpeg;*.tif;*.tiff;*.exr;*.hdr;*.bmp;*.tga;*.webp", options={"HIDDEN"})
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        return obj is not None and obj.type == "MESH" and obj.fracterra_terrain.is_terrain
+
+    def execute(self, context):
+        try:
+            image = bpy.data.images.load(self.filepath, check_existing=True)
+        except RuntimeError as e:  # Blender's own message: missing file, unknown format
+            self.report({"ERROR"}, f"cannot open '{self.filepath}' as an image: {e}")
+            return {"CANCELLED"}
+        settings = context.active_object.fracterra_terrain
+        settings.reference_image = image.name
+        settings.reference_source = "IMAGE"
+        self.report({"INFO"}, f"Reference image: {image.name} ({image.size[0]} x {image.size[1]})")
+        return {"FINISHED"}

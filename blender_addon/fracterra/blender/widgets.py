@@ -3,6 +3,7 @@
 import textwrap
 
 from .. import core
+from ..core import mesh_limits
 
 
 def draw_wrapped(layout, text, icon="NONE", width=60, alert=False):
@@ -19,3 +20,13 @@ def draw_library_problem(layout):
     if not ok:
         draw_wrapped(layout.box(), message, icon="ERROR", alert=True)
     return not ok
+
+
+def draw_size(layout, values):
+    """For large terrains, the vertex and memory estimate, or why Blender cannot hold it."""
+    nx, ny = mesh_limits.grid_shape(values)
+    reason = mesh_limits.too_large(nx, ny)
+    if reason:
+        draw_wrapped(layout, "Too large: " + reason, icon="ERROR", alert=True)
+    elif nx * ny >= mesh_limits.SHOW_ESTIMATE_FROM:
+        layout.label(text=mesh_limits.estimate(nx, ny), icon="INFO")

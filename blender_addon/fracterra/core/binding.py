@@ -16,8 +16,8 @@ from pathlib import Path
 
 from .errors import LibraryNotFoundError, error_for_status
 
-ABI_MAJOR = 1
-ABI_MINOR_MIN = 2  # 1.1: ft_terrain_params.world_size; 1.2: the Mandelbrot fields, FT_HURST_AUTO
+ABI_MAJOR = 2
+ABI_MINOR_MIN = 0  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -32,85 +32,80 @@ HOW_TO_FIX = (
 PROGRESS_FN = CFUNCTYPE(c_int32, c_void_p, c_double)
 
 
-class TerrainParams(Structure):
-    """ft_terrain_params (fracterra/terrain.h); layout checked against struct_size."""
+class ParamEnumItem(Structure):
+    """ft_param_enum_item (fracterra/params.h)."""
+    _fields_ = [("value", c_int32), ("name", c_char_p), ("label", c_char_p), ("doc", c_char_p)]
+
+
+class ParamInfo(Structure):
+    """ft_param_info (fracterra/params.h): the one struct written out by hand here, since
+    it is how the library describes all the others. Checked against its struct_size."""
     _fields_ = [
-        ("struct_size", c_uint32),
-        ("method", c_int32),
-        ("levels", c_int32),
-        ("width", c_int32),
-        ("height", c_int32),
-        ("hurst", c_double),
-        ("sigma", c_double),
-        ("seed", c_uint64),
-        ("periodic", c_int32),
-        ("threads", c_int32),
-        ("reference", POINTER(c_float)),
-        ("reference_size", c_int32),
-        ("reference_scale", c_int32),
-        ("octaves", c_int32),
-        ("lacunarity", c_double),
-        ("gain", c_double),
-        ("basis", c_int32),
-        ("variant", c_int32),
-        ("frequency", c_double),
-        ("offset", c_double),
-        ("rotation", c_double),
-        ("warp", c_double),
-        ("progress", PROGRESS_FN),
-        ("progress_user", c_void_p),
-        # ABI 1.1
-        ("world_size", c_double),
-        ("center_x", c_double),
-        ("center_y", c_double),
-        ("zoom", c_double),
-        ("iterations", c_int32),
-        ("supersample", c_int32),
+        ("struct_size", c_uint32), ("type", c_int32), ("name", c_char_p), ("offset", c_uint32),
+        ("size", c_uint32), ("count", c_int32), ("flags", c_uint32), ("since", c_uint32),
+        ("element_type", c_int32), ("element_kind", c_int32), ("default_value", c_double),
+        ("hard_min", c_double), ("hard_max", c_double), ("soft_min", c_double), ("soft_max", c_double),
+        ("unit", c_char_p), ("label", c_char_p), ("doc", c_char_p), ("methods", c_uint64),
+        ("enum_count", c_int32), ("enum_items", POINTER(ParamEnumItem)),
     ]
 
 
-class ProfileParams(Structure):
-    """ft_profile_params (fracterra/terrain.h)."""
-    _fields_ = [
-        ("struct_size", c_uint32),
-        ("levels", c_int32),
-        ("hurst", c_double),
-        ("sigma", c_double),
-        ("seed", c_uint64),
-        ("reference", POINTER(c_float)),
-        ("reference_size", c_int32),
-        ("reference_scale", c_int32),
-        ("progress", PROGRESS_FN),
-        ("progress_user", c_void_p),
-    ]
+# fracterra/params.h: the described structs and field types.
+PARAMS_KINDS = {"terrain": 0, "profile": 1, "polyline": 2, "fractalize": 3}
+FT_PARAM = ("uint32", "int32", "int64", "uint64", "float", "double", "bool", "enum", "pointer", "string",
+            "callback", "opaque")
+FLAG_STRUCT_SIZE, FLAG_DATA, FLAG_MIN_EXCLUSIVE, FLAG_MAX_EXCLUSIVE = 1, 2, 4, 8
+_SCALAR_CTYPES = {"uint32": c_uint32, "int32": c_int32, "int64": c_int64, "uint64": c_uint64, "float": c_float,
+                  "double": c_double, "bool": c_int32, "enum": c_int32, "string": c_char_p,
+                  "callback": PROGRESS_FN}
+_ELEMENT_CTYPES = {"float": POINTER(c_float), "double": POINTER(c_double), "opaque": c_void_p}
 
 
-class PolylineParams(Structure):
-    """ft_polyline_params (fracterra/polyline.h)."""
-    _fields_ = [
-        ("struct_size", c_uint32),
-        ("method", c_int32),
-        ("rng", c_int32),
-        ("depth", c_int32),
-        ("spread", c_double),
-        ("min_length", c_double),
-        ("seed", c_uint64),
-        ("base", POINTER(c_double)),
-        ("base_count", c_int64),
-        ("plane_normal", c_double * 3),
-        ("branch_prob", c_double),
-        ("branch_decay", c_double),
-        ("branch_generations", c_int32),
-        ("ifs_preset", c_int32),
-        ("radius", c_double),
-        ("hurst", c_double),
-        ("ifs_table", POINTER(c_double)),
-        ("ifs_maps", c_int32),
-        ("threads", c_int32),
-        ("ifs_points", c_int64),
-        ("progress", PROGRESS_FN),
-        ("progress_user", c_void_p),
-    ]
+def _text(b):
+    return b.decode() if b is not None else ""
+
+
+def field_dict(info):
+    """One ft_param_info as a plain dict (the library's strings decoded)."""
+    row = {name: getattr(info, name) for name, _ in ParamInfo._fields_ if name != "enum_items"}
+    for key in ("name", "unit", "label", "doc"):
+        row[key] = _text(row[key])
+    row["type"] = FT_PARAM[info.type]
+    row["element_type"] = FT_PARAM[info.element_type] if info.type == 8 else None
+    row["items"] = [(_text(e.name), _text(e.label), _text(e.doc), e.value)
+                    for e in info.enum_items[:info.enum_count]]
+    return row
+
+
+def _ctype_of(row, struct_types):
+    if row["type"] == "pointer":
+        if row["element_kind"] >= 0:
+            return POINTER(struct_types[row["element_kind"]])
+        return _ELEMENT_CTYPES[row["element_type"]]
+    t = _SCALAR_CTYPES[row["type"]]
+    return t * row["count"] if row["count"] > 1 else t
+
+
+def structure_from_rows(name, rows, size, struct_types=None):
+    """A ctypes Structure laid out from the library's description, checked field by field:
+    every offset and the total size must come out as the library says."""
+    fields = [(r["name"], _ctype_of(r, struct_types or {})) for r in rows]
+    cls = type(name, (Structure,), {"_fields_": fields, "__doc__": f"{name}, as the library describes it"})
+    for r in rows:
+        got = getattr(cls, r["name"])
+        if got.offset != r["offset"] or got.size != r["size"]:
+            raise LibraryNotFoundError(f"{name}.{r['name']}: the library says offset {r['offset']}, size "
+                                       f"{r['size']}; ctypes lays it at {got.offset}, size {got.size}")
+    if ctypes.sizeof(cls) != size:
+        raise LibraryNotFoundError(f"{name}: the library says {size} bytes, ctypes makes {ctypes.sizeof(cls)}")
+    return cls
+
+
+class _Described:
+    """A SIGNATURES placeholder for POINTER(the struct of this kind built at load time)."""
+
+    def __init__(self, kind):
+        self.kind = kind
 
 
 class PolylineStats(Structure):
@@ -126,7 +121,7 @@ class PolylineStats(Structure):
         ("length", c_double),
         ("mass_dimension", c_double),
         ("box_dimension", c_double),
-        ("box_std_error", c_double),
+        ("box_dimension_std_error", c_double),
         ("box_min_size", c_double),
         ("box_max_size", c_double),
         ("box_sizes", c_int32),
@@ -150,16 +145,16 @@ class HurstParams(Structure):
 class HurstResult(Structure):
     """ft_hurst_result (fracterra/analysis.h)."""
     _fields_ = [
+        ("struct_size", c_uint32),
         ("method", c_int32),
         ("transects", c_int32),
+        ("points", c_int32),
         ("hurst", c_double),
         ("dimension", c_double),
-        ("stderr_hurst", c_double),
+        ("std_error", c_double),
         ("band_lo", c_double),
         ("band_hi", c_double),
         ("band_is_frequency", c_int32),
-        ("points", c_int32),
-        # ABI 1.2, written for FT_HURST_AUTO only: why it chose `method`.
         ("auto_reason", c_int32),
         ("auto_reason_text", c_char_p),
     ]
@@ -175,11 +170,11 @@ class PovSceneParams(Structure):
     _fields_ = [
         ("struct_size", c_uint32),
         ("terrain", c_void_p),
-        ("size_x", c_double),
-        ("size_y", c_double),
+        ("world_size_x", c_double),
+        ("world_size_y", c_double),
         ("vertical_scale", c_double),
-        ("has_water", c_int32),
-        ("water_level", c_double),
+        ("has_sea", c_int32),
+        ("sea_level", c_double),
         ("lines", POINTER(PovSceneLines)),
         ("line_set_count", c_int32),
         ("camera_azimuth_deg", c_double),
@@ -190,25 +185,6 @@ class PovSceneParams(Structure):
         ("sun_azimuth_deg", c_double),
         ("sun_elevation_deg", c_double),
         ("image_path", c_char_p),
-    ]
-
-
-class FractalizeParams(Structure):
-    """ft_fractalize_params (fracterra/subdiv.h)."""
-    _fields_ = [
-        ("struct_size", c_uint32),
-        ("levels", c_int32),
-        ("hurst", c_double),
-        ("sigma", c_double),
-        ("seed", c_uint64),
-        ("scheme", c_int32),
-        ("mode", c_int32),
-        ("fix_boundary", c_int32),
-        ("scale_by_edge_length", c_int32),
-        ("weights", POINTER(c_float)),
-        ("threads", c_int32),
-        ("progress", PROGRESS_FN),
-        ("progress_user", c_void_p),
     ]
 
 
@@ -226,6 +202,8 @@ _F64P = POINTER(c_double)
 # name: (restype, argtypes). Every symbol the binding uses is declared here.
 SIGNATURES = {
     "ft_abi_version": (c_uint32, []),
+    "ft_params_describe": (c_int32, [c_int32, POINTER(c_char_p), POINTER(c_uint32), POINTER(c_int32)]),
+    "ft_params_field": (c_int32, [c_int32, c_int32, POINTER(POINTER(ParamInfo))]),
     "ft_version_string": (c_char_p, []),
     "ft_last_error": (c_char_p, []),
     "ft_status_name": (c_char_p, [c_int32]),
@@ -248,15 +226,15 @@ SIGNATURES = {
     "ft_polylines_radii": (_F64P, [_PL]),
     "ft_polylines_offsets": (POINTER(c_int64), [_PL]),
     "ft_polylines_free": (None, [_PL]),
-    "ft_terrain_params_init": (c_int32, [POINTER(TerrainParams)]),
-    "ft_terrain_generate": (c_int32, [POINTER(TerrainParams), POINTER(_HF)]),
+    "ft_terrain_params_init": (c_int32, [_Described("terrain")]),
+    "ft_terrain_generate": (c_int32, [_Described("terrain"), POINTER(_HF)]),
     "ft_terrain_side": (c_int32, [c_int32]),
-    "ft_mandelbrot_level_height": (c_int32, [POINTER(TerrainParams), c_double, POINTER(c_double)]),
-    "ft_profile_params_init": (c_int32, [POINTER(ProfileParams)]),
-    "ft_profile_generate": (c_int32, [POINTER(ProfileParams), _F32P, c_size_t]),
+    "ft_mandelbrot_level_height": (c_int32, [_Described("terrain"), c_double, POINTER(c_double)]),
+    "ft_profile_params_init": (c_int32, [_Described("profile")]),
+    "ft_profile_generate": (c_int32, [_Described("profile"), _F32P, c_size_t]),
     "ft_profile_length": (c_int64, [c_int32]),
-    "ft_polyline_params_init": (c_int32, [POINTER(PolylineParams)]),
-    "ft_polyline_generate": (c_int32, [POINTER(PolylineParams), POINTER(_PL)]),
+    "ft_polyline_params_init": (c_int32, [_Described("polyline")]),
+    "ft_polyline_generate": (c_int32, [_Described("polyline"), POINTER(_PL)]),
     "ft_polyline_measure": (c_int32, [_PL, POINTER(PolylineStats)]),
     "ft_hurst_params_init": (c_int32, [POINTER(HurstParams)]),
     "ft_hurst_profile": (c_int32, [_F32P, c_size_t, POINTER(HurstParams), POINTER(HurstResult)]),
@@ -276,8 +254,8 @@ SIGNATURES = {
     "ft_mesh_face_index_count": (c_int64, [c_void_p]),
     "ft_mesh_face_indices": (_I32P, [c_void_p]),
     "ft_mesh_free": (None, [c_void_p]),
-    "ft_fractalize_params_init": (c_int32, [POINTER(FractalizeParams)]),
-    "ft_fractalize": (c_int32, [c_void_p, POINTER(FractalizeParams), POINTER(c_void_p)]),
+    "ft_fractalize_params_init": (c_int32, [_Described("fractalize")]),
+    "ft_fractalize": (c_int32, [c_void_p, _Described("fractalize"), POINTER(c_void_p)]),
     "ft_grid_counts_get": (c_int32, [c_int32, c_int32, POINTER(GridCounts)]),
     "ft_grid_vertices": (c_int32, [_HF, c_double, c_double, c_double, _F32P, c_size_t]),
     "ft_grid_heights": (c_int32, [_HF, c_double, _F32P, c_size_t, c_size_t]),
@@ -296,16 +274,8 @@ class Library:
             self._dll = ctypes.CDLL(str(self.path))
         except OSError as e:
             raise LibraryNotFoundError(f"cannot load {self.path}: {e}. {HOW_TO_FIX}") from None
-        missing = []
-        for name, (restype, argtypes) in SIGNATURES.items():
-            try:
-                fn = getattr(self._dll, name)
-            except AttributeError:
-                missing.append(name)
-                continue
-            fn.restype = restype
-            fn.argtypes = argtypes
-            setattr(self, name, fn)
+        missing = self._bind({k: v for k, v in SIGNATURES.items()
+                              if not any(isinstance(a, _Described) for a in v[1])})
         if "ft_abi_version" in missing:
             raise LibraryNotFoundError(f"{self.path} is not a fracterra library (no ft_abi_version). {HOW_TO_FIX}")
         abi = self.ft_abi_version()
@@ -318,15 +288,53 @@ class Library:
             raise LibraryNotFoundError(
                 f"{self.path} lacks {', '.join(missing)} (an older build?). {HOW_TO_FIX}")
         self.version = self.ft_version_string().decode()
+        # The params structs as the library describes them: their layout cannot drift.
+        self.param_rows, self.struct_types = {}, {}
+        for kind_name, kind in PARAMS_KINDS.items():
+            struct_name, size, rows = self.describe(kind)
+            self.param_rows[kind_name] = rows
+            self.struct_types[kind] = structure_from_rows(struct_name, rows, size, self.struct_types)
+        self._bind({name: (restype, [POINTER(self.struct_types[PARAMS_KINDS[a.kind]])
+                                     if isinstance(a, _Described) else a for a in argtypes])
+                    for name, (restype, argtypes) in SIGNATURES.items()
+                    if any(isinstance(a, _Described) for a in argtypes)})
         # A later 1.x library may have appended fields to its params structs: let its
         # _init write into a roomy buffer first, then size ours to match, so the
         # library never reads or writes past the end of what we pass.
-        self.terrain_params_type = self._sized(TerrainParams, self.ft_terrain_params_init)
-        self.profile_params_type = self._sized(ProfileParams, self.ft_profile_params_init)
-        self.polyline_params_type = self._sized(PolylineParams, self.ft_polyline_params_init)
+        self.terrain_params_type = self.struct_types[PARAMS_KINDS["terrain"]]
+        self.profile_params_type = self.struct_types[PARAMS_KINDS["profile"]]
+        self.polyline_params_type = self.struct_types[PARAMS_KINDS["polyline"]]
         self.hurst_params_type = self._sized(HurstParams, self.ft_hurst_params_init)
         self.pov_scene_params_type = self._sized(PovSceneParams, self.ft_pov_scene_params_init)
-        self.fractalize_params_type = self._sized(FractalizeParams, self.ft_fractalize_params_init)
+        self.fractalize_params_type = self.struct_types[PARAMS_KINDS["fractalize"]]
+
+    def _bind(self, signatures):
+        """Declares restype and argtypes of each symbol; returns the names the library lacks."""
+        missing = []
+        for name, (restype, argtypes) in signatures.items():
+            try:
+                fn = getattr(self._dll, name)
+            except AttributeError:
+                missing.append(name)
+                continue
+            fn.restype = restype
+            fn.argtypes = argtypes
+            setattr(self, name, fn)
+        return missing
+
+    def describe(self, kind):
+        """(struct name, size, [field dicts]) of params struct `kind` (fracterra/params.h)."""
+        name, size, count = c_char_p(), c_uint32(), c_int32()
+        self.check(self.ft_params_describe(kind, ctypes.byref(name), ctypes.byref(size), ctypes.byref(count)))
+        rows = []
+        for i in range(count.value):
+            info = POINTER(ParamInfo)()
+            self.check(self.ft_params_field(kind, i, ctypes.byref(info)))
+            if info.contents.struct_size < ctypes.sizeof(ParamInfo):
+                raise LibraryNotFoundError(f"{self.path}: ft_param_info is {info.contents.struct_size} bytes, "
+                                           f"the binding reads {ctypes.sizeof(ParamInfo)}. {HOW_TO_FIX}")
+            rows.append(field_dict(info.contents))
+        return name.value.decode(), size.value, rows
 
     def _sized(self, struct_type, init):
         probe = (ctypes.c_char * 4096)()

@@ -35,17 +35,17 @@ def grid_counts(nx, ny):
 
 
 def grid_size(world_size, nx, ny):
-    """(size_x, size_y): X spans world_size, Y keeps the same sample spacing."""
+    """(world_size_x, world_size_y): X spans world_size, Y keeps the same sample spacing."""
     return world_size, world_size * (ny - 1) / (nx - 1)
 
 
-def vertices(hf, size_x, size_y, z_floor=NO_FLOOR, out=None):
+def vertices(hf, world_size_x, world_size_y, z_floor=NO_FLOOR, out=None):
     """xyz of every vertex (array.array('f'), 3 per vertex); reuses `out` if given."""
     lib = library()
     n = 3 * hf.width * hf.height
     if out is None or len(out) != n:
         out = float_array(n)
-    lib.check(lib.ft_grid_vertices(hf.handle, size_x, size_y, z_floor, as_pointer(out, c_float), len(out)))
+    lib.check(lib.ft_grid_vertices(hf.handle, world_size_x, world_size_y, z_floor, as_pointer(out, c_float), len(out)))
     return out
 
 
@@ -53,8 +53,8 @@ def grid_arrays(hf, world_size, z_floor=NO_FLOOR, uvs=True):
     """Everything needed to build the mesh of heightfield `hf` in one pass."""
     lib = library()
     g = GridArrays(hf.width, hf.height)
-    size_x, size_y = grid_size(world_size, g.nx, g.ny)
-    g.co = vertices(hf, size_x, size_y, z_floor)
+    world_size_x, world_size_y = grid_size(world_size, g.nx, g.ny)
+    g.co = vertices(hf, world_size_x, world_size_y, z_floor)
     g.loop_vertices, g.loop_edges = index_array(g.loop_count), index_array(g.loop_count)
     g.edge_vertices = index_array(2 * g.edge_count)
     g.loop_starts, g.loop_totals = index_array(g.face_count), index_array(g.face_count)

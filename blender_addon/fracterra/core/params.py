@@ -1,44 +1,75 @@
-"""The one definition of every terrain setting.
+"""The settings of the add-on, made from the library's own description of its
+parameter structs (fracterra/params.h): names, defaults, ranges, enum items,
+labels, tooltips and which methods use each field come from the library's
+tables. What is the add-on's own is stated here, once: the defaults and
+limits where Blender differs from the library (each with its reason) and the
+settings that exist only in Blender (sea level, reference source, UVs...).
 
-Each Param names its property (shared with the library and the CLI where the
-library has the field), its type, default, range, unit and tooltip. The
-Blender side turns the list into operator properties and into the
-PropertyGroup stored on terrain objects; `fill_struct` copies the values into
-the C struct. Params without `field` are used by the add-on only (world size,
-sea level, reference source, UVs...).
+Each Param names its property (the C field's name, shared with the CLI), its
+type, default, range and tooltip. The Blender side turns the list into
+operator properties and into the PropertyGroup stored on terrain objects;
+`fill_struct` copies the values into the C struct.
+
+The description comes from the loaded library, or, when it cannot be loaded
+(the add-on still registers and says what to do), from `params.json`, the
+same tables written by `fracterra params --json` when the add-on zip was
+built beside its library.
 """
 
+import json
 import math
 from dataclasses import dataclass, field as dc_field
+from pathlib import Path
+
+# Where the add-on's default differs from the library's, and why: the only
+# place such a difference may be stated (tests/python/test_params.py checks
+# every other default against the library's table).
+_INTERACTIVE = ("Blender regenerates the terrain while a slider is dragged: 257^2 vertices keep that "
+                "interactive (0.1 s), the library's 513^2 is a CLI default for files")
+BLENDER_OVERRIDES = {
+    "terrain": {
+        "levels": (8, _INTERACTIVE),
+        "width": (257, _INTERACTIVE),
+        "height": (257, _INTERACTIVE),
+    },
+    "polyline": {
+        "method": ("FPL3D", "Add > Curve > Fractal Polyline starts as a lightning bolt, which must not be "
+                            "flat: FPL 3D displaces it in all three axes"),
+        "branch_prob": (0.3, "a lightning bolt forks; 0.3 gives a few side branches at depth 8"),
+        "ifs_points": (20000, "every IFS point becomes a one-point spline of a curve object; 100 000 of "
+                              "them take Blender seconds to build and draw"),
+    },
+}
+
+# Limits of Blender that are narrower than the library's hard range: (min, max, reason).
+def _largest_levels():
+    from .mesh_limits import too_large
+    return max(n for n in range(1, 16) if too_large(2 ** n + 1, 2 ** n + 1) is None)
+
+
+_MESH = ("a Blender mesh array holds at most 2 GiB (core/mesh_limits.py): levels 13 (8193^2 vertices, "
+         "2^28 face corners) overflows it, so Blender does not offer it; the CLI makes such terrains as files. "
+         "Width x height is checked the same way before any work")
+_INT32 = "Blender's IntProperty is a signed 32-bit integer"
+BLENDER_LIMITS = {
+    "terrain": {
+        "levels": (1, _largest_levels(), _MESH),
+        "seed": (0, 2**31 - 1, _INT32),
+    },
+}
+# Library fields that are not Blender properties, and why.
+NOT_PROPERTIES = {
+    "terrain": {"threads": "set from the add-on preferences (Threads) for every operator"},
+}
+# How Blender shows a field (subtype, unit, precision): presentation only.
+_BY_UNIT = {"scene units": {"subtype": "DISTANCE", "unit": "LENGTH"},
+            "radians": {"subtype": "ANGLE", "unit": "ROTATION"}}
+_PRECISION = {"hurst": 3, "center_x": 6, "center_y": 6}
+# Settings whose change changes the vertex count (rebuild, not rewrite).
+_GEOMETRY = {"method", "levels", "width", "height"}
+SNAPSHOT = Path(__file__).resolve().parent / "params.json"
 
 # Enum items: (identifier, label, tooltip, C value).
-METHODS = (
-    ("MIDPOINT", "Midpoint", "Voss midpoint displacement (diamond-square), (2^levels + 1)^2 samples", 0),
-    ("ADDITIONS", "Additions", "Voss/Feder successive random additions, (2^levels + 1)^2 samples", 1),
-    ("FBM", "fBm Noise", "Sum of noise octaves with gain 2^-H (Quilez), any resolution", 2),
-    ("SPECTRAL", "Spectral", "Inverse-FFT spectral synthesis, any resolution, tiles seamlessly", 3),
-    ("INTERPOLATED", "Interpolated", "Saupe's InterpolatedFM: scale shrinks by 1/lacunarity per cycle", 4),
-    ("MANDELBROT", "Mandelbrot", "The Mandelbrot set: smooth escape time of z <- z^2 + c, the set a plateau", 5),
-)
-DYADIC_METHODS = {"MIDPOINT", "ADDITIONS"}
-BASES = (
-    ("VALUE", "Value", "Value noise", 0),
-    ("GRADIENT", "Gradient", "Perlin gradient noise", 1),
-    ("SIMPLEX", "Simplex", "Simplex noise", 2),
-    ("CELLULAR_F1", "Cellular F1", "Voronoi distance to the nearest feature point", 3),
-    ("CELLULAR_F2F1", "Cellular F2-F1", "Voronoi F2 - F1: ridges between cells", 4),
-)
-VARIANTS = (
-    ("STANDARD", "Standard", "Plain fBm sum of octaves", 0),
-    ("RIDGED", "Ridged", "Ridged multifractal: sharp crests", 1),
-    ("HYBRID", "Hybrid", "Musgrave's hybrid multifractal: smooth valleys, rough peaks", 2),
-    ("HETERO", "Hetero", "Musgrave's heterogeneous terrain", 3),
-)
-REFERENCE_SCALES = (
-    ("SIGMA", "Sigma", "Displace the refinement by sigma as given", 0),
-    ("MEAN", "Mean", "Scale the refinement by the mean of |reference values|", 1),
-    ("STD", "Std Dev", "Scale the refinement by the standard deviation of the reference values", 2),
-)
 REFERENCE_SOURCES = (
     ("NONE", "None", "No reference points: a free fractal terrain", 0),
     ("OBJECT", "Grid Object", "Heights of a mesh whose vertices form a (2^m + 1)^2 grid", 1),
@@ -75,72 +106,92 @@ class Param:
         return value
 
 
-_NOISE = frozenset({"FBM"})
-_FREE = frozenset({"FBM", "SPECTRAL", "INTERPOLATED", "MANDELBROT"})
-_MANDELBROT = frozenset({"MANDELBROT"})
-_RANDOM_TERRAIN = frozenset({"MIDPOINT", "ADDITIONS", "FBM", "SPECTRAL", "INTERPOLATED"})
-_DYADIC = frozenset(DYADIC_METHODS)
+def _description():
+    """{kind name: [row dicts]} from the loaded library, else from the snapshot beside this file."""
+    from .binding import library
+    from .errors import LibraryNotFoundError
+    try:
+        lib = library()
+    except LibraryNotFoundError:
+        if not SNAPSHOT.is_file():
+            raise
+        tables = json.loads(SNAPSHOT.read_text())
+        return {name[3:-7]: table["fields"] for name, table in tables.items()}  # "ft_terrain_params" -> "terrain"
+    return {kind: [_as_json_row(r) for r in rows] for kind, rows in lib.param_rows.items()}
 
-TERRAIN_PARAMS = (
-    Param("method", "enum", "MIDPOINT", "Method", "How the terrain is synthesised", items=METHODS,
-          field="method", geometry=True),
-    Param("levels", "int", 8, "Levels",
-          "Refinement steps: the grid has 2^levels + 1 vertices per side (8: 257, 10: 1025)",
-          min=1, max=13, soft_max=12, field="levels", methods=_DYADIC, geometry=True),
-    Param("width", "int", 257, "Samples X", "Vertices along X (methods other than midpoint/additions)",
-          min=2, max=8193, field="width", methods=_FREE, geometry=True),
-    Param("height", "int", 257, "Samples Y", "Vertices along Y (methods other than midpoint/additions)",
-          min=2, max=8193, field="height", methods=_FREE, geometry=True),
-    Param("hurst", "float", 0.8, "Hurst H",
-          "Hurst exponent: 0 is rough (fractal dimension 3), 1 is smooth (dimension 2)",
-          min=0.0, max=1.0, subtype="FACTOR", field="hurst", precision=3, methods=_RANDOM_TERRAIN),
-    Param("sigma", "float", 1.0, "Sigma",
-          "Vertical scale: standard deviation of the first displacement, in scene units",
-          min=1e-6, max=1e6, soft_max=100.0, subtype="DISTANCE", unit="LENGTH", field="sigma"),
-    Param("seed", "int", 1, "Seed", "Random seed: the same seed gives the same terrain on every machine",
-          min=0, max=2**31 - 1, field="seed", methods=_RANDOM_TERRAIN),
-    Param("periodic", "bool", False, "Periodic", "Wrap-around neighbours: the terrain tiles seamlessly",
-          field="periodic", methods=_RANDOM_TERRAIN),
-    Param("world_size", "float", 20.0, "World Size", "Extent of the terrain along X in scene units "
-          "(Y follows from the sample spacing)", min=1e-4, max=1e7, soft_max=10000.0,
-          subtype="DISTANCE", unit="LENGTH", field="world_size"),
+
+def _as_json_row(row):
+    """A binding row in the form `fracterra params --json` writes (unbounded sides None)."""
+    def bound(v):
+        return None if abs(v) >= 1.7e308 else v
+    return {**row, "default": row["default_value"], "hard_min": bound(row["hard_min"]),
+            "hard_max": bound(row["hard_max"]), "soft_min": bound(row["soft_min"]),
+            "soft_max": bound(row["soft_max"]), "min_exclusive": bool(row["flags"] & 4),
+            "items": [{"name": n, "label": l, "doc": d, "value": v} for n, l, d, v in row["items"]]}
+
+
+_KIND_OF_TYPE = {"int32": "int", "int64": "int", "uint64": "int", "double": "float", "float": "float",
+                 "bool": "bool", "enum": "enum"}
+
+
+def _param_from_row(row, kind_name, method_items):
+    """The add-on's Param for one library field, with Blender's limits and overrides applied."""
+    name = row["name"]
+    kind = _KIND_OF_TYPE[row["type"]]
+    items = tuple((i["name"], i["label"], i["doc"], i["value"]) for i in row.get("items") or ())
+    default = row["default"]
+    if kind == "enum":
+        default = next(ident for ident, _l, _d, value in items if value == int(default))
+    elif kind == "bool":
+        default = bool(default)
+    elif kind == "int":
+        default = int(default)
+    default = BLENDER_OVERRIDES.get(kind_name, {}).get(name, (default,))[0]
+    lo, hi = row["hard_min"], row["hard_max"]
+    if lo is not None and row["min_exclusive"]:
+        lo += 1e-6 if lo == 0 else abs(lo) * 1e-6  # Blender has no open bound; the library refuses lo itself
+    if name in BLENDER_LIMITS.get(kind_name, {}):
+        lo, hi, _reason = BLENDER_LIMITS[kind_name][name]
+    soft_lo, soft_hi = row["soft_min"], row["soft_max"]
+    if kind == "int":  # IntProperty bounds are 32-bit integers
+        def fit(v):
+            return None if v is None else int(min(max(v, -2**31), 2**31 - 1))
+        lo, hi, soft_lo, soft_hi = fit(lo), fit(hi), fit(soft_lo), fit(soft_hi)
+    methods = None
+    if row["methods"] != 2**64 - 1 and method_items:
+        methods = frozenset(ident for ident, _l, _d, value in method_items if row["methods"] >> value & 1)
+    look = _BY_UNIT.get(row["unit"], {})
+    if kind == "float" and not look and lo == 0 and hi == 1:
+        look = {"subtype": "FACTOR"}
+    description = row["doc"] + (f" ({row['unit']})" if row["unit"] and not look else "")
+    numeric = kind in ("int", "float")
+    return Param(name, kind, default, row["label"], description,
+                 min=lo if numeric else None, max=hi if numeric else None,
+                 soft_min=soft_lo if numeric else None, soft_max=soft_hi if numeric else None,
+                 items=items, field=name, subtype=look.get("subtype", "NONE"), unit=look.get("unit", "NONE"),
+                 precision=_PRECISION.get(name), methods=methods, geometry=name in _GEOMETRY)
+
+
+def library_params(kind_name):
+    """The add-on's Params for every setting of the library's struct `kind_name` ("terrain")."""
+    rows = _description()[kind_name]
+    method = next((r for r in rows if r["name"] == "method"), None)
+    method_items = tuple((i["name"], i["label"], i["doc"], i["value"]) for i in method["items"]) if method else ()
+    skip = NOT_PROPERTIES.get(kind_name, {})
+    return tuple(_param_from_row(r, kind_name, method_items) for r in rows
+                 if r["type"] in _KIND_OF_TYPE and not r["flags"] & 3 and r["count"] == 1 and r["name"] not in skip)
+
+
+_LIBRARY_TERRAIN = library_params("terrain")
+# The methods that make (2^levels + 1)^2 grids: those that use `levels`.
+DYADIC_METHODS = next(p for p in _LIBRARY_TERRAIN if p.name == "levels").methods
+_DYADIC = DYADIC_METHODS
+
+TERRAIN_PARAMS = _LIBRARY_TERRAIN + (
     Param("use_sea_level", "bool", False, "Sea Level", "Flatten everything below the sea level"),
     Param("sea_level", "float", 0.0, "Sea Level Height", "Heights below this become flat sea",
           soft_min=-100.0, soft_max=100.0, subtype="DISTANCE", unit="LENGTH"),
-    # fBm and the interpolated variant.
-    Param("octaves", "int", 8, "Octaves", "Noise octaves summed", min=1, max=30, field="octaves",
-          methods=_NOISE),
-    Param("lacunarity", "float", 2.0, "Lacunarity",
-          "Frequency ratio between octaves (fBm) or scale factor per cycle (interpolated)",
-          min=1.01, max=16.0, soft_max=4.0, field="lacunarity", methods=frozenset({"FBM", "INTERPOLATED"})),
-    Param("gain", "float", 0.0, "Gain", "Amplitude ratio between octaves; 0 uses 2^-H",
-          min=0.0, max=1.0, subtype="FACTOR", field="gain", methods=_NOISE),
-    Param("basis", "enum", "GRADIENT", "Basis", "Noise function of each octave", items=BASES,
-          field="basis", methods=_NOISE),
-    Param("variant", "enum", "STANDARD", "Variant", "How octaves combine", items=VARIANTS,
-          field="variant", methods=_NOISE),
-    Param("frequency", "float", 4.0, "Frequency", "Base frequency in cycles across the width",
-          min=1e-3, max=1e4, soft_max=64.0, field="frequency", methods=_NOISE),
-    Param("offset", "float", 1.0, "Offset", "Offset of the ridged, hybrid and hetero variants",
-          min=-10.0, max=10.0, field="offset", methods=_NOISE),
-    Param("octave_rotation", "float", 0.5, "Octave Rotation", "Domain rotation per octave (hides octave alignment)",
-          min=-math.pi, max=math.pi, subtype="ANGLE", unit="ROTATION", field="rotation", methods=_NOISE),
-    Param("warp", "float", 0.0, "Warp", "Domain-warp strength (0 = off)", min=0.0, max=10.0,
-          field="warp", methods=_NOISE),
-    # The Mandelbrot set (seed 002).
-    Param("center_x", "float", -0.5, "Center X", "Real part of the view's centre in the complex plane",
-          min=-4.0, max=4.0, soft_min=-2.0, soft_max=1.0, field="center_x", precision=6, methods=_MANDELBROT),
-    Param("center_y", "float", 0.0, "Center Y", "Imaginary part of the view's centre", min=-4.0, max=4.0,
-          soft_min=-1.5, soft_max=1.5, field="center_y", precision=6, methods=_MANDELBROT),
-    Param("zoom", "float", 1.0, "Zoom", "The width spans 4 / zoom of the plane; refused beyond double "
-          "precision (about 1e11 at 1025 samples across)", min=1e-3, max=1e15, soft_min=0.5, soft_max=1e6,
-          field="zoom", methods=_MANDELBROT),
-    Param("iterations", "int", 64, "Iterations", "Maximum iterations: points that have not escaped are the "
-          "set, a plateau; fewer make a lower wall where the slopes meet it", min=1, max=2**24,
-          soft_max=4096, field="iterations", methods=_MANDELBROT),
-    Param("supersample", "int", 2, "Supersample", "k x k points averaged per vertex (smooths the boundary; "
-          "k^2 times the work)", min=1, max=8, field="supersample", methods=_MANDELBROT),
-    # Reference points (midpoint and additions).
+    # Where the reference points come from (midpoint and additions).
     Param("reference_source", "enum", "NONE", "Reference", "Coarse heights the terrain must pass through",
           items=REFERENCE_SOURCES, methods=_DYADIC),
     Param("reference_object", "string", "", "Grid Object",
@@ -149,13 +200,10 @@ TERRAIN_PARAMS = (
     Param("reference_image", "string", "", "Image", "Image whose brightness gives the reference heights",
           methods=_DYADIC),
     Param("reference_levels", "int", 4, "Reference Levels",
-          "The image is resampled to 2^m + 1 points per side (at most Levels)", min=1, max=13,
+          "The image is resampled to 2^m + 1 points per side (at most Levels)", min=1, max=12,
           methods=_DYADIC),
     Param("reference_height", "float", 5.0, "Image Height", "Height of white in the image, in scene units",
           soft_min=-1000.0, soft_max=1000.0, subtype="DISTANCE", unit="LENGTH", methods=_DYADIC),
-    Param("reference_scale", "enum", "SIGMA", "Refinement Scale",
-          "Displacement scale of the steps after the reference grid", items=REFERENCE_SCALES,
-          field="reference_scale", methods=_DYADIC),
     # Mesh options.
     Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
     Param("smooth", "bool", True, "Smooth Shading", "Shade faces smooth", geometry=True),
@@ -221,10 +269,10 @@ _FPL = frozenset({"FPL", "FPL3D"})
 _RANDOM = frozenset({"FPL", "FPL3D", "PROFILE", "IFS"})
 
 POLYLINE_PARAMS = (
-    Param("method", "enum", "FPL", "Method", "Which fractal curve", items=POLYLINE_METHODS, field="method"),
+    Param("method", "enum", "FPL3D", "Method", "Which fractal curve", items=POLYLINE_METHODS, field="method"),
     Param("rng", "enum", "UNIFORM", "Generator", "Random generator of the displacements", items=POLYLINE_RNGS,
           field="rng", methods=_FPL),
-    Param("spread", "float", 0.15, "Spread", "Displacement per unit segment length: s (uniform) or sigma "
+    Param("spread", "float", 0.1, "Spread", "Displacement per unit segment length: s (uniform) or sigma "
           "(normal). Below 0.1 lightning-like, 0.2-0.3 horizon-like, 0.3+ Brownian loops; profile: sigma",
           min=0.0, max=10.0, soft_max=1.0, field="spread", methods=frozenset({"FPL", "FPL3D", "PROFILE"})),
     Param("depth", "int", 8, "Depth", "Recursion depth r: each base segment gets up to 2^r segments "
@@ -232,7 +280,7 @@ POLYLINE_PARAMS = (
     Param("min_length", "float", 0.0, "Min Length", "Segments shorter than this are not split (delta)",
           min=0.0, max=1e6, subtype="DISTANCE", unit="LENGTH", field="min_length", methods=_FPL),
     Param("seed", "int", 1, "Seed", "Random seed", min=0, max=2**31 - 1, field="seed", methods=_RANDOM),
-    Param("branch_prob", "float", 0.0, "Branching", "Probability that a midpoint forks a side branch "
+    Param("branch_prob", "float", 0.3, "Branching", "Probability that a midpoint forks a side branch "
           "(scaled by 2^(-level/2)); 0 = a single line", min=0.0, max=1.0, subtype="FACTOR",
           field="branch_prob", methods=_FPL),
     Param("branch_decay", "float", 0.5, "Branch Decay", "Length and radius factor per branch generation",
@@ -245,12 +293,13 @@ POLYLINE_PARAMS = (
           field="ifs_preset", methods=frozenset({"IFS"})),
     Param("ifs_points", "int", 20000, "Points", "Attractor points", min=1, max=10_000_000,
           field="ifs_points", methods=frozenset({"IFS"})),
-    Param("radius", "float", 0.02, "Radius", "Radius at the start of the main line (branches taper)",
+    Param("radius", "float", 0.01, "Radius", "Radius at the start of the main line (branches taper)",
           min=0.0, max=1e4, soft_max=1.0, subtype="DISTANCE", unit="LENGTH", field="radius"),
     Param("base_source", "enum", "POINTS", "Base", "The base polyline the fractal follows", items=BASE_SOURCES),
-    Param("start", "vector", (0.0, 0.0, 0.0), "Start", "First point of the base segment",
+    # A vertical bolt striking the 3D cursor from 10 m above (in the object's frame).
+    Param("start", "vector", (0.0, 0.0, 10.0), "Start", "First point of the base segment",
           subtype="TRANSLATION", unit="LENGTH"),
-    Param("end", "vector", (10.0, 0.0, 0.0), "End", "Last point of the base segment",
+    Param("end", "vector", (0.0, 0.0, 0.0), "End", "Last point of the base segment",
           subtype="TRANSLATION", unit="LENGTH"),
     Param("bevel", "bool", True, "Bevel", "Give the curve thickness: bevel depth 1 times each point's radius"),
 )

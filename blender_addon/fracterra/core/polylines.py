@@ -133,7 +133,7 @@ def generate_polylines(values=None, base=None, plane_normal=None, progress=None,
 
 
 def hurst_of_heightfield(hf, method="AUTO"):
-    """{'hurst', 'dimension', 'stderr_hurst', 'estimator', 'reason', ...} of a heightfield (analysis.h).
+    """{'hurst', 'dimension', 'std_error', 'estimator', 'reason', ...} of a heightfield (analysis.h).
 
     AUTO is the library's recommendation for the grid (the one `fracterra analyze`
     reports); 'estimator' names the method used and 'reason' says why.
@@ -143,7 +143,7 @@ def hurst_of_heightfield(hf, method="AUTO"):
     p = lib.hurst_params_type()
     lib.check(lib.ft_hurst_params_init(byref(p)))
     p.method = HURST_METHODS[method]
-    r = HurstResult()
+    r = HurstResult(struct_size=ctypes.sizeof(HurstResult))
     lib.check(lib.ft_hurst_heightfield(hf.handle, byref(p), byref(r)))
     out = {name: getattr(r, name) for name, _ in HurstResult._fields_}
     out["estimator"] = next(k for k, v in HURST_METHODS.items() if v == r.method).lower()

@@ -8,11 +8,11 @@ from .binding import PovSceneLines, library
 LINE_KINDS = {"LINE": 0, "LIGHTNING": 1, "COASTLINE": 2}
 
 
-def write_scene(path, terrain=None, size_x=1.0, size_y=1.0, vertical_scale=1.0, water_level=None,
+def write_scene(path, terrain=None, world_size_x=1.0, world_size_y=1.0, vertical_scale=1.0, sea_level=None,
                 line_sets=(), camera=None, sun=None):
     """Writes a complete POV-Ray scene to `path` (and `<name>.terrain.png` beside it).
 
-    terrain: a core.Heightfield or None; it spans x 0..size_x, y 0..size_y.
+    terrain: a core.Heightfield or None; it spans x 0..world_size_x, y 0..world_size_y.
     line_sets: (Polylines, kind 'LINE'|'LIGHTNING'|'COASTLINE', radius) in the same frame.
     camera: {'azimuth', 'elevation', 'fov', 'aspect'} in degrees (None: the writer frames it).
     sun: {'azimuth', 'elevation'} in degrees.
@@ -22,9 +22,9 @@ def write_scene(path, terrain=None, size_x=1.0, size_y=1.0, vertical_scale=1.0, 
     lib.check(lib.ft_pov_scene_params_init(byref(p)))
     if terrain is not None:
         p.terrain = terrain.handle
-        p.size_x, p.size_y, p.vertical_scale = size_x, size_y, vertical_scale
-    if water_level is not None:
-        p.has_water, p.water_level = 1, water_level
+        p.world_size_x, p.world_size_y, p.vertical_scale = world_size_x, world_size_y, vertical_scale
+    if sea_level is not None:
+        p.has_sea, p.sea_level = 1, sea_level
     entries = (PovSceneLines * max(1, len(line_sets)))()
     for entry, (lines, kind, radius) in zip(entries, line_sets):
         entry.lines, entry.kind, entry.radius = lines.handle, LINE_KINDS[kind], radius

@@ -51,22 +51,23 @@ typedef struct ft_hurst_params {
                           ///< column (transect-median estimator); default 0 (pooled)
 } ft_hurst_params;
 
-/// The result of a Hurst estimate (caller-allocated).
+/// The result of a Hurst estimate (caller-allocated). Set struct_size to
+/// sizeof(ft_hurst_result) before the call: a library of a later 2.x fills
+/// only what that size holds.
 typedef struct ft_hurst_result {
+  uint32_t struct_size;    ///< set by the caller (ABI 2.0)
   int32_t method;          ///< the FT_HURST_* used
   int32_t transects;       ///< non-zero for a transect median
+  int32_t points;          ///< points in the log-log fit
   double hurst;            ///< H (not clamped: values outside [0, 1] mean the input is not fBm-like)
   double dimension;        ///< D = n + 1 - H, n = 1 for profiles, 2 for heightfields
-  double stderr_hurst;     ///< standard error of H from the fit's residuals (of the median for
+  double std_error;        ///< standard error of H from the fit's residuals (of the median for
                            ///< transects; transects are correlated, so it is a lower bound)
   double band_lo;          ///< first lag (samples) or lowest frequency (cycles per record) fitted
   double band_hi;          ///< last lag or highest frequency fitted
   int32_t band_is_frequency; ///< 1 for the spectral method, 0 for lags
-  int32_t points;          ///< points in the log-log fit
-  /* Added in ABI 1.2, and written only when the params asked for FT_HURST_AUTO
-     (a caller that knows that value was built with these fields): */
-  int32_t auto_reason;     ///< FT_HURST_REASON_*: why FT_HURST_AUTO chose `method`
-  const char* auto_reason_text; ///< the same in words (static storage, never NULL)
+  int32_t auto_reason;     ///< FT_HURST_REASON_*: why FT_HURST_AUTO chose `method` (NONE otherwise)
+  const char* auto_reason_text; ///< the same in words (static storage, never NULL; "" for NONE)
 } ft_hurst_result;
 
 FT_API ft_status ft_hurst_params_init(ft_hurst_params* p);

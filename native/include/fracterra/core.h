@@ -21,10 +21,14 @@ extern "C" {
 /// ABI version: the major number changes when a struct or signature changes
 /// incompatibly; the minor one when functions or trailing struct fields are
 /// added. Bindings refuse a library whose major number differs from theirs.
-#define FT_ABI_VERSION_MAJOR 1
-/// 1.1: ft_terrain_params.world_size. 1.2: the Mandelbrot fields; FT_HURST_AUTO
-/// and its reason in ft_hurst_result.
-#define FT_ABI_VERSION_MINOR 3
+#define FT_ABI_VERSION_MAJOR 2
+/// 2.0: ft_hurst_result starts with struct_size; one name per concept (world_size_x/y,
+/// has_sea/sea_level, octave_rotation, std_error, FT_FRACTALIZE_MIDPOINT); params.h, the
+/// parameter tables. (1.1: ft_terrain_params.world_size; 1.2: the Mandelbrot fields and
+/// FT_HURST_AUTO; ft_terrain_params keeps their layout, so its 1.x sizes are still accepted.)
+/// The shared library's SOVERSION is this major number.
+/// 2.1: windows of a terrain (ft_terrain_extent, ft_terrain_generate_window(_lod)).
+#define FT_ABI_VERSION_MINOR 1
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.
@@ -43,7 +47,7 @@ enum {
 
 /// (FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR of the loaded library.
 FT_API uint32_t ft_abi_version(void);
-/// "major.minor.patch" of the library; static storage.
+/// "major.minor.patch" of the library (the CMake project version); static storage.
 FT_API const char* ft_version_string(void);
 /// The message of the last failed call on this thread: what was wrong and what
 /// is allowed. Valid until the next fracterra call on this thread; never NULL

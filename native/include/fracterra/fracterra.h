@@ -14,5 +14,6 @@
 #include "mesh.h"
 #include "polyline.h"
 #include "povray.h"
+#include "params.h"
 
 #endif

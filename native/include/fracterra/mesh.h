@@ -32,12 +32,12 @@ typedef struct ft_grid_counts {
 /// Counts of a grid of nx x ny vertices; nx, ny in 2..65536. `out` must not be NULL.
 FT_API ft_status ft_grid_counts_get(int32_t nx, int32_t ny, ft_grid_counts* out);
 
-/// Vertex positions of the heightfield as a grid spanning size_x x size_y
-/// (world units, > 0) centred on the origin: x = (col / (nx - 1) - 0.5) * size_x,
-/// y = (row / (ny - 1) - 0.5) * size_y, z = max(sample, z_floor) (pass -INFINITY
+/// Vertex positions of the heightfield as a grid spanning world_size_x x world_size_y
+/// (world units, > 0) centred on the origin: x = (col / (nx - 1) - 0.5) * world_size_x,
+/// y = (row / (ny - 1) - 0.5) * world_size_y, z = max(sample, z_floor) (pass -INFINITY
 /// for no floor, e.g. a sea level otherwise). `xyz` holds `count` floats, at
 /// least 3 * width * height; written as x, y, z triples in vertex order.
-FT_API ft_status ft_grid_vertices(const ft_heightfield* hf, double size_x, double size_y,
+FT_API ft_status ft_grid_vertices(const ft_heightfield* hf, double world_size_x, double world_size_y,
                                   double z_floor, float* xyz, size_t count);
 
 /// The same grid's z values only (one per vertex): z = max(sample, z_floor),

@@ -101,7 +101,7 @@ typedef struct ft_polyline_stats {
   double mass_dimension;       ///< 1 / (1 - log2(M_r / M_{r-1})), M_{r-1} the length through every
                                ///< second vertex (eq. 4g with N ratio 2, as eq. 6)
   double box_dimension;        ///< box-counting D (slope of log N against log 1/eps)
-  double box_std_error;        ///< standard error of that slope
+  double box_dimension_std_error;        ///< standard error of that slope
   double box_min_size;         ///< smallest box side used
   double box_max_size;         ///< largest box side used
   int32_t box_sizes;           ///< number of box sizes in the fit

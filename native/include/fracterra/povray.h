@@ -33,11 +33,11 @@ typedef struct ft_pov_scene_lines {
 typedef struct ft_pov_scene_params {
   uint32_t struct_size;             ///< sizeof(ft_pov_scene_params)
   const ft_heightfield* terrain;    ///< may be NULL (polylines only); not owned
-  double size_x;                    ///< terrain extent across columns (world x), > 0; default 1
-  double size_y;                    ///< across rows (world y), > 0; default 1
+  double world_size_x;                    ///< terrain extent across columns (world x), > 0; default 1
+  double world_size_y;                    ///< across rows (world y), > 0; default 1
   double vertical_scale;            ///< heights = samples * vertical_scale, > 0; default 1
-  int32_t has_water;                ///< 1: a sea plane at water_level; default 0
-  double water_level;               ///< world z of the sea; default 0
+  int32_t has_sea;                ///< 1: a sea plane at sea_level; default 0
+  double sea_level;               ///< world z of the sea; default 0
   const ft_pov_scene_lines* lines;  ///< line_set_count entries; may be NULL when the count is 0
   int32_t line_set_count;           ///< 0..1024; default 0
   double camera_azimuth_deg;        ///< from the content to the camera, 0 = +y, 90 = +x; -360..360; default 200
@@ -63,10 +63,10 @@ FT_API ft_status ft_pov_write_scene(const ft_pov_scene_params* p, const char* po
 /// to 0..65535, real range in tEXt) and, when `inc_path` is not NULL, an
 /// include file declaring `name` (a POV-Ray identifier with a capital
 /// letter, e.g. "Terrain") as the smooth height_field in real units:
-/// columns span x 0..size_x, rows z 0..size_y, heights y = samples *
+/// columns span x 0..world_size_x, rows z 0..world_size_y, heights y = samples *
 /// vertical_scale. `z_min`/`z_max` (may be NULL) receive the height range.
 FT_API ft_status ft_pov_write_heightfield(const ft_heightfield* hf, const char* png_path, const char* inc_path,
-                                         const char* name, double size_x, double size_y,
+                                         const char* name, double world_size_x, double world_size_y,
                                          double vertical_scale, double* z_min, double* z_max);
 
 typedef struct ft_pov_sweep_params {

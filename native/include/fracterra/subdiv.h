@@ -85,7 +85,7 @@ enum {
 
 /// Displacement modes (ft_fractalize_params.mode).
 enum {
-  FT_FRACTALIZE_VOSS = 0,      ///< midpoint displacement: only the vertices new at level k move
+  FT_FRACTALIZE_MIDPOINT = 0,      ///< midpoint displacement: only the vertices new at level k move
   FT_FRACTALIZE_ADDITIONS = 1  ///< Feder's successive random additions: every vertex moves
 };
 
@@ -101,7 +101,7 @@ typedef struct ft_fractalize_params {
                              ///< default 0.1
   uint64_t seed;             ///< any 64-bit value; default 1
   int32_t scheme;            ///< FT_SCHEME_*; default FT_SCHEME_CATMARK
-  int32_t mode;              ///< FT_FRACTALIZE_*; default FT_FRACTALIZE_VOSS
+  int32_t mode;              ///< FT_FRACTALIZE_*; default FT_FRACTALIZE_MIDPOINT
   int32_t fix_boundary;      ///< non-zero: vertices on a boundary (open edge) never move; default 0
   int32_t scale_by_edge_length; ///< non-zero: multiply by the base mesh's mean edge length at
                              ///< each vertex, interpolated over the surface; default 0

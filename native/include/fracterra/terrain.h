@@ -46,7 +46,10 @@ enum {
 };
 
 /// Parameters of ft_terrain_generate. Fill with ft_terrain_params_init, then
-/// change what you need. Fields a method does not use are ignored.
+/// change what you need. Fields a method does not use are ignored. Every
+/// field's default, range and documentation is also given at run time by
+/// ft_params_field(FT_PARAMS_TERRAIN, ...) (params.h): that table is the
+/// definition; the comments here repeat it for readers.
 typedef struct ft_terrain_params {
   uint32_t struct_size;      ///< sizeof(ft_terrain_params); set by _init
   int32_t method;            ///< FT_TERRAIN_*; default FT_TERRAIN_MIDPOINT
@@ -76,7 +79,7 @@ typedef struct ft_terrain_params {
   int32_t variant;           ///< FT_FBM_*; default FT_FBM_STANDARD
   double frequency;          ///< base-octave lattice cells across the width, > 0; default 4
   double offset;             ///< ridged/hybrid/hetero offset; default 1
-  double rotation;           ///< domain rotation per octave in radians (not with periodic); default 0.5
+  double octave_rotation;    ///< domain rotation per octave in radians (not with periodic); default 0.5
   double warp;               ///< domain-warp displacement in base cells, 0 (off)..64; default 0
   /* Progress and cancellation; both may be NULL. */
   ft_progress_fn progress;

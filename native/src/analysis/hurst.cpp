@@ -77,14 +77,14 @@ void finish_estimate(HurstEstimate& e) {
   switch (e.method) {
     case HurstMethod::kVariogram:
     case HurstMethod::kVariogramAligned:  // 0.5 E[dX^2] ~ tau^(2H)
-      e.hurst = e.fit.slope / 2, e.stderr_hurst = e.fit.slope_stderr / 2;
+      e.hurst = e.fit.slope / 2, e.std_error = e.fit.slope_stderr / 2;
       break;
     case HurstMethod::kMadogram:
     case HurstMethod::kMadogramAligned:  // E|dX| ~ tau^H
-      e.hurst = e.fit.slope, e.stderr_hurst = e.fit.slope_stderr;
+      e.hurst = e.fit.slope, e.std_error = e.fit.slope_stderr;
       break;
     case HurstMethod::kSpectral:  // P ~ f^-(2H + 1)
-      e.hurst = (-e.fit.slope - 1) / 2, e.stderr_hurst = e.fit.slope_stderr / 2;
+      e.hurst = (-e.fit.slope - 1) / 2, e.std_error = e.fit.slope_stderr / 2;
       break;
   }
   e.dimension = e.topological_dim + 1 - e.hurst;

@@ -47,7 +47,7 @@ struct HurstEstimate {
   bool transects = false;
   int topological_dim = 1;        // n: 1 for profiles, 2 for surfaces
   double hurst = 0, dimension = 0;
-  double stderr_hurst = 0;        // standard error of H (of the slope, or of the median)
+  double std_error = 0;        // standard error of H (of the slope, or of the median)
   double band_lo = 0, band_hi = 0;  // lags (samples) or frequencies (cycles per record) fitted
   LogLogFit fit;                  // the fit in natural logs (slope in its own units)
   std::vector<double> x, y;       // the fitted points (lag, statistic) or (frequency, power)

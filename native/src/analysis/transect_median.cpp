@@ -44,7 +44,7 @@ HurstEstimate transect_median(const Heightfield& hf, const HurstOptions& o) {
   mean /= double(m);
   for (auto& p : hs) ss += (p.first - mean) * (p.first - mean);
   // Standard error of a median: sqrt(pi / 2) sd / sqrt(m) for a normal spread.
-  e.stderr_hurst = m > 1 ? std::sqrt(M_PI / 2) * std::sqrt(ss / double(m - 1)) / std::sqrt(double(m)) : 0.0;
+  e.std_error = m > 1 ? std::sqrt(M_PI / 2) * std::sqrt(ss / double(m - 1)) / std::sqrt(double(m)) : 0.0;
   e.transects = true;
   e.transect_count = int(m);
   e.topological_dim = 2;

@@ -46,30 +46,20 @@ ft::HurstOptions to_options(const ft_hurst_params* params, int64_t width, int64_
   return o;
 }
 
-void to_result(const ft::HurstEstimate& e, ft_hurst_result* out) {
-  *out = ft_hurst_result{};
-  out->method = int32_t(e.method);
-  out->transects = e.transects;
-  out->hurst = e.hurst;
-  out->dimension = e.dimension;
-  out->stderr_hurst = e.stderr_hurst;
-  out->band_lo = e.band_lo;
-  out->band_hi = e.band_hi;
-  out->band_is_frequency = !ft::hurst_method_uses_lags(e.method);
-  out->points = e.fit.points;
-}
-
-// Only for FT_HURST_AUTO: older callers' results end before these fields.
 void to_result(const ft::HurstEstimate& e, const std::optional<ft::HurstChoice>& choice, ft_hurst_result* out) {
-  if (!choice) {
-    ft_hurst_result r;
-    to_result(e, &r);
-    std::memcpy(out, &r, offsetof(ft_hurst_result, auto_reason));
-    return;
-  }
-  to_result(e, out);
-  out->auto_reason = int32_t(choice->reason);
-  out->auto_reason_text = choice->why;
+  ft_hurst_result r{};
+  r.method = int32_t(e.method);
+  r.transects = e.transects;
+  r.hurst = e.hurst;
+  r.dimension = e.dimension;
+  r.std_error = e.std_error;
+  r.band_lo = e.band_lo;
+  r.band_hi = e.band_hi;
+  r.band_is_frequency = !ft::hurst_method_uses_lags(e.method);
+  r.points = e.fit.points;
+  r.auto_reason = choice ? int32_t(choice->reason) : FT_HURST_REASON_NONE;
+  r.auto_reason_text = choice ? choice->why : "";
+  ft::capi::write_result(out, r, sizeof(ft_hurst_result), "ft_hurst_result");
 }
 
 ft_clouds_params default_clouds_params() {

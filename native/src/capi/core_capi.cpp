@@ -19,7 +19,7 @@ using ft::capi::guarded;
 extern "C" {
 
 FT_API uint32_t ft_abi_version(void) { return FT_ABI_VERSION; }
-FT_API const char* ft_version_string(void) { return "0.1.0"; }
+FT_API const char* ft_version_string(void) { return FT_VERSION_STRING; }  // from CMake
 FT_API const char* ft_last_error(void) { return ft::capi::g_last_error.c_str(); }
 
 FT_API const char* ft_status_name(ft_status status) {

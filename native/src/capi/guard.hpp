@@ -3,6 +3,7 @@
 // sure no exception crosses into C or Python.
 #pragma once
 
+#include <cstring>
 #include <new>
 #include <string>
 
@@ -32,6 +33,21 @@ ft_status guarded(F&& body) noexcept {
     set_last_error("internal error: unknown exception");
     return FT_ERR_INTERNAL;
   }
+}
+
+// Result structs start with a struct_size that the caller sets: a caller built
+// against this or a later ABI gets every field this library has, one built
+// against an earlier 2.x the fields its smaller struct holds. `first_size` is
+// the struct's size in the ABI that introduced it (2.0).
+template <class T>
+void write_result(T* out, T result, size_t first_size, const char* name) {
+  check_not_null("out", out);
+  if (out->struct_size < first_size)
+    invalid(std::string(name) + ".struct_size is " + std::to_string(out->struct_size) + ", expected at least " +
+            std::to_string(first_size) + " (set it to sizeof(" + name + ") before the call)");
+  const size_t n = out->struct_size < sizeof(T) ? out->struct_size : sizeof(T);
+  result.struct_size = out->struct_size;
+  std::memcpy(static_cast<void*>(out), &result, n);
 }
 
 // Checks an output handle pointer and clears what it points to.

@@ -14,11 +14,11 @@ FT_API ft_status ft_grid_counts_get(int32_t nx, int32_t ny, ft_grid_counts* out)
   });
 }
 
-FT_API ft_status ft_grid_vertices(const ft_heightfield* hf, double size_x, double size_y, double z_floor,
+FT_API ft_status ft_grid_vertices(const ft_heightfield* hf, double world_size_x, double world_size_y, double z_floor,
                                   float* xyz, size_t count) {
   return guarded([&] {
     ft::check_not_null("heightfield", hf);
-    ft::grid_vertices(hf->hf, size_x, size_y, z_floor, xyz, count);
+    ft::grid_vertices(hf->hf, world_size_x, world_size_y, z_floor, xyz, count);
   });
 }
 

@@ -3,6 +3,7 @@
 
 #include "analysis/polyline_stats.hpp"
 #include "capi/guard.hpp"
+#include "polyline/polyline_params.hpp"
 #include "capi/handles.hpp"
 #include "fracterra/fracterra.h"
 #include "polyline/polyline.hpp"
@@ -23,7 +24,7 @@ FT_API ft_status ft_polyline_generate(const ft_polyline_params* p, ft_polylines*
     ft::capi::reset_out(out);
     ft::check_not_null("params", p);
     auto h = std::make_unique<ft_polylines>();
-    h->set = ft::generate_polylines(*p);
+    h->set = ft::generate_polylines(ft::upgraded(ft::polyline_param_table(), *p));
     *out = h.release();
   });
 }
@@ -32,10 +33,8 @@ FT_API ft_status ft_polyline_measure(const ft_polylines* p, ft_polyline_stats* o
   return guarded([&] {
     ft::check_not_null("polylines", p);
     ft::check_not_null("out", out);
-    ft::check_struct_size(out->struct_size, sizeof(ft_polyline_stats), "ft_polyline_stats");
     const ft::PolylineMeasures m = ft::measure_polylines(p->set);
     ft_polyline_stats s{};
-    s.struct_size = sizeof(ft_polyline_stats);
     s.line_count = p->set.line_count();
     s.vertex_count = p->set.vertex_count();
     s.eta = m.main.eta;
@@ -44,11 +43,11 @@ FT_API ft_status ft_polyline_measure(const ft_polylines* p, ft_polyline_stats* o
     s.length = m.total_length;
     s.mass_dimension = m.mass_dimension;
     s.box_dimension = m.box_ok ? m.box.dimension : NAN;
-    s.box_std_error = m.box_ok ? m.box.std_error : NAN;
+    s.box_dimension_std_error = m.box_ok ? m.box.std_error : NAN;
     s.box_min_size = m.box_ok ? m.box.min_size : NAN;
     s.box_max_size = m.box_ok ? m.box.max_size : NAN;
     s.box_sizes = m.box_ok ? int32_t(m.box.sizes.size()) : 0;
-    *out = s;
+    ft::capi::write_result(out, s, sizeof(ft_polyline_stats), "ft_polyline_stats");
   });
 }
 

@@ -32,8 +32,8 @@ FT_API ft_status ft_pov_scene_params_init(ft_pov_scene_params* p) {
     const ft::pov::SceneParams d;
     *p = ft_pov_scene_params{};
     p->struct_size = sizeof(ft_pov_scene_params);
-    p->size_x = d.size_x;
-    p->size_y = d.size_y;
+    p->world_size_x = d.world_size_x;
+    p->world_size_y = d.world_size_y;
     p->vertical_scale = d.vertical_scale;
     p->camera_azimuth_deg = d.camera.azimuth_deg;
     p->camera_elevation_deg = d.camera.elevation_deg;
@@ -54,11 +54,11 @@ FT_API ft_status ft_pov_write_scene(const ft_pov_scene_params* p, const char* po
     if (p->line_set_count > 0) ft::check_not_null("lines", p->lines);
     ft::pov::SceneParams s;
     if (p->terrain) s.terrain = &p->terrain->hf;
-    s.size_x = p->size_x;
-    s.size_y = p->size_y;
+    s.world_size_x = p->world_size_x;
+    s.world_size_y = p->world_size_y;
     s.vertical_scale = p->vertical_scale;
-    s.has_water = p->has_water != 0;
-    s.water_level = p->water_level;
+    s.has_sea = p->has_sea != 0;
+    s.sea_level = p->sea_level;
     for (int32_t i = 0; i < p->line_set_count; ++i) {
       ft::check_not_null("lines[i].lines", p->lines[i].lines);
       s.lines.push_back({&p->lines[i].lines->set, ft::pov::LineKind(p->lines[i].kind), p->lines[i].radius});
@@ -76,7 +76,7 @@ FT_API ft_status ft_pov_write_scene(const ft_pov_scene_params* p, const char* po
 }
 
 FT_API ft_status ft_pov_write_heightfield(const ft_heightfield* hf, const char* png_path, const char* inc_path,
-                                         const char* name, double size_x, double size_y,
+                                         const char* name, double world_size_x, double world_size_y,
                                          double vertical_scale, double* z_min, double* z_max) {
   return guarded([&] {
     ft::check_not_null("heightfield", hf);
@@ -87,8 +87,8 @@ FT_API ft_status ft_pov_write_heightfield(const ft_heightfield* hf, const char* 
       id = ft::pov::identifier(name ? name : "", "name");
       inc = std::make_unique<ft::AtomicFile>(path_arg("inc_path", inc_path));  // checks the folder first
     }
-    ft::pov::validate_terrain(hf->hf, size_x, size_y, vertical_scale);
-    const auto place = ft::pov::write_heightfield_png(hf->hf, png, size_x, size_y, vertical_scale);
+    ft::pov::validate_terrain(hf->hf, world_size_x, world_size_y, vertical_scale);
+    const auto place = ft::pov::write_heightfield_png(hf->hf, png, world_size_x, world_size_y, vertical_scale);
     if (inc) {
       const std::string ref = ft::pov::relative_path(png, ft::pov::folder_of(inc_path));
       inc->write("// fracterra height_field (16-bit PNG, heights in real units)\n#declare " + id + " = " +

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "capi/guard.hpp"
+#include "subdiv/fractalize_params.hpp"
 #include "core/memory.hpp"
 #include "core/mesh.hpp"
 #include "fracterra/fracterra.h"
@@ -100,7 +101,7 @@ FT_API ft_status ft_fractalize(const ft_mesh* mesh, const ft_fractalize_params* 
     ft::check_not_null("mesh", mesh);
     ft::check_not_null("params", p);
     auto h = std::make_unique<ft_mesh>();
-    h->mesh = ft::fractalize(mesh->mesh, *p);
+    h->mesh = ft::fractalize(mesh->mesh, ft::upgraded(ft::fractalize_param_table(), *p));
     *out = h.release();
   });
 }

@@ -1,29 +1,14 @@
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 
 #include "capi/guard.hpp"
 #include "capi/handles.hpp"
 #include "fracterra/fracterra.h"
 #include "terrain/mandelbrot.hpp"
 #include "terrain/terrain.hpp"
+#include "terrain/terrain_params.hpp"
 
 using ft::capi::guarded;
-
-namespace {
-// Parameter structs grow at the end. A caller built against ABI 1.0 passes
-// the struct without `world_size`, one built against 1.1 without the
-// Mandelbrot fields; their fields are laid over today's defaults.
-ft_terrain_params upgraded(const ft_terrain_params& p) {
-  constexpr size_t kAbi10Size = offsetof(ft_terrain_params, world_size);
-  constexpr size_t kAbi11Size = offsetof(ft_terrain_params, center_x);
-  if (p.struct_size != kAbi10Size && p.struct_size != kAbi11Size) return p;
-  ft_terrain_params q = ft::default_terrain_params();
-  std::memcpy(&q, &p, p.struct_size);
-  q.struct_size = sizeof q;
-  return q;
-}
-}  // namespace
 
 extern "C" {
 
@@ -39,7 +24,7 @@ FT_API ft_status ft_terrain_generate(const ft_terrain_params* p, ft_heightfield*
     ft::capi::reset_out(out);
     ft::check_not_null("params", p);
     auto h = std::make_unique<ft_heightfield>();
-    h->hf = ft::generate_terrain(upgraded(*p));
+    h->hf = ft::generate_terrain(ft::upgraded(ft::terrain_param_table(), *p));
     *out = h.release();
   });
 }
@@ -95,7 +80,7 @@ FT_API ft_status ft_profile_params_init(ft_profile_params* p) {
 FT_API ft_status ft_profile_generate(const ft_profile_params* p, float* dst, size_t count) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    ft::generate_profile(*p, dst, count);
+    ft::generate_profile(ft::upgraded(ft::profile_param_table(), *p), dst, count);
   });
 }
 

@@ -1,8 +1,10 @@
 // A float32 heightfield, row-major: sample (x, y) is at y * width + x.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "core/buffer.hpp"
 
@@ -10,6 +12,15 @@ namespace ft {
 
 struct HeightStats {
   double min = 0, max = 0, mean = 0, std = 0;
+};
+
+// Where a heightfield lies on the Earth, when it came from a georeferenced
+// raster: kept so that what is written from it is georeferenced too.
+struct GeoReference {
+  std::string crs_wkt;                // the coordinate system as WKT ("" if none)
+  std::array<double, 6> transform{};  // GDAL's geotransform: pixel -> map coordinates
+  bool has_transform = false;
+  bool empty() const noexcept { return crs_wkt.empty() && !has_transform; }
 };
 
 class Heightfield {
@@ -31,10 +42,13 @@ class Heightfield {
   // Extent along x in scene units that the samples cover (0: unknown).
   double world_size() const noexcept { return world_size_; }
   void set_world_size(double size) noexcept { world_size_ = size; }
+  const GeoReference& georef() const noexcept { return georef_; }
+  void set_georef(GeoReference g) { georef_ = std::move(g); }
 
  private:
   int32_t width_ = 0, height_ = 0;
   double world_size_ = 0.0;
+  GeoReference georef_;
   Buffer<float> samples_;
 };
 

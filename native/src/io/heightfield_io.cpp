@@ -6,8 +6,10 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "io/atomic_file.hpp"
+#include "io/exr.hpp"
 #include "io/npy.hpp"
 #include "io/pgm.hpp"
+#include "io/raw16.hpp"
 
 namespace ft {
 namespace {
@@ -21,8 +23,10 @@ Heightfield from_npy(const NpyArray& a, const std::string& name) {
 }
 
 std::string unsupported(const std::string& path) {
-  return "'" + path + "': unsupported heightfield format (use .png, .pgm or .npy)";
+  return "'" + path + "': unsupported heightfield format (use " + kHeightfieldWriteFormats + ")";
 }
+
+bool is_raw16(const std::string& ext) { return ext == ".raw" || ext == ".r16"; }
 
 }  // namespace
 
@@ -68,9 +72,21 @@ Heightfield image_to_heightfield(const GrayImage& image) {
 
 void write_heightfield(const Heightfield& hf, const std::string& path) {
   const std::string ext = extension_of(path);
+  // Every format but .npy stands for heights only: a NaN would become a
+  // wrong height (16-bit) or a hole no reader expects (float formats).
+  if (ext != ".npy") {
+    const float* z = hf.data();
+    for (size_t i = 0; i < hf.size(); ++i)
+      if (!std::isfinite(z[i]))
+        invalid("the heightfield holds NaN or infinite samples (at x " + std::to_string(i % size_t(hf.width())) +
+                ", y " + std::to_string(i / size_t(hf.width())) + ")");
+  }
   if (ext == ".png") write_png(path, heightfield_to_image(hf));
   else if (ext == ".pgm") write_pgm(path, heightfield_to_image(hf));
   else if (ext == ".npy") write_npy(path, {hf.height(), hf.width()}, hf.data());
+  else if (ext == ".tif" || ext == ".tiff") write_cog(hf, path);
+  else if (ext == ".exr") write_exr(hf, path);
+  else if (is_raw16(ext)) write_raw16(hf, path);
   else invalid(unsupported(path));
 }
 
@@ -78,15 +94,19 @@ Heightfield decode_heightfield(const std::string& bytes, const std::string& exte
   if (extension == ".png") return image_to_heightfield(decode_png(bytes));
   if (extension == ".pgm") return image_to_heightfield(decode_pgm(bytes));
   if (extension == ".npy") return from_npy(decode_npy(bytes), "<memory>");
-  invalid(unsupported(extension));
+  if (extension == ".exr") return decode_exr(bytes);
+  if (is_raw16(extension)) return decode_raw16(bytes, "", "<memory>");
+  return decode_gdal(bytes, extension);
 }
 
-Heightfield read_heightfield(const std::string& path) {
+Heightfield read_heightfield(const std::string& path, NodataPolicy nodata) {
   const std::string ext = extension_of(path);
   if (ext == ".png") return image_to_heightfield(read_png(path));
   if (ext == ".pgm") return image_to_heightfield(read_pgm(path));
   if (ext == ".npy") return from_npy(read_npy(path), path);
-  fail(FT_ERR_FORMAT, unsupported(path));
+  if (ext == ".exr") return read_exr(path);
+  if (is_raw16(ext)) return read_raw16(path);
+  return read_gdal(path, nodata);
 }
 
 }  // namespace ft

@@ -34,11 +34,11 @@ ft_grid_counts grid_counts(int32_t nx, int32_t ny) {
   return c;
 }
 
-void grid_vertices(const Heightfield& hf, double size_x, double size_y, double z_floor, float* xyz,
+void grid_vertices(const Heightfield& hf, double world_size_x, double world_size_y, double z_floor, float* xyz,
                    size_t count) {
   check_not_null("xyz", xyz);
-  check_positive("size_x", size_x);
-  check_positive("size_y", size_y);
+  check_positive("world_size_x", world_size_x);
+  check_positive("world_size_y", world_size_y);
   if (std::isnan(z_floor)) invalid("z_floor must be a number (-INFINITY for none), got NaN");
   const int32_t nx = hf.width(), ny = hf.height();
   const ft_grid_counts c = grid_counts(nx, ny);
@@ -47,11 +47,11 @@ void grid_vertices(const Heightfield& hf, double size_x, double size_y, double z
   const float floor = z_floor < -3.0e38 ? -INFINITY : float(z_floor);
 #pragma omp parallel for schedule(static)
   for (int32_t row = 0; row < ny; ++row) {
-    const float y = float((double(row) / (ny - 1) - 0.5) * size_y);
+    const float y = float((double(row) / (ny - 1) - 0.5) * world_size_y);
     float* dst = xyz + size_t(row) * nx * 3;
     const float* src = h + size_t(row) * nx;
     for (int32_t col = 0; col < nx; ++col) {
-      dst[3 * col] = float((double(col) / (nx - 1) - 0.5) * size_x);
+      dst[3 * col] = float((double(col) / (nx - 1) - 0.5) * world_size_x);
       dst[3 * col + 1] = y;
       dst[3 * col + 2] = std::max(src[col], floor);
     }

@@ -13,7 +13,7 @@ namespace ft {
 
 ft_grid_counts grid_counts(int32_t nx, int32_t ny);
 
-void grid_vertices(const Heightfield& hf, double size_x, double size_y, double z_floor, float* xyz,
+void grid_vertices(const Heightfield& hf, double world_size_x, double world_size_y, double z_floor, float* xyz,
                    size_t count);
 
 void grid_heights(const Heightfield& hf, double z_floor, float* z, size_t stride, size_t count);

@@ -9,24 +9,24 @@
 
 namespace ft::pov {
 
-void validate_terrain(const Heightfield& hf, double size_x, double size_y, double vertical_scale) {
-  check_positive("terrain size_x", size_x);
-  check_positive("terrain size_y", size_y);
+void validate_terrain(const Heightfield& hf, double world_size_x, double world_size_y, double vertical_scale) {
+  check_positive("terrain world_size_x", world_size_x);
+  check_positive("terrain world_size_y", world_size_y);
   check_positive("terrain vertical_scale", vertical_scale);
   if (hf.width() < 2 || hf.height() < 2)
     invalid("a POV-Ray height_field needs at least 2 x 2 samples, got " + std::to_string(hf.width()) +
             " x " + std::to_string(hf.height()));
 }
 
-TerrainPlacement place_terrain(const Heightfield& hf, double size_x, double size_y,
+TerrainPlacement place_terrain(const Heightfield& hf, double world_size_x, double world_size_y,
                                double vertical_scale) {
-  validate_terrain(hf, size_x, size_y, vertical_scale);
+  validate_terrain(hf, world_size_x, world_size_y, vertical_scale);
   const HeightStats s = hf.stats();
   if (!std::isfinite(s.min) || !std::isfinite(s.max))
     invalid("the terrain holds NaN or infinite samples");
   TerrainPlacement p;
-  p.size_x = size_x;
-  p.size_y = size_y;
+  p.world_size_x = world_size_x;
+  p.world_size_y = world_size_y;
   p.vertical_scale = vertical_scale;
   p.z_min = s.min * vertical_scale;
   p.z_max = s.max * vertical_scale;
@@ -36,8 +36,8 @@ TerrainPlacement place_terrain(const Heightfield& hf, double size_x, double size
 }
 
 TerrainPlacement write_heightfield_png(const Heightfield& hf, const std::string& png_path,
-                                       double size_x, double size_y, double vertical_scale) {
-  TerrainPlacement p = place_terrain(hf, size_x, size_y, vertical_scale);
+                                       double world_size_x, double world_size_y, double vertical_scale) {
+  TerrainPlacement p = place_terrain(hf, world_size_x, world_size_y, vertical_scale);
   write_png(png_path, heightfield_to_image(hf));
   return p;
 }
@@ -59,7 +59,7 @@ std::string heightfield_sdl(const std::string& png_ref, const TerrainPlacement& 
   // POV-Ray puts image row 0 at z = 1; fracterra's row 0 is y = 0, so the
   // unit box is mirrored in z before it is scaled to real units.
   s += "  scale <1, 1, -1> translate <0, 0, 1>\n";
-  s += "  scale " + vec({place.size_x, sy, place.size_y}) + "\n";
+  s += "  scale " + vec({place.world_size_x, sy, place.world_size_y}) + "\n";
   s += "  translate " + vec({0, place.z_min, 0}) + "\n";
   s += modifiers;
   s += "}\n";

@@ -10,33 +10,33 @@
 
 namespace ft::pov {
 
-// Where a heightfield sits in the world: columns span x in [0, size_x],
-// rows span y in [0, size_y] (row 0 at y = 0), heights are samples times
+// Where a heightfield sits in the world: columns span x in [0, world_size_x],
+// rows span y in [0, world_size_y] (row 0 at y = 0), heights are samples times
 // vertical_scale.
 struct TerrainPlacement {
-  double size_x = 1.0, size_y = 1.0, vertical_scale = 1.0;
+  double world_size_x = 1.0, world_size_y = 1.0, vertical_scale = 1.0;
   double z_min = 0.0, z_max = 0.0;  // real heights of the darkest and brightest pixel
   int32_t width = 0, height = 0;    // samples
 };
 
-// Checks size_x, size_y, vertical_scale and the grid (at least 2 x 2,
+// Checks world_size_x, world_size_y, vertical_scale and the grid (at least 2 x 2,
 // finite samples); throws FT_ERR_INVALID_ARGUMENT naming what is wrong.
-void validate_terrain(const Heightfield& hf, double size_x, double size_y, double vertical_scale);
+void validate_terrain(const Heightfield& hf, double world_size_x, double world_size_y, double vertical_scale);
 
 // Writes `hf` atomically as the 16-bit PNG of io/heightfield_io (which also
 // records the range in tEXt, so the file is an ordinary fracterra terrain)
 // and returns its placement.
 TerrainPlacement write_heightfield_png(const Heightfield& hf, const std::string& png_path,
-                                       double size_x, double size_y, double vertical_scale);
+                                       double world_size_x, double world_size_y, double vertical_scale);
 
 // The placement of a terrain without writing anything (z range from the data).
-TerrainPlacement place_terrain(const Heightfield& hf, double size_x, double size_y,
+TerrainPlacement place_terrain(const Heightfield& hf, double world_size_x, double world_size_y,
                                double vertical_scale);
 
 // An SDL `height_field { ... }` for the PNG at `png_ref` (a path as the
 // scene should spell it, usually relative), `smooth`, placed in POV axes so
 // that world (x, y, z) lands at POV <x, z, y>. `water_z` (world height) adds
-// `water_level` so POV-Ray skips what the sea hides; NaN for none.
+// `water_level` (POV-Ray's keyword) so POV-Ray skips what the sea hides; NaN for none.
 // `modifiers` (trusted SDL, e.g. a texture) is appended inside the object.
 std::string heightfield_sdl(const std::string& png_ref, const TerrainPlacement& place, double water_z,
                             const std::string& modifiers = "");

@@ -85,8 +85,8 @@ double automatic_line_radius(const SceneLines& l, const Camera& cam, double exte
 }
 
 void validate_scene_params(const SceneParams& p) {
-  if (p.terrain) validate_terrain(*p.terrain, p.size_x, p.size_y, p.vertical_scale);
-  if (p.has_water) check_finite("water_level", p.water_level);
+  if (p.terrain) validate_terrain(*p.terrain, p.world_size_x, p.world_size_y, p.vertical_scale);
+  if (p.has_sea) check_finite("sea_level", p.sea_level);
   validate_camera_options(p.camera);
   check_range("sun_azimuth_deg", p.sun_azimuth_deg, -360, 360);
   check_range("sun_elevation_deg", p.sun_elevation_deg, 1, 90);
@@ -111,20 +111,20 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   const std::string folder = folder_of(pov_path);
   SceneSummary sum;
   Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  const double water = p.has_water ? p.water_level : NAN;
+  const double water = p.has_sea ? p.sea_level : NAN;
 
   // What the camera frames (POV axes): the land above the sea on a 65 x 65
   // lattice of the terrain, and every polyline vertex.
   std::vector<Vec3> frame;
   if (p.terrain) {
-    sum.terrain = place_terrain(*p.terrain, p.size_x, p.size_y, p.vertical_scale);
+    sum.terrain = place_terrain(*p.terrain, p.world_size_x, p.world_size_y, p.vertical_scale);
     const Heightfield& hf = *p.terrain;
     std::vector<Vec3> under;
     for (int j = 0; j <= 64; ++j)
       for (int i = 0; i <= 64; ++i) {
         const int x = int(std::lround(i * (hf.width() - 1) / 64.0)), y = int(std::lround(j * (hf.height() - 1) / 64.0));
-        const Vec3 q{x * p.size_x / (hf.width() - 1), hf.at(x, y) * p.vertical_scale, y * p.size_y / (hf.height() - 1)};
-        (p.has_water && q[1] < water ? under : frame).push_back(q);
+        const Vec3 q{x * p.world_size_x / (hf.width() - 1), hf.at(x, y) * p.vertical_scale, y * p.world_size_y / (hf.height() - 1)};
+        (p.has_sea && q[1] < water ? under : frame).push_back(q);
       }
     if (frame.empty())
       for (Vec3 q : under) frame.push_back({q[0], water, q[2]});  // all under the sea
@@ -132,7 +132,7 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   for (const auto& l : p.lines)
     for (const Vec3& w : l.set->points) {
       Vec3 q = to_pov(w);
-      if (l.kind == LineKind::kCoastline && p.has_water) q[1] = water;
+      if (l.kind == LineKind::kCoastline && p.has_sea) q[1] = water;
       frame.push_back(q);
     }
   if (frame.empty()) invalid("the scene is empty: the polyline sets hold no vertices");
@@ -186,14 +186,14 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
     s += "sky_sphere { pigment { gradient y color_map { [0 rgb <0.80, 0.86, 0.95>] [0.2 rgb <0.45, 0.62, "
          "0.90>] [1 rgb <0.18, 0.34, 0.72>] } } }\n\n";
 
-  if (p.has_water) s += "plane { y, " + number(water) + " texture { FT_Sea_Tex } }\n\n";
+  if (p.has_sea) s += "plane { y, " + number(water) + " texture { FT_Sea_Tex } }\n\n";
 
   if (p.terrain) {
     const std::string image = p.image_path.empty() ? default_image_path(pov_path) : p.image_path;
     quoted(relative_path(image, folder));  // a path SDL cannot hold is refused before the PNG is written
-    sum.terrain = write_heightfield_png(*p.terrain, image, p.size_x, p.size_y, p.vertical_scale);
+    sum.terrain = write_heightfield_png(*p.terrain, image, p.world_size_x, p.world_size_y, p.vertical_scale);
     sum.image_path = image;
-    const double zw = p.has_water ? water : sum.terrain.z_min - 1;
+    const double zw = p.has_sea ? water : sum.terrain.z_min - 1;
     s += "#declare FT_Terrain_Object = ";
     s += heightfield_sdl(relative_path(image, folder), sum.terrain, water);
     s += "object { FT_Terrain_Object\n  FT_Terrain_Texture(" + number(sum.terrain.z_min) + ", " +
@@ -214,7 +214,7 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
     o.radius_scale = l.radius_scale;
     PolylineSet sized;
     const PolylineSet& set = l.radii_in_world_units ? *l.set : (sized = tapered(*l.set, o.default_radius));
-    if (l.kind == LineKind::kCoastline && p.has_water) o.use_z_override = true, o.z_override = water;
+    if (l.kind == LineKind::kCoastline && p.has_sea) o.use_z_override = true, o.z_override = water;
     const char* tex = l.kind == LineKind::kLightning   ? "FT_Lightning_Tex"
                       : l.kind == LineKind::kCoastline ? "FT_Coast_Tex"
                                                        : "FT_Line_Tex";
@@ -251,9 +251,9 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   return sum;
 }
 
-void set_scene_terrain(SceneParams& p, const Heightfield& hf, double size_x, double vertical_scale,
+void set_scene_terrain(SceneParams& p, const Heightfield& hf, double world_size_x, double vertical_scale,
                        double sea_fraction) {
-  check_positive("terrain size_x", size_x);
+  check_positive("terrain world_size_x", world_size_x);
   if (!(vertical_scale >= 0) || !std::isfinite(vertical_scale))
     invalid("vertical_scale must be finite and >= 0 (0 = automatic), got " + format_number(vertical_scale));
   if (!std::isnan(sea_fraction)) check_range("sea_fraction", sea_fraction, 0, 0.999);
@@ -261,19 +261,19 @@ void set_scene_terrain(SceneParams& p, const Heightfield& hf, double size_x, dou
   const HeightStats st = hf.stats();
   if (!std::isfinite(st.min) || !std::isfinite(st.max)) invalid("the terrain holds NaN or infinite samples");
   p.terrain = &hf;
-  p.size_x = size_x;
-  p.size_y = size_x * double(hf.height() - 1) / double(hf.width() - 1);
+  p.world_size_x = world_size_x;
+  p.world_size_y = world_size_x * double(hf.height() - 1) / double(hf.width() - 1);
   p.vertical_scale = vertical_scale > 0 ? vertical_scale
-                     : st.max > st.min  ? 0.2 * size_x / (st.max - st.min)
+                     : st.max > st.min  ? 0.2 * world_size_x / (st.max - st.min)
                                         : 1.0;
-  p.has_water = !std::isnan(sea_fraction);
-  if (p.has_water) {
+  p.has_sea = !std::isnan(sea_fraction);
+  if (p.has_sea) {
     std::vector<float> z(hf.data(), hf.data() + hf.size());
     const size_t k = std::min(z.size() - 1, size_t(sea_fraction * double(z.size())));
     std::nth_element(z.begin(), z.begin() + std::ptrdiff_t(k), z.end());
     // Exactly at a sample the sea would cut that sample's flat neighbourhood
     // in stripes: sit a hair above it.
-    p.water_level = (double(z[k]) + 1e-4 * (st.max - st.min)) * p.vertical_scale;
+    p.sea_level = (double(z[k]) + 1e-4 * (st.max - st.min)) * p.vertical_scale;
   }
 }
 

@@ -36,9 +36,9 @@ struct SceneLines {
 
 struct SceneParams {
   const Heightfield* terrain = nullptr;  // may be null (a polyline scene)
-  double size_x = 1, size_y = 1, vertical_scale = 1;
-  bool has_water = false;
-  double water_level = 0;                // world z of the sea
+  double world_size_x = 1, world_size_y = 1, vertical_scale = 1;
+  bool has_sea = false;
+  double sea_level = 0;                // world z of the sea
   std::vector<SceneLines> lines;
   CameraOptions camera;
   double sun_azimuth_deg = 235, sun_elevation_deg = 35;
@@ -61,10 +61,10 @@ void validate_scene_params(const SceneParams& p);
 // written. Throws ft::Error.
 SceneSummary write_scene(const SceneParams& p, const std::string& pov_path);
 
-// Puts a terrain into `p`: size_x > 0 (size_y follows the grid's aspect),
-// vertical_scale 0 = automatic (relief = 20% of size_x), sea_fraction in
+// Puts a terrain into `p`: world_size_x > 0 (world_size_y follows the grid's aspect),
+// vertical_scale 0 = automatic (relief = 20% of world_size_x), sea_fraction in
 // [0, 1) puts the sea at that quantile of the heights (NaN: no sea).
-void set_scene_terrain(SceneParams& p, const Heightfield& hf, double size_x = 1, double vertical_scale = 0,
+void set_scene_terrain(SceneParams& p, const Heightfield& hf, double world_size_x = 1, double vertical_scale = 0,
                        double sea_fraction = 0.3);
 // `fracterra terrain ... --pov`: the terrain alone, in its recorded world size
 // with heights unscaled (or, without one, with the defaults above).

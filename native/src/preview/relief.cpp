@@ -41,15 +41,15 @@ uint8_t to_byte(float v) { return uint8_t(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0
 }  // namespace
 
 std::vector<uint8_t> shaded_relief(const Heightfield& hf, const ReliefOptions& o) {
-  check_range("sea_level", o.sea_level, 0.0, 1.0);
-  check_range("sun_altitude", o.sun_altitude, 0.0, 90.0);
+  check_range("sea_fraction", o.sea_fraction, 0.0, 1.0);
+  check_range("sun_elevation", o.sun_elevation, 0.0, 90.0);
   check_finite("sun_azimuth", o.sun_azimuth);
   check_range("exaggeration", o.exaggeration, 0.0, 1e6);
   const int w = hf.width(), h = hf.height();
   const HeightStats s = hf.stats();
   if (!std::isfinite(s.min) || !std::isfinite(s.max)) invalid("the heightfield holds NaN or infinite samples");
   const double range = s.max > s.min ? s.max - s.min : 1.0;
-  const double sea = s.min + o.sea_level * range;
+  const double sea = s.min + o.sea_fraction * range;
   // Slope scale: with exaggeration 0 the RMS slope per pixel is set to 0.6,
   // which shades every resolution and H alike; otherwise heights are in
   // units of the terrain's width (width spans 1) times the exaggeration.
@@ -67,7 +67,7 @@ std::vector<uint8_t> shaded_relief(const Heightfield& hf, const ReliefOptions& o
     const double rms = n ? std::sqrt(sum / double(n)) : 0.0;
     k = rms > 0 ? 0.6 / rms : 1.0;
   }
-  const double az = o.sun_azimuth * M_PI / 180.0, alt = o.sun_altitude * M_PI / 180.0;
+  const double az = o.sun_azimuth * M_PI / 180.0, alt = o.sun_elevation * M_PI / 180.0;
   // Light direction in image coordinates (x right, y down, z up).
   const double lx = std::sin(az) * std::cos(alt), ly = -std::cos(az) * std::cos(alt), lz = std::sin(alt);
   std::vector<uint8_t> rgb(size_t(w) * h * 3);

@@ -11,10 +11,10 @@
 namespace ft {
 
 struct ReliefOptions {
-  double sea_level = 0.35;   // fraction of the height range under water (0 = no sea)
+  double sea_fraction = 0.35;   // fraction of the height range under water (0 = no sea)
   double exaggeration = 0;   // vertical exaggeration; 0 picks one from the data
   double sun_azimuth = 315;  // degrees clockwise from north (image up)
-  double sun_altitude = 40;  // degrees above the horizon
+  double sun_elevation = 40;  // degrees above the horizon
 };
 
 // Returns width * height * 3 bytes of RGB, row 0 first.

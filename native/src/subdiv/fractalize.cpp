@@ -16,6 +16,7 @@
 // each level). The key changes when the base topology changes; that is the
 // price of a key without hashing parent chains.
 #include "subdiv/fractalize.hpp"
+#include "subdiv/fractalize_params.hpp"
 
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
@@ -39,15 +40,7 @@ namespace ft {
 using namespace OpenSubdiv;
 
 ft_fractalize_params default_fractalize_params() {
-  ft_fractalize_params p{};
-  p.struct_size = sizeof(ft_fractalize_params);
-  p.levels = 4;
-  p.hurst = 0.8;
-  p.sigma = 0.1;
-  p.seed = 1;
-  p.scheme = FT_SCHEME_CATMARK;
-  p.mode = FT_FRACTALIZE_VOSS;
-  return p;
+  return defaults_of<ft_fractalize_params>(fractalize_param_table());
 }
 
 namespace detail {
@@ -185,7 +178,7 @@ class Fractalizer {
     // edges of the parent level (a face's child is never on a boundary).
     skip_.assign(size_t(nv), 0);
     for (int v = 0; v < parent.GetNumVertices(); ++v)
-      if (p_.mode == FT_FRACTALIZE_VOSS || (p_.fix_boundary && parent.IsVertexBoundary(v)))
+      if (p_.mode == FT_FRACTALIZE_MIDPOINT || (p_.fix_boundary && parent.IsVertexBoundary(v)))
         skip_[size_t(parent.GetVertexChildVertex(v))] = 1;
     if (p_.fix_boundary)
       for (int e = 0; e < parent.GetNumEdges(); ++e)
@@ -253,13 +246,7 @@ class Fractalizer {
 
 Mesh fractalize(const Mesh& mesh, const ft_fractalize_params& p) {
   check_struct_size(p.struct_size, sizeof(ft_fractalize_params), "ft_fractalize_params");
-  check_int_range("levels", p.levels, 1, kMaxSubdivLevels);
-  check_range("hurst", p.hurst, 0.0, 1.0);
-  if (!(p.sigma >= 0.0) || !std::isfinite(p.sigma))
-    invalid("sigma must be a finite number >= 0, got " + format_number(p.sigma));
-  check_int_range("scheme (0 catmark, 1 loop, 2 bilinear)", p.scheme, FT_SCHEME_CATMARK, FT_SCHEME_BILINEAR);
-  check_int_range("mode (0 voss, 1 additions)", p.mode, FT_FRACTALIZE_VOSS, FT_FRACTALIZE_ADDITIONS);
-  resolve_threads(p.threads);
+  check_ranges(fractalize_param_table(), &p);  // each field's range; the mesh and the weights follow
   validate_mesh(mesh);
   if (p.scheme == FT_SCHEME_LOOP) validate_triangles(mesh);
   if (p.weights)

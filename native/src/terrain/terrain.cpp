@@ -12,6 +12,7 @@
 #include "terrain/mandelbrot.hpp"
 #include "terrain/profile.hpp"
 #include "terrain/spectral_synthesis.hpp"
+#include "terrain/terrain_params.hpp"
 #include "terrain/window.hpp"
 
 namespace ft {
@@ -89,7 +90,7 @@ FbmConfig fbm_config(const ft_terrain_params& p) {
   FbmConfig c;
   c.width = p.width, c.height = p.height, c.octaves = p.octaves, c.lacunarity = p.lacunarity;
   c.gain = p.gain, c.hurst = p.hurst, c.basis = p.basis, c.variant = p.variant;
-  c.frequency = p.frequency, c.offset = p.offset, c.rotation = p.rotation, c.warp = p.warp;
+  c.frequency = p.frequency, c.offset = p.offset, c.rotation = p.octave_rotation, c.warp = p.warp;
   c.sigma = p.sigma, c.periodic = p.periodic != 0, c.seed = p.seed, c.threads = p.threads;
   c.progress = Progress(p.progress, p.progress_user);
   return c;
@@ -150,64 +151,38 @@ int dyadic_levels(int64_t size) {
   return m;
 }
 
-ft_terrain_params default_terrain_params() {
-  ft_terrain_params p{};
-  p.struct_size = sizeof(ft_terrain_params);
-  p.method = FT_TERRAIN_MIDPOINT;
-  p.levels = 9;
-  p.width = 513;
-  p.height = 513;
-  p.hurst = 0.8;
-  p.sigma = 1.0;
-  p.seed = 1;
-  p.periodic = 0;
-  p.threads = 0;
-  p.reference = nullptr;
-  p.reference_size = 0;
-  p.reference_scale = FT_REFSCALE_SIGMA;
-  p.octaves = 8;
-  p.lacunarity = 2.0;
-  p.gain = 0.0;
-  p.basis = FT_BASIS_GRADIENT;
-  p.variant = FT_FBM_STANDARD;
-  p.frequency = 4.0;
-  p.offset = 1.0;
-  p.rotation = 0.5;
-  p.warp = 0.0;
-  p.world_size = 10.0;
-  p.center_x = -0.5;
-  p.center_y = 0.0;
-  p.zoom = 1.0;
-  p.iterations = 64;
-  p.supersample = 2;
-  return p;
-}
+ft_terrain_params default_terrain_params() { return defaults_of<ft_terrain_params>(terrain_param_table()); }
 
 namespace {
 
 // The checks of every terrain; `whole` adds the size limits of a terrain
-// held in memory, otherwise those of windows (terrain_window_check).
+// held in memory, otherwise those of windows (which never hold the whole).
 void validate_terrain(const ft_terrain_params& p, bool whole) {
   check_struct_size(p.struct_size, sizeof(ft_terrain_params), "ft_terrain_params");
-  check_int_range("method", p.method, FT_TERRAIN_MIDPOINT, FT_TERRAIN_MANDELBROT);
-  check_range("hurst", p.hurst, 0.0, 1.0);
-  check_positive("sigma", p.sigma);
-  check_positive("world_size", p.world_size);
-  check_int_range("threads", p.threads, 0, 1024);
-  check_int_range("reference_scale", p.reference_scale, FT_REFSCALE_SIGMA, FT_REFSCALE_STD);
+  // The ranges of every field the method uses come from the table; what
+  // follows relates fields to each other. The table's levels and sizes are
+  // those of a whole terrain: a window's larger ones are checked here first.
+  ft_terrain_params q = p;
+  if (!whole) {
+    if (p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS) {
+      check_int_range("levels", p.levels, 1, kMaxWindowLevels);
+      q.levels = std::min(p.levels, kMaxLevels);
+    } else {
+      check_int_range("width", p.width, 2, kMaxWindowSide);
+      check_int_range("height", p.height, 2, kMaxWindowSide);
+      q.width = std::min(p.width, 65536), q.height = std::min(p.height, 65536);
+    }
+  }
+  check_ranges(terrain_param_table(), &q);
+  const int64_t max_side = whole ? 65536 : kMaxWindowSide;
   if (p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS) {
-    check_int_range("levels", p.levels, 1, whole ? kMaxLevels : kMaxWindowLevels);
     const uint64_t side = (uint64_t(1) << p.levels) + 1;
     if (whole)
       check_allocation(checked_bytes(side, side, sizeof(float)),
                        "a terrain of levels " + std::to_string(p.levels) + " (" + std::to_string(side) + " x " +
-                           std::to_string(side) + " samples)" +
-                           (p.levels <= kMaxWindowLevels ? "; windows of it (ft_terrain_generate_window) need not fit" : ""));
+                           std::to_string(side) + " samples); windows of it (ft_terrain_generate_window) need not fit");
     if (p.reference) check_reference(p.reference, p.reference_size, p.levels, p.periodic != 0);
   } else {
-    const int64_t max_side = whole ? 65536 : kMaxWindowSide;
-    check_int_range("width", p.width, 2, max_side);
-    check_int_range("height", p.height, 2, max_side);
     if (whole)
       check_allocation(checked_bytes(uint64_t(p.width), uint64_t(p.height), sizeof(float)),
                        "a " + std::to_string(p.width) + " x " + std::to_string(p.height) + " terrain");
@@ -351,25 +326,11 @@ Heightfield generate_terrain_window(const ft_terrain_params& p, int lod, int64_t
   return hf;
 }
 
-ft_profile_params default_profile_params() {
-  ft_profile_params p{};
-  p.struct_size = sizeof(ft_profile_params);
-  p.levels = 10;
-  p.hurst = 0.8;
-  p.sigma = 1.0;
-  p.seed = 1;
-  p.reference = nullptr;
-  p.reference_size = 0;
-  p.reference_scale = FT_REFSCALE_SIGMA;
-  return p;
-}
+ft_profile_params default_profile_params() { return defaults_of<ft_profile_params>(profile_param_table()); }
 
 void validate_profile_params(const ft_profile_params& p) {
   check_struct_size(p.struct_size, sizeof(ft_profile_params), "ft_profile_params");
-  check_int_range("levels", p.levels, 1, kMaxProfileLevels);
-  check_range("hurst", p.hurst, 0.0, 1.0);
-  check_positive("sigma", p.sigma);
-  check_int_range("reference_scale", p.reference_scale, FT_REFSCALE_SIGMA, FT_REFSCALE_STD);
+  check_ranges(profile_param_table(), &p);
   const double per_sigma = kMaxGaussian * (1 + p.levels);
   if (p.reference) {
     const int m = dyadic_levels(p.reference_size);

@@ -1,0 +1,42 @@
+// The raster seen by the erosion layer: D8 neighbourhoods on a width x height
+// grid of square cells `spacing` world units apart, either bounded (the edge
+// cells are the outlets: water and sediment leave there) or periodic (a
+// torus: every cell has eight neighbours, and one declared sink is the
+// outlet). Heights are in world units too, so slopes are rise over run.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+namespace ft::erosion {
+
+// D8 directions in a fixed order (east, then clockwise in image rows: y grows
+// downwards). Opposite of k is (k + 4) % 8.
+inline constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+inline constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+
+struct D8Grid {
+  int32_t width = 0, height = 0;
+  bool periodic = false;
+  double spacing = 1.0;  // world units between neighbouring samples along x or y
+
+  size_t size() const { return size_t(width) * size_t(height); }
+  double distance(int k) const { return (k & 1) ? spacing * M_SQRT2 : spacing; }
+  bool on_edge(int32_t x, int32_t y) const {
+    return x == 0 || y == 0 || x == width - 1 || y == height - 1;
+  }
+  // Index of neighbour k of (x, y), or -1 outside a bounded grid.
+  int64_t neighbour(int32_t x, int32_t y, int k) const {
+    int32_t nx = x + kDx[k], ny = y + kDy[k];
+    if (periodic) {
+      nx = nx < 0 ? nx + width : (nx >= width ? nx - width : nx);
+      ny = ny < 0 ? ny + height : (ny >= height ? ny - height : ny);
+    } else if (nx < 0 || ny < 0 || nx >= width || ny >= height) {
+      return -1;
+    }
+    return int64_t(ny) * width + nx;
+  }
+};
+
+}  // namespace ft::erosion

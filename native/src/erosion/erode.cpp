@@ -1,0 +1,138 @@
+// The erosion pipeline: validation, fluvial -> hydraulic -> thermal (large
+// scale to small), and the maps.
+#include <algorithm>
+#include <cmath>
+#include <omp.h>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "erosion/erosion.hpp"
+#include "erosion/flow_graph.hpp"
+
+namespace ft::erosion {
+namespace {
+
+void check_rate(const char* name, double v) {
+  if (!(v >= 0.0) || !std::isfinite(v)) invalid(std::string(name) + " must be a finite number >= 0, got " + format_number(v));
+}
+
+Heightfield like(const Heightfield& hf) {
+  Heightfield out(hf.width(), hf.height());
+  out.set_world_size(hf.world_size());
+  return out;
+}
+
+}  // namespace
+
+D8Grid grid_of(const Heightfield& hf, bool periodic) {
+  D8Grid g;
+  g.width = hf.width();
+  g.height = hf.height();
+  g.periodic = periodic;
+  g.spacing = hf.world_size() > 0 ? hf.world_size() / (hf.width() - 1) : 1.0;
+  return g;
+}
+
+void validate(const ErosionConfig& c, const Heightfield& hf) {
+  if (hf.width() < 3 || hf.height() < 3)
+    invalid("erosion needs a terrain of at least 3 x 3 samples, got " + std::to_string(hf.width()) + " x " +
+            std::to_string(hf.height()));
+  for (size_t i = 0; i < hf.size(); ++i)
+    if (!std::isfinite(hf.data()[i]))
+      invalid("terrain height at sample " + std::to_string(i % hf.width()) + ", " + std::to_string(i / hf.width()) +
+              " is " + format_number(hf.data()[i]) + ": erosion needs finite heights");
+  const auto& f = c.fluvial;
+  check_int_range("fluvial.steps", f.steps, 0, kMaxErosionSteps);
+  check_positive("fluvial.dt", f.dt);
+  check_rate("fluvial.k", f.k);
+  check_range("fluvial.m", f.m, 0.0, 2.0);
+  check_rate("fluvial.diffusion", f.diffusion);
+  check_rate("fluvial.uplift", f.uplift);
+  const auto& h = c.hydraulic;
+  check_int_range("hydraulic.iterations", h.iterations, 0, kMaxErosionSteps);
+  check_range("hydraulic.dt", h.dt, 1e-6, 1.0);
+  check_rate("hydraulic.rain", h.rain);
+  check_range("hydraulic.evaporation", h.evaporation, 0.0, 1.0);
+  check_rate("hydraulic.capacity", h.capacity);
+  check_range("hydraulic.dissolve", h.dissolve, 0.0, 1.0);
+  check_range("hydraulic.deposit", h.deposit, 0.0, 1.0);
+  check_range("hydraulic.min_tilt", h.min_tilt, 0.0, 1.0);
+  check_rate("hydraulic.max_erosion", h.max_erosion);
+  const auto& t = c.thermal;
+  check_int_range("thermal.iterations", t.iterations, 0, kMaxErosionSteps);
+  check_range("thermal.talus_degrees", t.talus_degrees, 0.0, 89.0);
+  if (!(t.rate > 0.0 && t.rate <= 1.0)) invalid("thermal.rate must be in (0, 1], got " + format_number(t.rate));
+  resolve_threads(c.threads);
+}
+
+Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* maps, MassBudget* budget) {
+  validate(c, in);
+  const int threads = resolve_threads(c.threads);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  struct Restore {
+    int n;
+    ~Restore() { omp_set_num_threads(n); }
+  } restore{saved};
+
+  const D8Grid g = grid_of(in, c.periodic);
+  Heightfield out = like(in);
+  std::copy(in.data(), in.data() + in.size(), out.data());
+  // Progress: the three processes share the bar by their pass counts.
+  const double total = double(c.fluvial.steps) * 20 + c.hydraulic.iterations + c.thermal.iterations + 1;
+  double done = 0;
+  struct Scaled {
+    const Progress& outer;
+    double start, span;
+    static int call(void* self, double f) {
+      auto* s = static_cast<Scaled*>(self);
+      try {
+        s->outer.report(s->start + s->span * f);
+      } catch (const Error&) {
+        return 1;
+      }
+      return 0;
+    }
+  };
+  auto run = [&](double weight, auto&& body) {
+    Scaled scaled{c.progress, done / total, weight / total};
+    body(Progress(&Scaled::call, &scaled));
+    done += weight;
+  };
+  std::vector<float> water(maps ? in.size() : 0, 0.0f);
+  if (c.fluvial.steps > 0)
+    run(c.fluvial.steps * 20.0, [&](const Progress& p) { fluvial(g, out.data(), c.fluvial, p); });
+  if (c.hydraulic.iterations > 0)
+    run(c.hydraulic.iterations, [&](const Progress& p) {
+      hydraulic(g, out.data(), c.hydraulic, maps ? water.data() : nullptr, budget, p);
+    });
+  if (c.thermal.iterations > 0)
+    run(c.thermal.iterations, [&](const Progress& p) { thermal(g, out.data(), c.thermal, p); });
+  if (maps) {
+    maps->drainage_area = like(in);
+    maps->slope = like(in);
+    maps->curvature = like(in);
+    maps->water_depth = like(in);
+    maps->eroded = like(in);
+    maps->deposited = like(in);
+    std::vector<float> filled(out.data(), out.data() + out.size());
+    FlowGraph graph;
+    const int32_t sink = g.periodic ? periodic_sink(g, filled.data()) : -1;
+    route_filled(g, filled.data(), sink, graph);
+    std::vector<double> area;
+    accumulate_area(g, graph, area);
+    for (size_t i = 0; i < in.size(); ++i) {
+      maps->drainage_area.data()[i] = float(area[i]);
+      maps->water_depth.data()[i] = water[i];
+      const float change = out.data()[i] - in.data()[i];
+      maps->eroded.data()[i] = std::max(0.0f, -change);
+      maps->deposited.data()[i] = std::max(0.0f, change);
+    }
+    slope_curvature(g, out.data(), maps->slope.data(), maps->curvature.data());
+  }
+  c.progress.report(1.0);
+  return out;
+}
+
+}  // namespace ft::erosion

@@ -1,0 +1,99 @@
+// Erosion: fractal terrains become land. Three processes at three scales,
+// run in this order by erode():
+//   fluvial    stream-power incision + hillslope diffusion, implicit and O(n)
+//              per time step (Braun & Willett 2013, "FastScape");
+//   hydraulic  water, suspended sediment, erosion, deposition and
+//              evaporation on the grid (the virtual-pipe model of Mei, Decaudin
+//              & Hu 2007), sediment moved in flux form so mass is conserved;
+//   thermal    material above the talus angle slides to lower neighbours.
+// and the maps artists texture by, in world units. Every pass updates all
+// cells from the previous state (Jacobi order) or runs serially along the
+// stack, so the result is the same on any thread count. Periodic terrains
+// are eroded as a torus and stay seamless.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/heightfield.hpp"
+#include "core/progress.hpp"
+#include "erosion/d8_grid.hpp"
+
+namespace ft::erosion {
+
+inline constexpr int32_t kMaxErosionSteps = 100000;
+
+struct FluvialConfig {
+  int32_t steps = 0;          // time steps; 0 = off
+  double dt = 1000.0;         // years per step
+  double k = 2e-4;            // stream-power erodibility K (1/yr for m = 0.5, areas in world units^2)
+  double m = 0.5;             // area exponent (slope exponent n = 1: the implicit solve is exact)
+  double diffusion = 1e-7;    // hillslope diffusivity (world units^2 / yr); 0 = none (1e-7 km^2/yr = 0.1 m^2/yr)
+  double uplift = 0.0;        // uplift rate (world units / yr) of every non-outlet cell
+};
+
+struct HydraulicConfig {
+  int32_t iterations = 0;     // passes; 0 = off
+  double dt = 0.02;           // seconds per pass
+  double rain = 0.01;         // water depth added per pass (world units)
+  double evaporation = 0.02;  // fraction of the water evaporated per pass, 0..1
+  double capacity = 1.0;      // sediment capacity constant Kc
+  double dissolve = 0.3;      // fraction of the capacity deficit taken from the bed per pass, 0..1
+  double deposit = 0.3;       // fraction of the excess sediment laid down per pass, 0..1
+  double min_tilt = 0.05;     // smallest sin(tilt) in the capacity, so flats still carry
+  double max_erosion = 0.0;   // largest bed lowering per pass and cell (0: spacing / 100)
+};
+
+struct ThermalConfig {
+  int32_t iterations = 0;     // passes; 0 = off
+  double talus_degrees = 33.0;  // angle of repose
+  double rate = 0.5;          // fraction of the excess moved per pass, (0, 1]
+};
+
+struct ErosionConfig {
+  FluvialConfig fluvial;
+  HydraulicConfig hydraulic;
+  ThermalConfig thermal;
+  bool periodic = false;
+  int threads = 0;
+  Progress progress;
+};
+
+// Maps on the terrain's grid, in world units.
+struct ErosionMaps {
+  Heightfield drainage_area;  // upstream area of each cell (world units^2), D8 on the result
+  Heightfield slope;          // |grad z| (rise over run)
+  Heightfield curvature;      // Laplacian of z (1 / world units; > 0 in hollows and channels)
+  Heightfield water_depth;    // water left by the hydraulic pass (0 when it did not run)
+  Heightfield eroded;         // max(0, before - after)
+  Heightfield deposited;      // max(0, after - before)
+};
+
+// Bookkeeping of the material-moving passes, for the conservation checks.
+struct MassBudget {
+  double carried_out = 0.0;   // volume (world units^3) that left at the edges
+};
+
+// Grid of a heightfield: spacing = world_size / (width - 1), or 1 when the
+// world size is unknown.
+D8Grid grid_of(const Heightfield& hf, bool periodic);
+
+// Throws FT_ERR_INVALID_ARGUMENT naming the parameter: negative or NaN
+// rates, counts beyond kMaxErosionSteps, fractions outside their range, a
+// grid smaller than 3 x 3, or non-finite heights.
+void validate(const ErosionConfig& c, const Heightfield& hf);
+
+// The processes one by one, in place. `budget` may be null.
+void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& progress);
+void hillslope_diffusion(const D8Grid& g, float* z, double diffusivity_dt);
+void hydraulic(const D8Grid& g, float* z, const HydraulicConfig& c, float* water_out, MassBudget* budget,
+               const Progress& progress);
+void thermal(const D8Grid& g, float* z, const ThermalConfig& c, const Progress& progress);
+
+// Slope and curvature by central differences (one-sided at bounded edges).
+void slope_curvature(const D8Grid& g, const float* z, float* slope, float* curvature);
+
+// The whole pipeline: returns the eroded terrain; fills `maps` if not null.
+Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* maps, MassBudget* budget = nullptr);
+
+}  // namespace ft::erosion

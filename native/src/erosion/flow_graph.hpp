@@ -1,0 +1,67 @@
+// Single-flow (D8) routing, in the shape of fastscapelib's flow graph:
+// receivers by steepest descent, the stack order of Braun & Willett (2013),
+// drainage area accumulated down the stack, and pit resolution by
+// Priority-Flood+epsilon (Barnes, Lehman & Mulla 2014). Eroders take a
+// FlowGraph and reuse it; the arrays are allocated once and refilled each
+// time step, so a step allocates nothing.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "erosion/d8_grid.hpp"
+
+namespace ft::erosion {
+
+struct FlowGraph {
+  std::vector<int32_t> receiver;   // receiver[i] == i: a base level (outlet or declared sink)
+  std::vector<float> length;       // distance to the receiver (0 at base levels)
+  std::vector<int32_t> stack;      // every cell after its receiver
+  std::vector<int32_t> donor_start, donors;  // donors of i: donors[donor_start[i] .. donor_start[i+1])
+  std::vector<int32_t> work;       // DFS scratch
+  int64_t pits = 0;                // interior cells without a lower neighbour at the last routing
+  // Scratch of fill_pits_locally: visit stamps (one number per search, so
+  // nothing is cleared between searches) and the cells of one depression.
+  std::vector<uint32_t> seen, closed;
+  uint32_t stamp = 0;
+  std::vector<int32_t> region;
+};
+
+// The cell a periodic grid drains to: the lowest sample (the first in row
+// order among equals), so that a torus has one outlet.
+int32_t periodic_sink(const D8Grid& g, const float* z);
+
+// Receivers by steepest descent (ties: the first direction in kDx order).
+// Bounded grids: every edge cell is a base level. Periodic grids: `sink` is.
+// An interior cell with no lower neighbour becomes its own receiver and is
+// counted in graph.pits. Rows in parallel: the result does not depend on the
+// thread count.
+void route_steepest(const D8Grid& g, const float* z, int32_t sink, FlowGraph& graph);
+
+// Donor lists by an O(n) count and the stack by depth-first search from the
+// base levels in index order (Braun & Willett 2013, section 2.2).
+void build_stack(const D8Grid& g, FlowGraph& graph);
+
+// Drainage area in world units^2 (each cell spacing^2, including its own),
+// summed down the stack; exact for areas below 2^53 cells.
+void accumulate_area(const D8Grid& g, const FlowGraph& graph, std::vector<double>& area);
+
+// Raises every depression to the lowest spill level plus one float step per
+// cell (Priority-Flood+epsilon, Barnes et al. 2014, Algorithm 3 with the pit
+// queue), so every cell then has a strictly lower neighbour on a path to an
+// edge (bounded) or to `sink` (periodic). Returns the number of cells raised.
+int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink);
+
+// Fills the depression of every pit of the last routing, one at a time in
+// index order, by a Priority-Flood+epsilon restricted to that depression: a
+// flood from the pit finds the lowest spill cell (one with a lower cell
+// outside the depression, or an outlet), then the depression is raised to
+// drain to it. Cost: the depressions' size, not the grid's (diffusion leaves
+// many small pits each step; a global fill each step would dominate).
+void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph);
+
+// The usual sequence: route; while pits remain, fill them locally and route
+// again (a global fill after a few rounds); then the stack.
+void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph);
+
+}  // namespace ft::erosion

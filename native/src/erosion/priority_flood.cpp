@@ -1,0 +1,175 @@
+// Priority-Flood+epsilon (Barnes, Lehman & Mulla 2014, "Priority-Flood: an
+// optimal depression-filling and watershed-labeling algorithm", Alg. 3):
+// cells are visited from the outlets upwards in order of height; a cell not
+// above the one it was reached from is raised one float step above it and
+// goes through a FIFO (no heap cost inside depressions).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <queue>
+#include <vector>
+
+#include "erosion/flow_graph.hpp"
+
+namespace ft::erosion {
+namespace {
+
+struct Open {
+  float z;
+  int32_t i;
+  // Lowest first; equal heights by index so the order is fixed.
+  bool operator<(const Open& o) const { return z > o.z || (z == o.z && i > o.i); }
+};
+
+}  // namespace
+
+int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink) {
+  const size_t n = g.size();
+  std::vector<uint8_t> closed(n, 0);
+  std::vector<Open> heap_store;
+  heap_store.reserve(2 * size_t(g.width + g.height));
+  std::priority_queue<Open> open(std::less<Open>(), std::move(heap_store));
+  std::deque<int32_t> pit;
+  auto seed = [&](int32_t i) {
+    if (!closed[i]) {
+      closed[i] = 1;
+      open.push({z[i], i});
+    }
+  };
+  if (g.periodic) {
+    seed(sink);
+  } else {
+    for (int32_t x = 0; x < g.width; ++x) {
+      seed(x);
+      seed(int32_t((g.height - 1) * size_t(g.width) + x));
+    }
+    for (int32_t y = 0; y < g.height; ++y) {
+      seed(int32_t(y * size_t(g.width)));
+      seed(int32_t(y * size_t(g.width) + g.width - 1));
+    }
+  }
+  int64_t raised = 0;
+  while (!open.empty() || !pit.empty()) {
+    int32_t c;
+    if (!pit.empty()) {
+      c = pit.front();
+      pit.pop_front();
+    } else {
+      c = open.top().i;
+      open.pop();
+    }
+    const int32_t cx = c % g.width, cy = c / g.width;
+    const float above = std::nextafter(z[c], INFINITY);
+    for (int k = 0; k < 8; ++k) {
+      const int64_t j = g.neighbour(cx, cy, k);
+      if (j < 0 || closed[j]) continue;
+      closed[j] = 1;
+      if (z[j] <= z[c]) {
+        z[j] = above;
+        ++raised;
+        pit.push_back(int32_t(j));
+      } else {
+        open.push({z[j], int32_t(j)});
+      }
+    }
+  }
+  return raised;
+}
+
+void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
+  const size_t n = g.size();
+  if (graph.seen.size() != n) {
+    graph.seen.assign(n, 0);
+    graph.closed.assign(n, 0);
+    graph.stamp = 0;
+  }
+  auto is_outlet = [&](int32_t c) {
+    return g.periodic ? c == sink : g.on_edge(c % g.width, c / g.width);
+  };
+  std::vector<int32_t> pits;
+  for (size_t i = 0; i < n; ++i)
+    if (graph.receiver[i] == int32_t(i) && !is_outlet(int32_t(i))) pits.push_back(int32_t(i));
+  std::priority_queue<Open> open;
+  std::deque<int32_t> pit_queue;
+  for (const int32_t p : pits) {
+    // An earlier fill may have drained this pit already (same depression).
+    bool drained = false;
+    for (int k = 0; k < 8 && !drained; ++k) {
+      const int64_t j = g.neighbour(p % g.width, p / g.width, k);
+      drained = j >= 0 && z[j] < z[p];
+    }
+    if (drained) continue;
+    // Two stamps per pit: stamp - 1 marks "in this region, not closed yet".
+    if (graph.stamp >= UINT32_MAX - 2) {  // about to wrap: start afresh
+      std::fill(graph.seen.begin(), graph.seen.end(), 0);
+      std::fill(graph.closed.begin(), graph.closed.end(), 0);
+      graph.stamp = 0;
+    }
+    graph.stamp += 2;
+    const uint32_t stamp = graph.stamp;
+    // 1. Flood from the pit, lowest first, to the first cell that drains out.
+    graph.region.clear();
+    open = {};
+    open.push({z[p], p});
+    graph.seen[p] = stamp;
+    int32_t spill = -1;
+    while (!open.empty()) {
+      const int32_t c = open.top().i;
+      open.pop();
+      const int32_t cx = c % g.width, cy = c / g.width;
+      bool drains = is_outlet(c);
+      for (int k = 0; k < 8 && !drains; ++k) {
+        const int64_t j = g.neighbour(cx, cy, k);
+        drains = j >= 0 && graph.seen[j] != stamp && z[j] < z[c];
+      }
+      if (drains) {
+        spill = c;
+        break;
+      }
+      graph.region.push_back(c);
+      for (int k = 0; k < 8; ++k) {
+        const int64_t j = g.neighbour(cx, cy, k);
+        if (j < 0 || graph.seen[j] == stamp) continue;
+        graph.seen[j] = stamp;
+        open.push({z[j], int32_t(j)});
+      }
+    }
+    // 2. Priority-Flood+epsilon from the spill cell over the depression only
+    //    (and the cells of a flat at the spill level next to it).
+    const float spill_level = z[spill];
+    open = {};
+    open.push({z[spill], spill});
+    graph.closed[spill] = stamp;
+    for (const int32_t c : graph.region) graph.closed[c] = stamp - 1;  // in the region, not yet closed
+    while (!open.empty() || !pit_queue.empty()) {
+      int32_t c;
+      if (!pit_queue.empty()) {
+        c = pit_queue.front();
+        pit_queue.pop_front();
+      } else {
+        c = open.top().i;
+        open.pop();
+      }
+      const int32_t cx = c % g.width, cy = c / g.width;
+      const float above = std::nextafter(z[c], INFINITY);
+      for (int k = 0; k < 8; ++k) {
+        const int64_t j = g.neighbour(cx, cy, k);
+        if (j < 0 || graph.closed[j] == stamp) continue;
+        // Beyond the depression, only cells on a flat at the spill level
+        // that the raised cells would otherwise cut off (ties).
+        const bool in_region = graph.closed[j] == stamp - 1 && graph.seen[j] == stamp;
+        if (!in_region && (is_outlet(int32_t(j)) || z[j] < spill_level || z[j] > z[c])) continue;
+        graph.closed[j] = stamp;
+        if (z[j] <= z[c]) {
+          z[j] = above;
+          pit_queue.push_back(int32_t(j));
+        } else {
+          open.push({z[j], int32_t(j)});
+        }
+      }
+    }
+  }
+}
+
+}  // namespace ft::erosion

@@ -1,0 +1,10 @@
+// The table of ft_polyline_params (fracterra/params.h).
+#pragma once
+
+#include "core/param_table.hpp"
+
+namespace ft {
+
+const ParamTable& polyline_param_table();
+
+}  // namespace ft

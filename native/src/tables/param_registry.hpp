@@ -1,0 +1,13 @@
+// Every described params struct by its FT_PARAMS_* kind: the one list that
+// the C ABI (ft_params_describe) and the CLI (`fracterra params`) share. A
+// layer of its own because it gathers the tables of every capability.
+#pragma once
+
+#include "core/param_table.hpp"
+
+namespace ft {
+
+// The table of `kind` (FT_PARAMS_*); throws ft::Error for an unknown kind.
+const ParamTable& param_table(int32_t kind);
+
+}  // namespace ft

@@ -1,0 +1,325 @@
+"""The add-on in Blender's real GUI (under Xvfb), installed from its zip, driven
+through the event loop the way a user drives it: every menu the add-on adds is
+opened, every operator of those menus run with its redo panel (Adjust Last
+Operation) drawn, every sidebar panel shown, and the window saved as a
+screenshot after each step (artifacts a person can open: --out).
+
+It also checks what needs a window: undo after Regenerate restores the
+heights (a hash of the vertex data), the coastline's redo changes its level,
+sizes beyond Blender's limit are a report, and a polyline is re-edited in
+place from its sidebar panel. Panel and menu drawing errors only print a
+traceback, so ctest fails on any "Traceback" in the log (FAIL_REGULAR_EXPRESSION).
+
+Run as: xvfb-run blender --factory-startup --window-geometry 0 0 1280 800 \\
+        --python test_gui.py -- --zip fracterra.zip --out shots/
+"""
+
+import argparse
+import os
+import subprocess
+import sys
+import traceback
+import zlib
+
+import bpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import addon_harness  # noqa: E402
+
+FAILURES = []
+DRAWN = {}  # what drew at least once: class or menu function name -> count
+STEP = 0.4  # seconds between steps: Blender redraws in between
+
+
+def check(condition, message):
+    if not condition:
+        FAILURES.append(message)
+        print(f"GUI CHECK FAILED: {message}", flush=True)
+
+
+def options():
+    argv = sys.argv[sys.argv.index("--") + 1:]
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--zip", required=True)
+    parser.add_argument("--out", required=True, help="folder for the screenshots")
+    return parser.parse_args(argv)
+
+
+def view3d():
+    window = bpy.context.window_manager.windows[0]
+    area = next(a for a in window.screen.areas if a.type == "VIEW_3D")
+    region = next(r for r in area.regions if r.type == "WINDOW")
+    return window, area, region
+
+
+def in_view3d(region_type="WINDOW"):
+    window, area, _ = view3d()
+    region = next(r for r in area.regions if r.type == region_type)
+    return bpy.context.temp_override(window=window, area=area, region=region)
+
+
+def count_draws(cls):
+    """Wraps cls.draw to count its calls in DRAWN[cls.__name__] (an explicit
+    signature: Blender passes as many arguments as the function declares)."""
+    original = cls.draw
+
+    def draw(self, context):
+        DRAWN[cls.__name__] = DRAWN.get(cls.__name__, 0) + 1
+        return original(self, context)
+    cls.draw = draw
+
+
+def xdotool(*args):
+    subprocess.run(["xdotool", *args], check=True)
+
+
+def pointer_to(region):
+    """Moves the X pointer over the middle of `region` (Blender's y runs upwards)."""
+    window = bpy.context.window_manager.windows[0]
+    x = region.x + region.width // 2
+    y = window.height - (region.y + region.height // 2)
+    xdotool("mousemove", str(x), str(y))
+
+
+def vertex_hash(obj):
+    import array
+    co = array.array("f", [0.0]) * (3 * len(obj.data.vertices))
+    obj.data.vertices.foreach_get("co", co)
+    return zlib.crc32(co.tobytes())
+
+
+class Shots:
+    def __init__(self, folder):
+        self.folder = folder
+        self.n = 0
+        os.makedirs(folder, exist_ok=True)
+
+    def __call__(self, name):
+        self.n += 1
+        path = os.path.join(self.folder, f"{self.n:02d}-{name}.png")
+        window, area, _ = view3d()
+        with bpy.context.temp_override(window=window, area=area):
+            bpy.ops.screen.screenshot(filepath=path)
+        check(os.path.getsize(path) > 1000, f"screenshot {path} is empty")
+
+
+def instrument():
+    """Counts the draws of every panel, menu entry and redo panel of the add-on."""
+    blender = addon_harness.submodule("blender")
+    for cls in blender.classes:
+        if issubclass(cls, (bpy.types.Panel, bpy.types.Operator, bpy.types.AddonPreferences)) and "draw" in cls.__dict__:
+            count_draws(cls)
+    for menu, draw in blender.MENUS:
+        menu.remove(draw)
+
+        def counted(self, context, draw=draw):
+            DRAWN[draw.__name__] = DRAWN.get(draw.__name__, 0) + 1
+            draw(self, context)
+        menu.append(counted)
+
+
+def open_menu(menu, shot, ups=0):
+    """Opens `menu` over the 3D view as Shift+A would, moves `ups` entries up
+    from the first (menus wrap round: 1 is the last entry, where the add-on
+    appends its own) and saves a screenshot of it."""
+    pointer_to(view3d()[2])
+    yield STEP  # Blender sees the pointer move before the menu opens under it
+    with in_view3d():
+        bpy.ops.wm.call_menu(name=menu)
+    yield 0.1  # before a tooltip opens (it would take the first key)
+    for _ in range(ups):
+        xdotool("key", "Up")
+    yield 0.1  # drawn, but still before the tooltip of the highlighted entry (0.5 s)
+    shot(f"menu-{menu}")
+
+
+def choose_from_menu(menu, ups, shot):
+    """Picks the add-on's entry of `menu` with the keys, as a user can."""
+    yield from open_menu(menu, shot, ups)
+    xdotool("key", "Return")
+    yield 2 * STEP
+
+
+def expand_redo_panel():
+    """Clicks the collapsed Adjust Last Operation panel open, as a user does."""
+    _, area, _ = view3d()
+    hud = next((r for r in area.regions if r.type == "HUD" and r.width > 1), None)
+    check(hud is not None, "no redo panel (Adjust Last Operation) appeared")
+    if hud is not None:
+        window = bpy.context.window_manager.windows[0]
+        xdotool("mousemove", str(hud.x + 20), str(window.height - (hud.y + hud.height - 10)), "click", "1")
+    yield STEP
+
+
+def sidebar_tab(panel):
+    """Clicks down the sidebar's strip of tabs until `panel` (a class name) has
+    drawn: the Fracterra tab is shown."""
+    window = bpy.context.window_manager.windows[0]
+    sidebar = next(r for r in view3d()[1].regions if r.type == "UI")
+    x = sidebar.x + sidebar.width - 8
+    top = window.height - (sidebar.y + sidebar.height)
+    for y in range(top + 20, top + sidebar.height, 25):
+        if DRAWN.get(panel, 0):
+            return
+        xdotool("mousemove", str(x), str(y), "click", "1")
+        yield STEP
+
+
+def run_from_script(idname):
+    """Runs an operator as its menu entry does (invoke, registered for the redo
+    panel, its own undo step). Picking these entries with the keys worked only
+    for the first menu under Xvfb (Return was ignored later), so the menus are
+    opened and shot above, and the operators run from here."""
+    category, name = idname.split(".")
+    with in_view3d():
+        result = getattr(getattr(bpy.ops, category), name)("INVOKE_DEFAULT", True)
+    check(result & {"FINISHED", "RUNNING_MODAL"}, f"{idname}: {result}")
+    yield STEP
+
+
+def scenario(shot):
+    window, area, region = view3d()
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj)
+    area.spaces[0].show_region_ui = True
+    pointer_to(region)
+    xdotool("key", "Escape")  # the splash screen
+    yield STEP
+
+    # Every menu the add-on adds, opened as a user opens it.
+    for menu, entry in (("VIEW3D_MT_mesh_add", "menu_mesh_add"), ("VIEW3D_MT_curve_add", "menu_curve_add"),
+                        ("VIEW3D_MT_object", "menu_object"), ("TOPBAR_MT_file_export", "menu_file_export")):
+        yield from open_menu(menu, shot)
+        check(DRAWN.get(entry, 0) > 0, f"the add-on's entry in {menu} was not drawn")
+        xdotool("key", "Escape")
+        yield STEP
+
+    # Add > Mesh > Fractal Terrain with its redo panel; the sidebar's Fracterra tab.
+    yield from choose_from_menu("VIEW3D_MT_mesh_add", 1, shot)
+    check(bpy.context.active_object is not None and bpy.context.active_object.fracterra_terrain.is_terrain,
+          "Add > Mesh > Fractal Terrain added no terrain")
+    yield from expand_redo_panel()
+    shot("terrain-add-redo-panel")
+    check(DRAWN.get("FRACTERRA_OT_terrain_add", 0) > 0, "the terrain's redo panel was not drawn")
+    yield from sidebar_tab("FRACTERRA_PT_terrain")
+    check(DRAWN.get("FRACTERRA_PT_terrain", 0) > 0, "the Fractal Terrain sidebar panel was not drawn")
+    shot("terrain-sidebar")
+
+    # Undo after Regenerate restores the heights.
+    terrain = bpy.context.active_object
+    name = terrain.name
+    before = vertex_hash(terrain)
+    terrain.fracterra_terrain.seed = 7
+    with in_view3d():
+        bpy.ops.object.fracterra_terrain_regenerate("INVOKE_DEFAULT", True)  # True: its undo step, as a button
+    yield STEP
+    check(vertex_hash(bpy.data.objects[name]) != before, "Regenerate with a new seed left the heights")
+    with in_view3d():
+        bpy.ops.ed.undo()
+    yield STEP
+    terrain = bpy.data.objects[name]  # undo reloads the data: fetch it again
+    check(vertex_hash(terrain) == before, "undo after Regenerate did not restore the heights")
+    check(terrain.fracterra_terrain.seed == 1, "undo after Regenerate did not restore the seed")
+    shot("terrain-after-undo")
+
+    # Measures, then the coastline and its redo.
+    with in_view3d():
+        check(bpy.ops.object.fracterra_measure("INVOKE_DEFAULT", True) == {"FINISHED"}, "Measure failed")
+    yield STEP
+    check(terrain.fracterra_measures.kind == "terrain", "Measure stored nothing")
+    check(DRAWN.get("FRACTERRA_PT_measures", 0) > 0, "the measures panel was not drawn")
+    yield from run_from_script("curve.fracterra_coastline_add")
+    yield from expand_redo_panel()
+    shot("coastline-redo-panel")
+    op = bpy.context.window_manager.operators[-1]
+    check(op.bl_idname == "CURVE_OT_fracterra_coastline_add", f"last operator is {op.bl_idname}")
+    stats = [v.co.z for v in bpy.data.objects[name].data.vertices]
+    level = min(stats) + 0.8 * (max(stats) - min(stats))
+    op.properties.use_quantile = False
+    op.properties.level = level
+    with in_view3d():
+        check(bpy.ops.ed.undo_redo() == {"FINISHED"}, "the coastline's redo did not run")
+    yield STEP
+    coast = bpy.context.active_object
+    zs = [p.co.z for s in coast.data.splines for p in s.points]
+    check(coast.name.endswith("Coastline") and zs and all(abs(z - level) < 1e-3 for z in zs),
+          f"the coastline's redo did not move it to level {level:.3f}")
+    shot("coastline-after-redo")
+
+    # Beyond Blender's limit (levels 13 is not offered; 8193 x 8193 samples): a report,
+    # nothing added, no traceback.
+    count = len(bpy.data.objects)
+    try:
+        with in_view3d():
+            bpy.ops.mesh.fracterra_terrain_add("INVOKE_DEFAULT", method="FBM", width=8193, height=8193)
+        check(False, "an 8193 x 8193 terrain was not refused")
+    except RuntimeError as e:  # a script sees the error report as RuntimeError; the user sees the report
+        check(str(e).startswith("Error: Refused before generating"), f"8193 x 8193: {e}")
+    yield STEP
+    check(len(bpy.data.objects) == count, "a refused terrain left an object")
+    shot("too-large-report")
+
+    # Add > Curve > Fractal Polyline at the 3D cursor, re-edited in place from its panel.
+    bpy.context.scene.cursor.location = (3.0, 0.0, 0.0)
+    yield from run_from_script("curve.fracterra_polyline_add")
+    check(bpy.context.active_object.fracterra_polyline.is_polyline, "Add > Curve > Fractal Polyline added nothing")
+    yield from expand_redo_panel()
+    shot("polyline-redo-panel")
+    check(DRAWN.get("FRACTERRA_OT_polyline_add", 0) > 0, "the polyline's redo panel was not drawn")
+    bolt = bpy.context.active_object
+    bolt_name, points = bolt.name, len(bolt.data.splines[0].points)
+    bolt.fracterra_polyline.depth = 5
+    with in_view3d():
+        bpy.ops.object.fracterra_polyline_regenerate("INVOKE_DEFAULT", True)
+    yield STEP
+    check(bpy.context.active_object.name == bolt_name, "the polyline was not regenerated in place")
+    check(len(bpy.data.objects[bolt_name].data.splines[0].points) == 2 ** 5 + 1 != points,
+          "the polyline's new depth did not apply")
+    yield from sidebar_tab("FRACTERRA_PT_polyline")
+    check(DRAWN.get("FRACTERRA_PT_polyline", 0) > 0, "the Fractal Polyline sidebar panel was not drawn")
+    shot("polyline-sidebar")
+
+    # Object > Fractalize on a cube, and File > Export > POV-Ray (its file browser, closed).
+    with in_view3d():
+        bpy.ops.mesh.primitive_cube_add(location=(-4, 0, 1))
+    yield STEP
+    faces = len(bpy.context.active_object.data.polygons)
+    yield from run_from_script("object.fracterra_fractalize")
+    check(len(bpy.context.active_object.data.polygons) > faces, "Object > Fractalize did not refine the cube")
+    yield from expand_redo_panel()
+    shot("fractalize-redo-panel")
+    yield from run_from_script("export_scene.fracterra_pov")
+    yield 1.0
+    shot("export-pov-file-browser")
+    xdotool("key", "Escape")
+    yield STEP
+    with in_view3d():
+        bpy.ops.preferences.addon_show(module=addon_harness.PACKAGE)  # the preferences window
+    yield 1.0
+    shot("preferences")
+    check(DRAWN.get("FracterraPreferences", 0) > 0, "the add-on's preferences were not drawn")
+
+
+def main():
+    args = options()
+    addon_harness.PACKAGE = addon_harness.install_and_enable(args.zip).__name__
+    instrument()
+    shot = Shots(args.out)
+    steps = scenario(shot)
+
+    def tick():
+        try:
+            return next(steps)
+        except StopIteration:
+            outcome = 1 if FAILURES else 0
+        except Exception:
+            traceback.print_exc()
+            outcome = 1
+        print(f"GUI test drew: {sorted(DRAWN)}", flush=True)
+        print("GUI test " + ("FAILED: " + "; ".join(FAILURES) if outcome else "passed"), flush=True)
+        os._exit(outcome)
+
+    bpy.app.timers.register(tick, first_interval=1.0)
+
+
+main()

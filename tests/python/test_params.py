@@ -1,0 +1,163 @@
+"""The library's parameter tables (fracterra/params.h) against what is built
+from them: the ctypes Structures, the defaults that ft_*_params_init writes,
+and the add-on's parameter list (core/params.py). The library is the
+definition: everything else must agree with it or state why it differs."""
+
+import ctypes
+import math
+
+import pytest
+
+from fracterra.core import binding
+
+
+@pytest.fixture(scope="module")
+def lib(core):
+    return core.library()
+
+
+def test_every_kind_is_described_and_laid_out_as_the_library_says(lib):
+    count = ctypes.c_int32()
+    for kind_name, kind in binding.PARAMS_KINDS.items():
+        name, size, rows = lib.describe(kind)
+        assert name == f"ft_{kind_name}_params"
+        assert rows[0]["name"] == "struct_size" and rows[0]["flags"] & binding.FLAG_STRUCT_SIZE
+        offsets = [r["offset"] for r in rows]
+        assert offsets == sorted(offsets) and len(set(offsets)) == len(offsets)
+        assert rows[-1]["offset"] + rows[-1]["size"] <= size
+        struct = lib.struct_types[kind]
+        assert ctypes.sizeof(struct) == size
+    assert lib.ft_params_describe(len(binding.PARAMS_KINDS), None, None, ctypes.byref(count)) != 0
+    assert "kind" in lib.ft_last_error().decode()
+
+
+def test_init_writes_the_tables_defaults(lib):
+    for kind_name, kind in binding.PARAMS_KINDS.items():
+        p = lib.struct_types[kind]()
+        lib.check(getattr(lib, f"ft_{kind_name}_params_init")(ctypes.byref(p)))
+        for row in lib.param_rows[kind_name]:
+            if row["type"] in ("pointer", "callback", "string"):
+                continue
+            value = getattr(p, row["name"])
+            values = list(value) if row["count"] > 1 else [value]
+            for v in values:
+                assert v == pytest.approx(row["default_value"], rel=1e-7), row["name"]
+
+
+def test_a_value_outside_a_hard_range_is_refused_with_the_range(core, lib):
+    for row in lib.param_rows["terrain"]:
+        if row["type"] != "double" or row["hard_max"] > 1e300 or row["methods"] != 2**64 - 1:
+            continue
+        with pytest.raises(core.InvalidArgumentError, match=row["name"]):
+            core.generate_terrain(levels=3, **{row["name"]: row["hard_max"] * 2 + 1})
+
+
+def _addon_params(core, kind_name):
+    lists = {"terrain": core.params.TERRAIN_PARAMS, "polyline": core.params.POLYLINE_PARAMS}
+    return {p.field: p for p in lists.get(kind_name, ()) if p.field}
+
+
+def test_addon_defaults_are_the_librarys_or_a_stated_override(core, lib):
+    for kind_name in binding.PARAMS_KINDS:
+        addon = _addon_params(core, kind_name)
+        overrides = core.params.BLENDER_OVERRIDES.get(kind_name, {})
+        for row in lib.param_rows[kind_name]:
+            p = addon.get(row["name"])
+            if p is None:
+                continue
+            if row["name"] in overrides:
+                default, reason = overrides[row["name"]]
+                assert p.default == default and len(reason) > 20, row["name"]
+            elif row["type"] == "enum":
+                assert p.c_value(p.default) == row["default_value"], row["name"]
+            else:
+                assert p.default == pytest.approx(row["default_value"]), row["name"]
+
+
+def test_addon_enums_are_the_librarys(core, lib):
+    for kind_name in binding.PARAMS_KINDS:
+        addon = _addon_params(core, kind_name)
+        for row in lib.param_rows[kind_name]:
+            if row["type"] == "enum" and row["name"] in addon:
+                ours = [(ident, value) for ident, _l, _t, value in addon[row["name"]].items]
+                assert ours == [(ident, value) for ident, _l, _t, value in row["items"]], row["name"]
+
+
+def test_addon_ranges_lie_within_the_librarys(core, lib):
+    """Blender may narrow a hard range (a mesh it can hold), never widen it."""
+    for kind_name in binding.PARAMS_KINDS:
+        addon = _addon_params(core, kind_name)
+        for row in lib.param_rows[kind_name]:
+            p = addon.get(row["name"])
+            if p is None or row["type"] in ("enum", "bool", "uint64"):
+                continue
+            if p.min is not None:
+                assert p.min >= row["hard_min"], row["name"]
+            if p.max is not None:
+                assert p.max <= row["hard_max"], row["name"]
+
+
+def _cli():
+    import os
+    from pathlib import Path
+    path = os.environ.get("FRACTERRA_CLI") or str(Path(__file__).resolve().parents[2] / "build/native/fracterra")
+    if not Path(path).is_file():
+        pytest.skip("the fracterra CLI is not built (ctest sets FRACTERRA_CLI)")
+    return path
+
+
+def _run(*args):
+    import subprocess
+    return subprocess.run([_cli(), *args], check=True, capture_output=True, text=True).stdout
+
+
+def test_cli_params_json_is_the_librarys_table(lib):
+    import json
+    tables = json.loads(_run("params", "--json"))
+    for kind_name, kind in binding.PARAMS_KINDS.items():
+        name, size, rows = lib.describe(kind)
+        cli = tables[name]
+        assert cli["kind"] == kind and cli["size"] == size
+        assert [f["name"] for f in cli["fields"]] == [r["name"] for r in rows]
+        for f, r in zip(cli["fields"], rows):
+            for key in ("offset", "size", "default", "hard_min", "hard_max", "soft_min", "soft_max"):
+                want = r["default_value"] if key == "default" else r[key]
+                got = f[key]
+                assert (got is None and abs(want) >= 1.7e308) or got == pytest.approx(want), (r["name"], key)
+            assert [i["value"] for i in f.get("items", [])] == [v for *_x, v in r["items"]]
+
+
+def test_cli_terrain_help_has_every_setting_with_the_librarys_default(lib):
+    import re
+    text = _run("terrain", "--help")
+    # The terrain command offers width/height as --size WxH and center_x/center_y as --center X,Y.
+    own_form = {"width": "--size", "height": "--size", "center_x": "--center", "center_y": "--center"}
+    for row in lib.param_rows["terrain"]:
+        if row["flags"] & (binding.FLAG_STRUCT_SIZE | binding.FLAG_DATA) or row["type"] in ("pointer", "callback"):
+            continue
+        flag = "--" + row["name"].replace("_", "-")
+        if row["name"] in own_form:
+            assert own_form[row["name"]] in text
+            continue
+        m = re.search(re.escape(flag) + r"(?: (\S+))?\s", text)
+        assert m, flag
+        if row["type"] == "bool":
+            continue
+        default = m.group(1).rsplit("=", 1)[1]
+        if row["type"] == "enum":
+            ident = next(n for n, _l, _d, v in row["items"] if v == row["default_value"])
+            assert default == ident.lower().replace("_", "-"), flag
+        else:
+            assert float(default) == pytest.approx(row["default_value"]), flag
+
+
+def test_soversion_follows_the_abi_major(lib):
+    import re
+    import shutil
+    import subprocess
+    if not shutil.which("readelf"):
+        pytest.skip("readelf (binutils) is not installed")
+    dynamic = subprocess.run(["readelf", "-d", str(lib.path)], check=True, capture_output=True, text=True).stdout
+    soname = re.search(r"Library soname: \[(.*?)\]", dynamic).group(1)
+    assert soname == f"libfracterra.so.{lib.abi_major}"
+    assert lib.abi_major == binding.ABI_MAJOR == 2
