@@ -35,7 +35,7 @@ FT_API ft_status ft_terrain_extent(const ft_terrain_params* p, int32_t lod, int6
     ft::check_not_null("width", width);
     ft::check_not_null("height", height);
     *width = *height = 0;
-    ft::terrain_extent(upgraded(*p), lod, width, height);
+    ft::terrain_extent(ft::upgraded(ft::terrain_param_table(), *p), lod, width, height);
   });
 }
 
@@ -45,7 +45,7 @@ FT_API ft_status ft_terrain_generate_window_lod(const ft_terrain_params* p, int3
     ft::capi::reset_out(out);
     ft::check_not_null("params", p);
     auto h = std::make_unique<ft_heightfield>();
-    h->hf = ft::generate_terrain_window(upgraded(*p), lod, x0, y0, width, height);
+    h->hf = ft::generate_terrain_window(ft::upgraded(ft::terrain_param_table(), *p), lod, x0, y0, width, height);
     *out = h.release();
   });
 }
