@@ -3,8 +3,9 @@
     blender -b --factory-startup --python examples/20_blender_scene.py -- --out demo-out/blender
 
 Builds a terrain with the fracterra add-on (installed, or straight from this
-source tree with the library from build/native), gives it a height-graded
-material, a sea plane, a sun and a camera, adds a branching fractal
+source tree with the library from build/native), gives it a
+material by height and slope (the add-on's point attributes), a sea plane, a
+sun, a sky graded from zenith to haze and a camera, adds a branching fractal
 lightning bolt and a river-like fractal polyline over it, saves scene.blend,
 renders preview.png with Cycles (small and few samples: seconds on a CPU) and
 exports the POV-Ray scene (scene.pov; --pov-render renders it with povray).
@@ -77,15 +78,15 @@ def enable_addon(library):
 
 
 def terrain_material():
-    """Green lowlands, brown slopes, white tops: colour by object-space height."""
+    """Green lowlands, brown slopes, white tops, bare rock where it is steep: by the
+    terrain's own fracterra_height and fracterra_slope attributes (0..1), so it
+    fits a terrain of any size and height."""
     mat = bpy.data.materials.new("Fractal Terrain")
     mat.use_nodes = True
     nodes, links = mat.node_tree.nodes, mat.node_tree.links
     bsdf = nodes["Principled BSDF"]
-    coords = nodes.new("ShaderNodeTexCoord")
-    xyz = nodes.new("ShaderNodeSeparateXYZ")
-    span = nodes.new("ShaderNodeMapRange")
-    span.name = "Height Range"
+    height, slope = nodes.new("ShaderNodeAttribute"), nodes.new("ShaderNodeAttribute")
+    height.attribute_name, slope.attribute_name = "fracterra_height", "fracterra_slope"
     ramp = nodes.new("ShaderNodeValToRGB")
     stops = ((0.0, (0.10, 0.22, 0.06, 1)), (0.45, (0.33, 0.27, 0.16, 1)), (0.8, (0.45, 0.42, 0.40, 1)),
              (0.92, (0.95, 0.95, 0.97, 1)))
@@ -94,12 +95,38 @@ def terrain_material():
     for pos, color in stops[2:]:
         e = ramp.color_ramp.elements.new(pos)
         e.color = color
-    links.new(coords.outputs["Object"], xyz.inputs["Vector"])
-    links.new(xyz.outputs["Z"], span.inputs["Value"])
-    links.new(span.outputs["Result"], ramp.inputs["Fac"])
-    links.new(ramp.outputs["Color"], bsdf.inputs["Base Color"])
+    steep = nodes.new("ShaderNodeMapRange")  # 0 below ~25 degrees, 1 above ~40
+    steep.inputs["From Min"].default_value, steep.inputs["From Max"].default_value = 0.28, 0.45
+    rock = nodes.new("ShaderNodeMixRGB")
+    rock.inputs["Color2"].default_value = (0.23, 0.21, 0.19, 1)
+    links.new(height.outputs["Fac"], ramp.inputs["Fac"])
+    links.new(slope.outputs["Fac"], steep.inputs["Value"])
+    links.new(steep.outputs["Result"], rock.inputs["Fac"])
+    links.new(ramp.outputs["Color"], rock.inputs["Color1"])
+    links.new(rock.outputs["Color"], bsdf.inputs["Base Color"])
     bsdf.inputs["Roughness"].default_value = 0.9
     return mat
+
+
+def sky(world):
+    """Seen by the camera, a sky that pales from blue at the top of the frame to
+    haze at the bottom (the camera looks down on the terrain, so a physical sky
+    would show its black below-horizon half); as light, a uniform blue sky
+    beside the sun lamp. Much less flat than one uniform background."""
+    world.use_nodes = True
+    nodes, links = world.node_tree.nodes, world.node_tree.links
+    coords, xyz, ramp = nodes.new("ShaderNodeTexCoord"), nodes.new("ShaderNodeSeparateXYZ"), nodes.new("ShaderNodeValToRGB")
+    ramp.color_ramp.elements[0].color = (0.78, 0.84, 0.92, 1)  # haze
+    ramp.color_ramp.elements[1].color = (0.22, 0.42, 0.78, 1)  # zenith blue
+    path, mix = nodes.new("ShaderNodeLightPath"), nodes.new("ShaderNodeMixRGB")
+    mix.inputs["Color1"].default_value = (0.40, 0.55, 0.80, 1)  # what the terrain is lit by
+    links.new(coords.outputs["Window"], xyz.inputs["Vector"])
+    links.new(xyz.outputs["Y"], ramp.inputs["Fac"])
+    links.new(path.outputs["Is Camera Ray"], mix.inputs["Fac"])
+    links.new(ramp.outputs["Color"], mix.inputs["Color2"])
+    background = nodes["Background"]
+    background.inputs["Strength"].default_value = 1.0
+    links.new(mix.outputs["Color"], background.inputs["Color"])
 
 
 def water(size, level):
@@ -166,8 +193,6 @@ def main():
     print(f"20_blender_scene: terrain {len(terrain.data.vertices)} vertices in {time.perf_counter() - t0:.2f} s")
     mat = terrain_material()
     zs = [v.co.z for v in terrain.data.vertices]
-    span = mat.node_tree.nodes["Height Range"]
-    span.inputs["From Min"].default_value, span.inputs["From Max"].default_value = min(zs), max(zs)
     terrain.data.materials.append(mat)
     if args.sea_level is not None:
         water(args.size, args.sea_level)
@@ -182,14 +207,14 @@ def main():
     scene = bpy.context.scene
     bpy.ops.object.light_add(type="SUN", rotation=(math.radians(50), 0, math.radians(35)))
     bpy.context.active_object.data.energy = 4.0
+    bpy.context.active_object.data.angle = math.radians(2)  # soft shadow edges
     bpy.ops.object.camera_add(location=(0.0, -1.5 * args.size, 0.8 * args.size))
     camera = bpy.context.active_object
     look_at(camera, (0, 0.05 * args.size, 0.5 * (min(zs) + max(zs))))
     scene.camera = camera
     world = scene.world or bpy.data.worlds.new("World")
     scene.world = world
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.35, 0.5, 0.75, 1)
+    sky(world)
 
     blend = out / "scene.blend"
     bpy.ops.wm.save_as_mainfile(filepath=str(blend), check_existing=False)

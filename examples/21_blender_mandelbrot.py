@@ -72,10 +72,8 @@ def main():
     bpy.ops.mesh.fracterra_terrain_add(location=(0, 0, 0), **settings)
     terrain = bpy.context.active_object
     print(f"21_blender_mandelbrot: terrain {len(terrain.data.vertices)} vertices in {time.perf_counter() - t0:.2f} s")
-    mat = scene20.terrain_material()
+    mat = scene20.terrain_material()  # by the terrain's own height and slope attributes
     zs = [v.co.z for v in terrain.data.vertices]
-    span = mat.node_tree.nodes["Height Range"]
-    span.inputs["From Min"].default_value, span.inputs["From Max"].default_value = min(zs), max(zs)
     terrain.data.materials.append(mat)
 
     # The sea at the equipotential of escape time 1.6, the curves above it.
@@ -107,8 +105,7 @@ def main():
     scene.camera = camera
     world = scene.world or bpy.data.worlds.new("World")
     scene.world = world
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.35, 0.5, 0.75, 1)
+    scene20.sky(world)
 
     blend = out / "scene.blend"
     bpy.ops.wm.save_as_mainfile(filepath=str(blend), check_existing=False)

@@ -61,7 +61,7 @@ Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) an
                                    "start from a preset: valleys, rain, scree or land (options given override it)");
                     app.add_option("--world-size", o->world_size,
                                    "extent along x in world units when the file does not record it [default: 10]");
-                    app.add_flag("--stats", o->stats, "print a JSON object: seconds and the budget");
+                    app.add_flag("--stats", o->stats, "print a JSON object: seconds, the height range before and after, what left at the edges");
                     add_erosion_options(app, o->c);
                     return [o, &app] {
                       if (o->out.empty() && o->maps.empty() && !o->stats) invalid("give --out FILE, --maps DIR and/or --stats");
@@ -85,7 +85,11 @@ Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) an
                       if (!o->out.empty()) write_heightfield(eroded, o->out);
                       if (!o->maps.empty()) erosion::write_erosion_maps(maps, o->maps);
                       if (o->stats) {
-                        nlohmann::json j = {{"seconds", seconds}, {"carried_out", budget.carried_out}};
+                        const HeightStats before = hf.stats(), after = eroded.stats();
+                        nlohmann::json j = {{"seconds", seconds},       {"carried_out", budget.carried_out},
+                                            {"min", after.min},         {"max", after.max},
+                                            {"input_min", before.min},  {"input_max", before.max},
+                                            {"world_size", eroded.world_size()}};
                         std::printf("%s\n", j.dump().c_str());
                       }
                       return 0;

@@ -27,8 +27,9 @@ extern "C" {
 /// parameter tables. (1.1: ft_terrain_params.world_size; 1.2: the Mandelbrot fields and
 /// FT_HURST_AUTO; ft_terrain_params keeps their layout, so its 1.x sizes are still accepted.)
 /// The shared library's SOVERSION is this major number.
-/// 2.1: windows of a terrain (ft_terrain_extent, ft_terrain_generate_window(_lod)).
-#define FT_ABI_VERSION_MINOR 1
+/// 2.1: erosion.h (ft_erode, its maps, ft_drainage_statistics).
+/// 2.2: windows of a terrain (ft_terrain_extent, ft_terrain_generate_window(_lod)).
+#define FT_ABI_VERSION_MINOR 2
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -15,5 +15,6 @@
 #include "polyline.h"
 #include "povray.h"
 #include "params.h"
+#include "erosion.h"
 
 #endif

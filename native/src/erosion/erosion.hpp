@@ -29,7 +29,7 @@ struct FluvialConfig {
   double k = 2e-4;            // stream-power erodibility K (1/yr for m = 0.5, areas in world units^2)
   double m = 0.5;             // area exponent (slope exponent n = 1: the implicit solve is exact)
   double diffusion = 1e-7;    // hillslope diffusivity (world units^2 / yr); 0 = none (1e-7 km^2/yr = 0.1 m^2/yr)
-  double uplift = 0.0;        // uplift rate (world units / yr) of every non-outlet cell
+  double uplift = 0.0;        // uplift rate (world units / yr) of every cell (not a periodic grid's sink)
 };
 
 struct HydraulicConfig {

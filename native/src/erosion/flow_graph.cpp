@@ -91,9 +91,10 @@ void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
   route_steepest(g, z, sink, graph);
   // Local fills can spill into a neighbouring pit that a later fill raises;
   // another round handles that. A fractal terrain's first step has pits
-  // everywhere: one global fill is cheaper then.
+  // everywhere (more than one in 256 cells): one global fill is cheaper then;
+  // later steps have about one in 1000 (diffusion on banks).
   for (int round = 0; graph.pits > 0; ++round) {
-    if (round >= 4 || graph.pits * 4 > int64_t(g.size())) fill_depressions(g, z, sink);
+    if (round >= 4 || graph.pits * 256 > int64_t(g.size())) fill_depressions(g, z, sink);
     else fill_pits_locally(g, z, sink, graph);
     route_steepest(g, z, sink, graph);
   }

@@ -7,6 +7,8 @@
 // the implicit solve keeps z_i' > z_r' whenever z_i > z_r, so new pits come
 // only from diffusion and are rare: the fill (the one O(n log n) part) runs
 // only on steps that have them.
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <vector>
 
@@ -14,13 +16,26 @@
 #include "erosion/flow_graph.hpp"
 
 namespace ft::erosion {
+namespace {
+
+// A lake floor: the fill's flat, a few float steps above its receiver.
+// Incision there would round the float steps away into exact flats (pits
+// again next step), and diffusion would dent it; it is a sediment flat, and
+// both leave it alone.
+inline bool lake_floor(float zi, float zr) { return zi - zr <= 16.0f * FLT_EPSILON * std::fabs(zi) + FLT_MIN; }
+
+}  // namespace
 
 void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& progress) {
   const size_t n = g.size();
   FlowGraph graph;
   std::vector<double> area;
   std::vector<float> erodibility(n);  // K dt A^m, per cell
+  std::vector<float> saved(c.diffusion > 0.0 ? n : 0);  // lake floors across diffusion (NaN: not one)
   const int32_t sink = g.periodic ? periodic_sink(g, z) : -1;
+  // Base level of a bounded grid: the lowest input height (the sea).
+  const float base = *std::min_element(z, z + n);
+  const float inv_spacing = float(1.0 / g.spacing);
   for (int32_t step = 0; step < c.steps; ++step) {
     if (c.uplift > 0.0) {
       const float u = float(c.uplift * c.dt);
@@ -28,7 +43,7 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
       for (int32_t y = 0; y < g.height; ++y)
         for (int32_t x = 0; x < g.width; ++x) {
           const size_t i = size_t(y) * g.width + x;
-          if (g.periodic ? int32_t(i) != sink : !g.on_edge(x, y)) z[i] += u;
+          if (int32_t(i) != sink) z[i] += u;
         }
     }
     route_filled(g, z, sink, graph);
@@ -37,14 +52,34 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n); ++i)
       erodibility[i] = float(kdt * (c.m == 0.5 ? std::sqrt(area[i]) : std::pow(area[i], c.m)));
+    auto edge_f = [&](int32_t i) { return erodibility[i] * inv_spacing; };
     for (size_t k = 0; k < n; ++k) {
       const int32_t i = graph.stack[k];
       const int32_t r = graph.receiver[i];
-      if (r == i || z[i] <= z[r]) continue;
+      if (r == i) {
+        // An outlet drains to the sea beyond the edge, at the base level one
+        // spacing away: edges wear down with the land instead of standing
+        // as walls at their fractal heights.
+        if (!g.periodic && z[i] > base) z[i] = (z[i] + edge_f(i) * base) / (1.0f + edge_f(i));
+        continue;
+      }
+      if (lake_floor(z[i], z[r])) continue;
       const float f = erodibility[i] / graph.length[i];
       z[i] = (z[i] + f * z[r]) / (1.0f + f);
     }
-    if (c.diffusion > 0.0) hillslope_diffusion(g, z, c.diffusion * c.dt);
+    if (c.diffusion > 0.0) {
+      // Lake floors keep their height (refilling the dents would cost more
+      // than the rest of the step).
+#pragma omp parallel for schedule(static)
+      for (int64_t i = 0; i < int64_t(n); ++i) {
+        const int32_t r = graph.receiver[i];
+        saved[i] = r != i && lake_floor(z[i], z[r]) ? z[i] : NAN;
+      }
+      hillslope_diffusion(g, z, c.diffusion * c.dt);
+#pragma omp parallel for schedule(static)
+      for (int64_t i = 0; i < int64_t(n); ++i)
+        if (!std::isnan(saved[i])) z[i] = saved[i];
+    }
     progress.report(double(step + 1) / c.steps);
   }
 }

@@ -1,0 +1,68 @@
+// Erosion speed (issue 15).
+//   AntPasses/N   A.N.T.'s eroder defaults done by ours on the same grid: 30
+//                 hydraulic passes, 5 diffusion passes, 5 thermal passes and
+//                 the maps. The grids are A.N.T.'s own landscapes, saved by
+//                 native/bench/ant_eroder_anchor.py (run it first; it also
+//                 times A.N.T.'s eroder on them): FT_ANT_DIR=DIR/ant_N.npy.
+//                 Without them an fBm terrain of the same size stands in.
+//   Fluvial/N     stream power + diffusion, 10 time steps.
+// Run: FT_ANT_DIR=/tmp/ant build/native/erosion_bench --benchmark_repetitions=3
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "erosion/erosion.hpp"
+#include "io/heightfield_io.hpp"
+#include "terrain/terrain.hpp"
+
+namespace {
+
+using namespace ft::erosion;
+
+ft::Heightfield grid(int32_t n) {
+  const char* dir = std::getenv("FT_ANT_DIR");
+  const std::string path = dir ? std::string(dir) + "/ant_" + std::to_string(n) + ".npy" : "";
+  if (!path.empty() && std::filesystem::exists(path)) {
+    ft::Heightfield hf = ft::read_heightfield(path);
+    hf.set_world_size(2.0);  // A.N.T.'s default mesh size
+    return hf;
+  }
+  ft_terrain_params p = ft::default_terrain_params();
+  p.method = FT_TERRAIN_FBM;
+  p.width = p.height = n;
+  return ft::generate_terrain(p);
+}
+
+void AntPasses(benchmark::State& state) {
+  const ft::Heightfield src = grid(int32_t(state.range(0)));
+  const D8Grid g = grid_of(src, false);
+  ErosionConfig c;
+  c.hydraulic.iterations = 30;
+  c.thermal.iterations = 5;
+  c.threads = 2;
+  for (auto _ : state) {
+    ErosionMaps maps;
+    ft::Heightfield out = erode(src, c, &maps);
+    for (int k = 0; k < 5; ++k) hillslope_diffusion(g, out.data(), c.fluvial.diffusion * c.fluvial.dt);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["cells"] = double(src.size());
+}
+BENCHMARK(AntPasses)->Arg(257)->Arg(513)->Arg(1025)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void Fluvial(benchmark::State& state) {
+  const ft::Heightfield src = grid(int32_t(state.range(0)));
+  ErosionConfig c;
+  c.fluvial.steps = 10;
+  c.fluvial.uplift = 1e-4;
+  c.threads = 2;
+  for (auto _ : state) benchmark::DoNotOptimize(erode(src, c, nullptr).data());
+  state.counters["steps"] = 10;
+}
+BENCHMARK(Fluvial)->Arg(513)->Arg(1025)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

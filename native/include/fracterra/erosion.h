@@ -1,0 +1,77 @@
+/* fracterra erosion: fluvial (stream power + hillslope diffusion, Braun &
+ * Willett 2013), hydraulic (virtual pipes, Mei et al. 2007) and thermal
+ * (talus) erosion of a heightfield, and the maps artists texture by.
+ * Heights and the grid spacing (world_size / (width - 1)) are world units. */
+#ifndef FRACTERRA_EROSION_H
+#define FRACTERRA_EROSION_H
+
+#include "core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// The maps ft_erode can return, in world units.
+typedef enum ft_erosion_map {
+  FT_MAP_DRAINAGE_AREA = 0,  ///< upstream area (world units^2), D8 on the eroded terrain
+  FT_MAP_SLOPE = 1,          ///< |grad z| (rise over run)
+  FT_MAP_CURVATURE = 2,      ///< Laplacian of z (1 / world units; > 0 in hollows and channels)
+  FT_MAP_WATER_DEPTH = 3,    ///< water left by the hydraulic passes (0 without them)
+  FT_MAP_ERODED = 4,         ///< max(0, before - after)
+  FT_MAP_DEPOSITED = 5,      ///< max(0, after - before)
+  FT_MAP_COUNT = 6
+} ft_erosion_map;
+
+/// Fill with ft_erosion_params_init (every process off: counts 0) or
+/// ft_erosion_preset. Counts are 0..100000; rates >= 0 and finite.
+typedef struct ft_erosion_params {
+  uint32_t struct_size;          ///< sizeof(ft_erosion_params)
+  int32_t fluvial_steps;         ///< stream-power time steps; 0 = off
+  double fluvial_dt;             ///< years per step (> 0); default 1000
+  double erodibility;            ///< stream-power K (>= 0); default 2e-4
+  double area_exponent;          ///< m in K A^m S (0..2, n = 1); default 0.5
+  double diffusion;              ///< hillslope diffusivity, world units^2 / yr (>= 0); default 1e-7
+  double uplift;                 ///< world units / yr (>= 0); bounded edges erode towards the lowest input height; default 0
+  int32_t hydraulic_iterations;  ///< virtual-pipe passes; 0 = off
+  double hydraulic_dt;           ///< seconds per pass (1e-6..1); default 0.02
+  double rain;                   ///< water depth per pass, world units (>= 0); default 0.01
+  double evaporation;            ///< fraction per pass, 0..1; default 0.02
+  double capacity;               ///< sediment capacity constant (>= 0); default 1
+  double dissolve;               ///< 0..1; default 0.3
+  double deposit;                ///< 0..1; default 0.3
+  int32_t thermal_iterations;    ///< talus passes; 0 = off
+  double talus_degrees;          ///< angle of repose, 0..89; default 33
+  double thermal_rate;           ///< fraction of the excess moved per pass, (0, 1]; default 0.5
+  int32_t periodic;              ///< non-zero: the terrain tiles (eroded as a torus, stays seamless)
+  int32_t threads;               ///< 0: all cores; output never depends on it
+  ft_progress_fn progress;       ///< may be NULL; return non-zero to cancel (FT_ERR_CANCELLED)
+  void* progress_user;
+} ft_erosion_params;
+
+FT_API ft_status ft_erosion_params_init(ft_erosion_params* p);
+/// "valleys" (fluvial with uplift), "rain" (hydraulic), "scree" (thermal) or
+/// "land" (all three) over the defaults.
+FT_API ft_status ft_erosion_preset(const char* name, ft_erosion_params* p);
+
+/// Erodes `in` (grid spacing world_size / (width - 1); 1 when the world size is unknown). On
+/// success `*out` is a new heightfield (free with ft_heightfield_free) and,
+/// when `maps` is not NULL, maps[0 .. FT_MAP_COUNT - 1] are new heightfields
+/// indexed by ft_erosion_map (free each). On failure every output is NULL.
+FT_API ft_status ft_erode(const ft_heightfield* in, const ft_erosion_params* p, ft_heightfield** out,
+                          ft_heightfield** maps);
+
+/// Drainage statistics: Hack's law exponent h (main-stream length against
+/// area) and the slope-area concavity theta, with their standard errors,
+/// over channel cells of at least `min_area_cells` cells (>= 2; 20 is usual).
+typedef struct ft_drainage_stats {
+  double hack_h, hack_h_stderr, theta, theta_stderr;
+  int32_t hack_bins, theta_bins;
+} ft_drainage_stats;
+FT_API ft_status ft_drainage_statistics(const ft_heightfield* hf, int32_t periodic, double min_area_cells,
+                                        ft_drainage_stats* out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,83 @@
+// The erosion C ABI as ctypes sees it: defaults, presets, the maps, bad
+// input as a status with a message, cancel, and nothing leaked on failure.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "fracterra/fracterra.h"
+
+namespace {
+
+ft_heightfield* terrain(int32_t size) {
+  ft_terrain_params p;
+  ft_terrain_params_init(&p);
+  p.method = FT_TERRAIN_FBM;
+  p.width = p.height = size;
+  ft_heightfield* hf = nullptr;
+  EXPECT_EQ(ft_terrain_generate(&p, &hf), FT_OK);
+  return hf;
+}
+
+TEST(ErosionCapi, PresetErodesAndReturnsEveryMap) {
+  ft_heightfield* hf = terrain(65);
+  ft_erosion_params p;
+  ASSERT_EQ(ft_erosion_params_init(&p), FT_OK);
+  EXPECT_EQ(p.fluvial_steps + p.hydraulic_iterations + p.thermal_iterations, 0) << "init: every process off";
+  ASSERT_EQ(ft_erosion_preset("land", &p), FT_OK);
+  EXPECT_GT(p.fluvial_steps, 0);
+  ft_heightfield* out = nullptr;
+  ft_heightfield* maps[FT_MAP_COUNT];
+  ASSERT_EQ(ft_erode(hf, &p, &out, maps), FT_OK) << ft_last_error();
+  ASSERT_NE(out, nullptr);
+  EXPECT_EQ(ft_heightfield_width(out), 65);
+  for (auto* m : maps) {
+    ASSERT_NE(m, nullptr);
+    EXPECT_EQ(ft_heightfield_width(m), 65);
+  }
+  double mn, mx, mean, sd;
+  ASSERT_EQ(ft_heightfield_stats(maps[FT_MAP_DRAINAGE_AREA], &mn, &mx, &mean, &sd), FT_OK);
+  const double spacing = ft_heightfield_world_size(hf) / 64;
+  EXPECT_GT(mx, 64.0 * spacing * spacing) << "areas in world units^2: a channel drains many cells";
+  EXPECT_LE(mx, 65.0 * 65.0 * spacing * spacing * 1.0001);
+  ft_drainage_stats st;
+  EXPECT_EQ(ft_drainage_statistics(out, 0, 10, &st), FT_OK) << ft_last_error();
+  EXPECT_GT(st.hack_bins, 2);
+  for (auto* m : maps) ft_heightfield_free(m);
+  ft_heightfield_free(out);
+  ft_heightfield_free(hf);
+}
+
+TEST(ErosionCapi, BadInputIsAStatusWithTheParameterNamed) {
+  ft_heightfield* hf = terrain(33);
+  ft_erosion_params p;
+  ft_erosion_params_init(&p);
+  p.rain = NAN;
+  p.hydraulic_iterations = 3;
+  ft_heightfield* out = reinterpret_cast<ft_heightfield*>(1);
+  ft_heightfield* maps[FT_MAP_COUNT];
+  EXPECT_EQ(ft_erode(hf, &p, &out, maps), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("hydraulic.rain"), std::string::npos) << ft_last_error();
+  EXPECT_EQ(out, nullptr);
+  for (auto* m : maps) EXPECT_EQ(m, nullptr);
+  ft_erosion_params_init(&p);
+  p.struct_size = 8;
+  EXPECT_EQ(ft_erode(hf, &p, &out, nullptr), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_erosion_preset("volcano", &p), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("valleys"), std::string::npos);
+  EXPECT_EQ(ft_erode(nullptr, &p, &out, nullptr), FT_ERR_INVALID_ARGUMENT);
+  ft_heightfield_free(hf);
+}
+
+TEST(ErosionCapi, CancelFromTheProgressCallback) {
+  ft_heightfield* hf = terrain(65);
+  ft_erosion_params p;
+  ft_erosion_preset("rain", &p);
+  p.progress = [](void*, double f) -> int32_t { return f > 0.3 ? 1 : 0; };
+  ft_heightfield* out = nullptr;
+  EXPECT_EQ(ft_erode(hf, &p, &out, nullptr), FT_ERR_CANCELLED);
+  EXPECT_EQ(out, nullptr);
+  ft_heightfield_free(hf);
+}
+
+}  // namespace
