@@ -202,3 +202,34 @@ TEST(CApi, ABindingBuiltForAbi11GetsTheMandelbrotDefaults) {
 }
 
 }  // namespace
+
+TEST(CApi, AWindowThroughTheAbiEqualsTheWholesSamples) {
+  ft_terrain_params p;
+  ASSERT_EQ(ft_terrain_params_init(&p), FT_OK);
+  p.levels = 8;
+  int64_t w = 0, h = 0;
+  ASSERT_EQ(ft_terrain_extent(&p, 0, &w, &h), FT_OK);
+  EXPECT_EQ(w, 257);
+  ASSERT_EQ(ft_terrain_extent(&p, 2, &w, &h), FT_OK);
+  EXPECT_EQ(h, 65);
+  ft_heightfield* whole = nullptr;
+  ft_heightfield* part = nullptr;
+  ASSERT_EQ(ft_terrain_generate(&p, &whole), FT_OK);
+  ASSERT_EQ(ft_terrain_generate_window(&p, 31, 17, 45, 23, &part), FT_OK);
+  std::vector<float> a(257 * 257), b(45 * 23);
+  ASSERT_EQ(ft_heightfield_copy(whole, a.data(), a.size()), FT_OK);
+  ASSERT_EQ(ft_heightfield_copy(part, b.data(), b.size()), FT_OK);
+  for (int j = 0; j < 23; ++j)
+    ASSERT_EQ(std::memcmp(&b[size_t(j) * 45], &a[size_t(17 + j) * 257 + 31], 45 * sizeof(float)), 0) << j;
+  ft_heightfield_free(part);
+  ft_heightfield_free(whole);
+  // Outside, spectral and NULL outputs are statuses with a message, no handle.
+  part = reinterpret_cast<ft_heightfield*>(&p);
+  EXPECT_EQ(ft_terrain_generate_window(&p, 250, 0, 8, 8, &part), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(part, nullptr);
+  EXPECT_NE(std::string(ft_last_error()).find("outside the terrain"), std::string::npos);
+  p.method = FT_TERRAIN_SPECTRAL;
+  EXPECT_EQ(ft_terrain_generate_window(&p, 0, 0, 8, 8, &part), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("global FFT"), std::string::npos);
+  EXPECT_NE(ft_terrain_extent(&p, 0, nullptr, &h), FT_OK);
+}

@@ -21,3 +21,11 @@ if(FT_POVRAY_EXE)
             bash ${PROJECT_SOURCE_DIR}/examples/13_mandelbrot.sh ${CMAKE_CURRENT_BINARY_DIR}/example_mandelbrot)
   set_tests_properties(povray_example_mandelbrot PROPERTIES LABELS povray TIMEOUT 120)
 endif()
+
+# examples/14_eroded_terrain.sh end to end (terrain, erosion, maps, two tiny renders).
+if(FT_POVRAY_EXE)
+  add_test(NAME povray_example_eroded
+    COMMAND ${CMAKE_COMMAND} -E env FRACTERRA=$<TARGET_FILE:fracterra_cli> SIZE=65 WIDTH=96 HEIGHT=72
+            bash ${PROJECT_SOURCE_DIR}/examples/14_eroded_terrain.sh ${CMAKE_CURRENT_BINARY_DIR}/example_eroded)
+  set_tests_properties(povray_example_eroded PROPERTIES LABELS povray TIMEOUT 120)
+endif()

@@ -17,7 +17,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 2
-ABI_MINOR_MIN = 2  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: raster.h
+ABI_MINOR_MIN = 3  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -228,6 +228,9 @@ SIGNATURES = {
     "ft_polylines_free": (None, [_PL]),
     "ft_terrain_params_init": (c_int32, [_Described("terrain")]),
     "ft_terrain_generate": (c_int32, [_Described("terrain"), POINTER(_HF)]),
+    "ft_terrain_extent": (c_int32, [_Described("terrain"), c_int32, POINTER(c_int64), POINTER(c_int64)]),
+    "ft_terrain_generate_window": (c_int32, [_Described("terrain"), c_int64, c_int64, c_int32, c_int32, POINTER(_HF)]),
+    "ft_terrain_generate_window_lod": (c_int32, [_Described("terrain"), c_int32, c_int64, c_int64, c_int32, c_int32, POINTER(_HF)]),
     "ft_terrain_side": (c_int32, [c_int32]),
     "ft_mandelbrot_level_height": (c_int32, [_Described("terrain"), c_double, POINTER(c_double)]),
     "ft_profile_params_init": (c_int32, [_Described("profile")]),

@@ -28,8 +28,9 @@ extern "C" {
 /// FT_HURST_AUTO; ft_terrain_params keeps their layout, so its 1.x sizes are still accepted.)
 /// The shared library's SOVERSION is this major number.
 /// 2.1: erosion.h (ft_erode, its maps, ft_drainage_statistics).
-/// 2.2: raster.h (read and write by extension, ft_dem_refine).
-#define FT_ABI_VERSION_MINOR 2
+/// 2.2: windows of a terrain (ft_terrain_extent, ft_terrain_generate_window(_lod)).
+/// 2.3: raster.h (read and write by extension, ft_dem_refine).
+#define FT_ABI_VERSION_MINOR 3
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -106,6 +106,26 @@ FT_API ft_status ft_terrain_params_init(ft_terrain_params* p);
 /// Generates a terrain. On success `*out` owns a new heightfield (free with
 /// ft_heightfield_free); on failure `*out` is NULL and ft_last_error() says why.
 FT_API ft_status ft_terrain_generate(const ft_terrain_params* p, ft_heightfield** out);
+/// Windows of a terrain that need not fit in memory (ABI 1.3).
+/// The whole terrain's samples per side at level of detail `lod` (0: every
+/// sample; k: every 2^k-th, midpoint and additions only). Windows accept
+/// midpoint and additions up to levels 24 and the other methods (except
+/// spectral, a global FFT, which is refused) up to 2^24 + 1 samples a side.
+/// `width` and `height` must not be NULL.
+FT_API ft_status ft_terrain_extent(const ft_terrain_params* p, int32_t lod, int64_t* width, int64_t* height);
+/// The samples [x0, x0 + width) x [y0, y0 + height) of the terrain `p`
+/// defines, bit-identical to the same samples of ft_terrain_generate
+/// wherever the whole fits. Memory: the window plus a thin halo, whatever
+/// the whole's size. On success `*out` owns a new width x height heightfield
+/// whose world size is the window's share of p->world_size.
+FT_API ft_status ft_terrain_generate_window(const ft_terrain_params* p, int64_t x0, int64_t y0, int32_t width,
+                                            int32_t height, ft_heightfield** out);
+/// The same at level of detail `lod`: sample (i, j) is sample
+/// ((x0 + i) 2^lod, (y0 + j) 2^lod) of the whole; x0, y0, width and height
+/// count samples at that lod (see ft_terrain_extent). For midpoint this is
+/// exactly the coarser stage and costs 4^-lod of the full window.
+FT_API ft_status ft_terrain_generate_window_lod(const ft_terrain_params* p, int32_t lod, int64_t x0, int64_t y0,
+                                                int32_t width, int32_t height, ft_heightfield** out);
 /// Samples per side of a midpoint/additions terrain of `levels` levels
 /// (2^levels + 1), or -1 when levels is out of range.
 FT_API int32_t ft_terrain_side(int32_t levels);

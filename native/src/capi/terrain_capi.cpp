@@ -29,6 +29,32 @@ FT_API ft_status ft_terrain_generate(const ft_terrain_params* p, ft_heightfield*
   });
 }
 
+FT_API ft_status ft_terrain_extent(const ft_terrain_params* p, int32_t lod, int64_t* width, int64_t* height) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    ft::check_not_null("width", width);
+    ft::check_not_null("height", height);
+    *width = *height = 0;
+    ft::terrain_extent(ft::upgraded(ft::terrain_param_table(), *p), lod, width, height);
+  });
+}
+
+FT_API ft_status ft_terrain_generate_window_lod(const ft_terrain_params* p, int32_t lod, int64_t x0, int64_t y0,
+                                                int32_t width, int32_t height, ft_heightfield** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("params", p);
+    auto h = std::make_unique<ft_heightfield>();
+    h->hf = ft::generate_terrain_window(ft::upgraded(ft::terrain_param_table(), *p), lod, x0, y0, width, height);
+    *out = h.release();
+  });
+}
+
+FT_API ft_status ft_terrain_generate_window(const ft_terrain_params* p, int64_t x0, int64_t y0, int32_t width,
+                                            int32_t height, ft_heightfield** out) {
+  return ft_terrain_generate_window_lod(p, 0, x0, y0, width, height, out);
+}
+
 FT_API ft_status ft_mandelbrot_level_height(const ft_terrain_params* p, double iterations, double* height) {
   return guarded([&] {
     ft::check_not_null("params", p);

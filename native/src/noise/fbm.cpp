@@ -229,15 +229,18 @@ FT_INLINE void chunk_body(const Plan& p, int n, float* u, float* v, float* out) 
   for (int i = 0; i < n; ++i) out[i] = out[i] * p.scale;
 }
 
-// One row y, samples [x0, x0 + n): normalised coordinates, then the octaves.
-FT_INLINE void row_body(const Plan& p, int32_t width, int32_t height, int32_t y, float* row) {
+// Samples [xb, xb + count) of row y of a width x height terrain: normalised
+// coordinates (from the global index alone, so a window gets the bits of the
+// whole), then the octaves.
+FT_INLINE void row_body(const Plan& p, int64_t width, int64_t height, int64_t y, int64_t xb, int32_t count,
+                        float* row) {
   alignas(32) float u[kChunk], v[kChunk];
   const float inv_w = 1.0f / float(width);
   const float vy = p.periodic ? float(y) / float(height) : float(y) * inv_w;
-  for (int32_t x0 = 0; x0 < width; x0 += kChunk) {
-    const int n = std::min<int32_t>(kChunk, width - x0);
+  for (int32_t x0 = 0; x0 < count; x0 += kChunk) {
+    const int n = std::min<int32_t>(kChunk, count - x0);
     for (int i = 0; i < n; ++i) {
-      u[i] = float(x0 + i) * inv_w;
+      u[i] = float(xb + x0 + i) * inv_w;
       v[i] = vy;
     }
     if (p.periodic)
@@ -250,17 +253,18 @@ FT_INLINE void row_body(const Plan& p, int32_t width, int32_t height, int32_t y,
 
 // Runtime dispatch: the same source compiled twice. Hand-rolled rather than
 // target_clones so a test can force the baseline path and compare bits.
-[[gnu::flatten]] __attribute__((target("avx2"))) void row_avx2(const Plan& p, int32_t w, int32_t h, int32_t y,
-                                                               float* row) {
-  row_body(p, w, h, y, row);
+[[gnu::flatten]] __attribute__((target("avx2"))) void row_avx2(const Plan& p, int64_t w, int64_t h, int64_t y,
+                                                               int64_t xb, int32_t n, float* row) {
+  row_body(p, w, h, y, xb, n, row);
 }
-[[gnu::flatten]] void row_baseline(const Plan& p, int32_t w, int32_t h, int32_t y, float* row) {
-  row_body(p, w, h, y, row);
+[[gnu::flatten]] void row_baseline(const Plan& p, int64_t w, int64_t h, int64_t y, int64_t xb, int32_t n,
+                                   float* row) {
+  row_body(p, w, h, y, xb, n, row);
 }
 
 std::atomic<SimdPath> g_path{SimdPath::kAuto};
 
-using RowFn = void (*)(const Plan&, int32_t, int32_t, int32_t, float*);
+using RowFn = void (*)(const Plan&, int64_t, int64_t, int64_t, int64_t, int32_t, float*);
 RowFn pick_row_fn() {
   if (g_path.load() == SimdPath::kAuto && __builtin_cpu_supports("avx2")) return row_avx2;
   return row_baseline;
@@ -310,9 +314,9 @@ double effective_gain(const FbmConfig& c) {
   return c.gain > 0 ? c.gain : std::pow(c.lacunarity, -c.hurst);
 }
 
-void validate_fbm(const FbmConfig& c) {
-  check_int_range("width", c.width, 2, 65536);
-  check_int_range("height", c.height, 2, 65536);
+void validate_fbm(const FbmConfig& c, int64_t max_side) {
+  check_int_range("width", c.width, 2, max_side);
+  check_int_range("height", c.height, 2, max_side);
   check_int_range("octaves", c.octaves, 1, kMaxOctaves);
   if (!(c.lacunarity > 1.0) || !std::isfinite(c.lacunarity))
     invalid("lacunarity must be a finite number > 1 (2 doubles the frequency per octave; 2.01 is a "
@@ -340,8 +344,12 @@ void validate_fbm(const FbmConfig& c) {
 
 Heightfield fbm(const FbmConfig& c) {
   validate_fbm(c);
+  return fbm_window(c, 0, 0, int32_t(c.width), int32_t(c.height));
+}
+
+Heightfield fbm_window(const FbmConfig& c, int64_t x0, int64_t y0, int32_t w, int32_t h) {
   const Plan plan = make_plan(c);
-  Heightfield hf(c.width, c.height);
+  Heightfield hf(w, h);
   const RowFn row_fn = pick_row_fn();
   const int threads = resolve_threads(c.threads);
   // One parallel region, rows handed out dynamically: a single barrier at
@@ -355,13 +363,13 @@ Heightfield fbm(const FbmConfig& c) {
   {
     const bool caller = omp_get_thread_num() == 0;
 #pragma omp for schedule(dynamic, 2)
-    for (int32_t y = 0; y < c.height; ++y) {
+    for (int32_t y = 0; y < h; ++y) {
       if (stop.load(std::memory_order_relaxed)) continue;
-      row_fn(plan, c.width, c.height, y, hf.data() + size_t(y) * c.width);
+      row_fn(plan, c.width, c.height, y0 + y, x0, w, hf.data() + size_t(y) * size_t(w));
       const int32_t d = done.fetch_add(1, std::memory_order_relaxed) + 1;
       if (caller) {
         try {
-          c.progress.report(double(d) / c.height);
+          c.progress.report(double(d) / h);
         } catch (...) {
           error = std::current_exception();
           stop.store(true);

@@ -65,7 +65,9 @@ struct FbmConfig {
 
 // Throws ft::Error naming the field and its allowed range (octaves, NaN,
 // lacunarity <= 1, finest octave beyond float resolution, ...).
-void validate_fbm(const FbmConfig& c);
+// max_side: the largest width and height (whole terrains are held in memory;
+// windows of larger ones are not).
+void validate_fbm(const FbmConfig& c, int64_t max_side = 65536);
 // The amplitude ratio actually used (gain, or lacunarity^-H).
 double effective_gain(const FbmConfig& c);
 // An upper bound on |height| / sigma over every sample fbm() can make with
@@ -79,6 +81,9 @@ double fbm_height_bound(const FbmConfig& c, double* unscaled = nullptr);
 // and ridged are divided by sum a_i, so standard value/gradient/simplex fbm
 // stays within [-sigma, sigma]; hybrid and hetero are multiplied by sigma only.
 Heightfield fbm(const FbmConfig& c);
+// The w x h samples from (x0, y0) of the terrain fbm(c) would make, bit for
+// bit (every sample is a function of its global index). Callers validate.
+Heightfield fbm_window(const FbmConfig& c, int64_t x0, int64_t y0, int32_t w, int32_t h);
 
 namespace detail {
 // Which compiled path runs the octave loop: kAuto picks AVX2 when the CPU has

@@ -33,5 +33,9 @@ struct InterpolatedConfig {
 void check_interpolated_lacunarity(double lacunarity);
 // Callers validate (terrain.cpp).
 Heightfield interpolated_fm(const InterpolatedConfig& c);
+// The w x h samples from (x0, y0) of interpolated_fm(c), bit for bit: each
+// cycle computes only the nodes the window's samples reach through the
+// interpolation taps. Callers validate.
+Heightfield interpolated_window(const InterpolatedConfig& c, int64_t x0, int64_t y0, int32_t w, int32_t h);
 
 }  // namespace ft

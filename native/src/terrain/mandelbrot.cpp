@@ -104,9 +104,9 @@ double mandelbrot_max_zoom(int32_t width, double center_x, double center_y) {
   return 4.0 / (double(width - 1) * kMandelbrotMinUlps * ulp_of(scale));
 }
 
-void validate_mandelbrot(const MandelbrotConfig& c) {
-  check_int_range("width", c.width, 2, 65536);
-  check_int_range("height", c.height, 2, 65536);
+void validate_mandelbrot(const MandelbrotConfig& c, int64_t max_side) {
+  check_int_range("width", c.width, 2, max_side);
+  check_int_range("height", c.height, 2, max_side);
   check_range("center_x", c.center_x, -kMandelbrotCenterLimit, kMandelbrotCenterLimit);
   check_range("center_y", c.center_y, -kMandelbrotCenterLimit, kMandelbrotCenterLimit);
   if (!(c.zoom >= kMandelbrotMinZoom) || !std::isfinite(c.zoom))

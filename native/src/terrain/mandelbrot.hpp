@@ -89,7 +89,7 @@ double mandelbrot_max_zoom(int32_t width, double center_x, double center_y);
 // Throws FT_ERR_INVALID_ARGUMENT naming the parameter: centre not finite or
 // outside [-4, 4], zoom not finite or < 1e-3, iterations outside 1..2^24, or
 // a zoom beyond mandelbrot_max_zoom (the message gives the limit).
-void validate_mandelbrot(const MandelbrotConfig& c);
+void validate_mandelbrot(const MandelbrotConfig& c, int64_t max_side = 65536);
 
 // The whole terrain, or the window of w x h samples whose top-left sample
 // is (x0, y0) of the whole (any integers: the plane goes on beyond the

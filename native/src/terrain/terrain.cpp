@@ -13,6 +13,7 @@
 #include "terrain/profile.hpp"
 #include "terrain/spectral_synthesis.hpp"
 #include "terrain/terrain_params.hpp"
+#include "terrain/window.hpp"
 
 namespace ft {
 namespace {
@@ -152,52 +153,78 @@ int dyadic_levels(int64_t size) {
 
 ft_terrain_params default_terrain_params() { return defaults_of<ft_terrain_params>(terrain_param_table()); }
 
-void validate_terrain_params(const ft_terrain_params& p) {
+namespace {
+
+// The checks of every terrain; `whole` adds the size limits of a terrain
+// held in memory, otherwise those of windows (which never hold the whole).
+void validate_terrain(const ft_terrain_params& p, bool whole) {
   check_struct_size(p.struct_size, sizeof(ft_terrain_params), "ft_terrain_params");
   // The ranges of every field the method uses come from the table; what
-  // follows relates fields to each other.
-  check_ranges(terrain_param_table(), &p);
+  // follows relates fields to each other. The table's levels and sizes are
+  // those of a whole terrain: a window's larger ones are checked here first.
+  ft_terrain_params q = p;
+  if (!whole) {
+    if (p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS) {
+      check_int_range("levels", p.levels, 1, kMaxWindowLevels);
+      q.levels = std::min(p.levels, kMaxLevels);
+    } else {
+      check_int_range("width", p.width, 2, kMaxWindowSide);
+      check_int_range("height", p.height, 2, kMaxWindowSide);
+      q.width = std::min(p.width, 65536), q.height = std::min(p.height, 65536);
+    }
+  }
+  check_ranges(terrain_param_table(), &q);
+  const int64_t max_side = whole ? 65536 : kMaxWindowSide;
   if (p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS) {
     const uint64_t side = (uint64_t(1) << p.levels) + 1;
-    check_allocation(checked_bytes(side, side, sizeof(float)),
-                     "a terrain of levels " + std::to_string(p.levels) + " (" + std::to_string(side) +
-                         " x " + std::to_string(side) + " samples)");
+    if (whole)
+      check_allocation(checked_bytes(side, side, sizeof(float)),
+                       "a terrain of levels " + std::to_string(p.levels) + " (" + std::to_string(side) + " x " +
+                           std::to_string(side) + " samples); windows of it (ft_terrain_generate_window) need not fit");
     if (p.reference) check_reference(p.reference, p.reference_size, p.levels, p.periodic != 0);
   } else {
-    check_allocation(checked_bytes(uint64_t(p.width), uint64_t(p.height), sizeof(float)),
-                     "a " + std::to_string(p.width) + " x " + std::to_string(p.height) + " terrain");
+    if (whole)
+      check_allocation(checked_bytes(uint64_t(p.width), uint64_t(p.height), sizeof(float)),
+                       "a " + std::to_string(p.width) + " x " + std::to_string(p.height) + " terrain");
     if (p.reference) invalid("reference points are supported by the midpoint and additions methods only");
-    if (p.method == FT_TERRAIN_FBM) validate_fbm(fbm_config(p));
+    if (p.method == FT_TERRAIN_FBM) validate_fbm(fbm_config(p), max_side);
     if (p.method == FT_TERRAIN_INTERPOLATED) check_interpolated_lacunarity(p.lacunarity);
-    if (p.method == FT_TERRAIN_MANDELBROT) validate_mandelbrot(mandelbrot_config(p));
+    if (p.method == FT_TERRAIN_MANDELBROT) validate_mandelbrot(mandelbrot_config(p), max_side);
   }
   check_terrain_heights(p);
 }
 
+}  // namespace
+
+void validate_terrain_params(const ft_terrain_params& p) { validate_terrain(p, true); }
+
 namespace {
+
+DiamondSquareConfig diamond_square_config(const ft_terrain_params& p) {
+  DiamondSquareConfig c;
+  c.levels = p.levels;
+  c.hurst = p.hurst;
+  c.seed = p.seed;
+  c.periodic = p.periodic != 0;
+  c.additions = p.method == FT_TERRAIN_ADDITIONS;
+  c.threads = p.threads;
+  c.progress = Progress(p.progress, p.progress_user);
+  c.sigma = p.sigma;
+  if (p.reference) {
+    c.reference = p.reference;
+    c.ref_levels = dyadic_levels(p.reference_size);
+    c.sigma = reference_scale(p.reference_scale, p.sigma, p.reference,
+                              size_t(p.reference_size) * size_t(p.reference_size));
+  }
+  return c;
+}
 
 // The generator of one method, without the world size.
 Heightfield generate_terrain_samples(const ft_terrain_params& p) {
   switch (p.method) {
     case FT_TERRAIN_MIDPOINT:
-    case FT_TERRAIN_ADDITIONS: {
-      DiamondSquareConfig c;
-      c.levels = p.levels;
-      c.hurst = p.hurst;
-      c.seed = p.seed;
-      c.periodic = p.periodic != 0;
-      c.additions = p.method == FT_TERRAIN_ADDITIONS;
-      c.threads = p.threads;
-      c.progress = Progress(p.progress, p.progress_user);
-      c.sigma = p.sigma;
-      if (p.reference) {
-        c.reference = p.reference;
-        c.ref_levels = dyadic_levels(p.reference_size);
-        c.sigma = reference_scale(p.reference_scale, p.sigma, p.reference,
-                                  size_t(p.reference_size) * size_t(p.reference_size));
-      }
-      return diamond_square(c);
-    }
+    case FT_TERRAIN_ADDITIONS:
+      return diamond_square(diamond_square_config(p));
     case FT_TERRAIN_FBM:
       return fbm(fbm_config(p));
     case FT_TERRAIN_SPECTRAL:
@@ -223,6 +250,79 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
   // terrains lost it (and `coastline --world` refused them).
   Heightfield hf = generate_terrain_samples(p);
   hf.set_world_size(p.world_size);
+  return hf;
+}
+
+namespace {
+
+bool dyadic_method(const ft_terrain_params& p) {
+  return p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS;
+}
+
+// Bytes a window's generation holds at its peak, beside the result.
+uint64_t window_work_bytes(const ft_terrain_params& p, int lod, int32_t w, int32_t h) {
+  if (!dyadic_method(p)) return 0;
+  // The last stage's array (the window grown by its halo) and the stage
+  // before it, a quarter of that; additions at lod > 0 refine the footprint.
+  const uint64_t k = p.method == FT_TERRAIN_ADDITIONS ? uint64_t(1) << lod : 1;
+  const uint64_t fw = (uint64_t(w) - 1) * k + 1 + 16, fh = (uint64_t(h) - 1) * k + 1 + 16;
+  return checked_bytes(fw, fh, sizeof(float) * (k > 1 ? 3 : 2));
+}
+
+}  // namespace
+
+void terrain_extent(const ft_terrain_params& p, int lod, int64_t* width, int64_t* height) {
+  validate_terrain(p, false);
+  if (p.method == FT_TERRAIN_SPECTRAL)
+    invalid("spectral synthesis has no windows: it is one global FFT, every sample depends on every Fourier "
+            "coefficient, so a window costs the whole terrain; generate it whole (up to 65536 x 65536), or use "
+            "windows of midpoint, additions, fbm or interpolated terrains");
+  if (dyadic_method(p)) {
+    check_int_range("lod", lod, 0, p.levels);
+    *width = *height = (int64_t(1) << (p.levels - lod)) + 1;
+    return;
+  }
+  if (lod != 0)
+    invalid("a level of detail (lod " + std::to_string(lod) + ") is defined for midpoint and additions terrains, "
+            "whose every 2^lod-th sample is a coarser stage; use lod 0 for other methods");
+  *width = p.width, *height = p.height;
+}
+
+Heightfield generate_terrain_window(const ft_terrain_params& p, int lod, int64_t x0, int64_t y0, int32_t w,
+                                    int32_t h) {
+  int64_t ew = 0, eh = 0;
+  terrain_extent(p, lod, &ew, &eh);
+  if (w < 1 || h < 1)
+    invalid("a window needs at least 1 x 1 samples, got " + std::to_string(w) + " x " + std::to_string(h));
+  if (x0 < 0 || y0 < 0 || x0 > ew - w || y0 > eh - h)
+    invalid("the window [" + std::to_string(x0) + ", " + std::to_string(x0 + w) + ") x [" + std::to_string(y0) +
+            ", " + std::to_string(y0 + h) + ") lies outside the terrain's " + std::to_string(ew) + " x " +
+            std::to_string(eh) + " samples" + (lod ? " at lod " + std::to_string(lod) : std::string()));
+  check_allocation(checked_bytes(uint64_t(w), uint64_t(h), sizeof(float)) + window_work_bytes(p, lod, w, h),
+                   "a " + std::to_string(w) + " x " + std::to_string(h) + " window");
+  Heightfield hf;
+  switch (p.method) {
+    case FT_TERRAIN_MIDPOINT:
+    case FT_TERRAIN_ADDITIONS:
+      hf = diamond_square_window(diamond_square_config(p), Window{x0, y0, w, h}, lod);
+      break;
+    case FT_TERRAIN_FBM:
+      hf = fbm_window(fbm_config(p), x0, y0, w, h);
+      break;
+    case FT_TERRAIN_MANDELBROT:
+      hf = mandelbrot_window(mandelbrot_config(p), x0, y0, w, h);
+      break;
+    case FT_TERRAIN_INTERPOLATED: {
+      InterpolatedConfig c{p.width, p.height, p.lacunarity, p.hurst, p.sigma, p.seed, p.periodic != 0, p.threads,
+                           Progress(p.progress, p.progress_user)};
+      hf = interpolated_window(c, x0, y0, w, h);
+      break;
+    }
+    default:
+      fail(FT_ERR_INTERNAL, "terrain method " + std::to_string(p.method) + " has no window generator");
+  }
+  // The world size is the x extent of the samples: the window's share of it.
+  hf.set_world_size(p.world_size * double(w - 1) / double(ew - 1));
   return hf;
 }
 
