@@ -67,12 +67,14 @@ class FRACTERRA_OT_fractalize(bpy.types.Operator):
     bl_label = "Fractalize"
     bl_options = {"REGISTER", "UNDO", "PRESET"}
 
-    levels: bpy.props.IntProperty(name="Levels", default=3, min=1, max=10, soft_max=6,
+    levels: bpy.props.IntProperty(name="Detail Levels", default=3, min=1, max=10, soft_max=6,
                                   description="Refinement steps: faces grow 4^levels")
-    hurst: bpy.props.FloatProperty(name="Hurst H", default=0.8, min=0.0, max=1.0, subtype="FACTOR",
-                                   description="Hurst exponent: level k moves by sigma 2^(-kH)")
-    sigma: bpy.props.FloatProperty(name="Sigma", default=0.1, min=0.0, soft_max=10.0, subtype="DISTANCE",
-                                   unit="LENGTH", description="Displacement scale (0: plain subdivision)")
+    hurst: bpy.props.FloatProperty(name="Smoothness", default=0.8, min=0.0, max=1.0, subtype="FACTOR",
+                                   description="Hurst exponent H (Voss 1985): level k moves by sigma 2^(-kH); "
+                                               "0 rough, 1 smooth")
+    sigma: bpy.props.FloatProperty(name="Displacement", default=0.1, min=0.0, soft_max=10.0, subtype="DISTANCE",
+                                   unit="LENGTH", description="Displacement scale sigma of the first level "
+                                                              "(0: plain subdivision)")
     seed: bpy.props.IntProperty(name="Seed", default=1, min=0, max=2**31 - 1, description="Random seed")
     scheme: bpy.props.EnumProperty(name="Scheme", default="CATMARK", items=[
         ("CATMARK", "Catmull-Clark", "Any polygons in, quads out", 0),

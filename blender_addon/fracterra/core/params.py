@@ -26,11 +26,22 @@ from pathlib import Path
 # every other default against the library's table).
 _INTERACTIVE = ("Blender regenerates the terrain while a slider is dragged: 257^2 vertices keep that "
                 "interactive (0.1 s), the library's 513^2 is a CLI default for files")
+# Add > Mesh > Fractal Terrain starts as a landform an artist recognises (a
+# mountain falling off to a flat edge, as A.N.T. Landscape's default does)
+# rather than the raw method, a tilted slab (issue 17). The library keeps
+# neutral landform defaults: files and goldens made before them are unchanged.
+_LANDFORM = "the default is a mountain on a flat edge: levelled, raised and faded out radially"
 BLENDER_OVERRIDES = {
     "terrain": {
         "levels": (8, _INTERACTIVE),
         "width": (257, _INTERACTIVE),
         "height": (257, _INTERACTIVE),
+        "sigma": (2.0, "with the raise and falloff below a relief of about a quarter of the width (2-3 m on "
+                       "10 m; A.N.T.: 0.5 on 2)"),
+        "levelling": (1.0, _LANDFORM + ": without levelling the first corners tilt the whole terrain"),
+        "height_offset": (1.5, _LANDFORM + ": raised so that the falloff shapes a mountain, not a crater"),
+        "falloff": ("RADIAL", _LANDFORM + ": no walls at the edges"),
+        "falloff_width": (0.9, _LANDFORM + ": from the centre, so the outline is a round mountain"),
     },
     "polyline": {
         "method": ("FPL3D", "Add > Curve > Fractal Polyline starts as a lightning bolt, which must not be "
@@ -127,6 +138,7 @@ def _as_json_row(row):
     return {**row, "default": row["default_value"], "hard_min": bound(row["hard_min"]),
             "hard_max": bound(row["hard_max"]), "soft_min": bound(row["soft_min"]),
             "soft_max": bound(row["soft_max"]), "min_exclusive": bool(row["flags"] & 4),
+            "max_exclusive": bool(row["flags"] & 8),
             "items": [{"name": n, "label": l, "doc": d, "value": v} for n, l, d, v in row["items"]]}
 
 
@@ -150,6 +162,8 @@ def _param_from_row(row, kind_name, method_items):
     lo, hi = row["hard_min"], row["hard_max"]
     if lo is not None and row["min_exclusive"]:
         lo += 1e-6 if lo == 0 else abs(lo) * 1e-6  # Blender has no open bound; the library refuses lo itself
+    if hi is not None and row.get("max_exclusive"):
+        hi -= 1e-6 if hi == 0 else abs(hi) * 1e-6
     if name in BLENDER_LIMITS.get(kind_name, {}):
         lo, hi, _reason = BLENDER_LIMITS[kind_name][name]
     soft_lo, soft_hi = row["soft_min"], row["soft_max"]
@@ -188,9 +202,6 @@ DYADIC_METHODS = next(p for p in _LIBRARY_TERRAIN if p.name == "levels").methods
 _DYADIC = DYADIC_METHODS
 
 TERRAIN_PARAMS = _LIBRARY_TERRAIN + (
-    Param("use_sea_level", "bool", False, "Sea Level", "Flatten everything below the sea level"),
-    Param("sea_level", "float", 0.0, "Sea Level Height", "Heights below this become flat sea",
-          soft_min=-100.0, soft_max=100.0, subtype="DISTANCE", unit="LENGTH"),
     # Where the reference points come from (midpoint and additions).
     Param("reference_source", "enum", "NONE", "Reference", "Coarse heights the terrain must pass through",
           items=REFERENCE_SOURCES, methods=_DYADIC),
@@ -272,12 +283,14 @@ POLYLINE_PARAMS = (
     Param("method", "enum", "FPL3D", "Method", "Which fractal curve", items=POLYLINE_METHODS, field="method"),
     Param("rng", "enum", "UNIFORM", "Generator", "Random generator of the displacements", items=POLYLINE_RNGS,
           field="rng", methods=_FPL),
-    Param("spread", "float", 0.1, "Spread", "Displacement per unit segment length: s (uniform) or sigma "
-          "(normal). Below 0.1 lightning-like, 0.2-0.3 horizon-like, 0.3+ Brownian loops; profile: sigma",
+    Param("spread", "float", 0.1, "Jaggedness", "Spread s (uniform) or sigma (normal) of the midpoint "
+          "displacement per unit segment length (Nikulin 2018, seed 003). Below 0.1 lightning-like, 0.2-0.3 "
+          "horizon-like, 0.3+ Brownian loops; profile: sigma",
           min=0.0, max=10.0, soft_max=1.0, field="spread", methods=frozenset({"FPL", "FPL3D", "PROFILE"})),
-    Param("depth", "int", 8, "Depth", "Recursion depth r: each base segment gets up to 2^r segments "
-          "(Koch 4^r, Sierpinski 3^r)", min=0, max=20, soft_max=14, field="depth"),
-    Param("min_length", "float", 0.0, "Min Length", "Segments shorter than this are not split (delta)",
+    Param("depth", "int", 8, "Detail", "Recursion depth r (Nikulin 2018): each base segment gets up to 2^r "
+          "segments (Koch 4^r, Sierpinski 3^r)", min=0, max=20, soft_max=14, field="depth"),
+    Param("min_length", "float", 0.0, "Min Length", "Segments shorter than this are not split (delta, "
+          "Nikulin 2018)",
           min=0.0, max=1e6, subtype="DISTANCE", unit="LENGTH", field="min_length", methods=_FPL),
     Param("seed", "int", 1, "Seed", "Random seed", min=0, max=2**31 - 1, field="seed", methods=_RANDOM),
     Param("branch_prob", "float", 0.3, "Branching", "Probability that a midpoint forks a side branch "
@@ -287,7 +300,8 @@ POLYLINE_PARAMS = (
           min=0.01, max=0.99, subtype="FACTOR", field="branch_decay", methods=_FPL),
     Param("branch_generations", "int", 3, "Branch Generations", "Deepest branch generation", min=1, max=8,
           field="branch_generations", methods=_FPL),
-    Param("hurst", "float", 0.8, "Hurst H", "Hurst exponent of the profile", min=0.0, max=1.0,
+    Param("hurst", "float", 0.8, "Smoothness", "Hurst exponent H of the profile (Voss 1985): 0 rough, "
+          "1 smooth", min=0.0, max=1.0,
           subtype="FACTOR", field="hurst", methods=frozenset({"PROFILE"})),
     Param("ifs_preset", "enum", "FERN", "IFS", "Built-in iterated function system", items=IFS_PRESETS,
           field="ifs_preset", methods=frozenset({"IFS"})),
