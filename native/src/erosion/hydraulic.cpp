@@ -58,96 +58,171 @@ struct Constants {
   float dt, cell_area, accel, inv_l, keep, rain, capacity, dissolve, deposit, min_tilt, max_erosion;
 };
 
-// Sweep 1 at cell i. `old` are the previous pass's fluxes, `now` this pass's.
-// With `fluxes` false (after the last pass) only transport and evaporation.
-template <bool Interior, bool Fluxes>
-inline void sweep1_cell(State& st, const Constants& k, const float* const* old, float* const* now, int64_t i,
-                        Pipes nb) {
-  const float* b = st.b.data();
-  const float* d = st.d.data();
-  const float* s = st.s.data();
-  const float* leave = st.leave.data();
-  auto in = [&](int64_t j) { return Interior || j >= 0; };
-  // Sediment: what stays plus what the neighbours send back through their
-  // pipe towards this cell (east neighbour's west pipe, and so on).
-  const float out = old[0][i] + old[1][i] + old[2][i] + old[3][i];
-  float gained = 0.0f;
-  if (in(nb.e)) gained += old[2][nb.e] * leave[nb.e] * s[nb.e];
-  if (in(nb.s)) gained += old[3][nb.s] * leave[nb.s] * s[nb.s];
-  if (in(nb.w)) gained += old[0][nb.w] * leave[nb.w] * s[nb.w];
-  if (in(nb.n)) gained += old[1][nb.n] * leave[nb.n] * s[nb.n];
-  st.s2[i] = s[i] * (1.0f - out * leave[i]) + gained;
-  if (!Fluxes) {
-    st.d2[i] = d[i] * k.keep;
-    return;
-  }
-  // Water after evaporation and this pass's rain, here and at the neighbours.
-  auto water = [&](int64_t j) { return d[j] * k.keep + k.rain; };
-  const float di = water(i);
-  const float surface = b[i] + di;
-  const float others[4] = {in(nb.e) ? b[nb.e] + water(nb.e) : b[i], in(nb.s) ? b[nb.s] + water(nb.s) : b[i],
-                           in(nb.w) ? b[nb.w] + water(nb.w) : b[i], in(nb.n) ? b[nb.n] + water(nb.n) : b[i]};
-  float f[4], total = 0.0f;
-  for (int p = 0; p < 4; ++p) {
-    f[p] = std::max(0.0f, old[p][i] + k.accel * (surface - others[p]));
-    total += f[p];
-  }
-  // (No flux: every f[p] is 0 whatever the scale. Branch-free so it vectorises.)
+// Four values, one per pipe (east, south, west, north). Passed by value, so
+// the vectoriser sees scalars, not a local array in memory.
+struct Four {
+  float e, s, w, n;
+  float sum() const { return e + s + w + n; }
+};
+
+// The physics of one cell, on values: the sweeps gather them from the grid
+// (interior cells at fixed offsets, edge cells through the neighbour
+// lookup) and call these, so both paths compute the same thing.
+
+// Suspended sediment after the transport: what stays plus what the
+// neighbours send through their pipes towards this cell.
+inline float transported(float s, float out, float leave, float gained) { return s * (1.0f - out * leave) + gained; }
+
+// Outflow fluxes of a cell holding `di` water (after rain) with water
+// surface `surface`, beside surfaces `other` (east, south, west, north).
+inline Four outflow(const Constants& k, float surface, float di, Four other, Four old) {
+    const Four f = {std::max(0.0f, old.e + k.accel * (surface - other.e)),
+                  std::max(0.0f, old.s + k.accel * (surface - other.s)),
+                  std::max(0.0f, old.w + k.accel * (surface - other.w)),
+                  std::max(0.0f, old.n + k.accel * (surface - other.n))};
+  const float total = f.sum();
+  // (No flux: every f is 0 whatever the scale. Branch-free so it vectorises.)
   const float scale = std::min(1.0f, di * k.cell_area / std::max(total * k.dt, FLT_MIN));
-  for (int p = 0; p < 4; ++p) now[p][i] = f[p] * scale;
-  st.d2[i] = di;
+  return {f.e * scale, f.s * scale, f.w * scale, f.n * scale};
 }
 
-// Sweep 2 at cell i: reads this pass's fluxes and the bed; writes b2, the
-// cell's own sediment and water (s2, d2, which no neighbour reads in this
-// sweep) and leave. Returns the sediment volume sent out of the grid.
-template <bool Interior>
-inline double sweep2_cell(State& st, const Constants& k, const float* const* now, int64_t i, Pipes nb) {
-  const float* b = st.b.data();
-  auto in = [&](int64_t j) { return Interior || j >= 0; };
-  const float inflow[4] = {in(nb.e) ? now[2][nb.e] : 0.0f, in(nb.s) ? now[3][nb.s] : 0.0f,
-                           in(nb.w) ? now[0][nb.w] : 0.0f, in(nb.n) ? now[1][nb.n] : 0.0f};
-  const float o[4] = {now[0][i], now[1][i], now[2][i], now[3][i]};
-  const float in_total = inflow[0] + inflow[1] + inflow[2] + inflow[3];
-  const float out_total = o[0] + o[1] + o[2] + o[3];
-  const float before = st.d2[i];
+struct Updated {
+  float bed, sediment, water, leave;
+};
+
+// Water depth, velocity, capacity and erosion/deposition of a cell with
+// water `before`, outflows `o` and inflows `in` (by pipe), bed `b` beside
+// beds `be, bw, bs, bn` and suspended sediment `s`.
+inline Updated update(const Constants& k, float before, Four in, Four o, float b, float be, float bw, float bs,
+                      float bn, float s) {
+  const float in_total = in.sum();
+  const float out_total = o.sum();
   const float after = std::max(0.0f, before + k.dt * (in_total - out_total) / k.cell_area);
   // Net flow through the cell along x and y (Mei et al. eq. 8-9).
-  const float wx = 0.5f * (inflow[2] - o[2] + o[0] - inflow[0]);
-  const float wy = 0.5f * (inflow[3] - o[3] + o[1] - inflow[1]);
+  const float wx = 0.5f * (in.w - o.w + o.e - in.e);
+  const float wy = 0.5f * (in.n - o.n + o.s - in.s);
   const float mean_depth = std::max(0.5f * (before + after), 1e-4f);
   const float speed = std::sqrt(wx * wx + wy * wy) * k.inv_l / mean_depth;
   // Bed gradient by central differences (one-sided at bounded edges).
-  const float be = in(nb.e) ? b[nb.e] : b[i], bw = in(nb.w) ? b[nb.w] : b[i];
-  const float bs = in(nb.s) ? b[nb.s] : b[i], bn = in(nb.n) ? b[nb.n] : b[i];
   const float gx = (be - bw) * 0.5f * k.inv_l, gy = (bs - bn) * 0.5f * k.inv_l;
   const float grad2 = gx * gx + gy * gy;
   const float tilt = std::max(k.min_tilt, std::sqrt(grad2 / (1.0f + grad2)));
   const float capacity = k.capacity * tilt * speed;
-  const float s = st.s2[i];
-  // Bed lowering (> 0) or raising (< 0).
+  // Bed lowering (> 0: capacity above the load, at most max_erosion) or
+  // raising (< 0). As min/max, not a branch, so the loops vectorise.
+  const float excess = capacity - s;
   const float change =
-      capacity > s ? std::min(k.dissolve * (capacity - s), k.max_erosion) : -k.deposit * (s - capacity);
-  st.b2[i] = b[i] - change;
-  const float s_new = s + change;
-  st.s2[i] = s_new;
-  st.d2[i] = after;
-  const float held = after + k.dt * out_total / k.cell_area;  // water present before the outflow
-  const float per_held = k.dt / (k.cell_area * std::max(held, FLT_MIN));
-  const float leave = held > 0.0f ? per_held : 0.0f;
-  st.leave[i] = leave;
-  if (Interior) return 0.0;
-  float lost = 0.0f;  // flux through pipes that leave the grid
-  if (nb.e < 0) lost += o[0];
-  if (nb.s < 0) lost += o[1];
-  if (nb.w < 0) lost += o[2];
-  if (nb.n < 0) lost += o[3];
-  return double(lost * leave * s_new) * k.cell_area;
+      std::min(k.dissolve * std::max(excess, 0.0f), k.max_erosion) + k.deposit * std::min(excess, 0.0f);
+  // Water present before the outflow. A dry cell (held = 0) has no outflow,
+  // so any finite `leave` sends nothing: capped, not branched on.
+  const float held = after + k.dt * out_total / k.cell_area;
+  const float leave = std::min(k.dt / (k.cell_area * std::max(held, FLT_MIN)), FLT_MAX);
+  return {b - change, s + change, after, leave};
 }
 
-// Runs `cell(i, pipes)` over row y: the interior with fixed offsets, the
-// ends (and whole first/last rows of a bounded grid) through the general
-// neighbour lookup.
+// Sweep 1 over the interior cells x0 .. x1 - 1 of a row (`row`, `up`, `down`:
+// indices of the rows' first cells). `old` are the previous pass's fluxes,
+// `now` this pass's. Without `Fluxes` (after the last pass) only transport
+// and evaporation.
+// The arrays are restrict parameters of a function that is not inlined:
+// GCC keeps restrict only on parameters, and without it the loop needs more
+// alias checks than it will version for, and does not vectorise.
+template <bool Fluxes>
+[[gnu::noinline]] void sweep1_interior(const Constants k, int64_t row, int64_t up, int64_t down, int32_t x0,
+                                       int32_t x1, const float* __restrict b, const float* __restrict d,
+                                       const float* __restrict s, const float* __restrict leave,
+                                       const float* __restrict o0, const float* __restrict o1,
+                                       const float* __restrict o2, const float* __restrict o3, float* __restrict n0,
+                                       float* __restrict n1, float* __restrict n2, float* __restrict n3,
+                                       float* __restrict s2, float* __restrict d2) {
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x, e = i + 1, w = i - 1, n = up + x, so = down + x;
+    const float out = o0[i] + o1[i] + o2[i] + o3[i];
+    const float gained = o2[e] * leave[e] * s[e] + o3[so] * leave[so] * s[so] + o0[w] * leave[w] * s[w] +
+                         o1[n] * leave[n] * s[n];
+    s2[i] = transported(s[i], out, leave[i], gained);
+    if (!Fluxes) {
+      d2[i] = d[i] * k.keep;
+      continue;
+    }
+    const float di = d[i] * k.keep + k.rain;
+    const Four other = {b[e] + (d[e] * k.keep + k.rain), b[so] + (d[so] * k.keep + k.rain),
+                        b[w] + (d[w] * k.keep + k.rain), b[n] + (d[n] * k.keep + k.rain)};
+    const Four f = outflow(k, b[i] + di, di, other, Four{o0[i], o1[i], o2[i], o3[i]});
+    n0[i] = f.e, n1[i] = f.s, n2[i] = f.w, n3[i] = f.n;
+    d2[i] = di;
+  }
+}
+
+// Sweep 1 at an edge cell (neighbours -1 outside a bounded grid: there the
+// other side is the cell's bed without water).
+template <bool Fluxes>
+void sweep1_edge(State& st, const Constants& k, const float* const* old, float* const* now, int64_t i, Pipes nb) {
+  const float* b = st.b.data();
+  const float* d = st.d.data();
+  const float* s = st.s.data();
+  const float* leave = st.leave.data();
+  const float out = old[0][i] + old[1][i] + old[2][i] + old[3][i];
+  float gained = 0.0f;
+  if (nb.e >= 0) gained += old[2][nb.e] * leave[nb.e] * s[nb.e];
+  if (nb.s >= 0) gained += old[3][nb.s] * leave[nb.s] * s[nb.s];
+  if (nb.w >= 0) gained += old[0][nb.w] * leave[nb.w] * s[nb.w];
+  if (nb.n >= 0) gained += old[1][nb.n] * leave[nb.n] * s[nb.n];
+  st.s2[i] = transported(s[i], out, leave[i], gained);
+  if (!Fluxes) {
+    st.d2[i] = d[i] * k.keep;
+    return;
+  }
+  auto surface = [&](int64_t j) { return j >= 0 ? b[j] + (d[j] * k.keep + k.rain) : b[i]; };
+  const float di = d[i] * k.keep + k.rain;
+  const Four f = outflow(k, b[i] + di, di, Four{surface(nb.e), surface(nb.s), surface(nb.w), surface(nb.n)},
+                        Four{old[0][i], old[1][i], old[2][i], old[3][i]});
+  now[0][i] = f.e, now[1][i] = f.s, now[2][i] = f.w, now[3][i] = f.n;
+  st.d2[i] = di;
+}
+
+// Sweep 2 over interior cells: reads this pass's fluxes and the bed; writes
+// b2, the cells' own sediment and water (s2, d2, which no neighbour reads
+// in this sweep) and leave.
+[[gnu::noinline]] void sweep2_interior(const Constants k, int64_t row, int64_t up, int64_t down, int32_t x0,
+                                       int32_t x1, const float* __restrict b, const float* __restrict f0,
+                                       const float* __restrict f1, const float* __restrict f2,
+                                       const float* __restrict f3, float* __restrict b2, float* __restrict s2,
+                                       float* __restrict d2, float* __restrict leave) {
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x, e = i + 1, w = i - 1, n = up + x, so = down + x;
+    const Updated u = update(k, d2[i], Four{f2[e], f3[so], f0[w], f1[n]}, Four{f0[i], f1[i], f2[i], f3[i]}, b[i],
+                             b[e], b[w], b[so], b[n], s2[i]);
+    b2[i] = u.bed;
+    s2[i] = u.sediment;
+    d2[i] = u.water;
+    leave[i] = u.leave;
+  }
+}
+
+// Sweep 2 at an edge cell; returns the sediment volume sent out of the grid.
+double sweep2_edge(State& st, const Constants& k, const float* const* now, int64_t i, Pipes nb) {
+  const float* b = st.b.data();
+  auto flux_in = [&](int64_t j, int p) { return j >= 0 ? now[p][j] : 0.0f; };
+  auto bed = [&](int64_t j) { return j >= 0 ? b[j] : b[i]; };
+  const Four in = {flux_in(nb.e, 2), flux_in(nb.s, 3), flux_in(nb.w, 0), flux_in(nb.n, 1)};
+  const Four o = {now[0][i], now[1][i], now[2][i], now[3][i]};
+  const Updated u = update(k, st.d2[i], in, o, b[i], bed(nb.e), bed(nb.w), bed(nb.s), bed(nb.n), st.s2[i]);
+  st.b2[i] = u.bed;
+  st.s2[i] = u.sediment;
+  st.d2[i] = u.water;
+  st.leave[i] = u.leave;
+  float lost = 0.0f;  // flux through pipes that leave the grid
+  if (nb.e < 0) lost += o.e;
+  if (nb.s < 0) lost += o.s;
+  if (nb.w < 0) lost += o.w;
+  if (nb.n < 0) lost += o.n;
+  return double(lost * u.leave * u.sediment) * k.cell_area;
+}
+
+// Row y: `interior(row, up, down, x0, x1)` over the cells with four
+// neighbours at fixed offsets, `edge(i, pipes)` on the others (the ends,
+// and the first and last rows of a bounded grid).
 template <class Interior, class Edge>
 inline void each_in_row(const D8Grid& g, int32_t y, Interior&& interior, Edge&& edge) {
   const int32_t w = g.width;
@@ -163,7 +238,7 @@ inline void each_in_row(const D8Grid& g, int32_t y, Interior&& interior, Edge&& 
   // Rows above and below (wrapped on a torus).
   const int64_t up = (y > 0 ? y - 1 : g.height - 1) * int64_t(w), down = (y < g.height - 1 ? y + 1 : 0) * int64_t(w);
   general(0);
-  for (int32_t x = 1; x < w - 1; ++x) interior(row + x, Pipes{row + x + 1, down + x, row + x - 1, up + x});
+  interior(row, up, down, 1, w - 1);
   general(w - 1);
 }
 
@@ -201,12 +276,22 @@ void hydraulic(const D8Grid& g, float* z, const HydraulicConfig& c, float* water
     for (int32_t y = 0; y < h; ++y) {
       if (last)
         each_in_row(
-            g, y, [&](int64_t i, Pipes p) { sweep1_cell<true, false>(st, k, old, now, i, p); },
-            [&](int64_t i, Pipes p) { sweep1_cell<false, false>(st, k, old, now, i, p); });
+            g, y,
+            [&](int64_t row, int64_t up, int64_t down, int32_t x0, int32_t x1) {
+              sweep1_interior<false>(k, row, up, down, x0, x1, st.b.data(), st.d.data(), st.s.data(),
+                                     st.leave.data(), old[0], old[1], old[2], old[3], now[0], now[1], now[2], now[3],
+                                     st.s2.data(), st.d2.data());
+            },
+            [&](int64_t i, Pipes p) { sweep1_edge<false>(st, k, old, now, i, p); });
       else
         each_in_row(
-            g, y, [&](int64_t i, Pipes p) { sweep1_cell<true, true>(st, k, old, now, i, p); },
-            [&](int64_t i, Pipes p) { sweep1_cell<false, true>(st, k, old, now, i, p); });
+            g, y,
+            [&](int64_t row, int64_t up, int64_t down, int32_t x0, int32_t x1) {
+              sweep1_interior<true>(k, row, up, down, x0, x1, st.b.data(), st.d.data(), st.s.data(),
+                                    st.leave.data(), old[0], old[1], old[2], old[3], now[0], now[1], now[2], now[3],
+                                    st.s2.data(), st.d2.data());
+            },
+            [&](int64_t i, Pipes p) { sweep1_edge<true>(st, k, old, now, i, p); });
     }
     if (last) {
       st.s.swap(st.s2);
@@ -218,8 +303,12 @@ void hydraulic(const D8Grid& g, float* z, const HydraulicConfig& c, float* water
     for (int32_t y = 0; y < h; ++y) {
       double lost = 0.0;
       each_in_row(
-          g, y, [&](int64_t i, Pipes p) { sweep2_cell<true>(st, k, now, i, p); },
-          [&](int64_t i, Pipes p) { lost += sweep2_cell<false>(st, k, now, i, p); });
+          g, y,
+          [&](int64_t row, int64_t up, int64_t down, int32_t x0, int32_t x1) {
+            sweep2_interior(k, row, up, down, x0, x1, st.b.data(), now[0], now[1], now[2], now[3], st.b2.data(),
+                            st.s2.data(), st.d2.data(), st.leave.data());
+          },
+          [&](int64_t i, Pipes p) { lost += sweep2_edge(st, k, now, i, p); });
       row_out[size_t(y)] += lost;
     }
     st.b.swap(st.b2);

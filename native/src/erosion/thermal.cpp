@@ -8,6 +8,7 @@
 // rounding; nothing crosses a bounded edge. (talus[k] is the same in both
 // directions of a pair, so one table serves sender and receiver.)
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <vector>
 
@@ -16,32 +17,89 @@
 namespace ft::erosion {
 namespace {
 
-// Neighbour k of cell i = (x, y): at a fixed offset inside the grid, by the
-// general lookup (-1 outside a bounded grid) on its first and last rows and
-// columns. The interior loops then have no edge tests and vectorise.
-template <class Cell>
-void each_cell(const D8Grid& g, int32_t y, Cell&& cell) {
+// The two halves of a pass on cells x0 .. x1 - 1 of a row that have all
+// eight neighbours at the fixed offsets `off` (`i` = row + x). Restrict
+// parameters of functions that are not inlined (GCC keeps restrict only on
+// parameters): the loops then vectorise.
+[[gnu::noinline]] void shares_interior(const float* __restrict z, float* __restrict share, int64_t row, int32_t x0,
+                                       int32_t x1, const int64_t* off, const float* talus, float half_rate) {
+  const int64_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
+  const float t[8] = {talus[0], talus[1], talus[2], talus[3], talus[4], talus[5], talus[6], talus[7]};
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x;
+    float total = 0.0f, largest = 0.0f;
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) {
+      const float excess = std::max(0.0f, z[i] - z[i + o[k]] - t[k]);
+      total += excess;
+      largest = std::max(largest, excess);
+    }
+    // (total 0: largest is 0 too, and the share 0.)
+    share[i] = half_rate * largest / std::max(total, FLT_MIN);
+  }
+}
+
+[[gnu::noinline]] void moves_interior(const float* __restrict z, const float* __restrict share,
+                                      float* __restrict next, int64_t row, int32_t x0, int32_t x1, const int64_t* off,
+                                      const float* talus) {
+  const int64_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
+  const float t[8] = {talus[0], talus[1], talus[2], talus[3], talus[4], talus[5], talus[6], talus[7]};
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x;
+    float sent = 0.0f, received = 0.0f;
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) {
+      const int64_t j = i + o[k];
+      sent += std::max(0.0f, z[i] - z[j] - t[k]);
+      received += share[j] * std::max(0.0f, z[j] - z[i] - t[k]);
+    }
+    next[i] = z[i] - share[i] * sent + received;
+  }
+}
+
+// The same at a cell on the first or last row or column (neighbours -1
+// outside a bounded grid).
+void shares_edge(const D8Grid& g, const float* z, float* share, int32_t x, int32_t y, const float* talus,
+                 float half_rate) {
+  const int64_t i = int64_t(y) * g.width + x;
+  float total = 0.0f, largest = 0.0f;
+  for (int k = 0; k < 8; ++k) {
+    const int64_t j = g.neighbour(x, y, k);
+    if (j < 0) continue;
+    const float excess = std::max(0.0f, z[i] - z[j] - talus[k]);
+    total += excess;
+    largest = std::max(largest, excess);
+  }
+  share[i] = half_rate * largest / std::max(total, FLT_MIN);
+}
+
+void moves_edge(const D8Grid& g, const float* z, const float* share, float* next, int32_t x, int32_t y,
+                const float* talus) {
+  const int64_t i = int64_t(y) * g.width + x;
+  float sent = 0.0f, received = 0.0f;
+  for (int k = 0; k < 8; ++k) {
+    const int64_t j = g.neighbour(x, y, k);
+    if (j < 0) continue;
+    sent += std::max(0.0f, z[i] - z[j] - talus[k]);
+    received += share[j] * std::max(0.0f, z[j] - z[i] - talus[k]);
+  }
+  next[i] = z[i] - share[i] * sent + received;
+}
+
+// Row y: `interior(row, x0, x1, off)` where all eight neighbours are at
+// fixed offsets, `edge(x)` elsewhere.
+template <class Interior, class Edge>
+void each_in_row(const D8Grid& g, int32_t y, Interior&& interior, Edge&& edge) {
   const int32_t w = g.width;
-  const int64_t row = int64_t(y) * w;
-  auto general = [&](int32_t x) {
-    int64_t j[8];
-    for (int k = 0; k < 8; ++k) j[k] = g.neighbour(x, y, k);
-    cell.template operator()<false>(row + x, j);
-  };
-  if (y == 0 || y == g.height - 1) {
-    for (int32_t x = 0; x < w; ++x) general(x);
+  if (y == 0 || y == g.height - 1) {  // outside, or (periodic) wrapped: no fixed offsets
+    for (int32_t x = 0; x < w; ++x) edge(x);
     return;
   }
-  general(0);
   int64_t off[8];
   for (int k = 0; k < 8; ++k) off[k] = kDy[k] * int64_t(w) + kDx[k];
-  for (int32_t x = 1; x < w - 1; ++x) {
-    const int64_t i = row + x;
-    int64_t j[8];
-    for (int k = 0; k < 8; ++k) j[k] = i + off[k];
-    cell.template operator()<true>(i, j);
-  }
-  general(w - 1);
+  edge(0);
+  interior(int64_t(y) * w, 1, w - 1, off);
+  edge(w - 1);
 }
 
 }  // namespace
@@ -57,27 +115,20 @@ void thermal(const D8Grid& g, float* z, const ThermalConfig& c, const Progress& 
   for (int32_t it = 0; it < c.iterations; ++it) {
 #pragma omp parallel for schedule(static)
     for (int32_t y = 0; y < h; ++y)
-      each_cell(g, y, [&]<bool Interior>(int64_t i, const int64_t* j) {
-        float total = 0.0f, largest = 0.0f;
-        for (int k = 0; k < 8; ++k) {
-          if (!Interior && j[k] < 0) continue;
-          const float excess = std::max(0.0f, z[i] - z[j[k]] - talus[k]);
-          total += excess;
-          largest = std::max(largest, excess);
-        }
-        share[i] = total > 0.0f ? half_rate * largest / total : 0.0f;
-      });
+      each_in_row(
+          g, y,
+          [&](int64_t row, int32_t x0, int32_t x1, const int64_t* off) {
+            shares_interior(z, share.data(), row, x0, x1, off, talus, half_rate);
+          },
+          [&](int32_t x) { shares_edge(g, z, share.data(), x, y, talus, half_rate); });
 #pragma omp parallel for schedule(static)
     for (int32_t y = 0; y < h; ++y)
-      each_cell(g, y, [&]<bool Interior>(int64_t i, const int64_t* j) {
-        float sent = 0.0f, received = 0.0f;
-        for (int k = 0; k < 8; ++k) {
-          if (!Interior && j[k] < 0) continue;
-          sent += std::max(0.0f, z[i] - z[j[k]] - talus[k]);
-          received += share[j[k]] * std::max(0.0f, z[j[k]] - z[i] - talus[k]);
-        }
-        next[i] = z[i] - share[i] * sent + received;
-      });
+      each_in_row(
+          g, y,
+          [&](int64_t row, int32_t x0, int32_t x1, const int64_t* off) {
+            moves_interior(z, share.data(), next.data(), row, x0, x1, off, talus);
+          },
+          [&](int32_t x) { moves_edge(g, z, share.data(), next.data(), x, y, talus); });
     std::copy(next.begin(), next.end(), z);
     progress.report(double(it + 1) / c.iterations);
   }
