@@ -32,7 +32,7 @@ def parse_args():
     p.add_argument("--out", required=True, help="output folder (created)")
     p.add_argument("--resolution", default="480x300", help="render size WxH (default 480x300)")
     p.add_argument("--samples", type=int, default=16, help="Cycles samples (default 16)")
-    p.add_argument("--max-levels", type=int, default=9, help="cap on a preset's levels (smaller: faster)")
+    p.add_argument("--max-levels", type=int, default=9, help="cap on a preset's levels, and on its samples at 2^cap + 1 (smaller: faster)")
     p.add_argument("--only", default="", help="comma-separated names to render (default: all)")
     p.add_argument("--no-ant", action="store_true", help="skip A.N.T. Landscape's default")
     p.add_argument("--library", help="libfracterra.so to use when the add-on is run from the source tree")
@@ -104,6 +104,9 @@ def main():
         values = dict(values)
         if "levels" in values:
             values["levels"] = min(values["levels"], args.max_levels)
+        for key in ("width", "height"):  # the same cap for the other methods' samples
+            if key in values:
+                values[key] = min(values[key], 2 ** args.max_levels + 1)
         t0 = time.perf_counter()
         result = bpy.ops.mesh.fracterra_terrain_add(location=(0, 0, 0), **values)
         if result != {"FINISHED"}:
