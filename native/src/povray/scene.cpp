@@ -209,7 +209,7 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
 
   for (size_t i = 0; i < p.lines.size(); ++i) {
     const SceneLines& l = p.lines[i];
-    SweepOptions o;
+    SweepOptions o = p.sweep;
     o.default_radius = l.radius > 0 ? l.radius : automatic_line_radius(l, cam, extent, p.image_width);
     o.radius_scale = l.radius_scale;
     PolylineSet sized;
