@@ -31,9 +31,11 @@ extern "C" {
 /// 2.2: windows of a terrain (ft_terrain_extent, ft_terrain_generate_window(_lod)).
 /// 2.3: raster.h (read and write by extension, ft_dem_refine).
 /// 2.4: tiles.h (tile sets: ft_tileset_*, ft_tile_write); H of windows from increment sums (analysis.h).
-/// 2.5: landforms at the end of ft_terrain_params (levelling, height_offset, falloff,
+/// 2.5: params.h describes ft_pov_scene_params, ft_pov_sweep_params, ft_hurst_params,
+/// ft_clouds_params and ft_dem_refine_params; each accepts any older struct_size.
+/// 2.6: landforms at the end of ft_terrain_params (levelling, height_offset, falloff,
 /// falloff_width, edge_level, sea, sea_level, sea_fraction); FT_FALLOFF_*, FT_SEA_*.
-#define FT_ABI_VERSION_MINOR 5
+#define FT_ABI_VERSION_MINOR 6
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -45,14 +45,14 @@ enum {
   FT_REFSCALE_STD = 2          ///< use the standard deviation of the reference values
 };
 
-/// Edge falloff of a terrain (ft_terrain_params.falloff, ABI 2.5).
+/// Edge falloff of a terrain (ft_terrain_params.falloff, ABI 2.6).
 enum {
   FT_FALLOFF_NONE = 0,         ///< heights run to the edge as generated
   FT_FALLOFF_SQUARE = 1,       ///< fall to edge_level along all four edges
   FT_FALLOFF_RADIAL = 2        ///< fall to edge_level towards the inscribed ellipse (an island)
 };
 
-/// Sea of a terrain (ft_terrain_params.sea, ABI 2.5): heights below it are flattened to it.
+/// Sea of a terrain (ft_terrain_params.sea, ABI 2.6): heights below it are flattened to it.
 enum {
   FT_SEA_NONE = 0,             ///< no sea
   FT_SEA_HEIGHT = 1,           ///< at sea_level, in scene units
@@ -113,7 +113,7 @@ typedef struct ft_terrain_params {
                              ///< 1..2^24, default 64 (fewer: a lower wall where slopes meet the set)
   int32_t supersample;       ///< k x k points of the plane averaged per sample (anti-aliasing the
                              ///< boundary), 1..8; default 2
-  /* Added in ABI 2.5: landforms, applied to the method's heights in this order (docs/terrain.md).
+  /* Added in ABI 2.6: landforms, applied to the method's heights in this order (docs/terrain.md).
      Each depends only on the sample's position in the whole terrain, so windows stay equal to
      the whole; a sea given as a fraction needs the whole and is refused for windows. */
   double levelling;          ///< 0..1: the part of the tilt removed, the bilinear surface through the

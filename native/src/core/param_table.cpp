@@ -51,8 +51,11 @@ void check_number(const ft_param_info& row, double v, bool integer) {
   const std::string name = row.name, value = integer ? std::to_string(int64_t(v)) : format_number(v);
   if (integer) invalid(name + " must be in " + bound(row.hard_min) + ".." + bound(row.hard_max) + ", got " + value);
   // The words of check_range / check_positive, which the messages had before the tables.
+  if (row.hard_max >= 1.7e308 && row.hard_min <= -1.7e308) invalid(name + " must be a finite number, got " + value);
   if (row.hard_max >= 1.7e308)
     invalid(name + " must be a finite number " + (lo_open ? "> " : ">= ") + bound(row.hard_min) + ", got " + value);
+  if (row.hard_min <= -1.7e308)
+    invalid(name + " must be a finite number " + (hi_open ? "< " : "<= ") + bound(row.hard_max) + ", got " + value);
   invalid(name + " must be in " + (lo_open ? "(" : "[") + bound(row.hard_min) + ", " + bound(row.hard_max) +
           (hi_open ? ")" : "]") + ", got " + value);
 }
