@@ -55,7 +55,8 @@ def test_a_value_outside_a_hard_range_is_refused_with_the_range(core, lib):
 
 
 def _addon_params(core, kind_name):
-    lists = {"terrain": core.params.TERRAIN_PARAMS, "polyline": core.params.POLYLINE_PARAMS}
+    lists = {"terrain": core.params.TERRAIN_PARAMS, "polyline": core.params.POLYLINE_PARAMS,
+             "fractalize": core.params.FRACTALIZE_PARAMS}
     return {p.field: p for p in lists.get(kind_name, ()) if p.field}
 
 
