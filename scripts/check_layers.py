@@ -12,6 +12,8 @@ a layer of lower rank, never one of the same rank (sideways) or higher
     2  terrain/                                terrains and the 1D Voss profile (uses noise/)
     3  polyline/                               polylines (the profile method uses terrain/;
                                                the FPL study uses analysis/)
+       tiles/                                  tile sets of terrains larger than memory
+                                               (windows of terrain/, files through io/)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
     5  tables/                                 the parameter tables of every layer, by kind
     6  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
@@ -47,6 +49,7 @@ RANK = {
     # Ranked ahead for layers being added on other branches (DEM refinement uses
     # terrain/; erosion uses analysis/); add them to the README's picture on landing.
     "refine": 3, "erosion": 4,
+    "tiles": 3,  # tile sets: windows of terrain/ written through io/
     "tables": 5,  # every capability's parameter table, by kind
     "capi": 6, "cli": 6,
 }

@@ -11,7 +11,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <omp.h>
 #include <string>
+#include <vector>
 
 #include "erosion/erosion.hpp"
 #include "io/heightfield_io.hpp"
@@ -20,6 +22,11 @@
 namespace {
 
 using namespace ft::erosion;
+
+int bench_threads() {
+  const char* t = std::getenv("FT_BENCH_THREADS");
+  return t ? std::atoi(t) : 2;
+}
 
 ft::Heightfield grid(int32_t n) {
   const char* dir = std::getenv("FT_ANT_DIR");
@@ -41,7 +48,8 @@ void AntPasses(benchmark::State& state) {
   ErosionConfig c;
   c.hydraulic.iterations = 30;
   c.thermal.iterations = 5;
-  c.threads = 2;
+  c.threads = bench_threads();
+  omp_set_num_threads(c.threads);  // for the diffusion passes, outside erode()
   for (auto _ : state) {
     ErosionMaps maps;
     ft::Heightfield out = erode(src, c, &maps);
@@ -52,16 +60,43 @@ void AntPasses(benchmark::State& state) {
 }
 BENCHMARK(AntPasses)->Arg(257)->Arg(513)->Arg(1025)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The parts of AntPasses on their own (which one to work on).
+void AntHydraulic(benchmark::State& state) {
+  const ft::Heightfield src = grid(int32_t(state.range(0)));
+  const D8Grid g = grid_of(src, false);
+  HydraulicConfig c;
+  c.iterations = 30;
+  omp_set_num_threads(bench_threads());
+  for (auto _ : state) {
+    std::vector<float> out(src.data(), src.data() + src.size());
+    hydraulic(g, out.data(), c, nullptr, nullptr, ft::Progress());
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(AntHydraulic)->Arg(513)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void AntMaps(benchmark::State& state) {
+  const ft::Heightfield src = grid(int32_t(state.range(0)));
+  ErosionConfig c;
+  c.thermal.iterations = 1;
+  c.threads = bench_threads();
+  for (auto _ : state) {
+    ErosionMaps maps;
+    benchmark::DoNotOptimize(erode(src, c, &maps).data());
+  }
+}
+BENCHMARK(AntMaps)->Arg(513)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 void Fluvial(benchmark::State& state) {
   const ft::Heightfield src = grid(int32_t(state.range(0)));
   ErosionConfig c;
-  c.fluvial.steps = 10;
+  c.fluvial.steps = std::getenv("FT_STEPS") ? std::atoi(std::getenv("FT_STEPS")) : 10;
   c.fluvial.uplift = 1e-4;
-  c.threads = 2;
+  c.threads = bench_threads();
   for (auto _ : state) benchmark::DoNotOptimize(erode(src, c, nullptr).data());
   state.counters["steps"] = 10;
 }
-BENCHMARK(Fluvial)->Arg(513)->Arg(1025)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(Fluvial)->Arg(513)->Arg(1025)->Arg(2049)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 

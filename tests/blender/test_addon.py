@@ -364,6 +364,73 @@ class RegenerateTest(unittest.TestCase):
         self.assertFalse(bpy.ops.object.fracterra_terrain_regenerate.poll())
 
 
+class ProgressTest(unittest.TestCase):
+    """progress.Runner, which the operators run modally (Esc cancels): a cancel
+    while generating or while building keeps nothing."""
+
+    def setUp(self):
+        clear_scene()
+        self.progress = addon_harness.submodule("blender.progress")
+        self.build = addon_harness.submodule("blender.terrain_build")
+        self.values = core().params.defaults()
+        self.values.update(levels=9, seed=3)
+
+    def run_steps(self, runner, limit=1000):
+        state = runner.step()
+        while state == self.progress.RUNNING and limit:
+            runner._work_done.wait(0.01)
+            state, limit = runner.step(), limit - 1
+        return state
+
+    def test_finished_job_gives_the_library_heights(self):
+        runner = self.progress.Runner(self.build.new_terrain_job(self.values, bpy.context))
+        runner.start()
+        self.assertEqual(self.run_steps(runner), self.progress.FINISHED)
+        mesh, summary = runner.value
+        self.assertEqual(summary, "513 x 513 vertices")
+        with core().generate_terrain(self.values) as hf:  # the same values, straight from the library
+            self.assertEqual(coords(mesh)[2::3].tobytes(), hf.to_array().tobytes())
+        self.assertAlmostEqual(runner.fraction, 1.0)
+
+    def test_cancel_while_generating_keeps_nothing(self):
+        runner = self.progress.Runner(self.build.new_terrain_job(self.values, bpy.context))
+        runner.cancel()  # the library's first progress call sees it
+        runner.start()
+        self.assertEqual(self.run_steps(runner), self.progress.CANCELLED)
+        self.assertEqual(len(bpy.data.meshes), 0)
+        self.assertIsNone(runner._result)
+        self.assertLess(runner.work_fraction, 1.0)
+
+    def test_cancel_while_building_removes_the_half_built_mesh(self):
+        runner = self.progress.Runner(self.build.new_terrain_job(self.values, bpy.context))
+        runner.start()
+        runner._work_done.wait(60)
+        self.assertEqual(runner.step(), self.progress.RUNNING)  # the first build step made the mesh
+        self.assertEqual(len(bpy.data.meshes), 1)
+        runner.cancel()
+        self.assertEqual(runner.step(), self.progress.CANCELLED)
+        self.assertEqual(len(bpy.data.meshes), 0)
+
+    def test_cancelled_rebuild_keeps_the_old_mesh(self):
+        obj = add_terrain(levels=4, seed=1)
+        before = coords(obj.data)
+        obj.fracterra_terrain.levels = 6
+        runner = self.progress.Runner(self.build.regenerate_job(obj, bpy.context))
+        runner.start()
+        runner._work_done.wait(60)
+        self.assertEqual(runner.step(), self.progress.RUNNING)
+        runner.cancel()
+        self.assertEqual(runner.step(), self.progress.CANCELLED)
+        self.assertEqual(coords(obj.data), before)
+        self.assertEqual(len(bpy.data.meshes), 1)
+
+    def test_status_text_shows_the_bar_and_how_to_cancel(self):
+        text = self.progress.status_text("Generating terrain", 0.5)
+        self.assertIn(" 50%", text)
+        self.assertIn("Esc: Cancel", text)
+        self.assertEqual(text.count("\u2588"), 10)
+
+
 def spline_points(obj):
     out = []
     for spline in obj.data.splines:

@@ -140,6 +140,17 @@ def choose_from_menu(menu, ups, shot):
     yield 2 * STEP
 
 
+def wait_for_jobs(limit=60.0):
+    """Waits while an operator runs in the background (progress.JobOperator)."""
+    progress = addon_harness.submodule("blender.progress")
+    waited = 0.0
+    while progress.busy() and waited < limit:
+        yield 0.1
+        waited += 0.1
+    check(not progress.busy(), f"a background job still ran after {limit} s")
+    yield STEP
+
+
 def expand_redo_panel():
     """Clicks the collapsed Adjust Last Operation panel open, as a user does."""
     _, area, _ = view3d()
@@ -196,6 +207,7 @@ def scenario(shot):
 
     # Add > Mesh > Fractal Terrain with its redo panel; the sidebar's Fracterra tab.
     yield from choose_from_menu("VIEW3D_MT_mesh_add", 1, shot)
+    yield from wait_for_jobs()
     check(bpy.context.active_object is not None and bpy.context.active_object.fracterra_terrain.is_terrain,
           "Add > Mesh > Fractal Terrain added no terrain")
     yield from expand_redo_panel()
@@ -212,7 +224,7 @@ def scenario(shot):
     terrain.fracterra_terrain.seed = 7
     with in_view3d():
         bpy.ops.object.fracterra_terrain_regenerate("INVOKE_DEFAULT", True)  # True: its undo step, as a button
-    yield STEP
+    yield from wait_for_jobs()
     check(vertex_hash(bpy.data.objects[name]) != before, "Regenerate with a new seed left the heights")
     with in_view3d():
         bpy.ops.ed.undo()
@@ -258,6 +270,23 @@ def scenario(shot):
     yield STEP
     check(len(bpy.data.objects) == count, "a refused terrain left an object")
     shot("too-large-report")
+
+    # A long job shows its progress in the status bar, and Esc cancels it: nothing is added.
+    count = len(bpy.data.objects)
+    meshes = len(bpy.data.meshes)
+    progress = addon_harness.submodule("blender.progress")
+    with in_view3d():
+        result = bpy.ops.mesh.fracterra_terrain_add("INVOKE_DEFAULT", True, levels=12)
+    check(result == {"RUNNING_MODAL"}, f"Add Terrain from the menu did not run in the background: {result}")
+    yield 0.5
+    check(progress.busy(), "the levels 12 terrain finished before it could be cancelled")
+    shot("progress-in-status-bar")
+    pointer_to(view3d()[2])
+    xdotool("key", "Escape")
+    yield from wait_for_jobs()
+    check(len(bpy.data.objects) == count and len(bpy.data.meshes) == meshes,
+          "a cancelled terrain left an object or a mesh")
+    shot("after-cancel")
 
     # Add > Curve > Fractal Polyline at the 3D cursor, re-edited in place from its panel.
     bpy.context.scene.cursor.location = (3.0, 0.0, 0.0)

@@ -2,6 +2,7 @@
 
 Modules import only downwards, never in a circle:
     reporting, widgets, prefs, mesh_build, curve_build   (leaves: core and bpy only)
+    <- progress (long jobs: worker thread, status bar, Esc; imports reporting)
     <- terrain_build, polyline_build, terrain_objects, settings_ui
     <- props (PropertyGroups; auto-update calls terrain_build)
     <- terrain_ops, polyline_ops, measure_op, fractalize_op, pov_export, dem_io_ops (operators)

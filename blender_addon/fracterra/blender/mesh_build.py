@@ -11,8 +11,10 @@ def _loop_total_writable():
     return not bpy.types.MeshPolygon.bl_rna.properties["loop_total"].is_readonly
 
 
-def fill_grid_mesh(mesh, g, smooth=True):
-    """Replaces the geometry of `mesh` by the grid `g` (core.grid.GridArrays).
+def fill_grid_mesh_steps(mesh, g, smooth=True):
+    """Replaces the geometry of `mesh` by the grid `g` (core.grid.GridArrays),
+    yielding the fraction done after each bulk copy (a progress bar's steps;
+    each copy of a large grid takes a good part of a second).
 
     Vertices, edges, loops and polygons are all given, so Blender derives
     nothing (update(calc_edges=True) would double the time).
@@ -22,16 +24,29 @@ def fill_grid_mesh(mesh, g, smooth=True):
     mesh.edges.add(g.edge_count)
     mesh.loops.add(g.loop_count)
     mesh.polygons.add(g.face_count)
+    yield 0.1
     mesh.vertices.foreach_set("co", g.co)
+    yield 0.2
     mesh.edges.foreach_set("vertices", g.edge_vertices)
+    yield 0.3
     mesh.loops.foreach_set("vertex_index", g.loop_vertices)
+    yield 0.45
     mesh.loops.foreach_set("edge_index", g.loop_edges)
+    yield 0.6
     mesh.polygons.foreach_set("loop_start", g.loop_starts)
     if _loop_total_writable():
         mesh.polygons.foreach_set("loop_total", g.loop_totals)
+    yield 0.7
     set_uvs(mesh, g.uv)
     set_smooth(mesh, smooth)
+    yield 0.85
     mesh.update()
+
+
+def fill_grid_mesh(mesh, g, smooth=True):
+    """fill_grid_mesh_steps in one go."""
+    for _fraction in fill_grid_mesh_steps(mesh, g, smooth):
+        pass
 
 
 UV_NAME = "UVMap"

@@ -1,5 +1,5 @@
-"""From settings to a terrain mesh: reference points, generation with
-progress, building a new mesh or rewriting an existing one in place."""
+"""From settings to a terrain mesh: reference points, generation and mesh
+building as progress.Jobs (a new mesh, or an existing one rewritten in place)."""
 
 import array
 import math
@@ -10,11 +10,12 @@ import numpy as np
 
 from .. import core
 from ..core import params, raster
-from ..core.grid import NO_FLOOR, grid_arrays, grid_size, vertices
+from ..core.grid import NO_FLOOR, GridArrays, grid_arrays, grid_size, vertices
 from ..core.mesh_limits import check_grid, grid_shape
 from . import mesh_build
 from .prefs import library_threads
-from .reporting import SettingsError, WindowProgress
+from .progress import Job, run_job
+from .reporting import SettingsError
 
 
 def _dyadic_levels(size):
@@ -126,58 +127,99 @@ def z_floor(values):
     return values["sea_level"] if values["use_sea_level"] else NO_FLOOR
 
 
-def generate(values, context):
-    """A core.Heightfield for the settings (caller closes it); a grid that
-    Blender cannot hold is refused first, before any memory is taken."""
+def terrain_work(values, context, topology=True):
+    """The bpy-free half of a terrain job: work(progress) -> core.grid.GridArrays.
+
+    What needs Blender happens here first, in the main thread: a grid that
+    Blender cannot hold is refused before any memory is taken, and the
+    reference object or image is read. `topology`: False when only the
+    vertex positions are needed (an in-place rewrite).
+    """
     check_grid(*grid_shape(values))
     reference = reference_for(values)
-    with WindowProgress(context) as progress:
-        return core.generate_terrain(values, reference=reference, progress=progress,
-                                     threads=library_threads(context))
+    threads = library_threads(context)
+    world_size, floor = values["world_size"], z_floor(values)
+
+    def work(progress):
+        with core.generate_terrain(values, reference=reference, progress=progress, threads=threads) as hf:
+            if topology:
+                return grid_arrays(hf, world_size, floor, uvs=values["uvs"])
+            g = GridArrays(hf.width, hf.height)
+            g.co = vertices(hf, *grid_size(world_size, g.nx, g.ny), floor)
+            return g
+    return work
+
+
+def _build_new_mesh(g, values, name):
+    """Build steps of a new mesh datablock; removed again if cancelled or failed."""
+    mesh = bpy.data.meshes.new(name)
+    try:
+        yield from mesh_build.fill_grid_mesh_steps(mesh, g, smooth=values["smooth"])
+        mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
+    except BaseException:  # GeneratorExit too: a cancel leaves nothing behind
+        bpy.data.meshes.remove(mesh)
+        raise
+    return mesh, f"{g.nx} x {g.ny} vertices"
+
+
+def new_terrain_job(values, context, name="Fractal Terrain"):
+    """A progress.Job whose value is (mesh, summary): a new mesh holding the terrain of `values`."""
+    work = terrain_work(values, context)
+    return Job("Generating terrain", work, lambda g: _build_new_mesh(g, values, name))
 
 
 def new_terrain_mesh(values, context, name="Fractal Terrain"):
-    """(mesh, summary): a new mesh datablock holding the terrain of `values`."""
+    """(mesh, summary), built here and now (scripts, benchmarks)."""
     t0 = time.perf_counter()
-    with generate(values, context) as hf:
-        g = grid_arrays(hf, values["world_size"], z_floor(values), uvs=values["uvs"])
-    mesh = bpy.data.meshes.new(name)
-    try:
-        mesh_build.fill_grid_mesh(mesh, g, smooth=values["smooth"])
+    mesh, summary = run_job(new_terrain_job(values, context, name))
+    return mesh, f"{summary} in {time.perf_counter() - t0:.2f} s"
+
+
+def _swap_mesh(obj, new):
+    """Gives `obj` the mesh `new` in place of its old one (materials kept; the
+    old mesh goes when nothing else uses it)."""
+    old = obj.data
+    for material in old.materials:
+        new.materials.append(material)
+    obj.data = new
+    if old.users == 0:
+        name = old.name
+        bpy.data.meshes.remove(old)
+        new.name = name
+
+
+def _build_in_place(obj, g, values):
+    """Build steps of a regenerated terrain. The same grid: its positions are
+    rewritten in one step. Another grid: a new mesh is built aside and swapped
+    in at the end, so a cancel never leaves the object half-built."""
+    mesh = obj.data
+    if len(mesh.vertices) == g.vertex_count and len(mesh.polygons) == g.face_count:
+        mesh_build.rewrite_positions(mesh, g.co)
         mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
-    except BaseException:
-        bpy.data.meshes.remove(mesh)
-        raise
-    return mesh, f"{g.nx} x {g.ny} vertices in {time.perf_counter() - t0:.2f} s"
+        if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
+            mesh_build.set_uvs(mesh, g.uv if values["uvs"] else None)
+        mesh_build.set_smooth(mesh, values["smooth"])
+        return f"{g.nx} x {g.ny} terrain heights rewritten"
+    new, _summary = yield from _build_new_mesh(g, values, mesh.name)
+    _swap_mesh(obj, new)
+    return f"{g.nx} x {g.ny} terrain mesh rebuilt"
+
+
+def regenerate_job(obj, context):
+    """A progress.Job that regenerates terrain object `obj` from its stored
+    settings; its value is a summary. When the grid size is unchanged only
+    the vertex positions are rewritten."""
+    values = params.values_of(obj.fracterra_terrain)
+    nx, ny = grid_shape(values)
+    mesh = obj.data
+    same_grid = len(mesh.vertices) == nx * ny and len(mesh.polygons) == (nx - 1) * (ny - 1)
+    adds_uvs = values["uvs"] and mesh.uv_layers.get(mesh_build.UV_NAME) is None
+    work = terrain_work(values, context, topology=not same_grid or adds_uvs)
+    return Job("Regenerating terrain", work, lambda g: _build_in_place(obj, g, values))
 
 
 def regenerate_object(obj, context):
-    """Regenerates a terrain object from its stored settings.
-
-    When the grid size is unchanged only the vertex positions are rewritten
-    (one foreach_set); otherwise the mesh geometry is rebuilt. Returns a
-    summary string.
-    """
-    settings = obj.fracterra_terrain
-    values = params.values_of(settings)
-    mesh = obj.data
+    """Regenerates a terrain object here and now (auto-update, scripts); returns a summary."""
     t0 = time.perf_counter()
-    with generate(values, context) as hf:
-        nx, ny = hf.width, hf.height
-        same_grid = len(mesh.vertices) == nx * ny and len(mesh.polygons) == (nx - 1) * (ny - 1)
-        if same_grid:
-            world_size_x, world_size_y = grid_size(values["world_size"], nx, ny)
-            co = vertices(hf, world_size_x, world_size_y, z_floor(values))
-            mesh_build.rewrite_positions(mesh, co)
-            mesh_build.set_height_slope(mesh, co, nx, ny)
-            if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
-                mesh_build.set_uvs(mesh, grid_arrays(hf, values["world_size"], uvs=True).uv
-                                   if values["uvs"] else None)
-            mesh_build.set_smooth(mesh, values["smooth"])
-            how = "heights rewritten"
-        else:
-            g = grid_arrays(hf, values["world_size"], z_floor(values), uvs=values["uvs"])
-            mesh_build.fill_grid_mesh(mesh, g, smooth=values["smooth"])
-            mesh_build.set_height_slope(mesh, g.co, nx, ny)
-            how = "mesh rebuilt"
-    return f"{nx} x {ny} terrain {how} in {time.perf_counter() - t0:.2f} s"
+    summary = run_job(regenerate_job(obj, context))
+    return f"{summary} in {time.perf_counter() - t0:.2f} s"

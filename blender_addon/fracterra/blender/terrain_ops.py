@@ -6,13 +6,13 @@ from bpy_extras.io_utils import ImportHelper
 
 from ..core import params
 from . import props
-from .reporting import REPORTED
+from .progress import JobOperator
 from .settings_ui import draw_settings
-from .terrain_build import new_terrain_mesh, regenerate_object
+from .terrain_build import new_terrain_job, regenerate_job
 from .widgets import draw_size
 
 
-class FRACTERRA_OT_terrain_add(bpy.types.Operator, object_utils.AddObjectHelper):
+class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.AddObjectHelper):
     """Add a fractal terrain mesh (midpoint displacement, additions, fBm, spectral, interpolated)"""
     bl_idname = "mesh.fracterra_terrain_add"
     bl_label = "Fractal Terrain"
@@ -27,18 +27,18 @@ class FRACTERRA_OT_terrain_add(bpy.types.Operator, object_utils.AddObjectHelper)
         col.prop(self, "location")
         col.prop(self, "rotation")
 
-    def execute(self, context):
-        values = params.values_of(self)
-        try:
-            mesh, summary = new_terrain_mesh(values, context)
-        except REPORTED as e:
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
+    # From the menu it runs in the background with a progress bar (Esc
+    # cancels); the redo panel and scripts run execute() (progress.JobOperator).
+    def make_job(self, context):
+        return new_terrain_job(params.values_of(self), context)
+
+    def job_done(self, context, value):
+        mesh, summary = value
         obj = object_utils.object_data_add(context, mesh, operator=self)
         settings = obj.fracterra_terrain
         props.copy_settings(self, settings)
         settings.is_terrain = True
-        self.report({"INFO"}, f"Fractal terrain: {summary}")
+        self.report({"INFO"}, f"Fractal terrain: {summary} in {self.job_seconds:.2f} s")
         return {"FINISHED"}
 
 
@@ -46,7 +46,7 @@ class FRACTERRA_OT_terrain_add(bpy.types.Operator, object_utils.AddObjectHelper)
 FRACTERRA_OT_terrain_add.__annotations__ = {**props.terrain_annotations()}
 
 
-class FRACTERRA_OT_terrain_regenerate(bpy.types.Operator):
+class FRACTERRA_OT_terrain_regenerate(JobOperator, bpy.types.Operator):
     """Regenerate the active fractal terrain from its settings (heights only when the grid size is unchanged)"""
     bl_idname = "object.fracterra_terrain_regenerate"
     bl_label = "Regenerate Terrain"
@@ -58,16 +58,19 @@ class FRACTERRA_OT_terrain_regenerate(bpy.types.Operator):
         return (obj is not None and obj.type == "MESH" and context.mode == "OBJECT"
                 and obj.fracterra_terrain.is_terrain)
 
-    def execute(self, context):
+    def make_job(self, context):
         obj = context.active_object
-        try:
-            summary = regenerate_object(obj, context)
-        except REPORTED as e:
-            obj.fracterra_terrain.last_error = str(e)
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
         obj.fracterra_terrain.last_error = ""
-        self.report({"INFO"}, f"Fractal terrain: {summary}")
+        return regenerate_job(obj, context)
+
+    def _refuse(self, e):
+        obj = bpy.context.active_object
+        if obj is not None and obj.fracterra_terrain.is_terrain:
+            obj.fracterra_terrain.last_error = str(e)
+        return super()._refuse(e)
+
+    def job_done(self, context, summary):
+        self.report({"INFO"}, f"Fractal terrain: {summary} in {self.job_seconds:.2f} s")
         return {"FINISHED"}
 
 

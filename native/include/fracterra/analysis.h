@@ -79,6 +79,29 @@ FT_API ft_status ft_hurst_profile(const float* samples, size_t count, const ft_h
 FT_API ft_status ft_hurst_heightfield(const ft_heightfield* hf, const ft_hurst_params* params,
                                       ft_hurst_result* out);
 
+/// H of a surface too large for memory, from windows of it (ABI 2.4): the
+/// aligned variogram or madogram (params->method FT_HURST_VARIOGRAM_ALIGNED,
+/// FT_HURST_MADOGRAM_ALIGNED, or FT_HURST_AUTO on a 2^n + 1 grid) of the
+/// whole_width x whole_height surface, over the lags ft_hurst_heightfield
+/// would use on the whole. Each window (a tile sharing its edge samples with
+/// its neighbours, placed at x0, y0) adds the increments whose start node it
+/// owns; the sums of all windows, in any order, give ft_hurst_from_increment_sums
+/// the whole's estimate (equal up to the order of the additions). Lags must
+/// divide the tile size (a pair leaving its window is refused).
+/// `*count` receives the number of lags; `lags` (may be NULL when capacity is 0)
+/// receives up to `capacity` of them.
+FT_API ft_status ft_increment_lags(const ft_hurst_params* params, int64_t whole_width, int64_t whole_height,
+                                   int64_t* lags, size_t capacity, size_t* count);
+/// Adds the window's sums to sums[k] and counts[k], k < count (count must be
+/// the number of lags of ft_increment_lags). `params` may be NULL (defaults).
+FT_API ft_status ft_increment_sums(const ft_heightfield* window, const ft_hurst_params* params, int64_t x0,
+                                   int64_t y0, int64_t whole_width, int64_t whole_height, double* sums,
+                                   double* counts, size_t count);
+/// The estimate (H, D = 3 - H, fit) from the reduced sums of every window.
+FT_API ft_status ft_hurst_from_increment_sums(const ft_hurst_params* params, int64_t whole_width,
+                                              int64_t whole_height, const double* sums, const double* counts,
+                                              size_t count, ft_hurst_result* out);
+
 /// The level set of a heightfield at `level` (or at the `level`-quantile of
 /// its samples, level in [0, 1], when level_is_quantile is non-zero) as
 /// polylines: x = column, y = row, z = level, land (>= level) on the left, so

@@ -30,7 +30,8 @@ extern "C" {
 /// 2.1: erosion.h (ft_erode, its maps, ft_drainage_statistics).
 /// 2.2: windows of a terrain (ft_terrain_extent, ft_terrain_generate_window(_lod)).
 /// 2.3: raster.h (read and write by extension, ft_dem_refine).
-#define FT_ABI_VERSION_MINOR 3
+/// 2.4: tiles.h (tile sets: ft_tileset_*, ft_tile_write); H of windows from increment sums (analysis.h).
+#define FT_ABI_VERSION_MINOR 4
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -17,5 +17,6 @@
 #include "params.h"
 #include "erosion.h"
 #include "raster.h"
+#include "tiles.h"
 
 #endif

@@ -8,6 +8,7 @@
 #include "analysis/clouds.hpp"
 #include "analysis/hurst.hpp"
 #include "analysis/hurst_choice.hpp"
+#include "analysis/increment_sums.hpp"
 #include "analysis/quantile.hpp"
 #include "capi/guard.hpp"
 #include "capi/handles.hpp"
@@ -114,6 +115,67 @@ FT_API ft_status ft_hurst_heightfield(const ft_heightfield* hf, const ft_hurst_p
     std::optional<ft::HurstChoice> choice;
     const ft::HurstOptions o = to_options(params, hf->hf.width(), hf->hf.height(), choice);
     to_result(ft::estimate_hurst_surface(hf->hf, o), choice, out);
+  });
+}
+
+namespace {
+
+// The options and lags of a whole surface for the window sums.
+std::vector<int64_t> window_lags(const ft_hurst_params* params, int64_t w, int64_t h, ft::HurstOptions& o,
+                                 std::optional<ft::HurstChoice>& choice) {
+  o = to_options(params, w, h, choice);
+  return ft::surface_lags(o, w, h);
+}
+
+void check_lag_count(size_t given, size_t wanted) {
+  if (given != wanted)
+    ft::invalid("count is " + std::to_string(given) + "; this surface and band have " + std::to_string(wanted) +
+                " lags (ft_increment_lags)");
+}
+
+}  // namespace
+
+FT_API ft_status ft_increment_lags(const ft_hurst_params* params, int64_t whole_width, int64_t whole_height,
+                                   int64_t* lags, size_t capacity, size_t* count) {
+  return guarded([&] {
+    ft::check_not_null("count", count);
+    *count = 0;
+    ft::HurstOptions o;
+    std::optional<ft::HurstChoice> choice;
+    const std::vector<int64_t> l = window_lags(params, whole_width, whole_height, o, choice);
+    if (capacity > 0) ft::check_not_null("lags", lags);
+    std::copy_n(l.begin(), std::min(capacity, l.size()), lags);
+    *count = l.size();
+  });
+}
+
+FT_API ft_status ft_increment_sums(const ft_heightfield* window, const ft_hurst_params* params, int64_t x0,
+                                   int64_t y0, int64_t whole_width, int64_t whole_height, double* sums,
+                                   double* counts, size_t count) {
+  return guarded([&] {
+    ft::check_not_null("window", window);
+    ft::check_not_null("sums", sums);
+    ft::check_not_null("counts", counts);
+    ft::HurstOptions o;
+    std::optional<ft::HurstChoice> choice;
+    const std::vector<int64_t> l = window_lags(params, whole_width, whole_height, o, choice);
+    check_lag_count(count, l.size());
+    ft::add_window_increments(window->hf, o.method, x0, y0, whole_width, whole_height, l, sums, counts);
+  });
+}
+
+FT_API ft_status ft_hurst_from_increment_sums(const ft_hurst_params* params, int64_t whole_width,
+                                              int64_t whole_height, const double* sums, const double* counts,
+                                              size_t count, ft_hurst_result* out) {
+  return guarded([&] {
+    ft::check_not_null("out", out);
+    ft::check_not_null("sums", sums);
+    ft::check_not_null("counts", counts);
+    ft::HurstOptions o;
+    std::optional<ft::HurstChoice> choice;
+    const std::vector<int64_t> l = window_lags(params, whole_width, whole_height, o, choice);
+    check_lag_count(count, l.size());
+    to_result(ft::estimate_from_increments(o.method, l, sums, counts), choice, out);
   });
 }
 

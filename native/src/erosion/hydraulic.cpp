@@ -10,9 +10,19 @@
 // same fraction of its load through a pipe as of its water), so bed +
 // suspended sediment + what left at the edges is constant to rounding.
 // Bounded edges are open: outside is the edge cell's bed without water.
-// Every stage reads the previous stage's arrays (Jacobi order), rows in
-// parallel: the result is the same on any thread count.
+//
+// Speed: a pass is two sweeps over the grid, each reading only what the
+// previous sweep wrote (Jacobi order, rows in parallel, so the result is the
+// same on any thread count):
+//   sweep 1  the previous pass's sediment transport and evaporation, this
+//            pass's rain and outflow fluxes (the fluxes double-buffered: the
+//            transport reads the old ones at the neighbours);
+//   sweep 2  water depth, velocity, capacity, erosion/deposition, and the
+//            fraction of each cell's water that leaves per unit of flux.
+// Interior cells take their neighbours at fixed offsets (no edge tests), so
+// the inner loops vectorise; edge cells go through the general path.
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <vector>
 
@@ -21,111 +31,296 @@
 namespace ft::erosion {
 namespace {
 
-// Pipes: east, south, west, north (D8 directions 0, 2, 4, 6).
-constexpr int kPipe[4] = {0, 2, 4, 6};
 constexpr double kGravity = 9.81;
+
+// Neighbours of a cell through the four pipes (east, south, west, north), -1
+// outside a bounded grid.
+struct Pipes {
+  int64_t e, s, w, n;
+};
+
+struct State {
+  size_t n;
+  // bed, suspended sediment and water (two buffers where a sweep writes
+  // what its neighbours read), fluxes per pipe (current and previous), and
+  // leave[i] = dt / (cell area x water held before the outflow): the
+  // fraction of the cell's water (and sediment) that a unit of flux carries.
+  std::vector<float> b, b2, s, s2, d, d2, leave;
+  std::vector<float> flux[2][4];
+  explicit State(const float* z, size_t n_) : n(n_), b(z, z + n_), b2(n_), s(n_, 0.0f), s2(n_), d(n_, 0.0f), d2(n_),
+                                              leave(n_, 0.0f) {
+    for (auto& set : flux)
+      for (auto& p : set) p.assign(n_, 0.0f);
+  }
+};
+
+struct Constants {
+  float dt, cell_area, accel, inv_l, keep, rain, capacity, dissolve, deposit, min_tilt, max_erosion;
+};
+
+// Four values, one per pipe (east, south, west, north). Passed by value, so
+// the vectoriser sees scalars, not a local array in memory.
+struct Four {
+  float e, s, w, n;
+  float sum() const { return e + s + w + n; }
+};
+
+// The physics of one cell, on values: the sweeps gather them from the grid
+// (interior cells at fixed offsets, edge cells through the neighbour
+// lookup) and call these, so both paths compute the same thing.
+
+// Suspended sediment after the transport: what stays plus what the
+// neighbours send through their pipes towards this cell.
+inline float transported(float s, float out, float leave, float gained) { return s * (1.0f - out * leave) + gained; }
+
+// Outflow fluxes of a cell holding `di` water (after rain) with water
+// surface `surface`, beside surfaces `other` (east, south, west, north).
+inline Four outflow(const Constants& k, float surface, float di, Four other, Four old) {
+    const Four f = {std::max(0.0f, old.e + k.accel * (surface - other.e)),
+                  std::max(0.0f, old.s + k.accel * (surface - other.s)),
+                  std::max(0.0f, old.w + k.accel * (surface - other.w)),
+                  std::max(0.0f, old.n + k.accel * (surface - other.n))};
+  const float total = f.sum();
+  // (No flux: every f is 0 whatever the scale. Branch-free so it vectorises.)
+  const float scale = std::min(1.0f, di * k.cell_area / std::max(total * k.dt, FLT_MIN));
+  return {f.e * scale, f.s * scale, f.w * scale, f.n * scale};
+}
+
+struct Updated {
+  float bed, sediment, water, leave;
+};
+
+// Water depth, velocity, capacity and erosion/deposition of a cell with
+// water `before`, outflows `o` and inflows `in` (by pipe), bed `b` beside
+// beds `be, bw, bs, bn` and suspended sediment `s`.
+inline Updated update(const Constants& k, float before, Four in, Four o, float b, float be, float bw, float bs,
+                      float bn, float s) {
+  const float in_total = in.sum();
+  const float out_total = o.sum();
+  const float after = std::max(0.0f, before + k.dt * (in_total - out_total) / k.cell_area);
+  // Net flow through the cell along x and y (Mei et al. eq. 8-9).
+  const float wx = 0.5f * (in.w - o.w + o.e - in.e);
+  const float wy = 0.5f * (in.n - o.n + o.s - in.s);
+  const float mean_depth = std::max(0.5f * (before + after), 1e-4f);
+  const float speed = std::sqrt(wx * wx + wy * wy) * k.inv_l / mean_depth;
+  // Bed gradient by central differences (one-sided at bounded edges).
+  const float gx = (be - bw) * 0.5f * k.inv_l, gy = (bs - bn) * 0.5f * k.inv_l;
+  const float grad2 = gx * gx + gy * gy;
+  const float tilt = std::max(k.min_tilt, std::sqrt(grad2 / (1.0f + grad2)));
+  const float capacity = k.capacity * tilt * speed;
+  // Bed lowering (> 0: capacity above the load, at most max_erosion) or
+  // raising (< 0). As min/max, not a branch, so the loops vectorise.
+  const float excess = capacity - s;
+  const float change =
+      std::min(k.dissolve * std::max(excess, 0.0f), k.max_erosion) + k.deposit * std::min(excess, 0.0f);
+  // Water present before the outflow. A dry cell (held = 0) has no outflow,
+  // so any finite `leave` sends nothing: capped, not branched on.
+  const float held = after + k.dt * out_total / k.cell_area;
+  const float leave = std::min(k.dt / (k.cell_area * std::max(held, FLT_MIN)), FLT_MAX);
+  return {b - change, s + change, after, leave};
+}
+
+// Sweep 1 over the interior cells x0 .. x1 - 1 of a row (`row`, `up`, `down`:
+// indices of the rows' first cells). `old` are the previous pass's fluxes,
+// `now` this pass's. Without `Fluxes` (after the last pass) only transport
+// and evaporation.
+// The arrays are restrict parameters of a function that is not inlined:
+// GCC keeps restrict only on parameters, and without it the loop needs more
+// alias checks than it will version for, and does not vectorise.
+template <bool Fluxes>
+[[gnu::noinline]] void sweep1_interior(const Constants k, int64_t row, int64_t up, int64_t down, int32_t x0,
+                                       int32_t x1, const float* __restrict b, const float* __restrict d,
+                                       const float* __restrict s, const float* __restrict leave,
+                                       const float* __restrict o0, const float* __restrict o1,
+                                       const float* __restrict o2, const float* __restrict o3, float* __restrict n0,
+                                       float* __restrict n1, float* __restrict n2, float* __restrict n3,
+                                       float* __restrict s2, float* __restrict d2) {
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x, e = i + 1, w = i - 1, n = up + x, so = down + x;
+    const float out = o0[i] + o1[i] + o2[i] + o3[i];
+    const float gained = o2[e] * leave[e] * s[e] + o3[so] * leave[so] * s[so] + o0[w] * leave[w] * s[w] +
+                         o1[n] * leave[n] * s[n];
+    s2[i] = transported(s[i], out, leave[i], gained);
+    if (!Fluxes) {
+      d2[i] = d[i] * k.keep;
+      continue;
+    }
+    const float di = d[i] * k.keep + k.rain;
+    const Four other = {b[e] + (d[e] * k.keep + k.rain), b[so] + (d[so] * k.keep + k.rain),
+                        b[w] + (d[w] * k.keep + k.rain), b[n] + (d[n] * k.keep + k.rain)};
+    const Four f = outflow(k, b[i] + di, di, other, Four{o0[i], o1[i], o2[i], o3[i]});
+    n0[i] = f.e, n1[i] = f.s, n2[i] = f.w, n3[i] = f.n;
+    d2[i] = di;
+  }
+}
+
+// Sweep 1 at an edge cell (neighbours -1 outside a bounded grid: there the
+// other side is the cell's bed without water).
+template <bool Fluxes>
+void sweep1_edge(State& st, const Constants& k, const float* const* old, float* const* now, int64_t i, Pipes nb) {
+  const float* b = st.b.data();
+  const float* d = st.d.data();
+  const float* s = st.s.data();
+  const float* leave = st.leave.data();
+  const float out = old[0][i] + old[1][i] + old[2][i] + old[3][i];
+  float gained = 0.0f;
+  if (nb.e >= 0) gained += old[2][nb.e] * leave[nb.e] * s[nb.e];
+  if (nb.s >= 0) gained += old[3][nb.s] * leave[nb.s] * s[nb.s];
+  if (nb.w >= 0) gained += old[0][nb.w] * leave[nb.w] * s[nb.w];
+  if (nb.n >= 0) gained += old[1][nb.n] * leave[nb.n] * s[nb.n];
+  st.s2[i] = transported(s[i], out, leave[i], gained);
+  if (!Fluxes) {
+    st.d2[i] = d[i] * k.keep;
+    return;
+  }
+  auto surface = [&](int64_t j) { return j >= 0 ? b[j] + (d[j] * k.keep + k.rain) : b[i]; };
+  const float di = d[i] * k.keep + k.rain;
+  const Four f = outflow(k, b[i] + di, di, Four{surface(nb.e), surface(nb.s), surface(nb.w), surface(nb.n)},
+                        Four{old[0][i], old[1][i], old[2][i], old[3][i]});
+  now[0][i] = f.e, now[1][i] = f.s, now[2][i] = f.w, now[3][i] = f.n;
+  st.d2[i] = di;
+}
+
+// Sweep 2 over interior cells: reads this pass's fluxes and the bed; writes
+// b2, the cells' own sediment and water (s2, d2, which no neighbour reads
+// in this sweep) and leave.
+[[gnu::noinline]] void sweep2_interior(const Constants k, int64_t row, int64_t up, int64_t down, int32_t x0,
+                                       int32_t x1, const float* __restrict b, const float* __restrict f0,
+                                       const float* __restrict f1, const float* __restrict f2,
+                                       const float* __restrict f3, float* __restrict b2, float* __restrict s2,
+                                       float* __restrict d2, float* __restrict leave) {
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x, e = i + 1, w = i - 1, n = up + x, so = down + x;
+    const Updated u = update(k, d2[i], Four{f2[e], f3[so], f0[w], f1[n]}, Four{f0[i], f1[i], f2[i], f3[i]}, b[i],
+                             b[e], b[w], b[so], b[n], s2[i]);
+    b2[i] = u.bed;
+    s2[i] = u.sediment;
+    d2[i] = u.water;
+    leave[i] = u.leave;
+  }
+}
+
+// Sweep 2 at an edge cell; returns the sediment volume sent out of the grid.
+double sweep2_edge(State& st, const Constants& k, const float* const* now, int64_t i, Pipes nb) {
+  const float* b = st.b.data();
+  auto flux_in = [&](int64_t j, int p) { return j >= 0 ? now[p][j] : 0.0f; };
+  auto bed = [&](int64_t j) { return j >= 0 ? b[j] : b[i]; };
+  const Four in = {flux_in(nb.e, 2), flux_in(nb.s, 3), flux_in(nb.w, 0), flux_in(nb.n, 1)};
+  const Four o = {now[0][i], now[1][i], now[2][i], now[3][i]};
+  const Updated u = update(k, st.d2[i], in, o, b[i], bed(nb.e), bed(nb.w), bed(nb.s), bed(nb.n), st.s2[i]);
+  st.b2[i] = u.bed;
+  st.s2[i] = u.sediment;
+  st.d2[i] = u.water;
+  st.leave[i] = u.leave;
+  float lost = 0.0f;  // flux through pipes that leave the grid
+  if (nb.e < 0) lost += o.e;
+  if (nb.s < 0) lost += o.s;
+  if (nb.w < 0) lost += o.w;
+  if (nb.n < 0) lost += o.n;
+  return double(lost * u.leave * u.sediment) * k.cell_area;
+}
+
+// Row y: `interior(row, up, down, x0, x1)` over the cells with four
+// neighbours at fixed offsets, `edge(i, pipes)` on the others (the ends,
+// and the first and last rows of a bounded grid).
+template <class Interior, class Edge>
+inline void each_in_row(const D8Grid& g, int32_t y, Interior&& interior, Edge&& edge) {
+  const int32_t w = g.width;
+  const int64_t row = int64_t(y) * w;
+  auto general = [&](int32_t x) {
+    edge(row + x, Pipes{g.neighbour(x, y, 0), g.neighbour(x, y, 2), g.neighbour(x, y, 4), g.neighbour(x, y, 6)});
+  };
+  const bool inner_row = g.periodic || (y > 0 && y < g.height - 1);
+  if (!inner_row) {
+    for (int32_t x = 0; x < w; ++x) general(x);
+    return;
+  }
+  // Rows above and below (wrapped on a torus).
+  const int64_t up = (y > 0 ? y - 1 : g.height - 1) * int64_t(w), down = (y < g.height - 1 ? y + 1 : 0) * int64_t(w);
+  general(0);
+  interior(row, up, down, 1, w - 1);
+  general(w - 1);
+}
 
 }  // namespace
 
 void hydraulic(const D8Grid& g, float* z, const HydraulicConfig& c, float* water_out, MassBudget* budget,
                const Progress& progress) {
   const size_t n = g.size();
-  const int32_t w = g.width, h = g.height;
-  // b: the bed; each stage writes arrays no other cell of the stage reads.
-  std::vector<float> b(z, z + n), b2(n), d(n, 0.0f), s(n, 0.0f), s2(n), flux(4 * n, 0.0f), frac(4 * n);
-  const float dt = float(c.dt);
-  const float cell_area = float(g.spacing * g.spacing);
-  const float accel = float(c.dt * kGravity * g.spacing);  // dt g A / l with A = l^2
-  const float inv_l = float(1.0 / g.spacing);
-  const float max_erosion = float(c.max_erosion > 0 ? c.max_erosion : g.spacing / 100);
-  double carried_out = 0.0;
-  auto nb = [&](int32_t x, int32_t y, int p) { return g.neighbour(x, y, kPipe[p]); };
-  for (int32_t it = 0; it < c.iterations; ++it) {
-    const float rain = float(c.rain);
+  const int32_t h = g.height;
+  State st(z, n);
+  Constants k;
+  k.dt = float(c.dt);
+  k.cell_area = float(g.spacing * g.spacing);
+  k.accel = float(c.dt * kGravity * g.spacing);  // dt g A / l with A = l^2
+  k.inv_l = float(1.0 / g.spacing);
+  k.keep = float(1.0 - c.evaporation);
+  k.rain = float(c.rain);
+  k.capacity = float(c.capacity);
+  k.dissolve = float(c.dissolve);
+  k.deposit = float(c.deposit);
+  k.min_tilt = float(c.min_tilt);
+  k.max_erosion = float(c.max_erosion > 0 ? c.max_erosion : g.spacing / 100);
+  // Sediment leaving per row, summed in row order afterwards (the same sum
+  // on any thread count).
+  std::vector<double> row_out(size_t(h), 0.0);
+  int cur = 0;  // st.flux[cur]: this pass's fluxes
+  for (int32_t it = 0; it <= c.iterations; ++it) {
+    const bool last = it == c.iterations;  // only the transport of the last pass is left
+    cur = it & 1;
+    const float* old[4] = {st.flux[1 - cur][0].data(), st.flux[1 - cur][1].data(), st.flux[1 - cur][2].data(),
+                           st.flux[1 - cur][3].data()};
+    float* now[4] = {st.flux[cur][0].data(), st.flux[cur][1].data(), st.flux[cur][2].data(),
+                     st.flux[cur][3].data()};
 #pragma omp parallel for schedule(static)
-    for (int64_t i = 0; i < int64_t(n); ++i) d[i] += rain;
-    // Outflow fluxes (flux[p * n + i]: volume per second through pipe p).
+    for (int32_t y = 0; y < h; ++y) {
+      if (last)
+        each_in_row(
+            g, y,
+            [&](int64_t row, int64_t up, int64_t down, int32_t x0, int32_t x1) {
+              sweep1_interior<false>(k, row, up, down, x0, x1, st.b.data(), st.d.data(), st.s.data(),
+                                     st.leave.data(), old[0], old[1], old[2], old[3], now[0], now[1], now[2], now[3],
+                                     st.s2.data(), st.d2.data());
+            },
+            [&](int64_t i, Pipes p) { sweep1_edge<false>(st, k, old, now, i, p); });
+      else
+        each_in_row(
+            g, y,
+            [&](int64_t row, int64_t up, int64_t down, int32_t x0, int32_t x1) {
+              sweep1_interior<true>(k, row, up, down, x0, x1, st.b.data(), st.d.data(), st.s.data(),
+                                    st.leave.data(), old[0], old[1], old[2], old[3], now[0], now[1], now[2], now[3],
+                                    st.s2.data(), st.d2.data());
+            },
+            [&](int64_t i, Pipes p) { sweep1_edge<true>(st, k, old, now, i, p); });
+    }
+    if (last) {
+      st.s.swap(st.s2);
+      st.d.swap(st.d2);
+      break;
+    }
+    // Sweep 2 reads s2 and d2 of the cell itself only, and updates them in place.
 #pragma omp parallel for schedule(static)
-    for (int32_t y = 0; y < h; ++y)
-      for (int32_t x = 0; x < w; ++x) {
-        const size_t i = size_t(y) * w + x;
-        const float surface = b[i] + d[i];
-        float f[4], total = 0.0f;
-        for (int p = 0; p < 4; ++p) {
-          const int64_t j = nb(x, y, p);
-          const float other = j < 0 ? b[i] : b[j] + d[j];
-          f[p] = std::max(0.0f, flux[p * n + i] + accel * (surface - other));
-          total += f[p];
-        }
-        const float scale = total > 0.0f ? std::min(1.0f, d[i] * cell_area / (total * dt)) : 0.0f;
-        for (int p = 0; p < 4; ++p) flux[p * n + i] = f[p] * scale;
-      }
-    // Water depth, velocity, capacity, erosion/deposition; then the fraction
-    // of water (and so of suspended sediment) leaving through each pipe.
-#pragma omp parallel for schedule(static) reduction(+ : carried_out)
-    for (int32_t y = 0; y < h; ++y)
-      for (int32_t x = 0; x < w; ++x) {
-        const size_t i = size_t(y) * w + x;
-        float in[4], out_total = 0.0f, in_total = 0.0f;
-        for (int p = 0; p < 4; ++p) {
-          const int64_t j = nb(x, y, p);
-          in[p] = j < 0 ? 0.0f : flux[((p + 2) & 3) * n + size_t(j)];
-          in_total += in[p];
-          out_total += flux[p * n + i];
-        }
-        const float before = d[i];
-        const float after = std::max(0.0f, before + dt * (in_total - out_total) / cell_area);
-        // Net flow through the cell along x and y (Mei et al. eq. 8-9).
-        const float wx = 0.5f * (in[2] - flux[2 * n + i] + flux[0 * n + i] - in[0]);
-        const float wy = 0.5f * (in[3] - flux[3 * n + i] + flux[1 * n + i] - in[1]);
-        const float mean_depth = std::max(0.5f * (before + after), 1e-4f);
-        const float speed = std::hypot(wx, wy) * inv_l / mean_depth;
-        // Bed gradient by central differences (one-sided at bounded edges).
-        auto bed = [&](int p) {
-          const int64_t j = nb(x, y, p);
-          return j < 0 ? b[i] : b[j];
-        };
-        const float gx = (bed(0) - bed(2)) * 0.5f * inv_l, gy = (bed(1) - bed(3)) * 0.5f * inv_l;
-        const float grad = std::hypot(gx, gy);
-        const float tilt = std::max(float(c.min_tilt), grad / std::sqrt(1.0f + grad * grad));
-        const float capacity = float(c.capacity) * tilt * speed;
-        float change;  // bed lowering (> 0) or raising (< 0)
-        if (capacity > s[i]) change = std::min(float(c.dissolve) * (capacity - s[i]), max_erosion);
-        else change = -float(c.deposit) * (s[i] - capacity);
-        b2[i] = b[i] - change;
-        s[i] += change;
-        d[i] = after;
-        // Fractions of this cell's water leaving through each pipe this pass.
-        const float held = after + dt * out_total / cell_area;  // water present before the outflow
-        for (int p = 0; p < 4; ++p) {
-          const float fr = held > 0.0f ? dt * flux[p * n + i] / cell_area / held : 0.0f;
-          frac[p * n + i] = fr;
-          if (nb(x, y, p) < 0) carried_out += double(fr * s[i]) * cell_area;
-        }
-      }
-    b.swap(b2);
-    // Suspended sediment moves with the water; evaporation.
-#pragma omp parallel for schedule(static)
-    for (int32_t y = 0; y < h; ++y)
-      for (int32_t x = 0; x < w; ++x) {
-        const size_t i = size_t(y) * w + x;
-        float left = 1.0f;
-        float gained = 0.0f;
-        for (int p = 0; p < 4; ++p) {
-          left -= frac[p * n + i];
-          const int64_t j = nb(x, y, p);
-          if (j >= 0) gained += frac[((p + 2) & 3) * n + size_t(j)] * s[j];
-        }
-        s2[i] = s[i] * left + gained;
-        d[i] *= float(1.0 - c.evaporation);
-      }
-    s.swap(s2);
+    for (int32_t y = 0; y < h; ++y) {
+      double lost = 0.0;
+      each_in_row(
+          g, y,
+          [&](int64_t row, int64_t up, int64_t down, int32_t x0, int32_t x1) {
+            sweep2_interior(k, row, up, down, x0, x1, st.b.data(), now[0], now[1], now[2], now[3], st.b2.data(),
+                            st.s2.data(), st.d2.data(), st.leave.data());
+          },
+          [&](int64_t i, Pipes p) { lost += sweep2_edge(st, k, now, i, p); });
+      row_out[size_t(y)] += lost;
+    }
+    st.b.swap(st.b2);
+    st.s.swap(st.s2);
+    st.d.swap(st.d2);
     progress.report(double(it + 1) / c.iterations);
   }
   // What is still suspended settles where it is.
-  for (size_t i = 0; i < n; ++i) z[i] = b[i] + s[i];
-  if (water_out) std::copy(d.begin(), d.end(), water_out);
-  if (budget) budget->carried_out += carried_out;
+  for (size_t i = 0; i < n; ++i) z[i] = st.b[i] + st.s[i];
+  if (water_out) std::copy(st.d.begin(), st.d.end(), water_out);
+  if (budget)
+    for (const double v : row_out) budget->carried_out += v;
 }
 
 }  // namespace ft::erosion

@@ -1,0 +1,57 @@
+/// @file fracterra/tiles.h
+/// Tile sets: a terrain larger than memory written as tiles that share their
+/// edge samples, with one height scale, a manifest (manifest.json) and a GDAL
+/// VRT mosaic (docs/scale.md). The driver opens the set, writes each tile not
+/// yet done with ft_tile_write (a pure function: any process, any order, safe
+/// to retry), records its CRC-32 and finishes. Added in ABI 2.4.
+#ifndef FRACTERRA_TILES_H
+#define FRACTERRA_TILES_H
+
+#include "core.h"
+#include "terrain.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// Tile file formats.
+enum {
+  FT_TILES_PNG16 = 0, ///< 16-bit PNG, (z - min) 65535 / (max - min), one range for the set; .pgw world file
+  FT_TILES_TIFF = 1   ///< Cloud-Optimized GeoTIFF float32, exact heights, georeferenced
+};
+
+/// An open tile set folder (the driver's side). Free with ft_tileset_free.
+typedef struct ft_tileset ft_tileset;
+
+/// Opens or resumes the tile set of terrain `p` cut into tiles of `tile`
+/// cells (tile + 1 samples, 2 <= tile <= 65536) in folder `dir` (created).
+/// A folder holding another tile set's manifest is refused (FT_ERR_INVALID_ARGUMENT,
+/// the message names the first difference). A new set's height range is
+/// computed here (a bound from a coarse pass for midpoint, exact otherwise;
+/// docs/scale.md) and its manifest written at once.
+FT_API ft_status ft_tileset_open(const ft_terrain_params* p, int32_t tile, int32_t format, const char* dir,
+                                 ft_tileset** out);
+/// NULL-safe.
+FT_API void ft_tileset_free(ft_tileset* set);
+/// Tiles across and down.
+FT_API ft_status ft_tileset_grid(const ft_tileset* set, int32_t* columns, int32_t* rows);
+/// The common height range of the set (what ft_tile_write needs).
+FT_API ft_status ft_tileset_height_range(const ft_tileset* set, double* min, double* max);
+/// *done = 1 when the tile's file exists and its CRC-32 is the one recorded.
+FT_API ft_status ft_tileset_tile_done(const ft_tileset* set, int32_t column, int32_t row, int32_t* done);
+/// Records a written tile's CRC-32 (rewrites manifest.json atomically).
+FT_API ft_status ft_tileset_record(ft_tileset* set, int32_t column, int32_t row, uint32_t crc32);
+/// Every tile recorded: writes mosaic.vrt (+ .ovr overviews) and marks the manifest complete.
+FT_API ft_status ft_tileset_finish(ft_tileset* set);
+
+/// Generates tile (column, row) of terrain `p` and writes it into `dir`
+/// (temporary name, then rename); `*crc32` receives the CRC-32 (zlib) of the
+/// file. The same arguments give the same bytes in any process. Fails if a
+/// sample falls outside [height_min, height_max].
+FT_API ft_status ft_tile_write(const ft_terrain_params* p, int32_t tile, int32_t format, double height_min,
+                               double height_max, const char* dir, int32_t column, int32_t row, uint32_t* crc32);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,94 @@
+// The C ABI of tile sets (fracterra/tiles.h).
+#include <memory>
+
+#include "capi/guard.hpp"
+#include "fracterra/tiles.h"
+#include "terrain/terrain_params.hpp"
+#include "tiles/tileset.hpp"
+
+struct ft_tileset {
+  std::unique_ptr<ft::TileSet> set;
+};
+
+using ft::capi::guarded;
+
+namespace {
+
+ft::TileFormat format_of(int32_t format) {
+  if (format != FT_TILES_PNG16 && format != FT_TILES_TIFF)
+    ft::invalid("format must be FT_TILES_PNG16 (0) or FT_TILES_TIFF (1), got " + std::to_string(format));
+  return ft::TileFormat(format);
+}
+
+const ft::TileSet& set_of(const ft_tileset* s) {
+  ft::check_not_null("set", s);
+  return *s->set;
+}
+
+}  // namespace
+
+FT_API ft_status ft_tileset_open(const ft_terrain_params* p, int32_t tile, int32_t format, const char* dir,
+                                 ft_tileset** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("params", p);
+    ft::check_not_null("dir", dir);
+    auto s = std::make_unique<ft_tileset>();
+    s->set = std::make_unique<ft::TileSet>(ft::upgraded(ft::terrain_param_table(), *p), tile, format_of(format), dir);
+    *out = s.release();
+  });
+}
+
+FT_API void ft_tileset_free(ft_tileset* set) { delete set; }
+
+FT_API ft_status ft_tileset_grid(const ft_tileset* set, int32_t* columns, int32_t* rows) {
+  return guarded([&] {
+    ft::check_not_null("columns", columns);
+    ft::check_not_null("rows", rows);
+    *columns = set_of(set).spec().grid.columns();
+    *rows = set_of(set).spec().grid.rows();
+  });
+}
+
+FT_API ft_status ft_tileset_height_range(const ft_tileset* set, double* min, double* max) {
+  return guarded([&] {
+    ft::check_not_null("min", min);
+    ft::check_not_null("max", max);
+    *min = set_of(set).spec().height_min;
+    *max = set_of(set).spec().height_max;
+  });
+}
+
+FT_API ft_status ft_tileset_tile_done(const ft_tileset* set, int32_t column, int32_t row, int32_t* done) {
+  return guarded([&] {
+    ft::check_not_null("done", done);
+    *done = set_of(set).done(column, row) ? 1 : 0;
+  });
+}
+
+FT_API ft_status ft_tileset_record(ft_tileset* set, int32_t column, int32_t row, uint32_t crc32) {
+  return guarded([&] {
+    ft::check_not_null("set", set);
+    set->set->record(column, row, crc32);
+  });
+}
+
+FT_API ft_status ft_tileset_finish(ft_tileset* set) {
+  return guarded([&] {
+    ft::check_not_null("set", set);
+    set->set->finish();
+  });
+}
+
+FT_API ft_status ft_tile_write(const ft_terrain_params* p, int32_t tile, int32_t format, double height_min,
+                               double height_max, const char* dir, int32_t column, int32_t row, uint32_t* crc32) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    ft::check_not_null("dir", dir);
+    ft::check_not_null("crc32", crc32);
+    *crc32 = 0;
+    const ft_terrain_params q = ft::upgraded(ft::terrain_param_table(), *p);
+    const ft::TileSpec spec = ft::make_tile_spec(q, tile, format_of(format), height_min, height_max);
+    *crc32 = ft::write_tile(q, spec, dir, column, row);
+  });
+}

@@ -1,0 +1,55 @@
+#include "tiles/height_range.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "terrain/terrain.hpp"
+
+namespace ft {
+namespace {
+
+constexpr int kCoarseLevels = 12;     // the bound's coarse pass: at most 4097^2 samples
+constexpr double kGaussianBound = 5.9;  // |g| <= sqrt(50 ln 2) = 5.888 (see the header)
+
+bool has_midpoint_bound(const ft_terrain_params& p) {
+  if (p.method != FT_TERRAIN_MIDPOINT) return false;
+  if (p.reference == nullptr) return true;
+  const int m = dyadic_levels(p.reference_size);
+  return p.reference_scale == FT_REFSCALE_SIGMA && m >= 1 && m <= std::min(p.levels, kCoarseLevels);
+}
+
+}  // namespace
+
+double midpoint_bound_margin(int levels, int m, double hurst, double sigma) {
+  double sum = 0.0;
+  for (int k = 2 * m + 1; k <= 2 * levels; ++k) sum += sigma * std::pow(2.0, -0.5 * k * hurst);
+  return kGaussianBound * sum;
+}
+
+HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& grid) {
+  HeightRange r;
+  if (p.method == FT_TERRAIN_MANDELBROT) {
+    r = {0.0, p.sigma, "formula"};
+    return r;
+  }
+  if (has_midpoint_bound(p)) {
+    const int m = std::min(p.levels, kCoarseLevels), lod = p.levels - m;
+    const int32_t side = int32_t((int64_t(1) << m) + 1);
+    const HeightStats s = generate_terrain_window(p, lod, 0, 0, side, side).stats();
+    const double margin = midpoint_bound_margin(p.levels, m, p.hurst, p.sigma);
+    const double slack = 1e-5 * (std::max(std::abs(s.min), std::abs(s.max)) + margin);
+    r = {s.min - margin - (lod ? slack : 0.0), s.max + margin + (lod ? slack : 0.0), lod ? "bound" : "exact"};
+    return r;
+  }
+  r = {INFINITY, -INFINITY, "exact"};
+  for (int32_t row = 0; row < grid.rows(); ++row)
+    for (int32_t col = 0; col < grid.columns(); ++col) {
+      const Window w = grid.window(col, row);
+      const HeightStats s = generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height).stats();
+      r.min = std::min(r.min, s.min);
+      r.max = std::max(r.max, s.max);
+    }
+  return r;
+}
+
+}  // namespace ft

@@ -1,0 +1,78 @@
+#include "tiles/mosaic_vrt.hpp"
+
+#include <cpl_conv.h>
+#include <cpl_string.h>
+#include <gdal.h>
+#include <gdal_utils.h>
+
+#include <filesystem>
+#include <vector>
+
+#include "core/error.hpp"
+#include "io/gdal_session.hpp"
+
+namespace ft {
+namespace {
+
+struct StringList {
+  char** list = nullptr;
+  ~StringList() { CSLDestroy(list); }
+  void add(const std::string& s) { list = CSLAddString(list, s.c_str()); }
+};
+
+// GDAL's configuration options are process-wide: set for the overview build, then restored.
+struct ConfigOption {
+  std::string key, old;
+  bool had = false;
+  ConfigOption(const char* k, const char* value) : key(k) {
+    if (const char* v = CPLGetConfigOption(k, nullptr)) old = v, had = true;
+    CPLSetConfigOption(k, value);
+  }
+  ~ConfigOption() { CPLSetConfigOption(key.c_str(), had ? old.c_str() : nullptr); }
+};
+
+}  // namespace
+
+void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
+  namespace fs = std::filesystem;
+  const fs::path folder(dir);
+  const std::string final_vrt = (folder / kMosaicName).string();
+  const std::string temp_vrt = (folder / ".mosaic.tmp.vrt").string();
+  fs::remove(temp_vrt);
+  fs::remove(temp_vrt + ".ovr");
+
+  GdalSession session;
+  StringList sources;
+  for (int32_t row = 0; row < spec.grid.rows(); ++row)
+    for (int32_t col = 0; col < spec.grid.columns(); ++col) sources.add((folder / tile_file_name(spec, col, row)).string());
+  {
+    GDALBuildVRTOptions* options = GDALBuildVRTOptionsNew(nullptr, nullptr);
+    int usage_error = 0;
+    GdalDataset vrt(GDALBuildVRT(temp_vrt.c_str(), CSLCount(sources.list), nullptr, sources.list, options, &usage_error));
+    GDALBuildVRTOptionsFree(options);
+    if (!vrt) session.fail(FT_ERR_IO, "GDAL could not build the mosaic '" + final_vrt + "'");
+    GDALRasterBandH band = GDALGetRasterBand(vrt.get(), 1);
+    if (spec.format == TileFormat::png16) {
+      GDALSetRasterOffset(band, spec.height_min);
+      GDALSetRasterScale(band, (spec.height_max - spec.height_min) / 65535.0);
+    }
+    GDALSetMetadataItem(vrt.get(), "FRACTERRA_WORLD_SIZE",
+                        format_number(spec.spacing * double(spec.grid.width - 1)).c_str(), nullptr);
+  }
+  // Overviews of the closed VRT go to its external .ovr (DEFLATE).
+  std::vector<int> factors;
+  for (int f = 2; std::max(spec.grid.width, spec.grid.height) / f >= 256; f *= 2) factors.push_back(f);
+  if (!factors.empty()) {
+    ConfigOption compress("COMPRESS_OVERVIEW", "DEFLATE");
+    GdalDataset vrt(GDALOpen(temp_vrt.c_str(), GA_ReadOnly));
+    if (!vrt) session.fail(FT_ERR_IO, "GDAL could not reopen the mosaic '" + final_vrt + "'");
+    if (GDALBuildOverviews(vrt.get(), "AVERAGE", int(factors.size()), factors.data(), 0, nullptr, nullptr, nullptr) !=
+        CE_None)
+      session.fail(FT_ERR_IO, "GDAL could not build the overviews of '" + final_vrt + "'");
+  }
+  if (!factors.empty()) fs::rename(temp_vrt + ".ovr", final_vrt + ".ovr");
+  else fs::remove(final_vrt + ".ovr");
+  fs::rename(temp_vrt, final_vrt);
+}
+
+}  // namespace ft

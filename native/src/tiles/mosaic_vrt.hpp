@@ -1,0 +1,20 @@
+// The GDAL VRT mosaic of a finished tile set, so that gdalinfo, QGIS and
+// every GDAL reader open the whole as one raster: built by GDALBuildVRT from
+// the tiles' georeferencing (world files for PNG, the GeoTIFFs' own), with
+// the 16-bit tiles' common scale as the band's offset and scale (real height
+// = offset + scale * value), and overviews (factors 2, 4, ... down to about
+// 256 samples a side, averaged) in an external mosaic.vrt.ovr. Both files are
+// made under temporary names and renamed into place.
+#pragma once
+
+#include <string>
+
+#include "tiles/tile_writer.hpp"
+
+namespace ft {
+
+inline constexpr const char* kMosaicName = "mosaic.vrt";
+
+void write_mosaic_vrt(const TileSpec& spec, const std::string& dir);
+
+}  // namespace ft

@@ -1,0 +1,116 @@
+#include "tiles/tileset.hpp"
+
+#include <filesystem>
+#include <optional>
+
+#include "core/error.hpp"
+#include "terrain/terrain.hpp"
+#include "tiles/manifest.hpp"
+#include "tiles/mosaic_vrt.hpp"
+
+namespace ft {
+namespace {
+
+void make_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) fail(FT_ERR_IO, "'" + dir + "' exists and is not a folder");
+  fs::create_directories(dir, ec);
+  if (ec) fail(FT_ERR_IO, "cannot create the folder '" + dir + "': " + ec.message());
+}
+
+nlohmann::json new_manifest(const nlohmann::json& terrain, const TileSpec& s, const HeightRange& r) {
+  nlohmann::json m = {{"format", "fracterra-tileset"},
+                      {"version", 1},
+                      {"terrain", terrain},
+                      {"tile", s.grid.tile},
+                      {"tile_format", format_name(s.format)},
+                      {"width", s.grid.width},
+                      {"height", s.grid.height},
+                      {"columns", s.grid.columns()},
+                      {"rows", s.grid.rows()},
+                      {"sample_spacing", s.spacing},
+                      {"world_size", {s.spacing * double(s.grid.width - 1), s.spacing * double(s.grid.height - 1)}},
+                      {"height_range", {{"min", r.min}, {"max", r.max}, {"how", r.how}}},
+                      {"complete", false}};
+  nlohmann::json tiles = nlohmann::json::array();
+  for (int32_t row = 0; row < s.grid.rows(); ++row)
+    for (int32_t col = 0; col < s.grid.columns(); ++col) {
+      const Window w = s.grid.window(col, row);
+      tiles.push_back({{"column", col},
+                       {"row", row},
+                       {"file", tile_file_name(s, col, row)},
+                       {"x0", w.x0},
+                       {"y0", w.y0},
+                       {"width", w.width},
+                       {"height", w.height},
+                       {"crc32", nullptr}});
+    }
+  m["tiles"] = std::move(tiles);
+  return m;
+}
+
+}  // namespace
+
+TileSet::TileSet(const ft_terrain_params& p, int64_t tile, TileFormat format, std::string dir) : dir_(std::move(dir)) {
+  spec_ = make_tile_spec(p, tile, format);
+  if (dir_.empty()) invalid("give the tile set's folder");
+  make_folder(dir_);
+
+  const nlohmann::json terrain = terrain_identity(p);
+  const nlohmann::json wanted = {{"terrain", terrain}, {"tile", spec_.grid.tile}, {"tile_format", format_name(format)}};
+  if (std::optional<nlohmann::json> old = read_manifest(dir_)) {
+    const std::string diff = identity_difference(wanted, *old);
+    if (!diff.empty())
+      invalid("the folder '" + dir_ + "' holds another tile set (" + diff +
+              "); choose another folder or remove its manifest.json and tiles");
+    manifest_ = std::move(*old);
+    spec_.height_min = manifest_["height_range"]["min"].get<double>();
+    spec_.height_max = manifest_["height_range"]["max"].get<double>();
+    return;
+  }
+  const HeightRange r = tileset_height_range(p, spec_.grid);
+  spec_.height_min = r.min;
+  spec_.height_max = r.max;
+  manifest_ = new_manifest(terrain, spec_, r);
+  write_manifest(dir_, manifest_);
+}
+
+nlohmann::json& TileSet::entry(int32_t col, int32_t row) {
+  spec_.grid.check_tile(col, row);
+  return manifest_["tiles"][size_t(row) * size_t(spec_.grid.columns()) + size_t(col)];
+}
+
+bool TileSet::done(int32_t col, int32_t row) const {
+  spec_.grid.check_tile(col, row);
+  const nlohmann::json& e = manifest_["tiles"][size_t(row) * size_t(spec_.grid.columns()) + size_t(col)];
+  if (e["crc32"].is_null()) return false;
+  const std::string path = (std::filesystem::path(dir_) / e["file"].get<std::string>()).string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  return file_crc32(path) == e["crc32"].get<uint32_t>();
+}
+
+void TileSet::record(int32_t col, int32_t row, uint32_t crc) {
+  entry(col, row)["crc32"] = crc;
+  write_manifest(dir_, manifest_);
+}
+
+int64_t TileSet::recorded() const {
+  int64_t n = 0;
+  for (const nlohmann::json& e : manifest_["tiles"]) n += !e["crc32"].is_null();
+  return n;
+}
+
+void TileSet::finish() {
+  const int64_t n = recorded();
+  if (n != spec_.grid.count())
+    invalid("the tile set in '" + dir_ + "' has " + std::to_string(n) + " of " + std::to_string(spec_.grid.count()) +
+            " tiles; write the rest before finishing it");
+  write_mosaic_vrt(spec_, dir_);
+  manifest_["vrt"] = kMosaicName;
+  manifest_["complete"] = true;
+  write_manifest(dir_, manifest_);
+}
+
+}  // namespace ft
