@@ -44,11 +44,12 @@ int run(RefineCli& o) {
   } catch (const std::exception&) {
     invalid("--levels must be +K, the number of levels to add (1..12), got '" + o.levels + "'");
   }
-  // A number given is the value itself: a negative one is not a way to say auto.
+  // A number given is the value itself: a negative one is not a way to say
+  // auto. The rest of each range is the table's (dem_refine_config).
   o.p.hurst = number_or_auto(o.hurst, "--hurst", -1.0);
-  if (o.hurst != "auto") check_range("--hurst", o.p.hurst, 0.0, 0.99);
+  if (o.hurst != "auto" && !(o.p.hurst >= 0)) invalid("--hurst must be auto or H >= 0, got " + o.hurst);
   o.p.sigma = number_or_auto(o.sigma, "--sigma", -1.0);
-  if (o.sigma != "auto") check_positive("--sigma", o.p.sigma);
+  if (o.sigma != "auto" && !(o.p.sigma > 0)) invalid("--sigma must be auto or > 0, got " + o.sigma);
   if (!o.window.empty()) {
     int x = -1, y = -1, side = 0;
     char tail = 0;
@@ -62,8 +63,8 @@ int run(RefineCli& o) {
   const NodataPolicy policy = o.nodata == "fill" ? NodataPolicy::fill
                               : o.nodata == "refuse" ? NodataPolicy::refuse
                                                      : NodataPolicy::keep;
+  const DemRefineConfig c = dem_refine_config(o.p);  // the ranges, before the DEM is read
   const Heightfield dem = read_heightfield(o.in, policy);
-  const DemRefineConfig c = dem_refine_config(o.p);
   const DemRefineResult r = refine_dem(dem, c);
   write_heightfield(r.terrain, o.out);
   nlohmann::json j = {{"dem", {dem.width(), dem.height()}},

@@ -122,8 +122,16 @@ void add_param_flags(CLI::App& app, const ParamTable& table, void* params, const
       const ft_param_info* r = &row;
       app.add_flag_callback(names, [params, r] { store(params, *r, int32_t(1)); },
                             help + (row.default_value != 0 ? " [default: on]" : ""));
+      // A setting that is on by default needs a way to turn it off.
+      if (row.default_value != 0)
+        app.add_flag_callback("--no-" + flag_of(row.name).substr(2), [params, r] { store(params, *r, int32_t(0)); },
+                              "turn " + flag_of(row.name) + " off");
       continue;
     }
+    // An enum's values say what each one means: the table documents them one by one.
+    if (row.type == FT_PARAM_ENUM)
+      for (int i = 0; i < row.enum_count; ++i)
+        help += std::string(i ? "; " : ". ") + cli_name(row.enum_items[i]) + ": " + row.enum_items[i].doc;
     const std::string range = row.type == FT_PARAM_ENUM ? "" : range_text(row);
     if (!range.empty()) help += "; range " + range;
     std::string type = row.type == FT_PARAM_ENUM ? "" : is_integer(row.type) ? (row.type == FT_PARAM_UINT64 ? "UINT" : "INT")

@@ -325,7 +325,7 @@ TEST(Params, TheNewTablesRangesAreChecked) {
   refused(ft_dem_refine(hf, &r, &out, nullptr), "method must be one of 0 (MIDPOINT), 1 (ADDITIONS)");
   ft_dem_refine_params_init(&r);
   r.hurst = 0.995;
-  refused(ft_dem_refine(hf, &r, &out, nullptr), "hurst must be a finite number <= 0.98");
+  refused(ft_dem_refine(hf, &r, &out, nullptr), "hurst must be a finite number <= 0.99, got 0.995");
   ft_dem_refine_params_init(&r);
   r.struct_size = 12;
   refused(ft_dem_refine(hf, &r, &out, nullptr), "ft_dem_refine_params.struct_size is 12");

@@ -71,6 +71,11 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
             _prop(box, data, "reference_levels")
             _prop(box, data, "reference_height")
             _prop(box, data, "reference_scale")
+        elif data.reference_source == "DEM":
+            _prop(box, data, "reference_file")
+            _prop(box, data, "reference_levels")
+            box.prop(data, "reference_height", text="Relief if not georeferenced")
+            _prop(box, data, "reference_scale")
     sub = col.column(heading="Mesh", align=True)
     _prop(sub, data, "uvs")
     _prop(sub, data, "smooth")

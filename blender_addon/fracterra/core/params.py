@@ -102,6 +102,8 @@ REFERENCE_SOURCES = (
     ("NONE", "None", "No reference points: a free fractal terrain", 0),
     ("OBJECT", "Grid Object", "Heights of a mesh whose vertices form a (2^m + 1)^2 grid", 1),
     ("IMAGE", "Image", "An image resampled to (2^m + 1)^2 reference points", 2),
+    ("DEM", "DEM File", "A digital elevation model (GeoTIFF, .hgt, ASCII grid, ... read by GDAL) resampled "
+     "to (2^m + 1)^2 reference points, in its true proportions", 3),
 )
 
 
@@ -227,10 +229,15 @@ TERRAIN_PARAMS = _LIBRARY_TERRAIN + (
           methods=_DYADIC),
     Param("reference_image", "string", "", "Image", "Image whose brightness gives the reference heights",
           methods=_DYADIC),
+    Param("reference_file", "string", "", "DEM File",
+          "Elevation raster whose heights become the reference points (any format GDAL reads; holes are "
+          "filled by GDAL's inverse-distance fill)", subtype="FILE_PATH", methods=_DYADIC),
     Param("reference_levels", "int", 4, "Reference Levels",
-          "The image is resampled to 2^m + 1 points per side (at most Levels)", min=1, max=12,
+          "The image or DEM is resampled to 2^m + 1 points per side (at most Levels)", min=1, max=12,
           methods=_DYADIC),
-    Param("reference_height", "float", 5.0, "Image Height", "Height of white in the image, in scene units",
+    Param("reference_height", "float", 5.0, "Image Height",
+          "Height of white in the image; for a DEM without georeferencing, the height of its highest point "
+          "above its lowest (scene units)",
           soft_min=-1000.0, soft_max=1000.0, subtype="DISTANCE", unit="LENGTH", methods=_DYADIC),
     # Mesh options.
     Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
