@@ -12,6 +12,7 @@
 #include "core/polyline_set.hpp"
 #include "povray/camera.hpp"
 #include "povray/heightfield_export.hpp"
+#include "povray/tiled_terrain.hpp"
 
 namespace ft::pov {
 
@@ -46,6 +47,10 @@ struct SceneParams {
   std::string image_path;
   std::string title;                     // written as a comment
   int32_t image_width = 800;             // pixels the automatic line radius is sized for, 16..16384
+  // A tile set instead of one terrain PNG: `terrain` is then a coarse
+  // preview of the whole (for framing and the sea level) and the scene draws
+  // these tiles' height_fields edge to edge (tiled_terrain.hpp).
+  const TiledTerrain* tiles = nullptr;
 };
 
 struct SceneSummary {
