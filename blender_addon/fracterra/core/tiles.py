@@ -64,12 +64,12 @@ class SchedulerUnreachable(FracterraError):
 
 
 def _lib():
-    """The library with the tile functions declared (ABI 2.4)."""
+    """The library with the tile functions declared (ABI 2.5)."""
     lib = library()
     if not getattr(lib, "_tiles_bound", False):
         missing = lib._bind(_TILES_SIGNATURES)
         if missing:
-            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.4 or later")
+            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.5 or later")
         lib._tiles_bound = True
     return lib
 
@@ -380,4 +380,8 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    # Run from the package module, not from __main__: Dask pickles the tasks by
+    # reference to fracterra.core.tiles, which every worker imports (functions
+    # of __main__ would be pickled by value, with their ctypes globals).
+    from fracterra.core import tiles as _tiles
+    sys.exit(_tiles.main())
