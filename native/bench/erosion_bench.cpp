@@ -90,13 +90,13 @@ BENCHMARK(AntMaps)->Arg(513)->Unit(benchmark::kMillisecond)->UseRealTime();
 void Fluvial(benchmark::State& state) {
   const ft::Heightfield src = grid(int32_t(state.range(0)));
   ErosionConfig c;
-  c.fluvial.steps = 10;
+  c.fluvial.steps = std::getenv("FT_STEPS") ? std::atoi(std::getenv("FT_STEPS")) : 10;
   c.fluvial.uplift = 1e-4;
   c.threads = bench_threads();
   for (auto _ : state) benchmark::DoNotOptimize(erode(src, c, nullptr).data());
   state.counters["steps"] = 10;
 }
-BENCHMARK(Fluvial)->Arg(513)->Arg(1025)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(Fluvial)->Arg(513)->Arg(1025)->Arg(2049)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 

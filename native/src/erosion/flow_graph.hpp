@@ -13,18 +13,26 @@
 
 namespace ft::erosion {
 
+// Runs of the stack (a fixed number, so results never depend on the
+// thread count).
+inline constexpr int32_t kStackChunks = 64;
+
 struct FlowGraph {
   std::vector<int32_t> receiver;   // receiver[i] == i: a base level (outlet or declared sink)
   std::vector<float> length;       // distance to the receiver (0 at base levels)
   std::vector<int32_t> stack;      // every cell after its receiver
   std::vector<int32_t> donor_start, donors;  // donors of i: donors[donor_start[i] .. donor_start[i+1])
-  std::vector<int32_t> work;       // DFS scratch
+  std::vector<int32_t> work;       // scratch
+  // The stack in runs of whole trees (independent: they go to threads):
+  // run c is stack[chunk_start[c] .. chunk_start[c + 1]).
+  std::vector<int32_t> bases, chunk_start;
   int64_t pits = 0;                // interior cells without a lower neighbour at the last routing
   // Scratch of fill_pits_locally: visit stamps (one number per search, so
   // nothing is cleared between searches) and the cells of one depression.
   std::vector<uint32_t> seen, closed;
   uint32_t stamp = 0;
   std::vector<int32_t> region;
+  std::vector<int32_t> changed;  // cells the last fill_pits_locally raised
 };
 
 // The cell a periodic grid drains to: the lowest sample (the first in row
@@ -39,7 +47,8 @@ int32_t periodic_sink(const D8Grid& g, const float* z);
 void route_steepest(const D8Grid& g, const float* z, int32_t sink, FlowGraph& graph);
 
 // Donor lists by an O(n) count and the stack by depth-first search from the
-// base levels in index order (Braun & Willett 2013, section 2.2).
+// base levels in index order (Braun & Willett 2013, section 2.2), the trees
+// in kStackChunks runs searched in parallel.
 void build_stack(const D8Grid& g, FlowGraph& graph);
 
 // Drainage area in world units^2 (each cell spacing^2, including its own),
@@ -57,11 +66,17 @@ int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink);
 // flood from the pit finds the lowest spill cell (one with a lower cell
 // outside the depression, or an outlet), then the depression is raised to
 // drain to it. Cost: the depressions' size, not the grid's (diffusion leaves
-// many small pits each step; a global fill each step would dominate).
+// many small pits each step; a global fill each step would dominate). The
+// raised cells are listed in graph.changed.
 void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph);
 
+// Routes again the cells in graph.changed and their neighbours (the only
+// ones whose steepest descent a local fill can change), keeping graph.pits.
+void reroute_changed(const D8Grid& g, const float* z, int32_t sink, FlowGraph& graph);
+
 // The usual sequence: route; while pits remain, fill them locally and route
-// again (a global fill after a few rounds); then the stack.
+// the raised cells again (a global fill and a full routing when pits are
+// more than one cell in 16, or after a few rounds); then the stack.
 void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph);
 
 }  // namespace ft::erosion

@@ -22,6 +22,24 @@ struct Open {
   bool operator<(const Open& o) const { return z > o.z || (z == o.z && i > o.i); }
 };
 
+// A binary heap on a vector that keeps its storage between searches
+// (std::priority_queue can only be emptied by popping or reallocating).
+struct OpenHeap {
+  std::vector<Open> v;
+  bool empty() const { return v.empty(); }
+  void clear() { v.clear(); }
+  void push(Open o) {
+    v.push_back(o);
+    std::push_heap(v.begin(), v.end());
+  }
+  int32_t pop() {
+    std::pop_heap(v.begin(), v.end());
+    const int32_t i = v.back().i;
+    v.pop_back();
+    return i;
+  }
+};
+
 }  // namespace
 
 int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink) {
@@ -90,8 +108,9 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
   std::vector<int32_t> pits;
   for (size_t i = 0; i < n; ++i)
     if (graph.receiver[i] == int32_t(i) && !is_outlet(int32_t(i))) pits.push_back(int32_t(i));
-  std::priority_queue<Open> open;
+  OpenHeap open;
   std::deque<int32_t> pit_queue;
+  graph.changed.clear();
   for (const int32_t p : pits) {
     // An earlier fill may have drained this pit already (same depression).
     bool drained = false;
@@ -110,13 +129,12 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
     const uint32_t stamp = graph.stamp;
     // 1. Flood from the pit, lowest first, to the first cell that drains out.
     graph.region.clear();
-    open = {};
+    open.clear();
     open.push({z[p], p});
     graph.seen[p] = stamp;
     int32_t spill = -1;
     while (!open.empty()) {
-      const int32_t c = open.top().i;
-      open.pop();
+      const int32_t c = open.pop();
       const int32_t cx = c % g.width, cy = c / g.width;
       bool drains = is_outlet(c);
       for (int k = 0; k < 8 && !drains; ++k) {
@@ -138,7 +156,7 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
     // 2. Priority-Flood+epsilon from the spill cell over the depression only
     //    (and the cells of a flat at the spill level next to it).
     const float spill_level = z[spill];
-    open = {};
+    open.clear();
     open.push({z[spill], spill});
     graph.closed[spill] = stamp;
     for (const int32_t c : graph.region) graph.closed[c] = stamp - 1;  // in the region, not yet closed
@@ -148,8 +166,7 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
         c = pit_queue.front();
         pit_queue.pop_front();
       } else {
-        c = open.top().i;
-        open.pop();
+        c = open.pop();
       }
       const int32_t cx = c % g.width, cy = c / g.width;
       const float above = std::nextafter(z[c], INFINITY);
@@ -164,6 +181,7 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
         if (z[j] <= z[c]) {
           z[j] = above;
           pit_queue.push_back(int32_t(j));
+          graph.changed.push_back(int32_t(j));
         } else {
           open.push({z[j], int32_t(j)});
         }

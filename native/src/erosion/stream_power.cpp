@@ -53,20 +53,24 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
     for (int64_t i = 0; i < int64_t(n); ++i)
       erodibility[i] = float(kdt * (c.m == 0.5 ? std::sqrt(area[i]) : std::pow(area[i], c.m)));
     auto edge_f = [&](int32_t i) { return erodibility[i] * inv_spacing; };
-    for (size_t k = 0; k < n; ++k) {
-      const int32_t i = graph.stack[k];
-      const int32_t r = graph.receiver[i];
-      if (r == i) {
-        // An outlet drains to the sea beyond the edge, at the base level one
-        // spacing away: edges wear down with the land instead of standing
-        // as walls at their fractal heights.
-        if (!g.periodic && z[i] > base) z[i] = (z[i] + edge_f(i) * base) / (1.0f + edge_f(i));
-        continue;
+    // Runs of whole trees are independent; each is solved in stack order.
+    const int32_t chunks = int32_t(graph.chunk_start.size()) - 1;
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int32_t ch = 0; ch < chunks; ++ch)
+      for (int32_t k = graph.chunk_start[ch]; k < graph.chunk_start[ch + 1]; ++k) {
+        const int32_t i = graph.stack[k];
+        const int32_t r = graph.receiver[i];
+        if (r == i) {
+          // An outlet drains to the sea beyond the edge, at the base level one
+          // spacing away: edges wear down with the land instead of standing
+          // as walls at their fractal heights.
+          if (!g.periodic && z[i] > base) z[i] = (z[i] + edge_f(i) * base) / (1.0f + edge_f(i));
+          continue;
+        }
+        if (lake_floor(z[i], z[r])) continue;
+        const float f = erodibility[i] / graph.length[i];
+        z[i] = (z[i] + f * z[r]) / (1.0f + f);
       }
-      if (lake_floor(z[i], z[r])) continue;
-      const float f = erodibility[i] / graph.length[i];
-      z[i] = (z[i] + f * z[r]) / (1.0f + f);
-    }
     if (c.diffusion > 0.0) {
       // Lake floors keep their height (refilling the dents would cost more
       // than the rest of the step).
