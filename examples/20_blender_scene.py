@@ -186,8 +186,10 @@ def main():
     kw = dict(method=args.method, levels=args.levels, hurst=args.hurst, sigma=args.sigma, seed=args.seed,
               world_size=args.size, width=2 ** args.levels + 1, height=2 ** args.levels + 1,
               location=(0, 0, 0))
+    # The demo's terrain is a piece of a larger land (no island falloff, no levelling).
+    kw.update(levelling=0.0, height_offset=0.0, falloff="NONE")
     if args.sea_level is not None:
-        kw.update(use_sea_level=True, sea_level=args.sea_level)
+        kw.update(sea="HEIGHT", sea_level=args.sea_level)
     bpy.ops.mesh.fracterra_terrain_add(**kw)
     terrain = bpy.context.active_object
     print(f"20_blender_scene: terrain {len(terrain.data.vertices)} vertices in {time.perf_counter() - t0:.2f} s")

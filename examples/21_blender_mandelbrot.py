@@ -67,7 +67,8 @@ def main():
     nx = args.samples_x
     ny = max(2, round((nx - 1) * 0.75) + 1)
     settings = dict(method="MANDELBROT", width=nx, height=ny, center_x=args.cx, center_y=args.cy, zoom=args.zoom,
-                    iterations=args.iterations, supersample=2, sigma=2.0, world_size=size)
+                    iterations=args.iterations, supersample=2, sigma=2.0, world_size=size,
+                    levelling=0.0, height_offset=0.0, falloff="NONE")  # the set as it is: no landform
     t0 = time.perf_counter()
     bpy.ops.mesh.fracterra_terrain_add(location=(0, 0, 0), **settings)
     terrain = bpy.context.active_object

@@ -38,12 +38,19 @@ def f32(x):
 
 
 def library_heights(**values):
-    """The library's own heights for these settings, with floats rounded as Blender stores them."""
+    """The library's own heights for these settings, with floats rounded as Blender stores them;
+    the settings not given are the add-on's defaults (its landform, not the library's neutral one)."""
     values = {k: f32(v) if isinstance(v, float) else v for k, v in values.items()}
-    for name in ("hurst", "sigma"):  # defaults too come through float properties
-        values.setdefault(name, f32(core().params.PARAMS_BY_NAME[name].default))
+    for p in core().params.TERRAIN_PARAMS:  # defaults too come through float properties
+        if p.field and p.kind in ("int", "float", "bool", "enum"):
+            values.setdefault(p.name, f32(p.default) if p.kind == "float" else p.default)
     with core().generate_terrain(values) as hf:
         return hf.to_array()
+
+
+# The raw method's heights: the add-on's default landform (levelled, raised,
+# faded out) would move the values these tests compare.
+RAW = dict(levelling=0.0, height_offset=0.0, falloff="NONE")
 
 
 def add_terrain(**kw):
@@ -136,11 +143,30 @@ class TerrainAddTest(unittest.TestCase):
                              library_heights(method=method, width=40, height=24, seed=5).tobytes())
 
     def test_sea_level_flattens_the_low_ground(self):
-        obj = add_terrain(levels=5, seed=2, use_sea_level=True, sea_level=0.25)
+        obj = add_terrain(levels=5, seed=2, sea="HEIGHT", sea_level=0.25)
         z = coords(obj.data)[2::3]
-        lib = library_heights(levels=5, seed=2)
+        lib = library_heights(levels=5, seed=2, sea="NONE")
         self.assertEqual(min(z), f32(0.25))
         self.assertEqual(list(z), [max(h, f32(0.25)) for h in lib])
+
+    def test_sea_fraction_covers_that_share_for_every_seed(self):
+        for seed in (1, 2):
+            obj = add_terrain(levels=5, seed=seed, sea="FRACTION", sea_fraction=0.4, **RAW)
+            z = coords(obj.data)[2::3]
+            self.assertEqual(z.count(min(z)), int(f32(0.4) * 33 * 33) + 1, f"seed {seed}")
+
+    def test_the_default_is_a_landform_that_falls_to_its_edges(self):
+        obj = add_terrain()
+        n = 2 ** obj.fracterra_terrain.levels + 1
+        z = coords(obj.data)[2::3]
+        edge = [z[k] for k in range(n)] + [z[k * n] for k in range(n)]
+        centre = z[(n // 2) * n + n // 2]
+        settings = obj.fracterra_terrain
+        self.assertNotEqual(settings.falloff, "NONE")
+        self.assertTrue(all(h == f32(settings.edge_level) for h in edge), (min(edge), max(edge)))  # no walls
+        # A landform, not a slab: its relief is a good part of its size, and its middle stands above its edges.
+        self.assertGreater(max(z) - min(z), 0.1 * settings.world_size)
+        self.assertGreater(centre, max(edge))
 
     def test_presets_apply_and_build(self):
         folder = Path(bpy.utils.user_resource("SCRIPTS", path="presets/operator/mesh.fracterra_terrain_add"))
@@ -176,7 +202,7 @@ class TerrainAddTest(unittest.TestCase):
         ref_mesh.from_pydata(shuffled, [], [])
         ref = bpy.data.objects.new("Reference Grid", ref_mesh)
         bpy.context.scene.collection.objects.link(ref)
-        obj = add_terrain(levels=5, seed=1, reference_source="OBJECT", reference_object=ref.name)
+        obj = add_terrain(levels=5, seed=1, reference_source="OBJECT", reference_object=ref.name, **RAW)
         z = coords(obj.data)[2::3]
         step = 32 // 8
         for j in range(9):
@@ -190,11 +216,28 @@ class TerrainAddTest(unittest.TestCase):
             px[4 * (y * 8 + x):4 * (y * 8 + x) + 3] = [v, v, v]
         img.pixels.foreach_set(px)
         obj = add_terrain(levels=4, seed=1, reference_source="IMAGE", reference_image=img.name,
-                          reference_levels=2, reference_height=4.0)
+                          reference_levels=2, reference_height=4.0, **RAW)
         z = coords(obj.data)[2::3]
         n = 17
         for (row, col), v in {(0, 0): 0.0, (0, n - 1): 4.0, (n - 1, 0): 1.0, (n - 1, n - 1): 3.0}.items():
             self.assertAlmostEqual(z[row * n + col], v, places=5)
+
+    def test_reference_image_picker_lists_only_readable_images(self):
+        props = addon_harness.submodule("blender.props")
+        from types import SimpleNamespace as NS
+        fake = [NS(name="Render Result", type="RENDER_RESULT"), NS(name="Viewer Node", type="COMPOSITING"),
+                NS(name="photo.png", type="IMAGE"), NS(name="Untitled", type="UV_TEST")]
+        self.assertEqual(props.reference_image_choices(fake), ["photo.png", "Untitled"])
+        # The picker reads and writes the stored name.
+        img = bpy.data.images.new("ref", 9, 9)
+        obj = add_terrain(levels=4, seed=1)
+        settings = obj.fracterra_terrain
+        settings.reference_image_pick = "ref"
+        self.assertEqual(settings.reference_image, "ref")
+        self.assertEqual(settings.reference_image_pick, "ref")
+        settings.reference_image = ""
+        self.assertEqual(settings.reference_image_pick, "NONE")
+        bpy.data.images.remove(img)
 
     def test_open_button_loads_a_reference_image_file(self):
         import tempfile
@@ -600,7 +643,7 @@ class TerrainToolsTest(unittest.TestCase):
                       "no coastline at level 1e+06")
 
     def test_coastline_defaults_to_the_sea_level_and_is_visible(self):
-        terrain = add_terrain(levels=5, seed=2, world_size=10.0, use_sea_level=True, sea_level=-0.5)
+        terrain = add_terrain(levels=5, seed=2, world_size=10.0, sea="HEIGHT", sea_level=-0.5, sigma=1.0, **RAW)
         self.assertEqual(bpy.ops.curve.fracterra_coastline_add(), {"FINISHED"})
         coast = bpy.context.active_object
         self.assertGreater(len(coast.data.splines), 0)
@@ -642,7 +685,7 @@ class TerrainToolsTest(unittest.TestCase):
 
     def test_pov_export_writes_and_renders_the_scene(self):
         import tempfile
-        add_terrain(levels=5, seed=2, use_sea_level=True, sea_level=0.0)
+        add_terrain(levels=5, seed=2, sea="FRACTION", sea_fraction=0.3)
         bpy.ops.curve.fracterra_polyline_add(start=(-5, 0, 2), end=(5, 0, 2), depth=4)
         bpy.ops.object.camera_add(location=(0, -20, 10))
         bpy.context.scene.camera = bpy.context.active_object

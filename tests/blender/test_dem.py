@@ -80,7 +80,8 @@ class DemTest(unittest.TestCase):
         self.assertIn("bad.tif", str(cm.exception))
 
     def add_dem_terrain(self, path, **kw):
-        return bpy.ops.mesh.fracterra_terrain_add(method="MIDPOINT", levels=4, reference_source="DEM",
+        return bpy.ops.mesh.fracterra_terrain_add(method="MIDPOINT", levels=4, reference_source="DEM", levelling=0.0,
+                                                  height_offset=0.0, falloff="NONE",  # the raw heights
                                                   reference_file=path, reference_levels=2, **kw)
 
     def test_a_dem_is_a_terrains_reference_and_stays_editable(self):

@@ -68,6 +68,9 @@ class TerrainPropertiesTest(unittest.TestCase):
                 if row["type"] == "enum":
                     items = [(i.identifier, i.value) for i in prop.enum_items]
                     self.assertEqual(items, [(n, v) for n, _l, _d, v in row["items"]], (where, name))
+                    if name in overrides:  # the add-on's own default, with its reason
+                        self.assertEqual(prop.default, overrides[name][0], (where, name))
+                        continue
                     default = next(v for n, _l, _d, v in row["items"] if n == prop.default)
                     want = overrides.get(name, (None,))[0]
                     if want is not None:
@@ -87,7 +90,10 @@ class TerrainPropertiesTest(unittest.TestCase):
                     self.assertLess(prop.hard_min, lo + 1e-5 * max(1, abs(lo)), (where, name))
                 elif abs(lo) < 1e30:
                     self.assertAlmostEqual(prop.hard_min, max(lo, -2**31), places=4, msg=(where, name))
-                if abs(hi) < 1e30:
+                if row["flags"] & 8:
+                    self.assertLess(prop.hard_max, hi, (where, name))
+                    self.assertGreater(prop.hard_max, hi - 1e-5 * max(1, abs(hi)), (where, name))
+                elif abs(hi) < 1e30:
                     self.assertAlmostEqual(prop.hard_max, min(hi, 2**31 - 1), delta=abs(hi) * 1e-6,
                                            msg=(where, name))
         return checked

@@ -46,6 +46,16 @@ if(FT_BLENDER)
   set_tests_properties(blender_example_mandelbrot PROPERTIES LABELS blender TIMEOUT 120)
 endif()
 
+# The presets and the default beside A.N.T.'s default: every preset builds and renders (tiny).
+if(FT_BLENDER)
+  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_example_presets)
+  add_test(NAME blender_example_presets
+    COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch} FRACTERRA_LIBRARY=$<TARGET_FILE:fracterra>
+            ${FT_BLENDER} -b --factory-startup --python ${PROJECT_SOURCE_DIR}/examples/22_blender_presets.py
+            -- --out ${CMAKE_CURRENT_BINARY_DIR}/example_presets --max-levels 5 --resolution 48x30 --samples 1)
+  set_tests_properties(blender_example_presets PROPERTIES LABELS blender TIMEOUT 180)
+endif()
+
 # Undo needs a window (background Blender keeps no undo stack): run it under Xvfb.
 find_program(FT_XVFB_RUN xvfb-run)
 if(FT_BLENDER AND FT_XVFB_RUN)

@@ -259,5 +259,27 @@ TEST_F(Cli, ReliefPreviewIsAnRgbPng) {
   EXPECT_EQ(img.width, 65);
 }
 
+TEST_F(Cli, TerrainLandformFlagsComeFromTheTable) {
+  // The flags are the table's rows: an island with a sea covering 40% of it.
+  const CliRun help = run("terrain --help");
+  for (const char* flag : {"--levelling", "--height-offset", "--falloff", "--falloff-width", "--edge-level", "--sea ",
+                           "--sea-level", "--sea-fraction"})
+    EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
+  const std::string out = path("island.npy");
+  const CliRun r = run("terrain --levels 6 --seed 3 --levelling 1 --falloff radial --falloff-width 0.5 --edge-level -1 "
+                       "--sea fraction --sea-fraction 0.4 --out " + out);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Heightfield hf = read_heightfield(out);
+  // Outside the inscribed circle (21% of the samples) the falloff reaches the
+  // edge level, -1; the sea covering 40% lies above it and floods the corners.
+  const float sea = float(hf.stats().min);
+  EXPECT_GT(sea, -1.0f);
+  EXPECT_EQ(hf.at(0, 0), sea);
+  EXPECT_EQ(size_t(std::count(hf.data(), hf.data() + hf.size(), sea)), size_t(0.4 * 65 * 65) + 1);
+  const CliRun bad = run("terrain --levels 6 --falloff oval --out " + path("bad.npy"));
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("falloff"), std::string::npos) << bad.err;
+}
+
 }  // namespace
 }  // namespace ft

@@ -35,6 +35,10 @@ const std::vector<Field> kTerrainFields = {
     FT_FIELD(ft_terrain_params, world_size), FT_FIELD(ft_terrain_params, center_x),
     FT_FIELD(ft_terrain_params, center_y), FT_FIELD(ft_terrain_params, zoom),
     FT_FIELD(ft_terrain_params, iterations), FT_FIELD(ft_terrain_params, supersample),
+    FT_FIELD(ft_terrain_params, levelling), FT_FIELD(ft_terrain_params, height_offset),
+    FT_FIELD(ft_terrain_params, falloff), FT_FIELD(ft_terrain_params, falloff_width),
+    FT_FIELD(ft_terrain_params, edge_level), FT_FIELD(ft_terrain_params, sea),
+    FT_FIELD(ft_terrain_params, sea_level), FT_FIELD(ft_terrain_params, sea_fraction),
 };
 
 const std::vector<Field> kProfileFields = {
@@ -358,6 +362,7 @@ TEST(Params, ASizeBetweenTwoVersionsIsRefusedNamingTheSizesAllowed) {
   EXPECT_EQ(ft_terrain_generate(&p, &hf), FT_ERR_INVALID_ARGUMENT);
   const std::string sizes = std::to_string(offsetof(ft_terrain_params, world_size)) + ", " +
                             std::to_string(offsetof(ft_terrain_params, center_x)) + ", " +
+                            std::to_string(offsetof(ft_terrain_params, levelling)) + ", " +
                             std::to_string(sizeof(ft_terrain_params));
   EXPECT_NE(std::string(ft_last_error()).find(sizes), std::string::npos) << ft_last_error();
 }

@@ -157,6 +157,18 @@ TEST(Tiles, MidpointBoundHoldsTheWholeAndIsTight) {
   }
 }
 
+TEST(Tiles, LandformsTakeTheExactRange) {
+  // The midpoint bound covers the raw method's displacements only: with a
+  // landform (here an island falloff) the range is the tiles' exact one.
+  ft_terrain_params p = midpoint(9, 3);
+  p.levelling = 1, p.height_offset = 1, p.falloff = FT_FALLOFF_RADIAL, p.falloff_width = 0.5, p.edge_level = -2;
+  const HeightRange r = tileset_height_range(p, make_tile_grid(513, 513, 256));
+  EXPECT_EQ(r.how, "exact");
+  const HeightStats s = generate_terrain(p).stats();
+  EXPECT_EQ(r.min, s.min);
+  EXPECT_EQ(r.max, s.max);
+}
+
 TEST(Tiles, RerunSkipsTilesWhoseChecksumMatches) {
   const ft_terrain_params p = midpoint(8, 11);
   const fs::path dir = fresh_dir("resume");

@@ -33,15 +33,16 @@ class FRACTERRA_PT_terrain(bpy.types.Panel):
         obj = context.active_object
         settings = getattr(obj, "fracterra_terrain", None) if obj is not None else None
         if settings is None or not settings.is_terrain:
-            layout.label(text="The active object is not a fractal terrain.")
+            draw_wrapped(layout, "The active object is not a fractal terrain.", width=32)
             layout.operator(TERRAIN_ADD, text="Add Fractal Terrain", icon="RNDCURVE")
             return
-        row = layout.row(align=True)
-        row.operator(TERRAIN_REGENERATE, text="Regenerate", icon="FILE_REFRESH")
-        row.prop(settings, "auto_update", toggle=True)
+        # One button a row: side by side the sidebar cuts their labels.
+        col = layout.column(align=True)
+        col.operator(TERRAIN_REGENERATE, text="Regenerate", icon="FILE_REFRESH")
+        col.prop(settings, "auto_update", toggle=True)
         if settings.last_error:
-            draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True)
-        draw_settings(layout, settings)
+            draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True, width=32)
+        draw_settings(layout, settings, compact=True)
         draw_size(layout, params.values_of(settings))
 
 
@@ -59,12 +60,12 @@ class FRACTERRA_PT_polyline(bpy.types.Panel):
         layout = self.layout
         draw_library_problem(layout)
         settings = context.active_object.fracterra_polyline
-        row = layout.row(align=True)
-        row.operator(POLYLINE_REGENERATE, text="Regenerate", icon="FILE_REFRESH")
-        row.prop(settings, "auto_update", toggle=True)
+        col = layout.column(align=True)
+        col.operator(POLYLINE_REGENERATE, text="Regenerate", icon="FILE_REFRESH")
+        col.prop(settings, "auto_update", toggle=True)
         if settings.last_error:
-            draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True)
-        draw_polyline_settings(layout, settings)
+            draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True, width=32)
+        draw_polyline_settings(layout, settings, compact=True)
 
 
 class FRACTERRA_PT_measures(bpy.types.Panel):

@@ -13,7 +13,7 @@ from .curve_build import curve_from_polylines, link_new_object, spline_nodes
 from .polyline_build import default_radius, polyline_data, regenerate_polyline
 from .reporting import REPORTED, SettingsError
 from .settings_ui import draw_polyline_settings
-from .terrain_objects import heightfield_of, is_polyline, is_terrain
+from .terrain_objects import heightfield_of, is_polyline, is_terrain, sea_height
 
 
 def edge_chain(mesh):
@@ -175,29 +175,30 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
         cls.poll_message_set(COASTLINE_NEEDS)
         return False
 
-    def defaults_from(self, settings):
-        """What the caller left unset comes from the terrain: its sea level when it
-        has one, and a tube visible at its size."""
+    def defaults_from(self, settings, sea):
+        """What the caller left unset comes from the terrain: its sea (height
+        `sea`, None without one) when it has one, and a tube visible at its size."""
         is_set = self.properties.is_property_set
-        if settings.use_sea_level and not (is_set("use_quantile") or is_set("quantile") or is_set("level")):
-            self.use_quantile, self.level = False, settings.sea_level
+        if sea is not None and not (is_set("use_quantile") or is_set("quantile") or is_set("level")):
+            self.use_quantile, self.level = False, sea
         if not is_set("radius"):
             self.radius = settings.world_size / 500
 
     def execute(self, context):
         terrain = coastline_terrain(context.active_object)
         settings = terrain.fracterra_terrain
-        self.defaults_from(settings)
         try:
             with heightfield_of(terrain) as hf:
                 nx, ny = hf.width, hf.height
                 world_size_x, world_size_y = core.grid_size(settings.world_size, nx, ny)
                 s = hf.stats()
+                sea = sea_height(settings, s["min"])
+                self.defaults_from(settings, sea)
                 level = self.quantile if self.use_quantile else self.level
-                if not self.use_quantile and settings.use_sea_level and level <= settings.sea_level:
+                if not self.use_quantile and sea is not None and level <= sea:
                     # The flattened sea lies exactly at the sea level and counts as land
                     # there (land: height >= level): take the level just above it.
-                    level = settings.sea_level + 1e-5 * max(s["max"] - s["min"], 1e-6)
+                    level = sea + 1e-5 * max(s["max"] - s["min"], 1e-6)
                 with core.coastline(hf, level, quantile=self.use_quantile) as pl:
                     if pl.line_count == 0:
                         # Not an empty curve without a word: say why.

@@ -11,7 +11,7 @@ from .. import core
 from ..core import povray
 from .curve_build import curve_polylines
 from .reporting import REPORTED, SettingsError
-from .terrain_objects import heightfield_of, is_terrain
+from .terrain_objects import heightfield_of, is_terrain, sea_height
 
 
 def _direction_angles(v):
@@ -65,7 +65,7 @@ class FRACTERRA_OT_export_pov(bpy.types.Operator, ExportHelper):
                 world_size_x, world_size_y = core.grid_size(settings.world_size, hf.width, hf.height)
                 frame = terrain.matrix_world.inverted()
                 shift = Vector((world_size_x / 2, world_size_y / 2, 0.0))  # the writer's terrain spans 0..size
-                water = settings.sea_level if settings.use_sea_level else None
+                water = sea_height(settings, hf.stats()["min"])
             else:
                 world_size_x = world_size_y = 1.0
                 frame, shift, water = Matrix.Identity(4), Vector((0, 0, 0)), None

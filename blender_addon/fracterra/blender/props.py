@@ -40,9 +40,49 @@ def bpy_property(p, update=None):
     raise TypeError(f"unknown parameter kind {p.kind!r} for {p.name}")
 
 
+def reference_image_choices(images):
+    """The images a reference can be read from: files and generated images. Render
+    Result and Viewer Node are left out: they hold no pixels that Python can read."""
+    return [image.name for image in images if image.type not in ("RENDER_RESULT", "COMPOSITING")]
+
+
+# Blender keeps only pointers to the strings of a dynamic enum's items: the
+# list must outlive the callback (a known crash otherwise).
+_IMAGE_ITEMS = []
+
+
+def _image_items(self, context):
+    _IMAGE_ITEMS[:] = [("NONE", "None", "No image", "BLANK1", 0)] + [
+        (name, name, "Use this image's brightness as the reference heights", "IMAGE_DATA", k + 1)
+        for k, name in enumerate(reference_image_choices(bpy.data.images))]
+    return _IMAGE_ITEMS
+
+
+def _get_image_pick(self):
+    names = reference_image_choices(bpy.data.images)
+    return names.index(self.reference_image) + 1 if self.reference_image in names else 0
+
+
+def _set_image_pick(self, value):
+    names = reference_image_choices(bpy.data.images)
+    self.reference_image = names[value - 1] if 0 < value <= len(names) else ""
+
+
+def reference_image_picker(update=None):
+    """The picker drawn for reference_image: an enum over the readable images
+    that reads and writes the stored name (prop_search would list every image)."""
+    kw = {"update": update} if update is not None else {}
+    return EnumProperty(name="Image", description="Image whose brightness gives the reference heights (files "
+                                                  "and generated images; Open loads a file)",
+                        items=_image_items, get=_get_image_pick, set=_set_image_pick, options={"SKIP_SAVE"}, **kw)
+
+
 def terrain_annotations(update=None, param_list=None):
     """{name: property} for every setting (terrain unless another list is given)."""
-    return {p.name: bpy_property(p, update) for p in param_list or params.TERRAIN_PARAMS}
+    out = {p.name: bpy_property(p, update) for p in param_list or params.TERRAIN_PARAMS}
+    if "reference_image" in out:
+        out["reference_image_pick"] = reference_image_picker(update)
+    return out
 
 
 def _on_setting_changed(self, context):

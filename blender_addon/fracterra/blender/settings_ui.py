@@ -7,79 +7,105 @@ import bpy
 from ..core import params
 
 
-def draw_settings(layout, data, show_reference_pickers=True):
+def _prop(layout, data, name):
+    """layout.prop, except that without the property split (the narrow sidebar)
+    an enum gets its label beside it (Blender would drop it)."""
+    if layout.use_property_split or data.bl_rna.properties[name].type != "ENUM":
+        layout.prop(data, name)
+        return
+    row = layout.split(factor=0.4, align=True)
+    row.label(text=data.bl_rna.properties[name].name)
+    row.prop(data, name, text="")
+
+
+def draw_settings(layout, data, show_reference_pickers=True, compact=False):
     """Lays out the settings of `data` (operator or PropertyGroup), grouped, showing
-    only what the chosen method uses."""
+    only what the chosen method uses. `compact` (the sidebar): labels inside the
+    fields, where the split layout of the redo panel would cut them."""
     method = data.method
     col = layout.column(align=False)
-    col.use_property_split = True
+    col.use_property_split = not compact
     col.use_property_decorate = False
-    col.prop(data, "method")
+    _prop(col, data, "method")
     sub = col.column(align=True)
     if method in params.DYADIC_METHODS:
-        sub.prop(data, "levels")
+        _prop(sub, data, "levels")
         side = 2 ** data.levels + 1
         sub.label(text=f"{side} x {side} vertices", icon="MESH_GRID")
     else:
-        sub.prop(data, "width")
-        sub.prop(data, "height")
+        _prop(sub, data, "width")
+        _prop(sub, data, "height")
     sub = col.column(align=True)
     for name in ("hurst", "sigma", "seed", "periodic"):
         if params.is_used(params.PARAMS_BY_NAME[name], method):
-            sub.prop(data, name)
+            _prop(sub, data, name)
     sub = col.column(align=True)
-    sub.prop(data, "world_size")
-    row = sub.row(heading="Sea Level", align=True)
-    row.prop(data, "use_sea_level", text="")
-    r = row.row(align=True)
-    r.active = data.use_sea_level
-    r.prop(data, "sea_level", text="")
+    _prop(sub, data, "world_size")
+    draw_landform(col, data)
     if method == "FBM":
         box = col.box().column(align=True)
         box.label(text="Noise")
         for name in ("basis", "variant", "octaves", "lacunarity", "gain", "frequency", "offset",
                      "octave_rotation", "warp"):
-            box.prop(data, name)
+            _prop(box, data, name)
     elif method == "INTERPOLATED":
-        col.prop(data, "lacunarity")
+        _prop(col, data, "lacunarity")
     elif method == "MANDELBROT":
         box = col.box().column(align=True)
         box.label(text="Mandelbrot Set")
         for name in ("center_x", "center_y", "zoom", "iterations", "supersample"):
-            box.prop(data, name)
+            _prop(box, data, name)
     if method in params.DYADIC_METHODS:
         box = col.box().column(align=True)
-        box.prop(data, "reference_source")
+        _prop(box, data, "reference_source")
         if data.reference_source == "OBJECT":
             if show_reference_pickers:
                 box.prop_search(data, "reference_object", bpy.data, "objects")
-            box.prop(data, "reference_scale")
+            _prop(box, data, "reference_scale")
         elif data.reference_source == "IMAGE":
             if show_reference_pickers:
                 row = box.row(align=True)
-                row.prop_search(data, "reference_image", bpy.data, "images")
+                _prop(row, data, "reference_image_pick")  # readable images only (props.reference_image_picker)
                 if isinstance(data, bpy.types.PropertyGroup):  # the sidebar: open a file for this terrain
                     row.operator("object.fracterra_reference_image_open", text="", icon="FILEBROWSER")
-            box.prop(data, "reference_levels")
-            box.prop(data, "reference_height")
-            box.prop(data, "reference_scale")
+            _prop(box, data, "reference_levels")
+            _prop(box, data, "reference_height")
+            _prop(box, data, "reference_scale")
         elif data.reference_source == "DEM":
-            box.prop(data, "reference_file")
-            box.prop(data, "reference_levels")
+            _prop(box, data, "reference_file")
+            _prop(box, data, "reference_levels")
             box.prop(data, "reference_height", text="Relief if not georeferenced")
-            box.prop(data, "reference_scale")
+            _prop(box, data, "reference_scale")
     sub = col.column(heading="Mesh", align=True)
-    sub.prop(data, "uvs")
-    sub.prop(data, "smooth")
+    _prop(sub, data, "uvs")
+    _prop(sub, data, "smooth")
 
 
-def draw_polyline_settings(layout, data):
+def draw_landform(col, data):
+    """Levelling, offset, edge falloff and sea (the library's landform fields):
+    the falloff's and the sea's own fields only when they are on."""
+    box = col.box().column(align=True)
+    box.label(text="Landform")
+    _prop(box, data, "levelling")
+    _prop(box, data, "height_offset")
+    _prop(box, data, "falloff")
+    if data.falloff != "NONE":
+        _prop(box, data, "falloff_width")
+        _prop(box, data, "edge_level")
+    _prop(box, data, "sea")
+    if data.sea == "HEIGHT":
+        _prop(box, data, "sea_level")
+    elif data.sea == "FRACTION":
+        _prop(box, data, "sea_fraction")
+
+
+def draw_polyline_settings(layout, data, compact=False):
     col = layout.column()
-    col.use_property_split = True
+    col.use_property_split = not compact
     col.use_property_decorate = False
     method = data.method
     for p in params.POLYLINE_PARAMS:
         if p.name in ("start", "end") and data.base_source != "POINTS":
             continue
         if params.is_used(p, method):
-            col.prop(data, p.name)
+            _prop(col, data, p.name)

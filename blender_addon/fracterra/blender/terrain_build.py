@@ -123,10 +123,6 @@ def reference_for(values):
     return None
 
 
-def z_floor(values):
-    return values["sea_level"] if values["use_sea_level"] else NO_FLOOR
-
-
 def terrain_work(values, context, topology=True):
     """The bpy-free half of a terrain job: work(progress) -> core.grid.GridArrays.
 
@@ -138,7 +134,8 @@ def terrain_work(values, context, topology=True):
     check_grid(*grid_shape(values))
     reference = reference_for(values)
     threads = library_threads(context)
-    world_size, floor = values["world_size"], z_floor(values)
+    # The library flattens the sea itself (ft_terrain_params.sea): no floor here.
+    world_size, floor = values["world_size"], NO_FLOOR
 
     def work(progress):
         with core.generate_terrain(values, reference=reference, progress=progress, threads=threads) as hf:

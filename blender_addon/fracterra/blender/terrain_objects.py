@@ -58,3 +58,14 @@ def geometry_fingerprint(obj):
     for part in parts:
         crc = zlib.crc32(np.ascontiguousarray(part).tobytes(), crc)
     return f"{obj.type}:{sum(len(p) for p in parts)}:{crc:08x}"
+
+
+def sea_height(settings, lowest):
+    """The height of a terrain's flat sea (None without one): its Sea Level, or
+    for a sea given as a fraction the terrain's lowest height, where the
+    library flattened it (`lowest`: the minimum of its heights)."""
+    if settings.sea == "HEIGHT":
+        return settings.sea_level
+    if settings.sea == "FRACTION":
+        return lowest
+    return None

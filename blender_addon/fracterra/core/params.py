@@ -26,11 +26,22 @@ from pathlib import Path
 # every other default against the library's table).
 _INTERACTIVE = ("Blender regenerates the terrain while a slider is dragged: 257^2 vertices keep that "
                 "interactive (0.1 s), the library's 513^2 is a CLI default for files")
+# Add > Mesh > Fractal Terrain starts as a landform an artist recognises (a
+# mountain falling off to a flat edge, as A.N.T. Landscape's default does)
+# rather than the raw method, a tilted slab (issue 17). The library keeps
+# neutral landform defaults: files and goldens made before them are unchanged.
+_LANDFORM = "the default is a mountain on a flat edge: levelled, raised and faded out radially"
 BLENDER_OVERRIDES = {
     "terrain": {
         "levels": (8, _INTERACTIVE),
         "width": (257, _INTERACTIVE),
         "height": (257, _INTERACTIVE),
+        "sigma": (2.0, "with the raise and falloff below a relief of about a quarter of the width (2-3 m on "
+                       "10 m; A.N.T.: 0.5 on 2)"),
+        "levelling": (1.0, _LANDFORM + ": without levelling the first corners tilt the whole terrain"),
+        "height_offset": (1.5, _LANDFORM + ": raised so that the falloff shapes a mountain, not a crater"),
+        "falloff": ("RADIAL", _LANDFORM + ": no walls at the edges"),
+        "falloff_width": (0.9, _LANDFORM + ": from the centre, so the outline is a round mountain"),
     },
     "polyline": {
         "method": ("FPL3D", "Add > Curve > Fractal Polyline starts as a lightning bolt, which must not be "
@@ -146,6 +157,7 @@ def _as_json_row(row):
     return {**row, "default": row["default_value"], "hard_min": bound(row["hard_min"]),
             "hard_max": bound(row["hard_max"]), "soft_min": bound(row["soft_min"]),
             "soft_max": bound(row["soft_max"]), "min_exclusive": bool(row["flags"] & 4),
+            "max_exclusive": bool(row["flags"] & 8),
             "items": [{"name": n, "label": l, "doc": d, "value": v} for n, l, d, v in row["items"]]}
 
 
@@ -169,6 +181,8 @@ def _param_from_row(row, kind_name, method_items):
     lo, hi = row["hard_min"], row["hard_max"]
     if lo is not None and row["min_exclusive"]:
         lo += 1e-6 if lo == 0 else abs(lo) * 1e-6  # Blender has no open bound; the library refuses lo itself
+    if hi is not None and row.get("max_exclusive"):
+        hi -= 1e-6 if hi == 0 else abs(hi) * 1e-6
     if name in BLENDER_LIMITS.get(kind_name, {}):
         lo, hi, _reason = BLENDER_LIMITS[kind_name][name]
     soft_lo, soft_hi = row["soft_min"], row["soft_max"]
@@ -207,9 +221,6 @@ DYADIC_METHODS = next(p for p in _LIBRARY_TERRAIN if p.name == "levels").methods
 _DYADIC = DYADIC_METHODS
 
 TERRAIN_PARAMS = _LIBRARY_TERRAIN + (
-    Param("use_sea_level", "bool", False, "Sea Level", "Flatten everything below the sea level"),
-    Param("sea_level", "float", 0.0, "Sea Level Height", "Heights below this become flat sea",
-          soft_min=-100.0, soft_max=100.0, subtype="DISTANCE", unit="LENGTH"),
     # Where the reference points come from (midpoint and additions).
     Param("reference_source", "enum", "NONE", "Reference", "Coarse heights the terrain must pass through",
           items=REFERENCE_SOURCES, methods=_DYADIC),

@@ -64,12 +64,12 @@ class SchedulerUnreachable(FracterraError):
 
 
 def _lib():
-    """The library with the tile functions declared (ABI 2.6)."""
+    """The library with the tile functions declared (ABI 2.7)."""
     lib = library()
     if not getattr(lib, "_tiles_bound", False):
         missing = lib._bind(_TILES_SIGNATURES)
         if missing:
-            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.6 or later")
+            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.7 or later")
         lib._tiles_bound = True
     return lib
 

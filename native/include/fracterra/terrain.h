@@ -45,6 +45,20 @@ enum {
   FT_REFSCALE_STD = 2          ///< use the standard deviation of the reference values
 };
 
+/// Edge falloff of a terrain (ft_terrain_params.falloff, ABI 2.6).
+enum {
+  FT_FALLOFF_NONE = 0,         ///< heights run to the edge as generated
+  FT_FALLOFF_SQUARE = 1,       ///< fall to edge_level along all four edges
+  FT_FALLOFF_RADIAL = 2        ///< fall to edge_level towards the inscribed ellipse (an island)
+};
+
+/// Sea of a terrain (ft_terrain_params.sea, ABI 2.6): heights below it are flattened to it.
+enum {
+  FT_SEA_NONE = 0,             ///< no sea
+  FT_SEA_HEIGHT = 1,           ///< at sea_level, in scene units
+  FT_SEA_FRACTION = 2          ///< at the height with sea_fraction of the samples below it (whole terrains only)
+};
+
 /// Parameters of ft_terrain_generate. Fill with ft_terrain_params_init, then
 /// change what you need. Fields a method does not use are ignored. Every
 /// field's default, range and documentation is also given at run time by
@@ -99,6 +113,19 @@ typedef struct ft_terrain_params {
                              ///< 1..2^24, default 64 (fewer: a lower wall where slopes meet the set)
   int32_t supersample;       ///< k x k points of the plane averaged per sample (anti-aliasing the
                              ///< boundary), 1..8; default 2
+  /* Added in ABI 2.6: landforms, applied to the method's heights in this order (docs/terrain.md).
+     Each depends only on the sample's position in the whole terrain, so windows stay equal to
+     the whole; a sea given as a fraction needs the whole and is refused for windows. */
+  double levelling;          ///< 0..1: the part of the tilt removed, the bilinear surface through the
+                             ///< whole terrain's four corners (1: every corner at 0); default 0
+  double height_offset;      ///< added to every height, scene units; default 0
+  int32_t falloff;           ///< FT_FALLOFF_*; default FT_FALLOFF_NONE
+  double falloff_width;      ///< (0, 1]: the band over which heights fall, as a fraction of the half
+                             ///< width (1: from the centre); default 0.3
+  double edge_level;         ///< height at the edge after the falloff, scene units; default 0
+  int32_t sea;               ///< FT_SEA_*; default FT_SEA_NONE
+  double sea_level;          ///< FT_SEA_HEIGHT: the sea's height, scene units; default 0
+  double sea_fraction;       ///< FT_SEA_FRACTION: the fraction of samples under the sea, [0, 1); default 0.3
 } ft_terrain_params;
 
 /// Fills `p` with the defaults documented above. `p` must not be NULL.

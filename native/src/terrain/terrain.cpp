@@ -9,6 +9,7 @@
 #include "noise/fbm.hpp"
 #include "terrain/diamond_square.hpp"
 #include "terrain/interpolated.hpp"
+#include "terrain/landform.hpp"
 #include "terrain/mandelbrot.hpp"
 #include "terrain/profile.hpp"
 #include "terrain/spectral_synthesis.hpp"
@@ -192,6 +193,7 @@ void validate_terrain(const ft_terrain_params& p, bool whole) {
     if (p.method == FT_TERRAIN_MANDELBROT) validate_mandelbrot(mandelbrot_config(p), max_side);
   }
   check_terrain_heights(p);
+  validate_landforms(p, whole);
 }
 
 }  // namespace
@@ -249,6 +251,12 @@ Heightfield generate_terrain(const ft_terrain_params& p) {
   // set by the midpoint branch only, so fbm, spectral and interpolated
   // terrains lost it (and `coastline --world` refused them).
   Heightfield hf = generate_terrain_samples(p);
+  if (has_landforms(p)) {
+    const int w = hf.width(), h = hf.height();
+    const Corners corners{hf.at(0, 0), hf.at(w - 1, 0), hf.at(0, h - 1), hf.at(w - 1, h - 1)};
+    apply_landforms(p, corners, Placement{0, 0, 1, w, h}, hf, p.threads);
+    apply_sea(p, hf);
+  }
   hf.set_world_size(p.world_size);
   return hf;
 }
@@ -320,6 +328,23 @@ Heightfield generate_terrain_window(const ft_terrain_params& p, int lod, int64_t
     }
     default:
       fail(FT_ERR_INTERNAL, "terrain method " + std::to_string(p.method) + " has no window generator");
+  }
+  if (has_landforms(p)) {
+    // The levelling needs the whole terrain's corners: four 1 x 1 windows
+    // (for midpoint a chain of tiny halos, for the others one sample each).
+    int64_t ww = 0, wh = 0;
+    terrain_extent(p, 0, &ww, &wh);
+    Corners corners;
+    if (p.levelling != 0) {
+      ft_terrain_params raw = p;
+      raw.levelling = 0, raw.height_offset = 0, raw.falloff = FT_FALLOFF_NONE, raw.sea = FT_SEA_NONE;
+      raw.progress = nullptr;
+      auto corner = [&](int64_t x, int64_t y) { return double(generate_terrain_window(raw, 0, x, y, 1, 1).at(0, 0)); };
+      corners = Corners{corner(0, 0), corner(ww - 1, 0), corner(0, wh - 1), corner(ww - 1, wh - 1)};
+    }
+    const int64_t step = int64_t(1) << lod;
+    apply_landforms(p, corners, Placement{x0 * step, y0 * step, step, ww, wh}, hf, p.threads);
+    apply_sea(p, hf);
   }
   // The world size is the x extent of the samples: the window's share of it.
   hf.set_world_size(p.world_size * double(w - 1) / double(ew - 1));

@@ -6,6 +6,7 @@
 #include "fracterra/terrain.h"
 #include "noise/fbm.hpp"
 #include "terrain/interpolated.hpp"
+#include "terrain/landform.hpp"
 #include "terrain/mandelbrot.hpp"
 #include "terrain/terrain.hpp"
 
@@ -20,7 +21,7 @@ constexpr uint64_t kFbm = method_bit(FT_TERRAIN_FBM);
 constexpr uint64_t kMandelbrot = method_bit(FT_TERRAIN_MANDELBROT);
 // Spectral synthesis always tiles and the Mandelbrot set never does.
 constexpr uint64_t kCanTile = kDyadic | kFbm | method_bit(FT_TERRAIN_INTERPOLATED);
-constexpr uint32_t kAbi11 = 0x10001, kAbi12 = 0x10002;
+constexpr uint32_t kAbi11 = 0x10001, kAbi12 = 0x10002, kAbi26 = 0x20006;
 
 constexpr ft_param_enum_item kMethods[] = {
     {FT_TERRAIN_MIDPOINT, "MIDPOINT", "Midpoint",
@@ -58,6 +59,20 @@ constexpr ft_param_enum_item kVariants[] = {
     {FT_FBM_HETERO, "HETERO", "Hetero", "Musgrave's heterogeneous terrain (1994)"},
 };
 
+constexpr ft_param_enum_item kFalloffs[] = {
+    {FT_FALLOFF_NONE, "NONE", "None", "Heights run to the edges as generated"},
+    {FT_FALLOFF_SQUARE, "SQUARE", "Square", "Heights fall to the edge level along all four edges"},
+    {FT_FALLOFF_RADIAL, "RADIAL", "Radial", "Heights fall to the edge level towards the inscribed ellipse: an "
+                                            "island"},
+};
+constexpr ft_param_enum_item kSeas[] = {
+    {FT_SEA_NONE, "NONE", "None", "No sea"},
+    {FT_SEA_HEIGHT, "HEIGHT", "Height", "A sea at a height in scene units; lower ground becomes flat sea"},
+    {FT_SEA_FRACTION, "FRACTION", "Fraction", "A sea covering a fraction of the terrain, whatever the seed: the "
+                                              "height with that fraction of the samples below it (whole terrains "
+                                              "only, not windows)"},
+};
+
 constexpr double kInf = DBL_MAX;  // "any finite value" as a bound
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbove = FT_PARAM_FLAG_MIN_EXCLUSIVE;
@@ -83,8 +98,9 @@ constexpr ft_param_info kTerrainRows[] = {
     {ROW(height, FT_PARAM_INT32), .element_kind = -1, .default_value = 513, .hard_min = 2, .hard_max = 65536,
      .soft_min = 2, .soft_max = 4097, .unit = "samples", .label = "Samples Y",
      .doc = "Samples along y (the methods other than midpoint and additions)", .methods = kFree},
+    // Soft minimum 0.2: a drag below it gives spikes (H 0 at sigma 1: +-6.5 m on a 10 m terrain).
     {ROW(hurst, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.8, .hard_min = 0, .hard_max = 1,
-     .soft_min = 0, .soft_max = 1, .unit = "", .label = "Smoothness",
+     .soft_min = 0.2, .soft_max = 1, .unit = "", .label = "Smoothness",
      .doc = "Hurst exponent H (Mandelbrot & Van Ness 1968; Voss 1985): 0 is rough (fractal dimension 3), "
             "1 smooth (dimension 2)",
      .methods = kRandom},
@@ -186,6 +202,46 @@ constexpr ft_param_info kTerrainRows[] = {
      .hard_max = kMaxMandelbrotSupersample, .soft_min = 1, .soft_max = 4, .unit = "", .label = "Supersample",
      .doc = "k x k points of the plane averaged per sample (anti-aliasing the boundary; k^2 times the work)",
      .methods = kMandelbrot},
+    {ROW(levelling, FT_PARAM_DOUBLE), .since = kAbi26, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Levelling",
+     .doc = "How much of the tilt to remove: the bilinear surface through the whole terrain's four corners "
+            "(1: every corner at height 0, a level terrain)",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(height_offset, FT_PARAM_DOUBLE), .since = kAbi26, .element_kind = -1, .default_value = 0,
+     .hard_min = -kMaxLandformHeight, .hard_max = kMaxLandformHeight, .soft_min = -100, .soft_max = 100,
+     .unit = "scene units", .label = "Height Offset", .doc = "Added to every height (after the levelling)",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(falloff, FT_PARAM_ENUM), .since = kAbi26, .element_kind = -1, .default_value = FT_FALLOFF_NONE,
+     .hard_min = FT_FALLOFF_NONE, .hard_max = FT_FALLOFF_RADIAL, .soft_min = FT_FALLOFF_NONE,
+     .soft_max = FT_FALLOFF_RADIAL, .unit = "", .label = "Falloff",
+     .doc = "Heights fall smoothly to the edge level near the edges (square) or towards an inscribed ellipse "
+            "(radial: an island), so the terrain does not end in a wall",
+     .methods = FT_PARAM_ALL_METHODS, .enum_count = 3, .enum_items = kFalloffs},
+    {ROW(falloff_width, FT_PARAM_DOUBLE), .flags = kAbove, .since = kAbi26, .element_kind = -1,
+     .default_value = 0.3, .hard_min = 0, .hard_max = 1, .soft_min = 0.05, .soft_max = 1, .unit = "",
+     .label = "Falloff Width",
+     .doc = "Width of the band where heights fall, as a fraction of the half width (1: all the way from the "
+            "centre); a smoothstep across it",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(edge_level, FT_PARAM_DOUBLE), .since = kAbi26, .element_kind = -1, .default_value = 0,
+     .hard_min = -kMaxLandformHeight, .hard_max = kMaxLandformHeight, .soft_min = -100, .soft_max = 100,
+     .unit = "scene units", .label = "Edge Level", .doc = "The height the edge falloff reaches at the edge",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(sea, FT_PARAM_ENUM), .since = kAbi26, .element_kind = -1, .default_value = FT_SEA_NONE,
+     .hard_min = FT_SEA_NONE, .hard_max = FT_SEA_FRACTION, .soft_min = FT_SEA_NONE, .soft_max = FT_SEA_FRACTION,
+     .unit = "", .label = "Sea",
+     .doc = "Flatten the ground below a sea: at a height, or covering a fraction of the terrain (the same share "
+            "of sea for every seed)",
+     .methods = FT_PARAM_ALL_METHODS, .enum_count = 3, .enum_items = kSeas},
+    {ROW(sea_level, FT_PARAM_DOUBLE), .since = kAbi26, .element_kind = -1, .default_value = 0,
+     .hard_min = -kMaxLandformHeight, .hard_max = kMaxLandformHeight, .soft_min = -100, .soft_max = 100,
+     .unit = "scene units", .label = "Sea Level", .doc = "Height of the sea (sea 'height')",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(sea_fraction, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MAX_EXCLUSIVE, .since = kAbi26,
+     .element_kind = -1, .default_value = 0.3, .hard_min = 0, .hard_max = 1, .soft_min = 0, .soft_max = 0.95,
+     .unit = "", .label = "Sea Fraction",
+     .doc = "Share of the terrain under the sea (sea 'fraction'): the sea is at that quantile of the heights",
+     .methods = FT_PARAM_ALL_METHODS},
 };
 FT_PARAM_TABLE_END
 #undef ROW

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "terrain/landform.hpp"
 #include "terrain/terrain.hpp"
 
 namespace ft {
@@ -13,6 +14,9 @@ constexpr double kGaussianBound = 5.9;  // |g| <= sqrt(50 ln 2) = 5.888 (see the
 
 bool has_midpoint_bound(const ft_terrain_params& p) {
   if (p.method != FT_TERRAIN_MIDPOINT) return false;
+  // The margin bounds the raw method's finer displacements; the landforms
+  // (levelling, falloff, sea) reshape them, so such terrains take the exact pass.
+  if (has_landforms(p)) return false;
   if (p.reference == nullptr) return true;
   const int m = dyadic_levels(p.reference_size);
   return p.reference_scale == FT_REFSCALE_SIGMA && m >= 1 && m <= std::min(p.levels, kCoarseLevels);

@@ -1,0 +1,31 @@
+import bpy
+op = bpy.context.active_operator
+
+op.levelling = 0.0
+op.height_offset = 0.0
+op.falloff = 'SQUARE'
+op.falloff_width = 0.25
+op.edge_level = 0.0
+op.sea = 'NONE'
+op.sea_level = 0.0
+op.sea_fraction = 0.3
+op.periodic = False
+op.uvs = True
+op.smooth = True
+op.reference_source = 'NONE'
+op.method = 'FBM'
+op.width = 513
+op.height = 513
+op.hurst = 0.85
+op.sigma = 9.0
+op.seed = 11
+op.world_size = 40.0
+op.basis = 'GRADIENT'
+op.variant = 'RIDGED'
+op.octaves = 10
+op.lacunarity = 2.0
+op.gain = 0.0
+op.frequency = 2.5
+op.offset = 1.0
+op.octave_rotation = 0.5
+op.warp = 0.3

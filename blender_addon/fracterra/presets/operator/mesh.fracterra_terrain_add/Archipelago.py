@@ -1,0 +1,31 @@
+import bpy
+op = bpy.context.active_operator
+
+op.levelling = 0.0
+op.height_offset = 0.0
+op.falloff = 'SQUARE'
+op.falloff_width = 0.25
+op.edge_level = -4.0
+op.sea = 'FRACTION'
+op.sea_level = 0.0
+op.sea_fraction = 0.6
+op.periodic = False
+op.uvs = True
+op.smooth = True
+op.reference_source = 'NONE'
+op.method = 'FBM'
+op.width = 513
+op.height = 513
+op.hurst = 0.8
+op.sigma = 4.0
+op.seed = 3
+op.world_size = 40.0
+op.basis = 'GRADIENT'
+op.variant = 'STANDARD'
+op.octaves = 9
+op.lacunarity = 2.0
+op.gain = 0.0
+op.frequency = 5.0
+op.offset = 1.0
+op.octave_rotation = 0.5
+op.warp = 0.5

@@ -1,0 +1,154 @@
+"""Headless Blender: the add-on's default terrain and every terrain preset, rendered
+one by one, beside A.N.T. Landscape's default (Blender's bundled add-on).
+
+    blender -b --factory-startup --python examples/22_blender_presets.py -- --out docs/images/presets
+
+Each terrain is added the way the redo panel's preset menu does it: the
+operator's defaults, then the preset file's assignments. It gets the material
+by height and slope, the sky and the sun of example 20 and a camera framed on
+its own size, and is rendered with Cycles to <out>/<name>.png; a flat sea
+plane is added where the preset has a sea. Exits non-zero on any error.
+"""
+
+import argparse
+import importlib.util
+import math
+import sys
+import time
+from pathlib import Path
+
+import bpy
+
+HERE = Path(__file__).resolve().parent
+_spec = importlib.util.spec_from_file_location("blender_scene_20", HERE / "20_blender_scene.py")
+scene20 = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(scene20)
+PRESETS = HERE.parent / "blender_addon" / "fracterra" / "presets" / "operator" / "mesh.fracterra_terrain_add"
+
+
+def parse_args():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    p = argparse.ArgumentParser(prog="22_blender_presets.py", description=__doc__.split("\n\n")[0])
+    p.add_argument("--out", required=True, help="output folder (created)")
+    p.add_argument("--resolution", default="480x300", help="render size WxH (default 480x300)")
+    p.add_argument("--samples", type=int, default=16, help="Cycles samples (default 16)")
+    p.add_argument("--max-levels", type=int, default=9, help="cap on a preset's levels, and on its samples at 2^cap + 1 (smaller: faster)")
+    p.add_argument("--only", default="", help="comma-separated names to render (default: all)")
+    p.add_argument("--no-ant", action="store_true", help="skip A.N.T. Landscape's default")
+    p.add_argument("--library", help="libfracterra.so to use when the add-on is run from the source tree")
+    args = p.parse_args(argv)
+    args.width, args.height = (int(v) for v in args.resolution.lower().split("x"))
+    return args
+
+
+def preset_values(path):
+    """{property: value} that a preset file assigns (run against a recorder)."""
+    class Recorder:
+        pass
+    op = Recorder()
+    body = path.read_text().replace("op = bpy.context.active_operator", "")
+    exec(compile(body, str(path), "exec"), {"bpy": bpy, "op": op})
+    return dict(vars(op))
+
+
+def clear():
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj)
+    for mesh in list(bpy.data.meshes):
+        bpy.data.meshes.remove(mesh)
+
+
+def frame_and_render(obj, size, sea, args, path, material):
+    """Sun, sky and a camera on `obj` (extent `size`), then a Cycles render to `path`."""
+    obj.data.materials.clear()
+    obj.data.materials.append(material)
+    zs = [v.co.z for v in obj.data.vertices]
+    if sea is not None:
+        scene20.water(1.6 * size, sea)
+    bpy.ops.object.light_add(type="SUN", rotation=(math.radians(50), 0, math.radians(35)))
+    bpy.context.active_object.data.energy = 4.0
+    bpy.context.active_object.data.angle = math.radians(2)
+    bpy.ops.object.camera_add(location=(0.0, -1.35 * size, 0.75 * size + max(zs)))
+    camera = bpy.context.active_object
+    camera.data.lens = 35
+    scene20.look_at(camera, (0, 0.05 * size, 0.5 * (min(zs) + max(zs))))
+    scene = bpy.context.scene
+    scene.camera = camera
+    scene.world = scene.world or bpy.data.worlds.new("World")
+    scene20.sky(scene.world)
+    scene.render.engine = "CYCLES"
+    scene.cycles.samples = args.samples
+    scene.cycles.device = "CPU"
+    scene.cycles.use_denoising = False
+    scene.render.resolution_x, scene.render.resolution_y = args.width, args.height
+    scene.render.resolution_percentage = 100
+    scene.render.filepath = str(path)
+    bpy.ops.render.render(write_still=True)
+    if not path.is_file():
+        raise RuntimeError(f"the render did not write {path}")
+    return min(zs), max(zs)
+
+
+def main():
+    args = parse_args()
+    out = Path(args.out).resolve()
+    out.mkdir(parents=True, exist_ok=True)
+    print(f"22_blender_presets: {scene20.enable_addon(args.library)}")
+    only = {n.strip() for n in args.only.split(",") if n.strip()}
+    material = scene20.terrain_material()
+    jobs = [("Default", {})] + [(p.stem, preset_values(p)) for p in sorted(PRESETS.glob("*.py"))]
+    for name, values in jobs:
+        if only and name not in only:
+            continue
+        clear()
+        values = dict(values)
+        if "levels" in values:
+            values["levels"] = min(values["levels"], args.max_levels)
+        for key in ("width", "height"):  # the same cap for the other methods' samples
+            if key in values:
+                values[key] = min(values[key], 2 ** args.max_levels + 1)
+        t0 = time.perf_counter()
+        result = bpy.ops.mesh.fracterra_terrain_add(location=(0, 0, 0), **values)
+        if result != {"FINISHED"}:
+            raise RuntimeError(f"{name}: the terrain operator returned {result}")
+        obj = bpy.context.active_object
+        s = obj.fracterra_terrain
+        sea = None
+        if s.sea == "HEIGHT":
+            sea = s.sea_level
+        elif s.sea == "FRACTION":
+            sea = min(v.co.z for v in obj.data.vertices)
+        size = s.world_size
+        slug = name.lower().replace(" ", "-")
+        lo, hi = frame_and_render(obj, size, sea, args, out / f"{slug}.png", material)
+        print(f"22_blender_presets: {name}: relief {hi - lo:.2f} over {size:g} ({(hi - lo) / size:.2f}), "
+              f"{time.perf_counter() - t0:.1f} s -> {out / slug}.png")
+    if not args.no_ant and (not only or "ANT" in only):
+        import addon_utils
+        clear()
+        addon_utils.enable("ant_landscape", default_set=True)
+        bpy.ops.mesh.landscape_add(refresh=True)  # A.N.T.'s own defaults (refresh: it runs only then)
+        obj = bpy.context.active_object
+        n = len(obj.data.vertices)
+        side = math.isqrt(n)
+        if side * side == n:  # its grid gets the same height and slope attributes, for the same material
+            from fracterra.blender import mesh_build
+            co = mesh_build.array.array("f", [0.0]) * (3 * n)
+            obj.data.vertices.foreach_get("co", co)
+            mesh_build.set_height_slope(obj.data, co, side, side)
+        xs = [v.co.x for v in obj.data.vertices]
+        size = max(xs) - min(xs)
+        lo, hi = frame_and_render(obj, size, None, args, out / "ant-landscape-default.png", material)
+        print(f"22_blender_presets: A.N.T. default: relief {hi - lo:.2f} over {size:g} ({(hi - lo) / size:.2f})")
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except Exception as e:
+        import os
+        import traceback
+        traceback.print_exc()
+        print(f"22_blender_presets: error: {e}", file=sys.stderr)
+        sys.stderr.flush()
+        os._exit(1)
