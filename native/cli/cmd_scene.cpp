@@ -1,7 +1,9 @@
 // fracterra scene: a terrain and polylines as one POV-Ray scene.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
@@ -12,6 +14,8 @@
 #include "povray/pov_params.hpp"
 #include "povray/render.hpp"
 #include "povray/scene.hpp"
+#include "tiles/manifest.hpp"
+#include "tiles/mosaic_vrt.hpp"
 
 namespace ft::cli {
 namespace {
@@ -21,7 +25,7 @@ const std::map<std::string, int> kKinds = {{"line", int(pov::LineKind::kGeneric)
                                            {"coastline", int(pov::LineKind::kCoastline)}};
 
 struct SceneOptions {
-  std::string terrain, pov, render;
+  std::string terrain, tiles, pov, render;
   std::vector<std::string> polylines;
   std::vector<int> kinds;
   std::vector<double> radii, radius_scales;
@@ -36,6 +40,24 @@ struct SceneOptions {
   pov::RenderOptions r;
 };
 
+// A finished 16-bit tile set as height_fields edge to edge, framed on a
+// coarse preview of the whole read through its VRT overviews.
+pov::TiledTerrain load_tiles(const std::string& dir) {
+  const std::optional<nlohmann::json> m = read_manifest(dir);
+  if (!m) invalid("'" + dir + "' holds no tile set (no manifest.json); write one with fracterra tiles");
+  if (!m->value("complete", false)) invalid("the tile set in '" + dir + "' is not finished; rerun fracterra tiles to resume it");
+  if (m->value("tile_format", "") != "png16")
+    invalid("POV-Ray height_fields read PNG: write the tile set with --format png16");
+  pov::TiledTerrain t;
+  t.spacing = (*m)["sample_spacing"].get<double>();
+  t.height_min = (*m)["height_range"]["min"].get<double>();
+  t.height_max = (*m)["height_range"]["max"].get<double>();
+  for (const nlohmann::json& e : (*m)["tiles"])
+    t.tiles.push_back({(std::filesystem::path(dir) / e["file"].get<std::string>()).string(), e["x0"].get<int64_t>(),
+                       e["y0"].get<int64_t>(), e["width"].get<int32_t>(), e["height"].get<int32_t>()});
+  return t;
+}
+
 int run(SceneOptions& o) {
   pov::SceneParams p;
   // Checked against the tables first, then the terrain's own forms (which set world sizes and sea) follow.
@@ -43,8 +65,18 @@ int run(SceneOptions& o) {
   pov::apply_scene_settings(o.scene, p);
   p.sweep = pov::sweep_options(o.sweep);
   Heightfield hf;
+  pov::TiledTerrain tiled;
   std::vector<PolylineSet> sets(o.polylines.size());
-  if (!o.terrain.empty()) {
+  if (!o.tiles.empty()) {
+    if (!o.terrain.empty()) invalid("give --terrain or --tiles, not both");
+    if (!std::isnan(o.sea_fraction) && !std::isnan(o.water)) invalid("give --sea-fraction or --water, not both");
+    tiled = load_tiles(o.tiles);
+    hf = read_mosaic_preview(o.tiles, 257);
+    // Heights in the set's own units unless --vertical-scale says otherwise.
+    pov::set_scene_terrain(p, hf, hf.world_size(), o.vertical_scale > 0 ? o.vertical_scale : 1.0, o.sea_fraction);
+    if (!std::isnan(o.water)) p.has_sea = true, p.sea_level = o.water;
+    p.tiles = &tiled;
+  } else if (!o.terrain.empty()) {
     hf = read_heightfield(o.terrain);
     if (!std::isnan(o.sea_fraction) && !std::isnan(o.water)) invalid("give --sea-fraction or --water, not both");
     // The terrain's own world size (recorded by fracterra) unless --size says otherwise.
@@ -68,7 +100,7 @@ int run(SceneOptions& o) {
     p.lines.push_back(l);
   }
   p.image_width = o.r.width;
-  p.title = o.terrain.empty() ? "polylines" : "terrain " + o.terrain;
+  p.title = !o.tiles.empty() ? "tile set " + o.tiles : o.terrain.empty() ? "polylines" : "terrain " + o.terrain;
   const auto sum = pov::write_scene(p, o.pov);
   std::printf("wrote %s%s%s\n", o.pov.c_str(), sum.image_path.empty() ? "" : " and ", sum.image_path.c_str());
   if (!o.render.empty()) {
@@ -84,6 +116,10 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<SceneOptions>();
                     app.add_option("--terrain", o->terrain, kHeightfieldReadHelp)->check(CLI::ExistingFile);
+                    app.add_option("--tiles", o->tiles,
+                                   "a finished 16-bit tile set folder (fracterra tiles --format png16): its tiles "
+                                   "as height_fields edge to edge, in the set's world size")
+                        ->check(CLI::ExistingDirectory);
                     app.add_option("--polyline", o->polylines, "polyline set .csv or .json (world units); repeatable")
                         ->check(CLI::ExistingFile);
                     app.add_option("--kind", o->kinds,
@@ -134,9 +170,10 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                     auto* aspect = app.get_option("--camera-aspect");
                     return [o, elevation, aspect] {
                       o->aspect_given = aspect->count() > 0;
-                      if (o->terrain.empty() && o->polylines.empty()) invalid("give --terrain and/or --polyline");
+                      if (o->terrain.empty() && o->tiles.empty() && o->polylines.empty())
+                        invalid("give --terrain or --tiles and/or --polyline");
                       // Polylines alone are seen from high above unless told otherwise.
-                      if (o->terrain.empty() && elevation->count() == 0) {
+                      if (o->terrain.empty() && o->tiles.empty() && elevation->count() == 0) {
                         bool all_lightning = !o->kinds.empty() && o->kinds.size() == o->polylines.size();
                         for (int k : o->kinds) all_lightning = all_lightning && k == int(pov::LineKind::kLightning);
                         o->scene.camera_elevation_deg =

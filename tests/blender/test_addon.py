@@ -347,7 +347,7 @@ class DrawTest(unittest.TestCase):
         panels.FRACTERRA_PT_measures.draw(fake, bpy.context)
         for _, draw in menus.MENUS:
             draw(fake, bpy.context)
-        self.assertEqual(len(operators), 10)
+        self.assertEqual(len(operators), 11)
         for idname in operators:
             self.assertTrue(operator_exists(idname), idname)
         self.assertFalse(operator_exists("mesh.fracterra_no_such_operator"))

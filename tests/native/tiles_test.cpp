@@ -22,6 +22,7 @@
 #include "tiles/height_range.hpp"
 #include "tiles/manifest.hpp"
 #include "tiles/tileset.hpp"
+#include "tiles/tileset_reader.hpp"
 
 using namespace ft;
 namespace fs = std::filesystem;
@@ -289,4 +290,37 @@ TEST(Tiles, HurstFromTileSumsEqualsTheWhole) {
   std::vector<double> s(8, 0.0), c(8, 0.0);
   EXPECT_THROW(add_window_increments(t, HurstMethod::kVariogramAligned, 0, 0, 1025, 1025, {64}, s.data(), c.data()),
                Error);
+}
+
+// A window read back from the tile files at a level of detail is the
+// coarser stage of a midpoint terrain: exact from float32 GeoTIFF tiles,
+// within half a 16-bit step from PNG tiles; it spans several tiles.
+TEST(Tiles, WindowReadBackAtLodIsTheCoarserStage) {
+  const ft_terrain_params p = midpoint(9, 13);  // 513^2 in 4 x 4 tiles of 129^2
+  for (TileFormat f : {TileFormat::tiff, TileFormat::png16}) {
+    const fs::path dir = fresh_dir(std::string("read_") + format_name(f));
+    TileSet set(p, 128, f, dir.string());
+    write_all(set, p);
+    set.finish();
+    int64_t ew = 0, eh = 0;
+    tileset_extent(dir.string(), 2, &ew, &eh);
+    EXPECT_EQ(ew, 129);
+    for (int lod : {0, 2}) {
+      const int64_t x0 = lod ? 5 : 100, y0 = lod ? 17 : 120;  // across tile edges at both lods
+      const int32_t w = lod ? 90 : 200, h = lod ? 70 : 150;
+      const Heightfield got = read_tileset_window(dir.string(), lod, x0, y0, w, h);
+      const Heightfield want = generate_terrain_window(p, lod, x0, y0, w, h);
+      const double tol = f == TileFormat::tiff ? 0.0 : 0.5 * (set.spec().height_max - set.spec().height_min) / 65535 + 1e-6;
+      double worst = 0;
+      for (int32_t j = 0; j < h; ++j)
+        for (int32_t i = 0; i < w; ++i) worst = std::max(worst, std::fabs(double(got.at(i, j)) - want.at(i, j)));
+      EXPECT_LE(worst, tol) << format_name(f) << " lod " << lod;
+      EXPECT_DOUBLE_EQ(got.world_size(), set.spec().spacing * (1 << lod) * (w - 1));
+    }
+    EXPECT_THROW(read_tileset_window(dir.string(), 2, 100, 0, 30, 1), Error);  // past the extent
+    // A damaged tile is named, not read.
+    fs::remove(dir / tile_file_name(set.spec(), 1, 1));
+    EXPECT_THROW(read_tileset_window(dir.string(), 0, 120, 120, 20, 20), Error);
+    fs::remove_all(dir);
+  }
 }

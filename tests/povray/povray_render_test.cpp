@@ -13,6 +13,7 @@
 #include <map>
 #include <regex>
 #include <sstream>
+#include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -380,6 +381,55 @@ TEST_F(PovTest, MacrosFailWithClearErrorsOnBadInput) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("FT_FPL: Depth must be"), std::string::npos) << e.what();
   }
+}
+
+
+// fracterra scene --tiles: 4 x 4 height_fields edge to edge. trace() probes a
+// hair (1e-6 of a sample) either side of every seam, at sample nodes and
+// between them: every probe hits (no crack lets a ray through) and the two
+// sides give the same height (no step) to 1e-3 of a 16-bit step plus what
+// the slope adds over 2e-6 of a sample (together well under one 16-bit
+// step, so tiles scaled apart by a single step would fail). The render is
+// not blank.
+TEST_F(PovTest, TiledSceneHasNoCracksAlongTheSeams) {
+  std::string out;
+  ASSERT_EQ(run_cli("tiles --levels 8 --hurst 0.6 --seed 9 --tile 64 --quiet --out '" + path("set") + "'", out), 0)
+      << out;
+  ASSERT_EQ(run_cli("scene --tiles '" + path("set") + "' --pov '" + path("tiled.pov") + "'", out), 0) << out;
+  const std::string scene = read_file(path("tiled.pov"));
+  size_t fields = 0;
+  for (size_t at = scene.find("png \""); at != std::string::npos; at = scene.find("png \"", at + 1)) ++fields;
+  EXPECT_EQ(fields, 16u);
+  // World size 10 over 256 cells: seams at x (z in POV) = 64 k s, s = 10 / 256.
+  const double s = 10.0 / 256, eps = 1e-6 * s;
+  std::string probe = "#version 3.7;\n#include \"tiled.pov\"\n#declare Misses = 0;\n#declare Worst = 0;\n#declare Hits = 0;\n"
+                      "#macro Probe(X, Z, DX, DZ)\n"
+                      "  #local N1 = <0, 0, 0>; #local N2 = <0, 0, 0>;\n"
+                      "  #local P1 = trace(FT_Terrain_Object, <X - DX, 1000, Z - DZ>, -y, N1);\n"
+                      "  #local P2 = trace(FT_Terrain_Object, <X + DX, 1000, Z + DZ>, -y, N2);\n"
+                      "  #if (vlength(N1) = 0 | vlength(N2) = 0) #declare Misses = Misses + 1;\n"
+                      "  #else #declare Hits = Hits + 2; #declare Worst = max(Worst, abs(P1.y - P2.y)); #end\n"
+                      "#end\n";
+  for (int k = 1; k <= 3; ++k)
+    for (int t = 1; t < 512; ++t) {  // along the seam, every half sample (nodes and cell middles)
+      const double along = t * 0.5 * s, at = 64 * k * s;
+      probe += "Probe(" + pov::number(at) + ", " + pov::number(along) + ", " + pov::number(eps) + ", 0)\n";
+      probe += "Probe(" + pov::number(along) + ", " + pov::number(at) + ", 0, " + pov::number(eps) + ")\n";
+    }
+  probe += "#debug concat(\"FT_SEAMS \", str(Hits, 0, 0), \" \", str(Misses, 0, 0), \" \", str(Worst, 0, 12), \"\\n\")\n";
+  write_file_atomically(path("probe.pov"), probe);
+  std::string messages;
+  const GrayImage img = render(path("probe.pov"), 160, 120, 0, &messages);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(messages, m, std::regex("FT_SEAMS (\\d+) (\\d+) ([0-9.]+)"))) << messages;
+  EXPECT_EQ(std::stoi(m[1]), 2 * 2 * 3 * 511);
+  EXPECT_EQ(std::stoi(m[2]), 0) << "rays passed through a seam";
+  const nlohmann::json manifest = nlohmann::json::parse(read_file(path("set/manifest.json")));
+  const double range = manifest["height_range"]["max"].get<double>() - manifest["height_range"]["min"].get<double>();
+  // The steepest slope of this terrain is below 40 height units per unit of x.
+  EXPECT_LE(std::stod(m[3]), 1e-3 * range / 65535 + 40 * 2 * eps);
+  EXPECT_LT(1e-3 * range / 65535 + 40 * 2 * eps, range / 65535);
+  expect_not_blank(img, "tiled scene");
 }
 
 }  // namespace

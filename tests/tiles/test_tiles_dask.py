@@ -122,6 +122,20 @@ def test_hurst_from_tile_sums_reduced_on_dask_equals_the_whole(client):
     assert got["lag_max"] == 64
 
 
+def test_the_command_line_driver_writes_the_same_bytes(reference, tmp_path):
+    # `python3 -m fracterra.core.tiles`: its tasks must reach the workers as references to
+    # the package module (a task defined in __main__ would not unpickle there).
+    env = dict(os.environ, PYTHONPATH=str(ROOT / "blender_addon"))
+    run = subprocess.run([sys.executable, "-m", "fracterra.core.tiles", *FLAGS, "--tile", str(TILE), "--quiet",
+                          "--workers", "2", "--memory-limit", "1GB", "--out", str(tmp_path / "set")],
+                         capture_output=True, text=True, env=env, timeout=240)
+    assert run.returncode == 0, run.stderr
+    assert '"written": 16' in run.stdout
+    got = files(tmp_path / "set")
+    for name in reference:
+        assert got[name] == reference[name], name
+
+
 def test_unreachable_scheduler_is_a_clear_error():
     with socket.socket() as s:  # a port nobody listens on
         s.bind(("127.0.0.1", 0))

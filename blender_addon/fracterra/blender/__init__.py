@@ -5,14 +5,16 @@ Modules import only downwards, never in a circle:
     <- progress (long jobs: worker thread, status bar, Esc; imports reporting)
     <- terrain_build, polyline_build, terrain_objects, settings_ui
     <- props (PropertyGroups; auto-update calls terrain_build)
-    <- terrain_ops, polyline_ops, measure_op, fractalize_op, pov_export, dem_io_ops (operators)
+    <- terrain_ops, polyline_ops, measure_op, fractalize_op, pov_export, dem_io_ops,
+       tiles_import_op (operators)
     <- panels, menus (refer to operators by their id strings)
 tests/python/test_addon_layers.py checks this order.
 """
 
 import bpy
 
-from . import dem_io_ops, fractalize_op, measure_op, panels, polyline_ops, pov_export, prefs, presets, props, terrain_ops
+from . import (dem_io_ops, fractalize_op, measure_op, panels, polyline_ops, pov_export, prefs, presets, props,
+               terrain_ops, tiles_import_op)
 from .menus import MENUS
 
 classes = (
@@ -30,6 +32,7 @@ classes = (
     fractalize_op.FRACTERRA_OT_fractalize,
     dem_io_ops.FRACTERRA_OT_import_dem,
     dem_io_ops.FRACTERRA_OT_export_heights,
+    tiles_import_op.FRACTERRA_OT_import_tiles,
     panels.FRACTERRA_PT_terrain,
     panels.FRACTERRA_PT_polyline,
     panels.FRACTERRA_PT_measures,

@@ -19,6 +19,7 @@ def menu_file_export(self, context):
 
 def menu_file_import(self, context):
     self.layout.operator("import_scene.fracterra_dem", text="DEM as Terrain (fracterra) (.tif/.hgt/.asc/...)")
+    self.layout.operator("import_scene.fracterra_tiles", text="Tile Set (fracterra) (manifest.json)")
 
 
 def menu_object(self, context):

@@ -46,6 +46,9 @@ _TILES_SIGNATURES = {
     "ft_tileset_finish": (c_int32, [c_void_p]),
     "ft_tile_write": (c_int32, [c_void_p, c_int32, c_int32, c_double, c_double, ctypes.c_char_p, c_int32, c_int32,
                                 POINTER(c_uint32)]),
+    "ft_tileset_extent": (c_int32, [ctypes.c_char_p, c_int32, POINTER(c_int64), POINTER(c_int64)]),
+    "ft_tileset_read_window": (c_int32, [ctypes.c_char_p, c_int32, c_int64, c_int64, c_int32, c_int32,
+                                         POINTER(c_void_p)]),
     # analysis.h (ABI 2.4): H of a surface from per-window increment sums.
     "ft_increment_lags": (c_int32, [c_void_p, c_int64, c_int64, POINTER(c_int64), c_size_t, POINTER(c_size_t)]),
     "ft_increment_sums": (c_int32, [c_void_p, c_void_p, c_int64, c_int64, c_int64, c_int64, POINTER(c_double),
@@ -61,12 +64,12 @@ class SchedulerUnreachable(FracterraError):
 
 
 def _lib():
-    """The library with the tile functions declared (ABI 2.4)."""
+    """The library with the tile functions declared (ABI 2.7)."""
     lib = library()
     if not getattr(lib, "_tiles_bound", False):
         missing = lib._bind(_TILES_SIGNATURES)
         if missing:
-            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.4 or later")
+            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.7 or later")
         lib._tiles_bound = True
     return lib
 
@@ -135,6 +138,41 @@ class TileSet(LibraryHandle):
 
     def finish(self):
         self._lib.check(self._lib.ft_tileset_finish(self.handle))
+
+
+def manifest(folder):
+    """The tile set's manifest.json as a dict (tile grid, height range, world size, tiles)."""
+    path = os.path.join(str(folder), "manifest.json")
+    try:
+        with open(path, encoding="utf-8") as f:
+            m = json.load(f)
+    except (OSError, ValueError) as e:
+        raise InvalidArgumentError(f"{folder} holds no readable tile set manifest ({e})") from None
+    if m.get("format") != "fracterra-tileset":
+        raise InvalidArgumentError(f"{path} is not a fracterra tile set manifest")
+    return m
+
+
+def extent(folder, lod=0):
+    """(width, height): the whole set's samples per side at level of detail `lod`."""
+    lib = _lib()
+    w, h = c_int64(), c_int64()
+    lib.check(lib.ft_tileset_extent(os.fsencode(str(folder)), lod, byref(w), byref(h)))
+    return w.value, h.value
+
+
+def read_window(folder, lod=0, x0=0, y0=0, width=None, height=None):
+    """A Heightfield (close it) of the window [x0, x0 + width) x [y0, y0 + height), counted at
+    level of detail `lod` (every 2^lod-th sample), read back from the tile files it touches, in
+    the set's real heights; None width/height: to the end of the set."""
+    from .terrain import Heightfield
+    lib = _lib()
+    ew, eh = extent(folder, lod)
+    width = ew - x0 if width is None else width
+    height = eh - y0 if height is None else height
+    out = c_void_p()
+    lib.check(lib.ft_tileset_read_window(os.fsencode(str(folder)), lod, x0, y0, width, height, byref(out)))
+    return Heightfield(out)
 
 
 def _worker_env():
@@ -342,4 +380,8 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    # Run from the package module, not from __main__: Dask pickles the tasks by
+    # reference to fracterra.core.tiles, which every worker imports (functions
+    # of __main__ would be pickled by value, with their ctypes globals).
+    from fracterra.core import tiles as _tiles
+    sys.exit(_tiles.main())

@@ -35,7 +35,8 @@ extern "C" {
 /// ft_clouds_params and ft_dem_refine_params; each accepts any older struct_size.
 /// 2.6: landforms at the end of ft_terrain_params (levelling, height_offset, falloff,
 /// falloff_width, edge_level, sea, sea_level, sea_fraction); FT_FALLOFF_*, FT_SEA_*.
-#define FT_ABI_VERSION_MINOR 6
+/// 2.7: tile sets read back (ft_tileset_extent, ft_tileset_read_window).
+#define FT_ABI_VERSION_MINOR 7
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -44,6 +44,18 @@ FT_API ft_status ft_tileset_record(ft_tileset* set, int32_t column, int32_t row,
 /// Every tile recorded: writes mosaic.vrt (+ .ovr overviews) and marks the manifest complete.
 FT_API ft_status ft_tileset_finish(ft_tileset* set);
 
+/// The whole set's samples per side at level of detail `lod` (every 2^lod-th
+/// sample): (width - 1) / 2^lod + 1. `dir` holds a finished tile set. (ABI 2.7)
+FT_API ft_status ft_tileset_extent(const char* dir, int32_t lod, int64_t* width, int64_t* height);
+/// Reads the window [x0, x0 + width) x [y0, y0 + height), counted at level of
+/// detail `lod` (sample (i, j) is sample ((x0 + i) 2^lod, (y0 + j) 2^lod) of
+/// the whole), back from the tiles it touches (each checked against its
+/// CRC-32): real heights (16-bit tiles to their common scale). For midpoint
+/// sets a lod > 0 window is exactly the coarser stage. `*out` owns a new
+/// heightfield whose world size is the window's extent. (ABI 2.7)
+FT_API ft_status ft_tileset_read_window(const char* dir, int32_t lod, int64_t x0, int64_t y0, int32_t width,
+                                        int32_t height, ft_heightfield** out);
+
 /// Generates tile (column, row) of terrain `p` and writes it into `dir`
 /// (temporary name, then rename); `*crc32` receives the CRC-32 (zlib) of the
 /// file. The same arguments give the same bytes in any process. Fails if a

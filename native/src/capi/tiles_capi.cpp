@@ -2,9 +2,11 @@
 #include <memory>
 
 #include "capi/guard.hpp"
+#include "capi/handles.hpp"
 #include "fracterra/tiles.h"
 #include "terrain/terrain_params.hpp"
 #include "tiles/tileset.hpp"
+#include "tiles/tileset_reader.hpp"
 
 struct ft_tileset {
   std::unique_ptr<ft::TileSet> set;
@@ -90,5 +92,26 @@ FT_API ft_status ft_tile_write(const ft_terrain_params* p, int32_t tile, int32_t
     const ft_terrain_params q = ft::upgraded(ft::terrain_param_table(), *p);
     const ft::TileSpec spec = ft::make_tile_spec(q, tile, format_of(format), height_min, height_max);
     *crc32 = ft::write_tile(q, spec, dir, column, row);
+  });
+}
+
+FT_API ft_status ft_tileset_extent(const char* dir, int32_t lod, int64_t* width, int64_t* height) {
+  return guarded([&] {
+    ft::check_not_null("dir", dir);
+    ft::check_not_null("width", width);
+    ft::check_not_null("height", height);
+    *width = *height = 0;
+    ft::tileset_extent(dir, lod, width, height);
+  });
+}
+
+FT_API ft_status ft_tileset_read_window(const char* dir, int32_t lod, int64_t x0, int64_t y0, int32_t width,
+                                        int32_t height, ft_heightfield** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("dir", dir);
+    auto h = std::make_unique<ft_heightfield>();
+    h->hf = ft::read_tileset_window(dir, lod, x0, y0, width, height);
+    *out = h.release();
   });
 }

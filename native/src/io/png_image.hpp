@@ -9,8 +9,13 @@
 
 namespace ft {
 
+// How hard libpng works: the default (deflate level 3, libpng's adaptive
+// choice of row filter) suits a single file; `fast` (level 1, the Up filter
+// alone) is for bulk writers such as tile sets, where encoding dominates.
+enum class PngEffort { normal, fast };
+
 // Writes atomically; 8-bit images use the low byte range 0..255 of `pixels`.
-void write_png(const std::string& path, const GrayImage& image);
+void write_png(const std::string& path, const GrayImage& image, PngEffort effort = PngEffort::normal);
 // Writes an 8-bit RGB image (width * height * 3 bytes, row 0 on top) atomically.
 void write_png_rgb(const std::string& path, int32_t width, int32_t height, const uint8_t* rgb);
 // Reads gray, gray+alpha, palette or RGB(A) PNGs of any depth; colour is

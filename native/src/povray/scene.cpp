@@ -188,7 +188,16 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
 
   if (p.has_sea) s += "plane { y, " + number(water) + " texture { FT_Sea_Tex } }\n\n";
 
-  if (p.terrain) {
+  if (p.terrain && p.tiles) {
+    // The tiles' own PNGs, one height_field each, in the set's common range.
+    sum.terrain.z_min = p.tiles->height_min * p.vertical_scale;
+    sum.terrain.z_max = p.tiles->height_max * p.vertical_scale;
+    const double zw = p.has_sea ? water : sum.terrain.z_min - 1;
+    s += "// " + std::to_string(p.tiles->tiles.size()) + " tiles edge to edge (fracterra tiles)\n";
+    s += "#declare FT_Terrain_Object = " + tiled_terrain_sdl(*p.tiles, p.vertical_scale, folder, water);
+    s += "object { FT_Terrain_Object\n  FT_Terrain_Texture(" + number(sum.terrain.z_min) + ", " +
+         number(sum.terrain.z_max) + ", " + number(zw) + ")\n}\n\n";
+  } else if (p.terrain) {
     const std::string image = p.image_path.empty() ? default_image_path(pov_path) : p.image_path;
     quoted(relative_path(image, folder));  // a path SDL cannot hold is refused before the PNG is written
     sum.terrain = write_heightfield_png(*p.terrain, image, p.world_size_x, p.world_size_y, p.vertical_scale);

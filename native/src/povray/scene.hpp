@@ -13,6 +13,7 @@
 #include "povray/camera.hpp"
 #include "povray/heightfield_export.hpp"
 #include "povray/sphere_sweep_export.hpp"
+#include "povray/tiled_terrain.hpp"
 
 namespace ft::pov {
 
@@ -50,6 +51,10 @@ struct SceneParams {
   // How every line set is swept: spline, segments per sweep, tolerance (the
   // radii come from each SceneLines).
   SweepOptions sweep;
+  // A tile set instead of one terrain PNG: `terrain` is then a coarse
+  // preview of the whole (for framing and the sea level) and the scene draws
+  // these tiles' height_fields edge to edge (tiled_terrain.hpp).
+  const TiledTerrain* tiles = nullptr;
 };
 
 struct SceneSummary {

@@ -5,6 +5,9 @@
 #include <gdal.h>
 #include <gdal_utils.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <vector>
 
@@ -73,6 +76,26 @@ void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
   if (!factors.empty()) fs::rename(temp_vrt + ".ovr", final_vrt + ".ovr");
   else fs::remove(final_vrt + ".ovr");
   fs::rename(temp_vrt, final_vrt);
+}
+
+Heightfield read_mosaic_preview(const std::string& dir, int32_t max_side) {
+  check_int_range("preview side", max_side, 2, 65536);
+  const std::string path = (std::filesystem::path(dir) / kMosaicName).string();
+  GdalSession session;
+  GdalDataset ds(GDALOpen(path.c_str(), GA_ReadOnly));
+  if (!ds) session.fail(FT_ERR_IO, "cannot open the tile set's mosaic '" + path + "' (is the set finished?)");
+  const int w = GDALGetRasterXSize(ds.get()), h = GDALGetRasterYSize(ds.get());
+  const double k = std::min(1.0, double(max_side) / double(std::max(w, h)));
+  const int32_t pw = std::max(2, int32_t(std::lround(w * k))), ph = std::max(2, int32_t(std::lround(h * k)));
+  Heightfield hf(pw, ph);
+  GDALRasterBandH band = GDALGetRasterBand(ds.get(), 1);
+  if (GDALRasterIO(band, GF_Read, 0, 0, w, h, hf.data(), pw, ph, GDT_Float32, 0, 0) != CE_None)
+    session.fail(FT_ERR_IO, "cannot read the mosaic '" + path + "'");
+  int has = 0;
+  const double offset = GDALGetRasterOffset(band, &has), scale = GDALGetRasterScale(band, nullptr);
+  for (size_t i = 0; i < hf.size(); ++i) hf.data()[i] = float(offset + scale * hf.data()[i]);
+  if (const char* ws = GDALGetMetadataItem(ds.get(), "FRACTERRA_WORLD_SIZE", nullptr)) hf.set_world_size(std::atof(ws));
+  return hf;
 }
 
 }  // namespace ft

@@ -9,6 +9,7 @@
 
 #include <string>
 
+#include "core/heightfield.hpp"
 #include "tiles/tile_writer.hpp"
 
 namespace ft {
@@ -16,5 +17,11 @@ namespace ft {
 inline constexpr const char* kMosaicName = "mosaic.vrt";
 
 void write_mosaic_vrt(const TileSpec& spec, const std::string& dir);
+
+// A coarse preview of a finished tile set's whole terrain in real heights,
+// at most max_side samples a side (aspect kept), read through the mosaic and
+// its overviews (cheap for any size of set): for framing a camera or a sea
+// level, not for measuring. Its world size is the whole's.
+Heightfield read_mosaic_preview(const std::string& dir, int32_t max_side);
 
 }  // namespace ft

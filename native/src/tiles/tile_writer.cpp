@@ -122,7 +122,7 @@ uint32_t write_tile(const ft_terrain_params& p, const TileSpec& spec, const std:
     std::snprintf(text, sizeof text, "%.17g\n0\n0\n%.17g\n%.17g\n%.17g\n", t[1], t[5], t[0] + 0.5 * t[1],
                   t[3] + 0.5 * t[5]);
     write_file_atomically(path.substr(0, path.size() - 4) + ".pgw", text);
-    write_png(path, img);
+    write_png(path, img, PngEffort::fast);
   } else {
     GeoReference g;
     g.has_transform = true;

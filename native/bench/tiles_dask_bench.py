@@ -1,0 +1,118 @@
+#!/usr/bin/python3
+"""The tile-set benchmark of docs/scale.md: a midpoint terrain far larger than the
+workers' memory written as 16-bit tiles through Dask on this machine, against the
+in-memory generator in the same run.
+
+    PYTHONPATH=blender_addon FRACTERRA_LIBRARY=build/native/libfracterra.so \\
+        /usr/bin/python3 native/bench/tiles_dask_bench.py --levels 16 --tile 4096 \\
+        --workers 2 --memory-limit 3GB --out /work/scratch/tiles65537
+
+Reports (JSON on stdout, medians of --reps runs where it says so):
+  in-memory samples/s   ft_terrain_generate of a levels-13 terrain (8193^2), all cores, median of reps;
+  generation samples/s  tile windows generated on the cluster and dropped (no encoding), the first
+                        --generation-tiles tiles (default all), samples / wall time, median of reps;
+  end-to-end samples/s  the tile set written (tiles, manifest, VRT, overviews) / wall time, once
+                        (--write-reps for more; each rewrites the set from scratch);
+  peak memory per worker (ru_maxrss of each worker process), and the machine load (uptime).
+"""
+
+import argparse
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+from ctypes import byref, c_void_p
+
+from fracterra.core import generate_terrain, tiles
+
+
+def generate_only(col, row, settings, tile):
+    """A task: tile (col, row)'s window generated and dropped; returns its samples."""
+    lib = tiles._lib()
+    p, _keep = tiles._terrain(settings, None)
+    w, h = tiles._extent(settings, None)
+    tw, th = min(tile + 1, w - col * tile), min(tile + 1, h - row * tile)
+    out = c_void_p()
+    lib.check(lib.ft_terrain_generate_window(byref(p), col * tile, row * tile, tw, th, byref(out)))
+    lib.ft_heightfield_free(out)
+    return tw * th
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--levels", type=int, default=16)
+    ap.add_argument("--hurst", type=float, default=0.8)
+    ap.add_argument("--tile", type=int, default=4096)
+    ap.add_argument("--workers", type=int, default=2)
+    ap.add_argument("--memory-limit", default="3GB")
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--write-reps", type=int, default=1)
+    ap.add_argument("--generation-tiles", type=int, default=0, help="tiles in the generation-only pass (0: all)")
+    ap.add_argument("--out", required=True, help="scratch folder for the tile set (removed first)")
+    ap.add_argument("--keep", action="store_true", help="keep the tile set afterwards")
+    ap.add_argument("--measure", action="store_true", help="also H and D of the whole from per-tile sums")
+    a = ap.parse_args()
+    settings = {"method": "MIDPOINT", "levels": a.levels, "hurst": a.hurst, "seed": 1, "threads": 1}
+    report = {"levels": a.levels, "tile": a.tile, "workers": a.workers, "memory_limit": a.memory_limit,
+              "uptime_before": subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()}
+
+    times = []
+    for _ in range(a.reps):
+        t = time.perf_counter()
+        with generate_terrain({"method": "MIDPOINT", "levels": 13, "hurst": a.hurst, "seed": 1}, threads=0):
+            pass
+        times.append(time.perf_counter() - t)
+    report["in_memory_seconds_8193"] = times
+    report["in_memory_samples_per_s"] = 8193.0 ** 2 / statistics.median(times)
+
+    client = tiles.connect(workers=a.workers, memory_limit=a.memory_limit)
+    try:
+        w, h = tiles._extent(settings, None)
+        cols, rows = (w - 2) // a.tile + 1, (h - 2) // a.tile + 1
+        grid = [(c, r) for r in range(rows) for c in range(cols)]
+        times = []
+        part = grid[:a.generation_tiles] if a.generation_tiles else grid
+        for rep in range(a.reps):
+            t = time.perf_counter()
+            futures = client.map(generate_only, [c for c, _ in part], [r for _, r in part], settings=settings,
+                                 tile=a.tile, pure=False)
+            generated = sum(client.gather(futures))
+            times.append(time.perf_counter() - t)
+        samples = w * h
+        report["samples"] = samples
+        report["generation_tiles"] = len(part)
+        report["generation_seconds"] = times
+        report["generation_samples_per_s"] = generated / statistics.median(times)
+        report["generation_vs_in_memory"] = report["generation_samples_per_s"] / report["in_memory_samples_per_s"]
+
+        times, summaries = [], []
+        for rep in range(a.write_reps):
+            shutil.rmtree(a.out, ignore_errors=True)
+            t = time.perf_counter()
+            summaries.append(tiles.build_tileset(settings, a.out, a.tile, client=client, progress=False))
+            times.append(time.perf_counter() - t)
+        report["write_seconds"] = times
+        report["end_to_end_samples_per_s"] = samples / statistics.median(times)
+        report["tiles"] = summaries[-1]["tiles"]
+        report["disk_bytes"] = sum(os.path.getsize(os.path.join(a.out, f)) for f in os.listdir(a.out))
+        if a.measure:
+            t = time.perf_counter()
+            report["measure"] = tiles.measure_tileset(settings, a.tile, client)
+            report["measure_seconds"] = time.perf_counter() - t
+        report["worker_peak_rss_mib"] = sorted(client.run(tiles._peak_rss_mib).values())
+    finally:
+        cluster = client.cluster
+        client.close()
+        cluster.close()
+        if not a.keep:
+            shutil.rmtree(a.out, ignore_errors=True)
+    report["uptime_after"] = subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
+    print(json.dumps(report, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,93 @@
+"""File > Import > fracterra tile set in real Blender, through the installed
+add-on: a window of a 4 x 4 tile set at a level of detail, as one mesh and as
+one object per tile; north up; neighbouring tile objects share their edge
+vertices; a bad window is an error report, not a traceback."""
+
+import array
+import os
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import addon_harness  # noqa: E402
+
+import bpy  # noqa: E402
+
+SETTINGS = {"method": "MIDPOINT", "levels": 7, "hurst": 0.7, "seed": 5}  # 129^2
+TILE = 32
+
+
+def coords(obj):
+    co = array.array("f", [0.0]) * (3 * len(obj.data.vertices))
+    obj.data.vertices.foreach_get("co", co)
+    return [(obj.location.x + co[3 * i], obj.location.y + co[3 * i + 1], co[3 * i + 2])
+            for i in range(len(obj.data.vertices))]
+
+
+class TilesImportTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        tiles = addon_harness.submodule("core.tiles")
+        cls.dir = os.path.join(tempfile.mkdtemp(prefix="ft_tiles_"), "set")
+        # The tile set written in-process (the Dask driver's task, without Dask).
+        with tiles.TileSet.open(SETTINGS, cls.dir, TILE) as ts:
+            lo, hi = ts.height_range()
+            for row in range(4):
+                for col in range(4):
+                    ts.record(*tiles.write_tile(col, row, SETTINGS, None, TILE, "png16", lo, hi, cls.dir))
+            ts.finish()
+        cls.step = (hi - lo) / 65535
+        core = addon_harness.submodule("core")
+        cls.whole = core.generate_terrain(SETTINGS)
+        cls.values = cls.whole.to_array()
+        cls.spacing = tiles.manifest(cls.dir)["sample_spacing"]
+
+    def setUp(self):
+        for obj in list(bpy.data.objects):
+            bpy.data.objects.remove(obj)
+
+    def manifest(self):
+        return os.path.join(self.dir, "manifest.json")
+
+    def test_one_mesh_at_a_level_of_detail_is_the_coarser_terrain_north_up(self):
+        self.assertEqual(bpy.ops.import_scene.fracterra_tiles(filepath=self.manifest(), lod=2), {"FINISHED"})
+        obj = bpy.context.active_object
+        self.assertEqual(len(obj.data.vertices), 33 * 33)
+        pts = coords(obj)
+        # North (row 0 of the set) is +y: the vertex at the largest y and smallest x is sample (0, 0);
+        # every vertex is sample (4 i, 4 j) of the whole, to half a 16-bit step.
+        half = 16 * self.spacing * 4
+        for x, y, z in pts:
+            i, j = round((x + half) / (4 * self.spacing)), round((half - y) / (4 * self.spacing))
+            self.assertAlmostEqual(z, self.values[(4 * j) * 129 + 4 * i], delta=0.5 * self.step + 1e-5)
+        nw = max(pts, key=lambda p: (p[1], -p[0]))
+        self.assertAlmostEqual(nw[2], self.values[0], delta=0.5 * self.step + 1e-5)
+
+    def test_object_per_tile_meets_its_neighbours_without_cracks(self):
+        self.assertEqual(bpy.ops.import_scene.fracterra_tiles(filepath=self.manifest(), x0=16, y0=16, width=80,
+                                                              height=80, mode="TILES"), {"FINISHED"})
+        objs = [o for o in bpy.data.objects if o.type == "MESH"]
+        self.assertEqual(len(objs), 9)  # columns/rows 16..95 touch 3 x 3 tiles
+        # Every vertex on a shared edge is in two objects at the same place with the same height.
+        seen = {}
+        shared = 0
+        for obj in objs:
+            for x, y, z in coords(obj):
+                key = (round(2 * x / self.spacing), round(2 * y / self.spacing))  # half-sample centring
+                if key in seen:
+                    shared += 1
+                    self.assertAlmostEqual(seen[key], z, places=6)
+                seen[key] = z
+        self.assertEqual(len(seen), 80 * 80)  # together they are the window, nothing missing
+        self.assertEqual(shared, 2 * 80 * 2 + 4)  # 2 seams across and 2 down; their 4 crossings are in 4 objects
+
+    def test_a_window_outside_the_set_is_an_error_report(self):
+        with self.assertRaises(RuntimeError) as cm:
+            bpy.ops.import_scene.fracterra_tiles(filepath=self.manifest(), x0=120, width=20)
+        self.assertIn("not inside", str(cm.exception))
+        self.assertNotIn("Traceback", str(cm.exception))
+
+
+if __name__ == "__main__":
+    addon_harness.run(globals())
