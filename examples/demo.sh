@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The fracterra demo, end to end: a Voss midpoint terrain (16-bit heightmap
 # and shaded relief), its coastline, a lightning bolt striking its highest
-# peak, all rendered by POV-Ray; a fractal rock from a cube (OpenSubdiv); and
+# peak, all rendered by POV-Ray; an eroded terrain and its maps; a fractal
+# rock from a cube (OpenSubdiv); and
 # a .blend built by headless Blender with the add-on. Outputs go to
 # ${1:-demo-out}/.
 set -euo pipefail
@@ -41,6 +42,12 @@ step "the Mandelbrot set as a terrain (seed 002) and its curves of equal escape 
 "$ft" terrain --method mandelbrot --size 513x385 --center -0.65,0 --zoom 0.85 --iterations 40 --sigma 2 \
   --out "$out/mandelbrot.png" --curves 2,3,4,6,8 --curves-out "$out/mandelbrot-curves.csv" --stats
 "$ft" relief --in "$out/mandelbrot.png" --out "$out/mandelbrot-relief.png"
+
+step "erosion: an fBm terrain (513^2) eroded by the land preset (rivers, rain, scree), with its maps"
+"$ft" terrain --method fbm --size 513 --hurst 0.8 --seed 7 --world-size 10 --out "$out/uneroded.png"
+"$ft" erode --in "$out/uneroded.png" --preset land --out "$out/eroded.png" --maps "$out/erosion-maps"
+"$ft" relief --in "$out/uneroded.png" --out "$out/uneroded-relief.png"
+"$ft" relief --in "$out/eroded.png" --out "$out/eroded-relief.png"
 
 step "OpenSubdiv: a fractal rock from a cube"
 "$ft" fractalize --in "$root/examples/meshes/cube.obj" --levels 6 --hurst 0.75 --sigma 0.25 \

@@ -66,6 +66,19 @@ const std::vector<Field> kFractalizeFields = {
     FT_FIELD(ft_fractalize_params, threads), FT_FIELD(ft_fractalize_params, progress),
     FT_FIELD(ft_fractalize_params, progress_user),
 };
+const std::vector<Field> kErosionFields = {
+    FT_FIELD(ft_erosion_params, struct_size), FT_FIELD(ft_erosion_params, fluvial_steps),
+    FT_FIELD(ft_erosion_params, fluvial_dt), FT_FIELD(ft_erosion_params, erodibility),
+    FT_FIELD(ft_erosion_params, area_exponent), FT_FIELD(ft_erosion_params, diffusion),
+    FT_FIELD(ft_erosion_params, uplift), FT_FIELD(ft_erosion_params, hydraulic_iterations),
+    FT_FIELD(ft_erosion_params, hydraulic_dt), FT_FIELD(ft_erosion_params, rain),
+    FT_FIELD(ft_erosion_params, evaporation), FT_FIELD(ft_erosion_params, capacity),
+    FT_FIELD(ft_erosion_params, dissolve), FT_FIELD(ft_erosion_params, deposit),
+    FT_FIELD(ft_erosion_params, thermal_iterations), FT_FIELD(ft_erosion_params, talus_degrees),
+    FT_FIELD(ft_erosion_params, thermal_rate), FT_FIELD(ft_erosion_params, periodic),
+    FT_FIELD(ft_erosion_params, threads), FT_FIELD(ft_erosion_params, progress),
+    FT_FIELD(ft_erosion_params, progress_user),
+};
 
 struct Kind {
   int32_t kind;
@@ -78,6 +91,7 @@ const Kind kKinds[] = {
     {FT_PARAMS_PROFILE, "ft_profile_params", sizeof(ft_profile_params), &kProfileFields},
     {FT_PARAMS_POLYLINE, "ft_polyline_params", sizeof(ft_polyline_params), &kPolylineFields},
     {FT_PARAMS_FRACTALIZE, "ft_fractalize_params", sizeof(ft_fractalize_params), &kFractalizeFields},
+    {FT_PARAMS_EROSION, "ft_erosion_params", sizeof(ft_erosion_params), &kErosionFields},
 };
 
 std::vector<const ft_param_info*> rows_of(int32_t kind) {

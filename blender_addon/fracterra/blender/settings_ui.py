@@ -5,6 +5,7 @@ core.params, so panels and operators both import it without a circle)."""
 import bpy
 
 from ..core import params
+from . import erosion_ui
 
 
 def draw_settings(layout, data, show_reference_pickers=True):
@@ -63,6 +64,7 @@ def draw_settings(layout, data, show_reference_pickers=True):
             box.prop(data, "reference_levels")
             box.prop(data, "reference_height")
             box.prop(data, "reference_scale")
+    erosion_ui.draw_erosion(col, data)
     sub = col.column(heading="Mesh", align=True)
     sub.prop(data, "uvs")
     sub.prop(data, "smooth")

@@ -23,7 +23,8 @@ enum {
   FT_PARAMS_PROFILE = 1,         ///< ft_profile_params (terrain.h)
   FT_PARAMS_POLYLINE = 2,        ///< ft_polyline_params (polyline.h)
   FT_PARAMS_FRACTALIZE = 3,      ///< ft_fractalize_params (subdiv.h)
-  FT_PARAMS_KIND_COUNT = 4       ///< number of kinds; kinds are 0 .. count - 1
+  FT_PARAMS_EROSION = 4,         ///< ft_erosion_params (erosion.h), ABI 2.5
+  FT_PARAMS_KIND_COUNT = 5       ///< number of kinds; kinds are 0 .. count - 1
 };
 
 /// Field types. Integers and doubles are the C types of the same name;

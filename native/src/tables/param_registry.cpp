@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "erosion/erosion_params.hpp"
 #include "polyline/polyline_params.hpp"
 #include "subdiv/fractalize_params.hpp"
 #include "terrain/terrain_params.hpp"
@@ -15,6 +16,7 @@ const ParamTable& param_table(int32_t kind) {
     case FT_PARAMS_PROFILE: return profile_param_table();
     case FT_PARAMS_POLYLINE: return polyline_param_table();
     case FT_PARAMS_FRACTALIZE: return fractalize_param_table();
+    case FT_PARAMS_EROSION: return erosion_param_table();
     default:
       invalid("params kind must be in 0.." + std::to_string(FT_PARAMS_KIND_COUNT - 1) + ", got " +
               std::to_string(kind));
