@@ -81,6 +81,7 @@ def main():
     scene.render.engine = "CYCLES"
     scene.cycles.samples = args.samples
     scene.cycles.device = "CPU"
+    scene.cycles.use_denoising = False  # Debian's Blender is built without OpenImageDenoise
     scene.render.resolution_x, scene.render.resolution_y = args.width, args.height
     scene.render.resolution_percentage = 100
     scene.render.filepath = str(out / "before-after.png")

@@ -47,11 +47,16 @@ def attribute(mesh, name):
     return values
 
 
-def library_result(settings, preset=None):
-    """Generation then erosion straight through the binding, with the object's stored settings."""
+def library_result(settings):
+    """Generation then erosion straight through the binding, with the object's
+    stored settings (a preset picks the passes, as `fracterra erode --preset`)."""
     values = core().params.values_of(settings)
+    preset = settings.erode_preset
+    if preset not in ("NONE", "CUSTOM"):
+        counts = erosion().preset_values(preset.lower())
+        values.update({name: counts[name] for name in erosion().COUNTS})
     with core().generate_terrain(values) as hf:
-        eroded, _maps = erosion().erode(hf, preset=preset, values=None if preset else values, maps=False)
+        eroded, _maps = erosion().erode(hf, values=values, maps=False)
     with eroded:
         return eroded.to_array()
 
@@ -68,7 +73,7 @@ class ErodeTest(unittest.TestCase):
         obj = self.add(erode_preset="LAND")
         settings = obj.fracterra_terrain
         self.assertEqual(settings.erode_preset, "LAND")
-        expected = library_result(settings, preset="land")
+        expected = library_result(settings)
         self.assertEqual(heights(obj.data).tobytes(), expected.tobytes())
         with core().generate_terrain(core().params.values_of(settings)) as hf:
             self.assertNotEqual(heights(obj.data).tobytes(), hf.to_array().tobytes(), "not eroded")
