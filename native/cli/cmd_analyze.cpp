@@ -5,6 +5,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "analysis/analysis_params.hpp"
 #include "analysis/box_counting.hpp"
 #include "analysis/hurst.hpp"
 #include "analysis/hurst_choice.hpp"
@@ -12,6 +13,7 @@
 #include "analysis/quantile.hpp"
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/param_flags.hpp"
 #include "cli/plot_writer.hpp"
 #include "core/error.hpp"
 #include "erosion/drainage_stats.hpp"
@@ -29,7 +31,10 @@ using nlohmann::json;
 
 struct AnalyzeCli {
   std::string file, plot, method = "auto";
-  HurstOptions band;  // only the band fields are used
+  HurstOptions band;  // only the band fields are used, from `params` once checked
+  // The band flags come from ft_hurst_params' table; the estimator and the
+  // transect median are --method's own form (every estimator runs).
+  ft_hurst_params params = defaults_of<ft_hurst_params>(hurst_param_table());
   bool drainage = false, periodic = false;
 };
 
@@ -255,21 +260,19 @@ Registration reg({"analyze",
                                    "2^n + 1 grids, else spectral from 256 samples, else variogram), variogram, madogram, variogram_aligned, "
                                    "madogram_aligned, spectral, transect_median")
                         ->capture_default_str();
-                    app.add_option("--lag-min", c->band.lag_min, "smallest lag in samples (0 = 1)")
-                        ->check(CLI::NonNegativeNumber)->capture_default_str();
-                    app.add_option("--lag-max", c->band.lag_max, "largest lag in samples (0 = max(2, (n - 1) / 16))")
-                        ->check(CLI::NonNegativeNumber)->capture_default_str();
-                    app.add_option("--freq-min", c->band.freq_min,
-                                   "spectral: lowest frequency, cycles per record (0 = clamp(n / 128, 1, 8))")
-                        ->check(CLI::NonNegativeNumber)->capture_default_str();
-                    app.add_option("--freq-max", c->band.freq_max,
-                                   "spectral: highest frequency, cycles per record (0 = n / 8)")
-                        ->check(CLI::NonNegativeNumber)->capture_default_str();
+                    add_param_flags(app, hurst_param_table(), &c->params, {"method", "transects"});
                     app.add_option("--plot", c->plot, "also draw the log-log fits to this .svg (or .png, through rsvg-convert)");
                     app.add_flag("--drainage", c->drainage,
                                  "heightfields: also report drainage statistics (Hack's h, slope-area theta)");
                     app.add_flag("--periodic", c->periodic, "--drainage: the terrain tiles (route it as a torus)");
-                    return [c] { return run(*c); };
+                    return [c] {
+                      // Every estimator runs, so every band field is checked (as FT_HURST_AUTO reads them all).
+                      c->params.method = FT_HURST_AUTO;
+                      check_ranges(hurst_param_table(), &c->params);
+                      c->band.lag_min = c->params.lag_min, c->band.lag_max = c->params.lag_max;
+                      c->band.freq_min = c->params.freq_min, c->band.freq_max = c->params.freq_max;
+                      return run(*c);
+                    };
                   },
                   40});
 

@@ -1,8 +1,10 @@
 // fracterra clouds: Feder's clouds (seed 001) from a heightfield.
 #include <memory>
 
+#include "analysis/analysis_params.hpp"
 #include "analysis/clouds.hpp"
 #include "cli/command.hpp"
+#include "cli/param_flags.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/png_image.hpp"
@@ -12,7 +14,7 @@ namespace {
 
 struct CloudsCli {
   std::string in, threshold = "q0.5", out;
-  int bits = 8;
+  ft_clouds_params p = defaults_of<ft_clouds_params>(clouds_param_table());
 };
 
 Registration reg({"clouds",
@@ -20,19 +22,20 @@ Registration reg({"clouds",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<CloudsCli>();
                     app.add_option("--in", c->in, kHeightfieldReadHelp)->required();
+                    // threshold and threshold_is_quantile as one flag: a height, or qF.
                     app.add_option("--threshold", c->threshold,
                                    "height below which the sky is black, or a quantile qF with F in [0, 1]")
                         ->capture_default_str();
+                    add_param_flags(app, clouds_param_table(), &c->p, {"threshold", "threshold_is_quantile"},
+                                    {{"bit_depth", "--bits"}});
                     app.add_option("--out", c->out, "output grey .png (an image map for POV-Ray or Blender)")
                         ->required();
-                    app.add_option("--bits", c->bits, "bits per sample: 8 or 16")
-                        ->check(CLI::IsMember({8, 16}))->capture_default_str();
                     return [c] {
                       const Heightfield hf = read_heightfield(c->in);
-                      CloudOptions o;
-                      o.threshold = parse_level(c->threshold, "--threshold");
-                      o.bit_depth = c->bits;
-                      write_png(c->out, clouds_image(hf, o));
+                      const LevelSpec level = parse_level(c->threshold, "--threshold");
+                      c->p.threshold = level.value;
+                      c->p.threshold_is_quantile = level.quantile;
+                      write_png(c->out, clouds_image(hf, cloud_options(c->p)));
                       return 0;
                     };
                   },

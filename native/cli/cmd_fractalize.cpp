@@ -8,17 +8,15 @@
 
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/param_flags.hpp"
 #include "core/error.hpp"
 #include "io/obj_io.hpp"
 #include "povray/mesh2_export.hpp"
 #include "subdiv/fractalize.hpp"
+#include "subdiv/fractalize_params.hpp"
 
 namespace ft::cli {
 namespace {
-
-const std::map<std::string, int> kSchemes = {
-    {"catmark", FT_SCHEME_CATMARK}, {"loop", FT_SCHEME_LOOP}, {"bilinear", FT_SCHEME_BILINEAR}};
-const std::map<std::string, int> kModes = {{"voss", FT_FRACTALIZE_MIDPOINT}, {"additions", FT_FRACTALIZE_ADDITIONS}};
 
 struct FractalizeOptions {
   ft_fractalize_params p = default_fractalize_params();
@@ -61,23 +59,8 @@ Registration reg({"fractalize", "Fractalize a polygon mesh (OBJ) with OpenSubdiv
                     auto& p = o->p;
                     app.add_option("--in", o->in, "input mesh .obj (polygons; 't crease'/'t corner' tags honoured)")
                         ->required()->check(CLI::ExistingFile);
-                    app.add_option("--levels", p.levels, "refinement steps L (faces grow 4^L), 1..10")
-                        ->check(CLI::Range(1, kMaxSubdivLevels))->capture_default_str();
-                    app.add_option("--hurst", p.hurst, "Hurst exponent H, 0..1: level k moves by sigma 2^(-kH)")
-                        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
-                    app.add_option("--sigma", p.sigma, "displacement scale in mesh units (>= 0; 0 = plain subdivision)")
-                        ->check(CLI::NonNegativeNumber)->capture_default_str();
-                    app.add_option("--seed", p.seed, "random seed (64-bit)")->capture_default_str();
-                    app.add_option("--scheme", p.scheme, "subdivision scheme: catmark (any polygons), loop (triangles "
-                                                         "only), bilinear")
-                        ->transform(choice(kSchemes))->capture_default_str();
-                    app.add_option("--mode", p.mode, "voss: only new vertices move; additions: all vertices move")
-                        ->transform(choice(kModes))->capture_default_str();
-                    app.add_flag("--fix-boundary", p.fix_boundary, "vertices on open boundaries never move (default off)");
-                    app.add_flag("--scale-by-edge-length", p.scale_by_edge_length,
-                                 "sigma is a fraction of the local base edge length (default off)");
-                    app.add_option("--threads", p.threads, "worker threads, 0 = all cores (output never depends on it)")
-                        ->check(CLI::Range(0, 1024))->capture_default_str();
+                    // --levels .. --threads, --scheme midpoint|additions: from the table.
+                    add_param_flags(app, fractalize_param_table(), &p);
                     app.add_option("--out", o->out, "output .obj (written atomically)");
                     app.add_option("--pov", o->pov, "also write a POV-Ray include declaring a mesh2 with normals");
                     app.add_option("--pov-name", o->pov_name, "identifier declared in the --pov file")

@@ -9,26 +9,18 @@
 #include "analysis/polyline_report.hpp"
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/param_flags.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/polyline_io.hpp"
 #include "io/svg_plot.hpp"
 #include "polyline/polyline.hpp"
+#include "polyline/polyline_params.hpp"
 #include "povray/render.hpp"
 #include "povray/scene.hpp"
 
 namespace ft::cli {
 namespace {
-
-const std::map<std::string, int> kMethods = {
-    {"fpl", FT_POLYLINE_FPL},     {"fpl3d", FT_POLYLINE_FPL3D},           {"koch", FT_POLYLINE_KOCH},
-    {"dragon", FT_POLYLINE_DRAGON}, {"sierpinski", FT_POLYLINE_SIERPINSKI}, {"ifs", FT_POLYLINE_IFS},
-    {"profile", FT_POLYLINE_PROFILE}};
-const std::map<std::string, int> kRngs = {{"uniform", FT_POLYLINE_RNG_UNIFORM}, {"normal", FT_POLYLINE_RNG_NORMAL}};
-const std::map<std::string, int> kIfs = {{"fern", FT_IFS_FERN},
-                                         {"dragon", FT_IFS_DRAGON},
-                                         {"koch", FT_IFS_KOCH},
-                                         {"sierpinski_gasket", FT_IFS_SIERPINSKI_GASKET}};
 
 const std::map<std::string, int> kKinds = {{"line", int(pov::LineKind::kGeneric)},
                                            {"lightning", int(pov::LineKind::kLightning)},
@@ -143,44 +135,21 @@ int run(const PolylineOptions& o) {
 Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch, dragon, Sierpinski, IFS)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<PolylineOptions>();
-                    auto& p = o->p;
-                    app.add_option("--method", p.method, "fpl, fpl3d, koch, dragon, sierpinski, ifs or profile")
-                        ->transform(choice(kMethods))->capture_default_str();
+                    // Every setting of ft_polyline_params from its table; the base polyline,
+                    // the plane normal and an IFS table have their own forms below. --ifs and
+                    // --points are the names these flags had before the table.
+                    add_param_flags(app, polyline_param_table(), &o->p, {},
+                                    {{"ifs_preset", "--ifs"}, {"ifs_points", "--points"}});
                     app.add_option("--base", o->base,
                                    "base polyline \"x0,y0[,z0];x1,y1[,z1];...\" (>= 2 points, consecutive ones "
                                    "distinct); default the unit segment 0,0;1,0");
-                    app.add_option("--rng", p.rng, "FPL displacement generator: uniform urf(s) or normal nrf(sigma)")
-                        ->transform(choice(kRngs))->capture_default_str();
-                    app.add_option("--spread", p.spread,
-                                   "s or sigma: displacement per unit segment length, >= 0 (profile: sigma > 0)")
-                        ->capture_default_str();
-                    app.add_option("--depth", p.depth,
-                                   "recursion depth r: fpl/dragon 0..34 (2^r segments per base segment, memory "
-                                   "permitting), koch 0..15, sierpinski 0..19, profile 1..28")
-                        ->capture_default_str();
-                    app.add_option("--min-length", p.min_length, "delta: do not split segments shorter than this, >= 0")
-                        ->capture_default_str();
-                    app.add_option("--seed", p.seed, "random seed (64-bit)")->capture_default_str();
                     app.add_option("--normal", o->normal,
-                                   "fpl3d: displace within the plane of this normal \"x,y,z\"; default: a random "
-                                   "perpendicular direction per midpoint");
-                    app.add_option("--branch-prob", p.branch_prob, "fpl/fpl3d: probability a midpoint forks a branch, 0..1")
-                        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
-                    app.add_option("--branch-decay", p.branch_decay, "length and radius factor per branch generation, (0, 1)")
-                        ->capture_default_str();
-                    app.add_option("--branch-generations", p.branch_generations, "deepest branch generation, 1..8")
-                        ->capture_default_str();
-                    app.add_option("--radius", p.radius, "vertex radius of the main line, >= 0")->capture_default_str();
-                    app.add_option("--hurst", p.hurst, "profile: Hurst exponent H, 0..1")->capture_default_str();
-                    app.add_option("--ifs", p.ifs_preset, "ifs: built-in table fern, dragon, koch or sierpinski_gasket (seed 002)")
-                        ->transform(choice(kIfs))->capture_default_str();
+                                   "fpl3d: displace within the plane of this normal \"x,y,z\" (plane_normal); "
+                                   "default: a random perpendicular direction per midpoint");
                     app.add_option("--ifs-table", o->ifs_table,
                                    "ifs: a file of maps, one \"a,b,c,d,e,f,p\" per line: x' = a x + b y + e, "
-                                   "y' = c x + d y + f, probability p")
+                                   "y' = c x + d y + f, probability p (instead of --ifs-preset)")
                         ->check(CLI::ExistingFile);
-                    app.add_option("--points", p.ifs_points, "ifs: number of points, 1..268435456")->capture_default_str();
-                    app.add_option("--threads", p.threads, "FPL worker threads, 0 = all cores (output never depends on it)")
-                        ->check(CLI::Range(0, 1024))->capture_default_str();
                     app.add_option("--out", o->out, "output .csv (x,y,z,radius; blank line between polylines) or .json");
                     app.add_option("--svg", o->svg, "also draw the x,y projection into this .svg");
                     app.add_option("--pov", o->pov,

@@ -5,6 +5,7 @@
 
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/param_flags.hpp"
 #include "core/buffer.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
@@ -12,12 +13,10 @@
 #include "io/npy.hpp"
 #include "io/polyline_io.hpp"
 #include "terrain/terrain.hpp"
+#include "terrain/terrain_params.hpp"
 
 namespace ft::cli {
 namespace {
-
-const std::map<std::string, int> kRefScales = {
-    {"sigma", FT_REFSCALE_SIGMA}, {"mean", FT_REFSCALE_MEAN}, {"std", FT_REFSCALE_STD}};
 
 struct ProfileOptions {
   ft_profile_params p = default_profile_params();
@@ -84,17 +83,10 @@ Registration reg({"profile", "Generate a Voss 1D fractal profile (a horizon)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<ProfileOptions>();
                     auto& p = o->p;
-                    app.add_option("--levels", p.levels, "refinement steps n: 2^n + 1 samples")
-                        ->check(CLI::Range(1, 28))->capture_default_str();
-                    app.add_option("--hurst", p.hurst, "Hurst exponent H")->check(CLI::Range(0.0, 1.0))
-                        ->capture_default_str();
-                    app.add_option("--sigma", p.sigma, "vertical scale (> 0)")->capture_default_str();
-                    app.add_option("--seed", p.seed, "random seed (64-bit)")->capture_default_str();
+                    add_param_flags(app, profile_param_table(), &p);
                     app.add_option("--reference", o->reference,
                                    "2^m + 1 reference values: a 1D .npy, or a .csv whose y column is used")
                         ->check(CLI::ExistingFile);
-                    app.add_option("--reference-scale", p.reference_scale, "displacement scale from references")
-                        ->transform(choice(kRefScales))->capture_default_str();
                     app.add_option("--out", o->out, "output .csv (x = t in [0,1], y = height), .json or .npy");
                     app.add_flag("--stats", o->stats, "print a JSON object with seconds, min, max, mean");
                     return [o] {

@@ -6,17 +6,21 @@
 
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/param_flags.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
 #include "refine/dem_refine.hpp"
+#include "refine/dem_refine_params.hpp"
 
 namespace ft::cli {
 namespace {
 
 struct RefineCli {
-  std::string in, out, levels = "+2", hurst = "auto", sigma = "auto", window, method = "midpoint";
+  std::string in, out, levels = "+2", hurst = "auto", sigma = "auto", window;
   std::string nodata = "avoid";
-  DemRefineConfig c;
+  // seed, method and threads are flags from the table; the other fields have
+  // their own forms here (+K, auto, X,Y[,SIDE]).
+  ft_dem_refine_params p = defaults_of<ft_dem_refine_params>(dem_refine_param_table());
 };
 
 // "auto" -> `fallback` (the "measure it" value); otherwise a number.
@@ -35,35 +39,37 @@ int run(RefineCli& o) {
   const std::string k = o.levels.empty() || o.levels[0] != '+' ? o.levels : o.levels.substr(1);
   try {
     size_t used = 0;
-    o.c.levels_added = std::stoi(k, &used);
+    o.p.levels_added = std::stoi(k, &used);
     if (used != k.size()) throw std::invalid_argument(k);
   } catch (const std::exception&) {
     invalid("--levels must be +K, the number of levels to add (1..12), got '" + o.levels + "'");
   }
-  o.c.hurst = number_or_auto(o.hurst, "--hurst", -1.0);
-  if (o.hurst != "auto") check_range("--hurst", o.c.hurst, 0.0, 0.99);
-  o.c.sigma = number_or_auto(o.sigma, "--sigma", -1.0);
-  if (o.sigma != "auto") check_positive("--sigma", o.c.sigma);
-  o.c.additions = o.method == "additions";
+  // A number given is the value itself: a negative one is not a way to say
+  // auto. The rest of each range is the table's (dem_refine_config).
+  o.p.hurst = number_or_auto(o.hurst, "--hurst", -1.0);
+  if (o.hurst != "auto" && !(o.p.hurst >= 0)) invalid("--hurst must be auto or H >= 0, got " + o.hurst);
+  o.p.sigma = number_or_auto(o.sigma, "--sigma", -1.0);
+  if (o.sigma != "auto" && !(o.p.sigma > 0)) invalid("--sigma must be auto or > 0, got " + o.sigma);
   if (!o.window.empty()) {
     int x = -1, y = -1, side = 0;
     char tail = 0;
     const int n = std::sscanf(o.window.c_str(), "%d,%d,%d%c", &x, &y, &side, &tail);
     if (n != 2 && n != 3) invalid("--window must be X,Y or X,Y,SIDE (samples), got '" + o.window + "'");
-    o.c.window_x = x, o.c.window_y = y;
-    if (n == 3) o.c.window_side = side;
+    o.p.window_x = x, o.p.window_y = y;
+    if (n == 3) o.p.window_side = side;
   }
   // Nodata: by default the window avoids it; "fill" fills it first (then any
   // window will do), "refuse" refuses a DEM that has any.
   const NodataPolicy policy = o.nodata == "fill" ? NodataPolicy::fill
                               : o.nodata == "refuse" ? NodataPolicy::refuse
                                                      : NodataPolicy::keep;
+  const DemRefineConfig c = dem_refine_config(o.p);  // the ranges, before the DEM is read
   const Heightfield dem = read_heightfield(o.in, policy);
-  const DemRefineResult r = refine_dem(dem, o.c);
+  const DemRefineResult r = refine_dem(dem, c);
   write_heightfield(r.terrain, o.out);
   nlohmann::json j = {{"dem", {dem.width(), dem.height()}},
                       {"window", {{"x", r.window_x}, {"y", r.window_y}, {"side", r.window_side}}},
-                      {"levels_added", o.c.levels_added},
+                      {"levels_added", c.levels_added},
                       {"size", r.terrain.width()},
                       {"hurst", r.hurst},
                       {"hurst_measured", r.hurst_measured},
@@ -97,18 +103,14 @@ Registration reg({"refine", "Refine a real DEM: its samples kept, finer levels a
                     app.add_option("--sigma", o->sigma,
                                    "auto (from the DEM's increments at one pixel) or the vertical scale > 0")
                         ->capture_default_str();
-                    app.add_option("--seed", o->c.seed, "random seed")->capture_default_str();
-                    app.add_option("--method", o->method, "midpoint or additions")
-                        ->check(CLI::IsMember({"midpoint", "additions"}))
-                        ->capture_default_str();
+                    add_param_flags(app, dem_refine_param_table(), &o->p,
+                                    {"levels_added", "hurst", "sigma", "window_x", "window_y", "window_side"});
                     app.add_option("--window", o->window,
                                    "X,Y[,SIDE]: the window's top-left sample (and side 2^m + 1); default: the "
                                    "largest without nodata, nearest the centre");
                     app.add_option("--nodata", o->nodata,
                                    "avoid (the window holds none), fill (GDAL's inverse-distance fill) or refuse")
                         ->check(CLI::IsMember({"avoid", "fill", "refuse"}))
-                        ->capture_default_str();
-                    app.add_option("--threads", o->c.threads, "0: all cores; output never depends on it")
                         ->capture_default_str();
                     return [o] { return run(*o); };
                   },

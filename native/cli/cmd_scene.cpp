@@ -5,9 +5,11 @@
 
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/param_flags.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
+#include "povray/pov_params.hpp"
 #include "povray/render.hpp"
 #include "povray/scene.hpp"
 
@@ -25,13 +27,21 @@ struct SceneOptions {
   std::vector<double> radii, radius_scales;
   bool radius_from_file = false;
   double size = 0, vertical_scale = 0, sea_fraction = NAN, water = NAN;
-  pov::CameraOptions camera;
-  double sun_azimuth = 235, sun_elevation = 35;
+  // Camera and sun from ft_pov_scene_params' table, the sweeps' spline,
+  // segments and tolerance from ft_pov_sweep_params'; the terrain's extent,
+  // scale and sea, and the radii per line set, have their own forms here.
+  ft_pov_scene_params scene = defaults_of<ft_pov_scene_params>(pov::scene_param_table());
+  ft_pov_sweep_params sweep = defaults_of<ft_pov_sweep_params>(pov::sweep_param_table());
+  bool aspect_given = false;
   pov::RenderOptions r;
 };
 
 int run(SceneOptions& o) {
   pov::SceneParams p;
+  // Checked against the tables first, then the terrain's own forms (which set world sizes and sea) follow.
+  if (!o.render.empty() && !o.aspect_given) o.scene.camera_aspect = double(o.r.width) / double(o.r.height);
+  pov::apply_scene_settings(o.scene, p);
+  p.sweep = pov::sweep_options(o.sweep);
   Heightfield hf;
   std::vector<PolylineSet> sets(o.polylines.size());
   if (!o.terrain.empty()) {
@@ -58,10 +68,6 @@ int run(SceneOptions& o) {
     p.lines.push_back(l);
   }
   p.image_width = o.r.width;
-  if (!o.render.empty()) o.camera.aspect = double(o.r.width) / double(o.r.height);
-  p.camera = o.camera;
-  p.sun_azimuth_deg = o.sun_azimuth;
-  p.sun_elevation_deg = o.sun_elevation;
   p.title = o.terrain.empty() ? "polylines" : "terrain " + o.terrain;
   const auto sum = pov::write_scene(p, o.pov);
   std::printf("wrote %s%s%s\n", o.pov.c_str(), sum.image_path.empty() ? "" : " and ", sum.image_path.c_str());
@@ -107,21 +113,16 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                                    "sea level at this fraction of the terrain's samples (0..0.999); default no sea")
                         ->check(CLI::Range(0.0, 0.999));
                     app.add_option("--water", o->water, "sea level in world units (instead of --sea-fraction)");
-                    app.add_option("--azimuth", o->camera.azimuth_deg,
-                                   "camera direction seen from the content, degrees from +y towards +x")
-                        ->check(CLI::Range(-360.0, 360.0))->capture_default_str();
-                    app.add_option("--elevation", o->camera.elevation_deg,
-                                   "camera elevation, degrees 1..90 (without terrain: 70, or 12 for lightning)")
-                        ->check(CLI::Range(1.0, 90.0))->capture_default_str();
-                    app.add_option("--fov", o->camera.fov_deg, "horizontal field of view, degrees 5..150")
-                        ->check(CLI::Range(5.0, 150.0))->capture_default_str();
-                    app.add_option("--zoom-out", o->camera.distance_scale,
-                                   "camera distance relative to the framed one, 0.1..100")
-                        ->check(CLI::Range(0.1, 100.0))->capture_default_str();
-                    app.add_option("--sun-azimuth", o->sun_azimuth, "sun direction, degrees from +y towards +x")
-                        ->check(CLI::Range(-360.0, 360.0))->capture_default_str();
-                    app.add_option("--sun-elevation", o->sun_elevation, "sun elevation, degrees 1..90")
-                        ->check(CLI::Range(1.0, 90.0))->capture_default_str();
+                    // The names these flags had before the table stay as aliases.
+                    add_param_flags(app, pov::scene_param_table(), &o->scene,
+                                    {"world_size_x", "world_size_y", "vertical_scale", "has_sea", "sea_level"},
+                                    {{"camera_azimuth_deg", "--azimuth"},
+                                     {"camera_elevation_deg", "--elevation"},
+                                     {"camera_fov_deg", "--fov"},
+                                     {"camera_distance_scale", "--zoom-out"},
+                                     {"sun_azimuth_deg", "--sun-azimuth"},
+                                     {"sun_elevation_deg", "--sun-elevation"}});
+                    add_param_flags(app, pov::sweep_param_table(), &o->sweep, {"default_radius", "radius_scale"});
                     app.add_option("--render", o->render, "also render the scene with povray to this PNG");
                     app.add_option("--width", o->r.width, "render width in pixels (also sets the framing aspect)")
                         ->check(CLI::Range(1, 16384))->capture_default_str();
@@ -129,14 +130,16 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                         ->capture_default_str();
                     app.add_option("--antialias", o->r.antialias, "anti-aliasing threshold (povray +A), 0 = off")
                         ->check(CLI::Range(0.0, 3.0))->capture_default_str();
-                    auto* elevation = app.get_option("--elevation");
-                    return [o, elevation] {
+                    auto* elevation = app.get_option("--camera-elevation-deg");
+                    auto* aspect = app.get_option("--camera-aspect");
+                    return [o, elevation, aspect] {
+                      o->aspect_given = aspect->count() > 0;
                       if (o->terrain.empty() && o->polylines.empty()) invalid("give --terrain and/or --polyline");
                       // Polylines alone are seen from high above unless told otherwise.
                       if (o->terrain.empty() && elevation->count() == 0) {
                         bool all_lightning = !o->kinds.empty() && o->kinds.size() == o->polylines.size();
                         for (int k : o->kinds) all_lightning = all_lightning && k == int(pov::LineKind::kLightning);
-                        o->camera.elevation_deg =
+                        o->scene.camera_elevation_deg =
                             pov::polyline_camera(all_lightning ? pov::LineKind::kLightning : pov::LineKind::kGeneric)
                                 .elevation_deg;
                       }

@@ -108,19 +108,30 @@ std::string flag_of(const char* field) { return "--" + lower_dashed(field); }
 
 std::string cli_name(const ft_param_enum_item& item) { return lower_dashed(item.name); }
 
-void add_param_flags(CLI::App& app, const ParamTable& table, void* params, const std::set<std::string>& skip) {
+void add_param_flags(CLI::App& app, const ParamTable& table, void* params, const std::set<std::string>& skip,
+                     const std::map<std::string, std::string>& aliases) {
   for (const ft_param_info& row : table.rows) {
     if ((row.flags & (FT_PARAM_FLAG_STRUCT_SIZE | FT_PARAM_FLAG_DATA)) || skip.count(row.name) ||
         row.count != 1 || row.type == FT_PARAM_POINTER || row.type == FT_PARAM_STRING ||
         row.type == FT_PARAM_CALLBACK)
       continue;
     std::string help = methods_text(table, row) + row.label + ": " + row.doc;
+    const auto alias = aliases.find(row.name);
+    const std::string names = flag_of(row.name) + (alias == aliases.end() ? "" : "," + alias->second);
     if (row.type == FT_PARAM_BOOL) {
       const ft_param_info* r = &row;
-      app.add_flag_callback(flag_of(row.name), [params, r] { store(params, *r, int32_t(1)); },
+      app.add_flag_callback(names, [params, r] { store(params, *r, int32_t(1)); },
                             help + (row.default_value != 0 ? " [default: on]" : ""));
+      // A setting that is on by default needs a way to turn it off.
+      if (row.default_value != 0)
+        app.add_flag_callback("--no-" + flag_of(row.name).substr(2), [params, r] { store(params, *r, int32_t(0)); },
+                              "turn " + flag_of(row.name) + " off");
       continue;
     }
+    // An enum's values say what each one means: the table documents them one by one.
+    if (row.type == FT_PARAM_ENUM)
+      for (int i = 0; i < row.enum_count; ++i)
+        help += std::string(i ? "; " : ". ") + cli_name(row.enum_items[i]) + ": " + row.enum_items[i].doc;
     const std::string range = row.type == FT_PARAM_ENUM ? "" : range_text(row);
     if (!range.empty()) help += "; range " + range;
     std::string type = row.type == FT_PARAM_ENUM ? "" : is_integer(row.type) ? (row.type == FT_PARAM_UINT64 ? "UINT" : "INT")
@@ -129,7 +140,7 @@ void add_param_flags(CLI::App& app, const ParamTable& table, void* params, const
       for (int i = 0; i < row.enum_count; ++i) type += (i ? "|" : "") + cli_name(row.enum_items[i]);
     }
     const ft_param_info* r = &row;
-    app.add_option_function<std::string>(flag_of(row.name),
+    app.add_option_function<std::string>(names,
                                          [params, r](const std::string& text) { parse_into(params, *r, text); }, help)
         ->type_name(type)
         ->default_str(current_text(params, row));

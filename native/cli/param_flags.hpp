@@ -8,6 +8,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <map>
 #include <set>
 #include <string>
 
@@ -25,7 +26,11 @@ std::string cli_name(const ft_param_enum_item& item);
 // (a subcommand may offer its own form, e.g. --size WxH for width and
 // height). The flags write into `params`, a struct of the table's type that
 // must outlive parsing and be filled with its defaults beforehand (its values
-// are the defaults --help shows). Returns nothing: errors are the library's.
-void add_param_flags(CLI::App& app, const ParamTable& table, void* params, const std::set<std::string>& skip = {});
+// are the defaults --help shows). `aliases` gives a field further flag names
+// that users relied on before the flags came from the table (e.g. "--points"
+// for ifs_points), as CLI11 names: "--points" or "--a,--b". Returns nothing:
+// errors are the library's.
+void add_param_flags(CLI::App& app, const ParamTable& table, void* params, const std::set<std::string>& skip = {},
+                     const std::map<std::string, std::string>& aliases = {});
 
 }  // namespace ft::cli

@@ -24,6 +24,16 @@ def coords(mesh):
     return co
 
 
+def corner_heights(mesh):
+    """{'SW', 'SE', 'NW', 'NE'}: z of the mesh's corner vertices (x, y extremes)."""
+    co = coords(mesh)
+    pts = [tuple(co[i:i + 3]) for i in range(0, len(co), 3)]
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+    at = {(p[0], p[1]): p[2] for p in pts}
+    return {"SW": at[(x0, y0)], "SE": at[(x1, y0)], "NW": at[(x0, y1)], "NE": at[(x1, y1)]}
+
+
 class DemTest(unittest.TestCase):
     def setUp(self):
         for obj in list(bpy.data.objects):
@@ -68,6 +78,38 @@ class DemTest(unittest.TestCase):
             bpy.ops.import_scene.fracterra_dem(filepath=bad)
         self.assertNotIn("Traceback", str(cm.exception))
         self.assertIn("bad.tif", str(cm.exception))
+
+    def add_dem_terrain(self, path, **kw):
+        return bpy.ops.mesh.fracterra_terrain_add(method="MIDPOINT", levels=4, reference_source="DEM",
+                                                  reference_file=path, reference_levels=2, **kw)
+
+    def test_a_dem_is_a_terrains_reference_and_stays_editable(self):
+        # Not georeferenced: its relief becomes reference_height, lowest point 0.
+        path = self.write_dem("ref.exr")
+        self.assertEqual(self.add_dem_terrain(path, reference_height=3.0), {"FINISHED"})
+        obj = bpy.context.active_object
+        self.assertEqual(obj.fracterra_terrain.reference_source, "DEM")
+        self.assertEqual(len(obj.data.vertices), 17 * 17)
+        # The reference nodes survive exactly: the DEM's lowest corner (south-west) at 0,
+        # its highest (north-east, north up) at the relief; the others in between.
+        z = corner_heights(obj.data)
+        self.assertAlmostEqual(z["SW"], 0.0, places=5)
+        self.assertAlmostEqual(z["NE"], 3.0, places=5)
+        self.assertAlmostEqual(z["SE"], 3.0 * 8 / 48, places=5)
+        self.assertAlmostEqual(z["NW"], 3.0 * 40 / 48, places=5)
+        # Re-editable: a new relief regenerates in place.
+        obj.fracterra_terrain.reference_height = 6.0
+        self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
+        self.assertAlmostEqual(corner_heights(obj.data)["NE"], 6.0, places=5)
+
+    def test_a_missing_dem_is_an_error_report(self):
+        with self.assertRaises(RuntimeError) as cm:
+            self.add_dem_terrain(os.path.join(self.dir, "missing.tif"))
+        self.assertNotIn("Traceback", str(cm.exception))
+        self.assertIn("missing.tif", str(cm.exception))
+        with self.assertRaises(RuntimeError) as cm:
+            self.add_dem_terrain("")
+        self.assertIn("DEM File", str(cm.exception))
 
 
 if __name__ == "__main__":

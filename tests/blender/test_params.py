@@ -1,9 +1,11 @@
 """In real Blender: the add-on's properties are the library's parameter
 tables (fracterra/params.h). Every setting of ft_terrain_params is a property
-of the Add Fractal Terrain operator and of the object's PropertyGroup, with
-the library's label, default, range and enum items; where Blender differs
-(a default, a narrower range) it says so once, with a reason, in
-core/params.py."""
+of the Add Fractal Terrain operator and of the object's PropertyGroup, every
+setting of ft_polyline_params one of Add Fractal Polyline and of its
+PropertyGroup, and every setting of ft_fractalize_params one of Object >
+Fractalize, with the library's label, default, range and enum items; where
+Blender differs (a default, a narrower range) it says so once, with a
+reason, in core/params.py."""
 
 import math
 import os
@@ -20,9 +22,20 @@ def core():
     return addon_harness.submodule("core")
 
 
-def rna_properties():
-    yield "operator", bpy.ops.mesh.fracterra_terrain_add.get_rna_type().properties
-    yield "PropertyGroup", bpy.types.Object.bl_rna.properties["fracterra_terrain"].fixed_type.properties
+def rna_properties(kind="terrain"):
+    if kind == "terrain":
+        yield "operator", bpy.ops.mesh.fracterra_terrain_add.get_rna_type().properties
+        yield "PropertyGroup", bpy.types.Object.bl_rna.properties["fracterra_terrain"].fixed_type.properties
+    elif kind == "polyline":
+        yield "operator", bpy.ops.curve.fracterra_polyline_add.get_rna_type().properties
+        yield "PropertyGroup", bpy.types.Object.bl_rna.properties["fracterra_polyline"].fixed_type.properties
+    elif kind == "fractalize":
+        yield "operator", bpy.ops.object.fracterra_fractalize.get_rna_type().properties
+
+
+# The structs whose settings are Blender properties, and how many (operator and
+# PropertyGroup together) at least: a kind that lost its properties fails.
+KINDS = {"terrain": 2 * 20 + 1, "polyline": 2 * 10, "fractalize": 8}
 
 
 class TerrainPropertiesTest(unittest.TestCase):
@@ -31,14 +44,22 @@ class TerrainPropertiesTest(unittest.TestCase):
         self.rows = core().library().param_rows["terrain"]
 
     def test_every_library_setting_is_a_property_with_its_label_default_and_range(self):
-        overrides = self.params.BLENDER_OVERRIDES["terrain"]
-        limits = self.params.BLENDER_LIMITS["terrain"]
-        skipped = self.params.NOT_PROPERTIES["terrain"]
+        for kind, least in KINDS.items():
+            with self.subTest(kind=kind):
+                self.assertGreaterEqual(self.check_kind(kind), least, kind)
+
+    def check_kind(self, kind):
+        rows = core().library().param_rows[kind]
+        overrides = self.params.BLENDER_OVERRIDES.get(kind, {})
+        limits = self.params.BLENDER_LIMITS.get(kind, {})
+        skipped = self.params.NOT_PROPERTIES.get(kind, {})
         checked = 0
-        for where, props in rna_properties():
-            for row in self.rows:
+        for where, props in rna_properties(kind):
+            where = f"{kind} {where}"
+            for row in rows:
                 name = row["name"]
-                if row["flags"] & 3 or row["type"] in ("pointer", "callback", "string") or name in skipped:
+                if (row["flags"] & 3 or row["type"] in ("pointer", "callback", "string") or name in skipped
+                        or row["count"] != 1):
                     self.assertNotIn(name, props.keys(), f"{where}: {name} is not a setting")
                     continue
                 checked += 1
@@ -48,7 +69,11 @@ class TerrainPropertiesTest(unittest.TestCase):
                     items = [(i.identifier, i.value) for i in prop.enum_items]
                     self.assertEqual(items, [(n, v) for n, _l, _d, v in row["items"]], (where, name))
                     default = next(v for n, _l, _d, v in row["items"] if n == prop.default)
-                    self.assertEqual(default, row["default_value"], (where, name))
+                    want = overrides.get(name, (None,))[0]
+                    if want is not None:
+                        self.assertEqual(prop.default, want, (where, name))
+                    else:
+                        self.assertEqual(default, row["default_value"], (where, name))
                     continue
                 want = overrides.get(name, (row["default_value"],))[0]
                 if row["type"] == "bool":
@@ -65,7 +90,7 @@ class TerrainPropertiesTest(unittest.TestCase):
                 if abs(hi) < 1e30:
                     self.assertAlmostEqual(prop.hard_max, min(hi, 2**31 - 1), delta=abs(hi) * 1e-6,
                                            msg=(where, name))
-        self.assertGreater(checked, 2 * 20)
+        return checked
 
     def test_blender_offers_no_levels_it_cannot_hold(self):
         """levels 13 is 8193^2 vertices, 2^28 face corners: more than a Blender mesh array holds
@@ -84,12 +109,14 @@ class TerrainPropertiesTest(unittest.TestCase):
                     self.assertGreater(len(reason), 30, (kind, name))
 
     def test_which_fields_each_method_shows_comes_from_the_library(self):
-        by_name = self.params.PARAMS_BY_NAME
-        methods = {v: n for n, _l, _d, v in next(r for r in self.rows if r["name"] == "method")["items"]}
-        for row in self.rows:
-            if row["name"] in by_name and row["methods"] != 2**64 - 1:
-                shown = {methods[v] for v in methods if row["methods"] >> v & 1}
-                self.assertEqual(set(by_name[row["name"]].methods), shown, row["name"])
+        for kind, params in (("terrain", self.params.TERRAIN_PARAMS), ("polyline", self.params.POLYLINE_PARAMS)):
+            rows = core().library().param_rows[kind]
+            by_name = {p.name: p for p in params}
+            methods = {v: n for n, _l, _d, v in next(r for r in rows if r["name"] == "method")["items"]}
+            for row in rows:
+                if row["name"] in by_name and row["methods"] != 2**64 - 1:
+                    shown = {methods[v] for v in methods if row["methods"] >> v & 1}
+                    self.assertEqual(set(by_name[row["name"]].methods), shown, (kind, row["name"]))
 
 
 if __name__ == "__main__":

@@ -1,6 +1,8 @@
 // Fuzzes the C ABI the way ctypes callers can get it wrong: raw bytes become
 // the fields of ft_terrain_params / ft_profile_params / ft_polyline_params /
-// ft_fractalize_params (struct_size included), with pointer fields (reference
+// ft_fractalize_params / ft_hurst_params / ft_clouds_params (struct_size
+// included; the last two over a small heightfield of input floats, NaN and
+// infinities included), with pointer fields (reference
 // grid, base polyline, IFS table, weights) holding what their counts claim,
 // and a progress callback that cancels after a few reports. Every call must return a known status
 // with a message, hand back either a complete result or NULL, and never
@@ -183,6 +185,58 @@ void fuzz_fractalize(Bytes& in) {
   ft_mesh_free(cube);
 }
 
+// A width x height heightfield (each 4..35) of the input's floats (or bytes when it runs short).
+ft_heightfield* small_heightfield(Bytes& in) {
+  const int32_t w = 4 + in.take<uint8_t>() % 32, h = 4 + in.take<uint8_t>() % 32;
+  std::vector<float> z(size_t(w) * size_t(h));
+  for (float& v : z) v = in.left() >= 4 ? in.take<float>() : float(in.take<uint8_t>());
+  ft_heightfield* hf = nullptr;
+  check_status(ft_heightfield_create(w, h, z.data(), &hf));
+  return hf;
+}
+
+// [which = 4] [ft_hurst_params] [fixups: 1 = set struct_size, 2 = NULL params (the
+// defaults), 4 = also row 0 as a profile] [w] [h] [floats...]
+void fuzz_hurst(Bytes& in) {
+  ft_hurst_params p;
+  in.take_into(&p, sizeof p);
+  const uint8_t fixups = in.take<uint8_t>();
+  if (fixups & 1) p.struct_size = sizeof p;
+  const ft_hurst_params* given = (fixups & 2) ? nullptr : &p;
+  ft_heightfield* hf = small_heightfield(in);
+  if (!hf) return;
+  ft_hurst_result r{};
+  r.struct_size = sizeof r;
+  const ft_status s = ft_hurst_heightfield(hf, given, &r);
+  check_status(s);
+  if (s == FT_OK && (r.method < FT_HURST_VARIOGRAM || r.method > FT_HURST_SPECTRAL)) bug("no estimator reported");
+  if (fixups & 4) {
+    r = ft_hurst_result{};
+    r.struct_size = sizeof r;
+    check_status(ft_hurst_profile(ft_heightfield_data(hf), size_t(ft_heightfield_width(hf)), given, &r));
+  }
+  ft_heightfield_free(hf);
+}
+
+// [which = 5] [ft_clouds_params] [fixups: 1 = set struct_size, 2 = buffer one short] [w] [h] [floats...]
+void fuzz_clouds(Bytes& in) {
+  ft_clouds_params p;
+  in.take_into(&p, sizeof p);
+  const uint8_t fixups = in.take<uint8_t>();
+  if (fixups & 1) p.struct_size = sizeof p;
+  ft_heightfield* hf = small_heightfield(in);
+  if (!hf) return;
+  const size_t n = size_t(ft_heightfield_width(hf)) * size_t(ft_heightfield_height(hf));
+  std::vector<uint16_t> grey(n);
+  const ft_status s = ft_clouds(hf, &p, grey.data(), (fixups & 2) ? n - 1 : n);
+  check_status(s);
+  if ((fixups & 2) && s == FT_OK) bug("clouds wrote into a buffer one short");
+  if (s == FT_OK && p.bit_depth == 8)
+    for (uint16_t g : grey)
+      if (g > 255) bug("an 8-bit cloud above 255");
+  ft_heightfield_free(hf);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
@@ -192,11 +246,13 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   Bytes in(data, size);
-  switch (in.take<uint8_t>() % 4) {
+  switch (in.take<uint8_t>() % 6) {
     case 0: fuzz_terrain(in); break;
     case 1: fuzz_profile(in); break;
     case 2: fuzz_polyline(in); break;
-    default: fuzz_fractalize(in); break;
+    case 3: fuzz_fractalize(in); break;
+    case 4: fuzz_hurst(in); break;
+    default: fuzz_clouds(in); break;
   }
   return 0;
 }

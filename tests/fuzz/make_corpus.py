@@ -249,4 +249,21 @@ put("capi_params", "fractalize_cube", bytes([3]) + bytes(fractalize()) + bytes([
 put("capi_params", "fractalize_weights_cancel", bytes([3]) + bytes(fractalize(levels=3, mode=1, scheme=2)) +
     bytes([7]) + struct.pack("<8f", 1, 0, 0.5, 1, 1, 1, 0, 2) + bytes([1]))
 put("capi_params", "fractalize_levels_10", bytes([3]) + bytes(fractalize(levels=10)) + bytes([1]) + bytes(33))
+
+
+# Hurst and clouds parameters over a small heightfield: [which = 4 / 5] [struct]
+# [fixups] [w - 4] [h - 4] [w * h floats].
+def put_grid(name, which, params, fixups=1, w=9, h=9, values=None):
+    z = values if values is not None else [((x * 7 + y * 13) % 11) * 0.25 for y in range(h) for x in range(w)]
+    put("capi_params", name, bytes([which]) + bytes(params) + bytes([fixups, w - 4, h - 4]) +
+        b"".join(struct.pack("<f", v) for v in z))
+
+
+put_grid("hurst_aligned_9x9", 4, initialised("hurst"), fixups=5)
+put_grid("hurst_auto_17x12", 4, initialised("hurst", method=5, transects=1), w=17, h=12)
+put_grid("hurst_spectral_band", 4, initialised("hurst", method=4, freq_min=2, freq_max=3), w=20, h=20)
+put_grid("hurst_nan_sample", 4, initialised("hurst"), values=[float("nan")] + [1.0] * 80)
+put_grid("clouds_median", 5, initialised("clouds"))
+put_grid("clouds_16bit_height", 5, initialised("clouds", bit_depth=16, threshold_is_quantile=0, threshold=1.0))
+put_grid("clouds_short_buffer", 5, initialised("clouds"), fixups=3)
 print("corpus written to", CORPUS)

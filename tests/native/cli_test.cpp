@@ -4,6 +4,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "tables/param_registry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
 #include "terrain/terrain.hpp"
@@ -204,6 +206,43 @@ TEST_F(Cli, HelpExplainsEveryFlagWithItsDefault) {
   const CliRun terrain = run("terrain --help");
   EXPECT_NE(terrain.out.find("--hurst FLOAT=0.8"), std::string::npos) << "the default of --hurst";
   EXPECT_NE(terrain.out.find("range [0, 1]"), std::string::npos) << "the range of --hurst";
+}
+
+TEST_F(Cli, CommandsWithATableOfferEveryOneOfItsSettings) {
+  // The flags of these commands are built from the library's parameter tables:
+  // every setting row is a flag with its default (enums by their CLI names),
+  // except the ones the command offers in its own form.
+  struct Case {
+    const char* command;
+    int kind;
+    std::set<std::string> own_form;
+  };
+  const Case cases[] = {{"terrain", FT_PARAMS_TERRAIN, {"width", "height", "center_x", "center_y"}},
+                        {"profile", FT_PARAMS_PROFILE, {}},
+                        {"fractalize", FT_PARAMS_FRACTALIZE, {}}};
+  for (const Case& c : cases) {
+    const std::string help = run(std::string(c.command) + " --help").out;
+    int flags = 0;
+    for (const ft_param_info& r : param_table(c.kind).rows) {
+      const ft_param_info* row = &r;
+      if (row->flags & (FT_PARAM_FLAG_STRUCT_SIZE | FT_PARAM_FLAG_DATA) || row->count != 1 ||
+          c.own_form.count(row->name))
+        continue;
+      std::string flag = std::string("--") + row->name;
+      std::replace(flag.begin(), flag.end(), '_', '-');
+      EXPECT_NE(help.find(flag + " "), std::string::npos) << c.command << ": no " << flag;
+      ++flags;
+    }
+    EXPECT_GT(flags, 3) << c.command;
+  }
+  // One word per concept: the fractalize mode is "midpoint" as everywhere, not "voss".
+  std::ofstream(path("quad.obj")) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  EXPECT_NE(run("fractalize --in " + path("quad.obj") + " --mode voss --stats").code, 0);
+  const CliRun mid = run("fractalize --in " + path("quad.obj") + " --mode midpoint --levels 2 --out " + path("m.obj"));
+  const CliRun add = run("fractalize --in " + path("quad.obj") + " --mode additions --levels 2 --out " + path("a.obj"));
+  ASSERT_EQ(mid.code, 0) << mid.err;
+  ASSERT_EQ(add.code, 0) << add.err;
+  EXPECT_NE(read_file(path("m.obj")), read_file(path("a.obj"))) << "--mode reaches the library";
 }
 
 TEST_F(Cli, ProfileWritesCsvWithTwoToTheLevelsPlusOneRows) {

@@ -51,10 +51,13 @@ def test_ctypes_structs_follow_the_header_field_order(core, header_dir):
                                 ("terrain.h", "ft_profile_params", lib.profile_params_type),
                                 ("polyline.h", "ft_polyline_params", lib.polyline_params_type),
                                 ("polyline.h", "ft_polyline_stats", b.PolylineStats),
-                                ("analysis.h", "ft_hurst_params", b.HurstParams),
+                                ("analysis.h", "ft_hurst_params", lib.hurst_params_type),
+                                ("analysis.h", "ft_clouds_params", lib.clouds_params_type),
                                 ("analysis.h", "ft_hurst_result", b.HurstResult),
                                 ("povray.h", "ft_pov_scene_lines", b.PovSceneLines),
-                                ("povray.h", "ft_pov_scene_params", b.PovSceneParams),
+                                ("povray.h", "ft_pov_scene_params", lib.pov_scene_params_type),
+                                ("povray.h", "ft_pov_sweep_params", lib.pov_sweep_params_type),
+                                ("raster.h", "ft_dem_refine_params", lib.dem_refine_params_type),
                                 ("subdiv.h", "ft_fractalize_params", lib.fractalize_params_type)):
         fields = _struct_fields((header_dir / header).read_text(), struct)
         fields = [f.split("[")[0] for f in fields]

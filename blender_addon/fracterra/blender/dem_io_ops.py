@@ -9,6 +9,7 @@ import array
 import time
 
 import bpy
+import numpy as np
 from bpy_extras.io_utils import ExportHelper, ImportHelper
 
 from .. import core
@@ -23,11 +24,10 @@ def _flipped(hf, world_size, scale=1.0):
     """A new core.Heightfield (caller closes): the rows of `hf` in reverse
     order, heights times `scale`, world size `world_size` times `scale`."""
     w, h = hf.width, hf.height
-    values = hf.to_array()
-    out = array.array("f")
-    for y in reversed(range(h)):
-        out.extend(v * scale for v in values[y * w:(y + 1) * w])
-    flipped = core.Heightfield.from_values(w, h, out)
+    rows = np.frombuffer(hf.to_array(), dtype=np.float32).reshape(h, w)[::-1] * np.float32(scale)
+    values = array.array("f")
+    values.frombytes(np.ascontiguousarray(rows, dtype=np.float32).tobytes())
+    flipped = core.Heightfield.from_values(w, h, values)
     flipped._lib.ft_heightfield_set_world_size(flipped.handle, world_size * scale)
     return flipped
 

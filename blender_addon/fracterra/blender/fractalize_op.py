@@ -3,7 +3,8 @@
 import bpy
 import numpy as np
 
-from ..core import subdiv
+from ..core import params, subdiv
+from . import props
 from .mesh_build import set_smooth
 from .prefs import library_threads
 from .reporting import REPORTED, SettingsError, WindowProgress
@@ -67,29 +68,6 @@ class FRACTERRA_OT_fractalize(bpy.types.Operator):
     bl_label = "Fractalize"
     bl_options = {"REGISTER", "UNDO", "PRESET"}
 
-    levels: bpy.props.IntProperty(name="Levels", default=3, min=1, max=10, soft_max=6,
-                                  description="Refinement steps: faces grow 4^levels")
-    hurst: bpy.props.FloatProperty(name="Hurst H", default=0.8, min=0.0, max=1.0, subtype="FACTOR",
-                                   description="Hurst exponent: level k moves by sigma 2^(-kH)")
-    sigma: bpy.props.FloatProperty(name="Sigma", default=0.1, min=0.0, soft_max=10.0, subtype="DISTANCE",
-                                   unit="LENGTH", description="Displacement scale (0: plain subdivision)")
-    seed: bpy.props.IntProperty(name="Seed", default=1, min=0, max=2**31 - 1, description="Random seed")
-    scheme: bpy.props.EnumProperty(name="Scheme", default="CATMARK", items=[
-        ("CATMARK", "Catmull-Clark", "Any polygons in, quads out", 0),
-        ("LOOP", "Loop", "Triangles in (only), triangles out", 1),
-        ("BILINEAR", "Bilinear", "Any polygons in, quads out, no smoothing", 2)])
-    mode: bpy.props.EnumProperty(name="Mode", default="VOSS", items=[
-        ("VOSS", "Midpoint", "Only the vertices new at each level move", 0),
-        ("ADDITIONS", "Additions", "Feder's successive random additions: every vertex moves", 1)])
-    fix_boundary: bpy.props.BoolProperty(name="Fix Boundary", default=False,
-                                         description="Vertices on open edges never move")
-    scale_by_edge_length: bpy.props.BoolProperty(
-        name="Relative Sigma", default=False, description="Sigma is a fraction of the local edge length")
-    use_creases: bpy.props.BoolProperty(name="Edge Creases", default=True,
-                                        description="Honour the mesh's edge creases")
-    smooth: bpy.props.BoolProperty(name="Smooth Shading", default=True,
-                                   description="Shade the fractal surface smooth (off: every facet flat)")
-
     @classmethod
     def poll(cls, context):
         obj = context.active_object
@@ -117,4 +95,10 @@ class FRACTERRA_OT_fractalize(bpy.types.Operator):
             bpy.data.meshes.remove(old)
         self.report({"INFO"}, f"Fractalized: {len(sizes)} faces")
         return {"FINISHED"}
+
+
+# Its properties: the library's description of ft_fractalize_params (labels,
+# tooltips, ranges, defaults; Blender's differences stated in core/params.py),
+# then Edge Creases and Smooth Shading, which are Blender's own.
+FRACTERRA_OT_fractalize.__annotations__ = props.terrain_annotations(param_list=params.FRACTALIZE_PARAMS)
 

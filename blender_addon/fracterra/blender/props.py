@@ -33,6 +33,8 @@ def bpy_property(p, update=None):
         kw["items"] = [(ident, label, tip, number) for ident, label, tip, number in p.items]
         return EnumProperty(**kw)
     if p.kind == "string":
+        if p.subtype != "NONE":
+            kw["subtype"] = p.subtype
         return StringProperty(**kw)
     if p.kind == "vector":
         return FloatVectorProperty(size=3, subtype=p.subtype, unit=p.unit, **kw)

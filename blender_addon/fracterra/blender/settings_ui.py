@@ -64,6 +64,11 @@ def draw_settings(layout, data, show_reference_pickers=True):
             box.prop(data, "reference_levels")
             box.prop(data, "reference_height")
             box.prop(data, "reference_scale")
+        elif data.reference_source == "DEM":
+            box.prop(data, "reference_file")
+            box.prop(data, "reference_levels")
+            box.prop(data, "reference_height", text="Relief if not georeferenced")
+            box.prop(data, "reference_scale")
     erosion_ui.draw_erosion(col, data)
     sub = col.column(heading="Mesh", align=True)
     sub.prop(data, "uvs")

@@ -9,7 +9,7 @@ import bpy
 import numpy as np
 
 from .. import core
-from ..core import params
+from ..core import params, raster
 from ..core.grid import NO_FLOOR, GridArrays, grid_arrays, grid_size, vertices
 from ..core.mesh_limits import check_grid, grid_shape
 from . import erosion_ui, mesh_build
@@ -90,6 +90,24 @@ def reference_from_image(name, levels, height):
     return size, _float_array(height * resample_bilinear(luminance(px.reshape(h, w, channels)), size))
 
 
+def reference_from_dem(path, levels, world_size, relief):
+    """(size, heights): a DEM file (GDAL; holes filled) resampled bilinearly to
+    (2^levels + 1)^2 points, north up (row 0 is the south edge, y = 0), its
+    lowest point at 0. Georeferenced DEMs keep their true proportions: heights
+    scale by world_size / the DEM's extent; others get `relief` from lowest to highest."""
+    if not path:
+        raise SettingsError("Reference: choose a DEM file for 'DEM File'")
+    path = bpy.path.abspath(path)
+    with raster.read_heightfield(path, nodata="FILL") as dem:
+        w, h, dem_world = dem.width, dem.height, dem.world_size
+        z = np.frombuffer(dem.to_array(), dtype=np.float32).reshape(h, w)[::-1].astype(np.float64)
+    z -= z.min()
+    top = z.max()
+    scale = world_size / dem_world if dem_world > 0 else (relief / top if top > 0 else 0.0)
+    size = 2 ** levels + 1
+    return size, _float_array(scale * resample_bilinear(z, size))
+
+
 def reference_for(values):
     if values["method"] not in params.DYADIC_METHODS:
         return None
@@ -99,6 +117,9 @@ def reference_for(values):
     if source == "IMAGE":
         return reference_from_image(values["reference_image"], values["reference_levels"],
                                     values["reference_height"])
+    if source == "DEM":
+        return reference_from_dem(values["reference_file"], values["reference_levels"], values["world_size"],
+                                  values["reference_height"])
     return None
 
 

@@ -17,7 +17,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 2
-ABI_MINOR_MIN = 5  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: the erosion parameters are described
+ABI_MINOR_MIN = 6  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: ft_erosion_params described
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -51,7 +51,8 @@ class ParamInfo(Structure):
 
 
 # fracterra/params.h: the described structs and field types.
-PARAMS_KINDS = {"terrain": 0, "profile": 1, "polyline": 2, "fractalize": 3, "erosion": 4}
+PARAMS_KINDS = {"terrain": 0, "profile": 1, "polyline": 2, "fractalize": 3, "pov_scene": 4, "pov_sweep": 5,
+                "hurst": 6, "clouds": 7, "dem_refine": 8, "erosion": 9}
 FT_PARAM = ("uint32", "int32", "int64", "uint64", "float", "double", "bool", "enum", "pointer", "string",
             "callback", "opaque")
 FLAG_STRUCT_SIZE, FLAG_DATA, FLAG_MIN_EXCLUSIVE, FLAG_MAX_EXCLUSIVE = 1, 2, 4, 8
@@ -129,19 +130,6 @@ class PolylineStats(Structure):
     ]
 
 
-class HurstParams(Structure):
-    """ft_hurst_params (fracterra/analysis.h)."""
-    _fields_ = [
-        ("struct_size", c_uint32),
-        ("method", c_int32),
-        ("lag_min", c_double),
-        ("lag_max", c_double),
-        ("freq_min", c_double),
-        ("freq_max", c_double),
-        ("transects", c_int32),
-    ]
-
-
 class HurstResult(Structure):
     """ft_hurst_result (fracterra/analysis.h)."""
     _fields_ = [
@@ -161,31 +149,9 @@ class HurstResult(Structure):
 
 
 class PovSceneLines(Structure):
-    """ft_pov_scene_lines (fracterra/povray.h)."""
+    """ft_pov_scene_lines (fracterra/povray.h): an array of them is the data that
+    ft_pov_scene_params.lines points to (described as an opaque pointer)."""
     _fields_ = [("lines", c_void_p), ("kind", c_int32), ("radius", c_double)]
-
-
-class PovSceneParams(Structure):
-    """ft_pov_scene_params (fracterra/povray.h)."""
-    _fields_ = [
-        ("struct_size", c_uint32),
-        ("terrain", c_void_p),
-        ("world_size_x", c_double),
-        ("world_size_y", c_double),
-        ("vertical_scale", c_double),
-        ("has_sea", c_int32),
-        ("sea_level", c_double),
-        ("lines", POINTER(PovSceneLines)),
-        ("line_set_count", c_int32),
-        ("camera_azimuth_deg", c_double),
-        ("camera_elevation_deg", c_double),
-        ("camera_fov_deg", c_double),
-        ("camera_aspect", c_double),
-        ("camera_distance_scale", c_double),
-        ("sun_azimuth_deg", c_double),
-        ("sun_elevation_deg", c_double),
-        ("image_path", c_char_p),
-    ]
 
 
 class GridCounts(Structure):
@@ -239,13 +205,18 @@ SIGNATURES = {
     "ft_polyline_params_init": (c_int32, [_Described("polyline")]),
     "ft_polyline_generate": (c_int32, [_Described("polyline"), POINTER(_PL)]),
     "ft_polyline_measure": (c_int32, [_PL, POINTER(PolylineStats)]),
-    "ft_hurst_params_init": (c_int32, [POINTER(HurstParams)]),
-    "ft_hurst_profile": (c_int32, [_F32P, c_size_t, POINTER(HurstParams), POINTER(HurstResult)]),
-    "ft_hurst_heightfield": (c_int32, [_HF, POINTER(HurstParams), POINTER(HurstResult)]),
+    "ft_hurst_params_init": (c_int32, [_Described("hurst")]),
+    "ft_hurst_profile": (c_int32, [_F32P, c_size_t, _Described("hurst"), POINTER(HurstResult)]),
+    "ft_hurst_heightfield": (c_int32, [_HF, _Described("hurst"), POINTER(HurstResult)]),
     "ft_coastline": (c_int32, [_HF, c_double, c_int32, POINTER(_PL)]),
     "ft_level_curves": (c_int32, [_HF, POINTER(c_double), c_size_t, POINTER(_PL)]),
-    "ft_pov_scene_params_init": (c_int32, [POINTER(PovSceneParams)]),
-    "ft_pov_write_scene": (c_int32, [POINTER(PovSceneParams), c_char_p]),
+    "ft_clouds_params_init": (c_int32, [_Described("clouds")]),
+    "ft_clouds": (c_int32, [_HF, _Described("clouds"), POINTER(ctypes.c_uint16), c_size_t]),
+    "ft_clouds_write_png": (c_int32, [_HF, _Described("clouds"), c_char_p]),
+    "ft_pov_scene_params_init": (c_int32, [_Described("pov_scene")]),
+    "ft_pov_write_scene": (c_int32, [_Described("pov_scene"), c_char_p]),
+    "ft_pov_sweep_params_init": (c_int32, [_Described("pov_sweep")]),
+    "ft_pov_write_sweeps": (c_int32, [_PL, _Described("pov_sweep"), c_char_p, c_char_p]),
     "ft_pov_render": (c_int32, [c_char_p, c_char_p, c_int32, c_int32, c_double]),
     "ft_mesh_create": (c_int32, [_F32P, c_int64, _I32P, c_int64, _I32P, _I32P, _F32P, c_int64,
                                  POINTER(c_void_p)]),
@@ -265,15 +236,15 @@ SIGNATURES = {
     "ft_grid_topology": (c_int32, [c_int32, c_int32, _I32P, _I32P, c_size_t, _I32P, c_size_t,
                                    _I32P, _I32P, c_size_t]),
     "ft_grid_uvs": (c_int32, [c_int32, c_int32, _F32P, c_size_t]),
-    # erosion.h (ABI 2.1; its params described from 2.5): the maps come back as FT_MAP_COUNT handles.
+    # erosion.h (ABI 2.1; its params described from 2.6): the maps come back as FT_MAP_COUNT handles.
     "ft_erosion_params_init": (c_int32, [_Described("erosion")]),
     "ft_erosion_preset": (c_int32, [c_char_p, _Described("erosion")]),
     "ft_erode": (c_int32, [_HF, _Described("erosion"), POINTER(_HF), POINTER(_HF)]),
     # raster.h (ABI 1.4); its structs are in core/raster.py.
     "ft_heightfield_read": (c_int32, [c_char_p, c_int32, POINTER(_HF)]),
     "ft_heightfield_write": (c_int32, [_HF, c_char_p]),
-    "ft_dem_refine_params_init": (None, [c_void_p]),
-    "ft_dem_refine": (c_int32, [_HF, c_void_p, POINTER(_HF), c_void_p]),
+    "ft_dem_refine_params_init": (None, [_Described("dem_refine")]),
+    "ft_dem_refine": (c_int32, [_HF, _Described("dem_refine"), POINTER(_HF), c_void_p]),
 }
 
 
@@ -310,16 +281,10 @@ class Library:
                                      if isinstance(a, _Described) else a for a in argtypes])
                     for name, (restype, argtypes) in SIGNATURES.items()
                     if any(isinstance(a, _Described) for a in argtypes)})
-        # A later 1.x library may have appended fields to its params structs: let its
-        # _init write into a roomy buffer first, then size ours to match, so the
-        # library never reads or writes past the end of what we pass.
-        self.terrain_params_type = self.struct_types[PARAMS_KINDS["terrain"]]
-        self.profile_params_type = self.struct_types[PARAMS_KINDS["profile"]]
-        self.polyline_params_type = self.struct_types[PARAMS_KINDS["polyline"]]
-        self.hurst_params_type = self._sized(HurstParams, self.ft_hurst_params_init)
-        self.pov_scene_params_type = self._sized(PovSceneParams, self.ft_pov_scene_params_init)
-        self.fractalize_params_type = self.struct_types[PARAMS_KINDS["fractalize"]]
-        self.erosion_params_type = self.struct_types[PARAMS_KINDS["erosion"]]
+        # Every params struct is the library's own size (a later 2.x may have appended
+        # fields), so the library never reads or writes past the end of what we pass.
+        for kind_name, kind in PARAMS_KINDS.items():
+            setattr(self, f"{kind_name}_params_type", self.struct_types[kind])
 
     def _bind(self, signatures):
         """Declares restype and argtypes of each symbol; returns the names the library lacks."""
@@ -348,21 +313,6 @@ class Library:
                                            f"the binding reads {ctypes.sizeof(ParamInfo)}. {HOW_TO_FIX}")
             rows.append(field_dict(info.contents))
         return name.value.decode(), size.value, rows
-
-    def _sized(self, struct_type, init):
-        probe = (ctypes.c_char * 4096)()
-        self.check(init(ctypes.cast(probe, POINTER(struct_type))))
-        size = c_uint32.from_buffer(probe).value
-        ours = ctypes.sizeof(struct_type)
-        if size < ours:
-            raise LibraryNotFoundError(
-                f"{self.path}: {struct_type.__name__} is {size} bytes, the binding expects at least {ours}. "
-                f"{HOW_TO_FIX}")
-        if size == ours:
-            return struct_type
-        # Newer library: same leading fields, trailing ones left at their defaults. A
-        # subclass, so byref() of it still passes the POINTER(struct_type) argtypes.
-        return type(struct_type.__name__, (struct_type,), {"_fields_": [("_newer_fields", ctypes.c_char * (size - ours))]})
 
     def has(self, name):
         """True when the loaded library exports `name` (for optional capabilities)."""
@@ -405,6 +355,13 @@ def status():
     except LibraryNotFoundError as e:
         return False, str(e)
     return True, f"libfracterra {lib.version} (ABI {lib.abi_major}.{lib.abi_minor}) from {lib.path}"
+
+
+def enum_values(kind_name, field):
+    """{identifier: C value} of enum field `field` of params struct `kind_name`, as the
+    library describes it, e.g. enum_values("hurst", "method")["AUTO"] == 5."""
+    row = next(r for r in library().param_rows[kind_name] if r["name"] == field)
+    return {ident: value for ident, _label, _doc, value in row["items"]}
 
 
 def reset():

@@ -39,6 +39,10 @@ BLENDER_OVERRIDES = {
         "ifs_points": (20000, "every IFS point becomes a one-point spline of a curve object; 100 000 of "
                               "them take Blender seconds to build and draw"),
     },
+    "fractalize": {
+        "levels": (3, "the redo panel runs Fractalize again on every change: 3 levels (64 faces per base "
+                      "face) answer at once, the library's 4 takes four times as long for each tweak"),
+    },
 }
 
 # Limits of Blender that are narrower than the library's hard range: (min, max, reason).
@@ -51,16 +55,29 @@ _MESH = ("a Blender mesh array holds at most 2 GiB (core/mesh_limits.py): levels
          "2^28 face corners) overflows it, so Blender does not offer it; the CLI makes such terrains as files. "
          "Width x height is checked the same way before any work")
 _INT32 = "Blender's IntProperty is a signed 32-bit integer"
+_CURVE_POINTS = ("every point becomes a spline point of a Blender curve: 2^20 per base segment (depth 20) "
+                 "already takes seconds to build and draw; the CLI writes deeper ones to files")
 BLENDER_LIMITS = {
     "terrain": {
         "levels": (1, _largest_levels(), _MESH),
         "seed": (0, 2**31 - 1, _INT32),
     },
+    "polyline": {
+        "depth": (0, 20, _CURVE_POINTS),
+        "seed": (0, 2**31 - 1, _INT32),
+        "ifs_points": (1, 10_000_000, _CURVE_POINTS),
+    },
+    "fractalize": {
+        "seed": (0, 2**31 - 1, _INT32),
+    },
 }
 # Library fields that are not Blender properties, and why.
+_THREADS = "set from the add-on preferences (Threads) for every operator"
 NOT_PROPERTIES = {
-    "terrain": {"threads": "set from the add-on preferences (Threads) for every operator"},
-    "erosion": {"threads": "set from the add-on preferences (Threads) for every operator",
+    "terrain": {"threads": _THREADS},
+    "polyline": {"threads": _THREADS},
+    "fractalize": {"threads": _THREADS},
+    "erosion": {"threads": _THREADS,
                 "periodic": "the terrain's own Periodic setting: a tiling terrain is eroded as a torus"},
 }
 # How Blender shows a field (subtype, unit, precision): presentation only.
@@ -76,6 +93,8 @@ REFERENCE_SOURCES = (
     ("NONE", "None", "No reference points: a free fractal terrain", 0),
     ("OBJECT", "Grid Object", "Heights of a mesh whose vertices form a (2^m + 1)^2 grid", 1),
     ("IMAGE", "Image", "An image resampled to (2^m + 1)^2 reference points", 2),
+    ("DEM", "DEM File", "A digital elevation model (GeoTIFF, .hgt, ASCII grid, ... read by GDAL) resampled "
+     "to (2^m + 1)^2 reference points, in its true proportions", 3),
 )
 
 
@@ -201,10 +220,15 @@ TERRAIN_PARAMS = _LIBRARY_TERRAIN + (
           methods=_DYADIC),
     Param("reference_image", "string", "", "Image", "Image whose brightness gives the reference heights",
           methods=_DYADIC),
+    Param("reference_file", "string", "", "DEM File",
+          "Elevation raster whose heights become the reference points (any format GDAL reads; holes are "
+          "filled by GDAL's inverse-distance fill)", subtype="FILE_PATH", methods=_DYADIC),
     Param("reference_levels", "int", 4, "Reference Levels",
-          "The image is resampled to 2^m + 1 points per side (at most Levels)", min=1, max=12,
+          "The image or DEM is resampled to 2^m + 1 points per side (at most Levels)", min=1, max=12,
           methods=_DYADIC),
-    Param("reference_height", "float", 5.0, "Image Height", "Height of white in the image, in scene units",
+    Param("reference_height", "float", 5.0, "Image Height",
+          "Height of white in the image; for a DEM without georeferencing, the height of its highest point "
+          "above its lowest (scene units)",
           soft_min=-1000.0, soft_max=1000.0, subtype="DISTANCE", unit="LENGTH", methods=_DYADIC),
     # Mesh options.
     Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
@@ -261,61 +285,13 @@ def values_of(obj, param_list=None):
             for p in param_list or TERRAIN_PARAMS for v in [getattr(obj, p.name)]}
 
 
-# Polylines (fracterra/polyline.h). Names shared with the library and the CLI:
-# method, rng, spread, depth, min_length, seed.
-POLYLINE_METHODS = (
-    ("FPL", "FPL 2D", "Nikulin's fractal polyline: random orthogonal midpoint displacement in the XY plane", 0),
-    ("FPL3D", "FPL 3D", "Fractal polyline with 3D displacements (lightning)", 1),
-    ("KOCH", "Koch", "Koch curve on every base segment", 2),
-    ("DRAGON", "Dragon", "Harter-Heighway dragon", 3),
-    ("SIERPINSKI", "Sierpinski", "Sierpinski arrowhead curve", 4),
-    ("IFS", "IFS Points", "Attractor of an iterated function system, as a point cloud", 5),
-    ("PROFILE", "Profile", "Voss 1D midpoint profile laid across every base segment (a horizon)", 6),
-)
-POLYLINE_RNGS = (
-    ("UNIFORM", "Uniform", "Displacements uniform on [-s, s]", 0),
-    ("NORMAL", "Normal", "Displacements normal with standard deviation s", 1),
-)
-IFS_PRESETS = (
-    ("FERN", "Fern", "Barnsley's fern", 0),
-    ("DRAGON", "Dragon", "Harter-Heighway dragon", 1),
-    ("KOCH", "Koch", "Koch curve", 2),
-    ("SIERPINSKI_GASKET", "Sierpinski Gasket", "Three maps of ratio 1/2 (dimension log 3 / log 2)", 3),
-)
+# Polylines (fracterra/polyline.h): the library's settings, then Blender's own
+# (where the base comes from, the curve's bevel).
 BASE_SOURCES = (
     ("POINTS", "Two Points", "From Start to End", 0),
     ("ACTIVE", "Active Object", "Through the points of the active curve, or the edge chain of the active mesh", 1),
 )
-_FPL = frozenset({"FPL", "FPL3D"})
-_RANDOM = frozenset({"FPL", "FPL3D", "PROFILE", "IFS"})
-
-POLYLINE_PARAMS = (
-    Param("method", "enum", "FPL3D", "Method", "Which fractal curve", items=POLYLINE_METHODS, field="method"),
-    Param("rng", "enum", "UNIFORM", "Generator", "Random generator of the displacements", items=POLYLINE_RNGS,
-          field="rng", methods=_FPL),
-    Param("spread", "float", 0.1, "Spread", "Displacement per unit segment length: s (uniform) or sigma "
-          "(normal). Below 0.1 lightning-like, 0.2-0.3 horizon-like, 0.3+ Brownian loops; profile: sigma",
-          min=0.0, max=10.0, soft_max=1.0, field="spread", methods=frozenset({"FPL", "FPL3D", "PROFILE"})),
-    Param("depth", "int", 8, "Depth", "Recursion depth r: each base segment gets up to 2^r segments "
-          "(Koch 4^r, Sierpinski 3^r)", min=0, max=20, soft_max=14, field="depth"),
-    Param("min_length", "float", 0.0, "Min Length", "Segments shorter than this are not split (delta)",
-          min=0.0, max=1e6, subtype="DISTANCE", unit="LENGTH", field="min_length", methods=_FPL),
-    Param("seed", "int", 1, "Seed", "Random seed", min=0, max=2**31 - 1, field="seed", methods=_RANDOM),
-    Param("branch_prob", "float", 0.3, "Branching", "Probability that a midpoint forks a side branch "
-          "(scaled by 2^(-level/2)); 0 = a single line", min=0.0, max=1.0, subtype="FACTOR",
-          field="branch_prob", methods=_FPL),
-    Param("branch_decay", "float", 0.5, "Branch Decay", "Length and radius factor per branch generation",
-          min=0.01, max=0.99, subtype="FACTOR", field="branch_decay", methods=_FPL),
-    Param("branch_generations", "int", 3, "Branch Generations", "Deepest branch generation", min=1, max=8,
-          field="branch_generations", methods=_FPL),
-    Param("hurst", "float", 0.8, "Hurst H", "Hurst exponent of the profile", min=0.0, max=1.0,
-          subtype="FACTOR", field="hurst", methods=frozenset({"PROFILE"})),
-    Param("ifs_preset", "enum", "FERN", "IFS", "Built-in iterated function system", items=IFS_PRESETS,
-          field="ifs_preset", methods=frozenset({"IFS"})),
-    Param("ifs_points", "int", 20000, "Points", "Attractor points", min=1, max=10_000_000,
-          field="ifs_points", methods=frozenset({"IFS"})),
-    Param("radius", "float", 0.01, "Radius", "Radius at the start of the main line (branches taper)",
-          min=0.0, max=1e4, soft_max=1.0, subtype="DISTANCE", unit="LENGTH", field="radius"),
+POLYLINE_PARAMS = library_params("polyline") + (
     Param("base_source", "enum", "POINTS", "Base", "The base polyline the fractal follows", items=BASE_SOURCES),
     # A vertical bolt striking the 3D cursor from 10 m above (in the object's frame).
     Param("start", "vector", (0.0, 0.0, 10.0), "Start", "First point of the base segment",
@@ -325,3 +301,10 @@ POLYLINE_PARAMS = (
     Param("bevel", "bool", True, "Bevel", "Give the curve thickness: bevel depth 1 times each point's radius"),
 )
 
+
+# Object > Fractalize (fracterra/subdiv.h): the library's settings, then Blender's own.
+FRACTALIZE_PARAMS = library_params("fractalize") + (
+    Param("use_creases", "bool", True, "Edge Creases", "Honour the mesh's edge creases (crease c becomes "
+          "OpenSubdiv sharpness 10 c^2, as Blender's own subdivision)"),
+    Param("smooth", "bool", True, "Smooth Shading", "Shade the fractal surface smooth (off: every facet flat)"),
+)

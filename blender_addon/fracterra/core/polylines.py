@@ -9,7 +9,7 @@ from ctypes import POINTER, byref, c_double, c_int64, c_void_p
 
 from . import params as params_mod
 from .handle import LibraryHandle
-from .binding import PolylineStats, library
+from .binding import PolylineStats, enum_values, library
 from .errors import InvalidArgumentError
 from .terrain import _ProgressBridge
 
@@ -142,17 +142,16 @@ def hurst_of_heightfield(hf, method="AUTO"):
     lib = library()
     p = lib.hurst_params_type()
     lib.check(lib.ft_hurst_params_init(byref(p)))
-    p.method = HURST_METHODS[method]
+    methods = enum_values("hurst", "method")
+    p.method = methods[method]
     r = HurstResult(struct_size=ctypes.sizeof(HurstResult))
     lib.check(lib.ft_hurst_heightfield(hf.handle, byref(p), byref(r)))
     out = {name: getattr(r, name) for name, _ in HurstResult._fields_}
-    out["estimator"] = next(k for k, v in HURST_METHODS.items() if v == r.method).lower()
+    out["estimator"] = next(k for k, v in methods.items() if v == r.method).lower()
     out["reason"] = (r.auto_reason_text or b"").decode() if method == "AUTO" else "asked for by name"
     return out
 
 
-HURST_METHODS = {"VARIOGRAM": 0, "MADOGRAM": 1, "VARIOGRAM_ALIGNED": 2, "MADOGRAM_ALIGNED": 3, "SPECTRAL": 4,
-                 "AUTO": 5}
 
 
 def coastline(hf, level, quantile=False):

@@ -1,7 +1,7 @@
 """POV-Ray scenes through the library's writer (fracterra/povray.h)."""
 
 import os
-from ctypes import byref
+from ctypes import byref, c_void_p, cast
 
 from .binding import PovSceneLines, library
 
@@ -28,7 +28,8 @@ def write_scene(path, terrain=None, world_size_x=1.0, world_size_y=1.0, vertical
     entries = (PovSceneLines * max(1, len(line_sets)))()
     for entry, (lines, kind, radius) in zip(entries, line_sets):
         entry.lines, entry.kind, entry.radius = lines.handle, LINE_KINDS[kind], radius
-    p.lines, p.line_set_count = entries, len(line_sets)
+    # `lines` is described as an opaque pointer: the array stays alive in `entries`.
+    p.lines, p.line_set_count = cast(entries, c_void_p), len(line_sets)
     if camera:
         p.camera_azimuth_deg = camera["azimuth"]
         p.camera_elevation_deg = camera["elevation"]

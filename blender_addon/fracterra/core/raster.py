@@ -4,32 +4,13 @@ raster GDAL reads (GeoTIFF, .hgt, .asc, ...) or a fracterra format, write
 from its own samples. bpy-free: the pytest suite uses it directly."""
 
 import os
-from ctypes import Structure, byref, c_double, c_int32, c_uint32, c_uint64, c_void_p, sizeof
+from ctypes import Structure, byref, c_double, c_int32, c_uint32, c_void_p, sizeof
 
-from .binding import PROGRESS_FN, library
+from .binding import enum_values, library
 from .terrain import Heightfield
 
 NODATA = {"REFUSE": 0, "FILL": 1, "KEEP": 2}
 WRITE_EXTENSIONS = (".png", ".pgm", ".npy", ".tif", ".exr", ".raw", ".r16")
-_MIDPOINT, _ADDITIONS = 0, 1  # FT_TERRAIN_MIDPOINT, FT_TERRAIN_ADDITIONS
-
-
-class DemRefineParams(Structure):
-    """ft_dem_refine_params (fracterra/raster.h)."""
-    _fields_ = [
-        ("struct_size", c_uint32),
-        ("levels_added", c_int32),
-        ("hurst", c_double),
-        ("sigma", c_double),
-        ("seed", c_uint64),
-        ("method", c_int32),
-        ("window_x", c_int32),
-        ("window_y", c_int32),
-        ("window_side", c_int32),
-        ("threads", c_int32),
-        ("progress", PROGRESS_FN),
-        ("progress_user", c_void_p),
-    ]
 
 
 class DemRefineReport(Structure):
@@ -72,13 +53,13 @@ def refine_dem(dem, levels_added=2, hurst=None, sigma=None, seed=1, additions=Fa
     """(Heightfield, report dict): `dem` refined by `levels_added` levels from a
     (2^m + 1)^2 window of its own samples; hurst/sigma None are measured on it."""
     lib = library()
-    p = DemRefineParams()
+    p = lib.dem_refine_params_type()  # laid out from the library's description
     lib.ft_dem_refine_params_init(byref(p))
     p.levels_added = levels_added
     p.hurst = -1.0 if hurst is None else hurst
     p.sigma = -1.0 if sigma is None else sigma
     p.seed = seed
-    p.method = _ADDITIONS if additions else _MIDPOINT
+    p.method = enum_values("dem_refine", "method")["ADDITIONS" if additions else "MIDPOINT"]
     p.threads = threads
     report = DemRefineReport(struct_size=sizeof(DemRefineReport))
     out = c_void_p()

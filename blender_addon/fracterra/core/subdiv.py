@@ -5,11 +5,8 @@ import ctypes
 from ctypes import byref, c_float, c_int32, c_void_p
 
 from .handle import LibraryHandle
-from .binding import library
+from .binding import enum_values, library
 from .terrain import _ProgressBridge, as_pointer as _ptr
-
-SCHEMES = {"CATMARK": 0, "LOOP": 1, "BILINEAR": 2}
-MODES = {"VOSS": 0, "ADDITIONS": 1}
 
 
 class Mesh(LibraryHandle):
@@ -45,14 +42,18 @@ class Mesh(LibraryHandle):
 
 
 
-def fractalize(mesh, levels=4, hurst=0.8, sigma=0.1, seed=1, scheme="CATMARK", mode="VOSS",
+def fractalize(mesh, levels=4, hurst=0.8, sigma=0.1, seed=1, scheme="CATMARK", mode="MIDPOINT",
                fix_boundary=False, scale_by_edge_length=False, weights=None, threads=0, progress=None):
-    """A new Mesh: `mesh` subdivided `levels` times with fractal displacements."""
+    """A new Mesh: `mesh` subdivided `levels` times with fractal displacements.
+
+    scheme and mode are the identifiers of the library's enum items (CATMARK, LOOP,
+    BILINEAR; MIDPOINT, ADDITIONS), as `fracterra params` lists them."""
     lib = library()
     p = lib.fractalize_params_type()
     lib.check(lib.ft_fractalize_params_init(byref(p)))
     p.levels, p.hurst, p.sigma, p.seed = levels, hurst, sigma, seed
-    p.scheme, p.mode = SCHEMES[scheme], MODES[mode]
+    p.scheme = enum_values("fractalize", "scheme")[scheme]
+    p.mode = enum_values("fractalize", "mode")[mode]
     p.fix_boundary, p.scale_by_edge_length, p.threads = int(fix_boundary), int(scale_by_edge_length), threads
     weight_buf = None
     if weights is not None:

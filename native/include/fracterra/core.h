@@ -31,8 +31,10 @@ extern "C" {
 /// 2.2: windows of a terrain (ft_terrain_extent, ft_terrain_generate_window(_lod)).
 /// 2.3: raster.h (read and write by extension, ft_dem_refine).
 /// 2.4: tiles.h (tile sets: ft_tileset_*, ft_tile_write); H of windows from increment sums (analysis.h).
-/// 2.5: the erosion parameters are described (FT_PARAMS_EROSION in params.h).
-#define FT_ABI_VERSION_MINOR 5
+/// 2.5: params.h describes ft_pov_scene_params, ft_pov_sweep_params, ft_hurst_params,
+/// ft_clouds_params and ft_dem_refine_params; each accepts any older struct_size.
+/// 2.6: the erosion parameters are described (FT_PARAMS_EROSION in params.h).
+#define FT_ABI_VERSION_MINOR 6
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -23,8 +23,13 @@ enum {
   FT_PARAMS_PROFILE = 1,         ///< ft_profile_params (terrain.h)
   FT_PARAMS_POLYLINE = 2,        ///< ft_polyline_params (polyline.h)
   FT_PARAMS_FRACTALIZE = 3,      ///< ft_fractalize_params (subdiv.h)
-  FT_PARAMS_EROSION = 4,         ///< ft_erosion_params (erosion.h), ABI 2.5
-  FT_PARAMS_KIND_COUNT = 5       ///< number of kinds; kinds are 0 .. count - 1
+  FT_PARAMS_POV_SCENE = 4,       ///< ft_pov_scene_params (povray.h; ABI 2.5)
+  FT_PARAMS_POV_SWEEP = 5,       ///< ft_pov_sweep_params (povray.h; ABI 2.5)
+  FT_PARAMS_HURST = 6,           ///< ft_hurst_params (analysis.h; ABI 2.5)
+  FT_PARAMS_CLOUDS = 7,          ///< ft_clouds_params (analysis.h; ABI 2.5)
+  FT_PARAMS_DEM_REFINE = 8,      ///< ft_dem_refine_params (raster.h; ABI 2.5)
+  FT_PARAMS_EROSION = 9,         ///< ft_erosion_params (erosion.h; ABI 2.6)
+  FT_PARAMS_KIND_COUNT = 10      ///< number of kinds; kinds are 0 .. count - 1
 };
 
 /// Field types. Integers and doubles are the C types of the same name;

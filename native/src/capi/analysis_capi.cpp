@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "analysis/analysis_params.hpp"
 #include "analysis/clouds.hpp"
 #include "analysis/hurst.hpp"
 #include "analysis/hurst_choice.hpp"
@@ -20,31 +21,12 @@ using ft::capi::guarded;
 
 namespace {
 
-ft_hurst_params default_hurst_params() {
-  ft_hurst_params p{};
-  p.struct_size = sizeof(ft_hurst_params);
-  p.method = FT_HURST_VARIOGRAM_ALIGNED;
-  return p;
-}
-
-// The options for an input of width x height samples (a profile: height 1);
-// FT_HURST_AUTO is resolved here and `choice` says what it chose.
+// The caller's params over the table's defaults (NULL: the defaults), as the estimator's options.
 ft::HurstOptions to_options(const ft_hurst_params* params, int64_t width, int64_t height,
                             std::optional<ft::HurstChoice>& choice) {
-  const ft_hurst_params p = params ? *params : default_hurst_params();
-  ft::check_struct_size(p.struct_size, sizeof(ft_hurst_params), "ft_hurst_params");
-  ft::check_int_range("method", p.method, FT_HURST_VARIOGRAM, FT_HURST_AUTO);
-  for (double v : {p.lag_min, p.lag_max, p.freq_min, p.freq_max}) ft::check_finite("band limit", v);
-  ft::HurstOptions o;
-  if (p.method == FT_HURST_AUTO) {
-    choice = ft::choose_hurst_method(width, height);
-    o.method = choice->method;
-  } else {
-    o.method = ft::HurstMethod(p.method);
-  }
-  o.lag_min = p.lag_min, o.lag_max = p.lag_max, o.freq_min = p.freq_min, o.freq_max = p.freq_max;
-  o.transects = p.transects != 0;
-  return o;
+  const ft::ParamTable& t = ft::hurst_param_table();
+  const ft_hurst_params p = params ? ft::upgraded(t, *params) : ft::defaults_of<ft_hurst_params>(t);
+  return ft::hurst_options(p, width, height, choice);
 }
 
 void to_result(const ft::HurstEstimate& e, const std::optional<ft::HurstChoice>& choice, ft_hurst_result* out) {
@@ -63,26 +45,9 @@ void to_result(const ft::HurstEstimate& e, const std::optional<ft::HurstChoice>&
   ft::capi::write_result(out, r, sizeof(ft_hurst_result), "ft_hurst_result");
 }
 
-ft_clouds_params default_clouds_params() {
-  ft_clouds_params p{};
-  p.struct_size = sizeof(ft_clouds_params);
-  p.threshold = 0.5;
-  p.threshold_is_quantile = 1;
-  p.bit_depth = 8;
-  return p;
-}
-
 ft::CloudOptions to_cloud_options(const ft_clouds_params* params) {
-  const ft_clouds_params p = params ? *params : default_clouds_params();
-  if (p.struct_size < sizeof(ft_clouds_params))
-    ft::invalid("ft_clouds_params.struct_size is " + std::to_string(p.struct_size) + ", expected " +
-                std::to_string(sizeof(ft_clouds_params)) + " (call ft_clouds_params_init first)");
-  ft::check_finite("threshold", p.threshold);
-  ft::CloudOptions o;
-  o.threshold = {p.threshold, p.threshold_is_quantile != 0};
-  if (o.threshold.quantile) ft::check_range("threshold (a quantile)", p.threshold, 0.0, 1.0);
-  o.bit_depth = p.bit_depth;
-  return o;
+  const ft::ParamTable& t = ft::clouds_param_table();
+  return ft::cloud_options(params ? ft::upgraded(t, *params) : ft::defaults_of<ft_clouds_params>(t));
 }
 
 }  // namespace
@@ -92,7 +57,7 @@ extern "C" {
 FT_API ft_status ft_hurst_params_init(ft_hurst_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = default_hurst_params();
+    *p = ft::defaults_of<ft_hurst_params>(ft::hurst_param_table());
   });
 }
 
@@ -212,7 +177,7 @@ FT_API ft_status ft_level_curves(const ft_heightfield* hf, const double* levels,
 FT_API ft_status ft_clouds_params_init(ft_clouds_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = default_clouds_params();
+    *p = ft::defaults_of<ft_clouds_params>(ft::clouds_param_table());
   });
 }
 

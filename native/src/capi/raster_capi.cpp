@@ -5,8 +5,12 @@
 #include "fracterra/fracterra.h"
 #include "io/heightfield_io.hpp"
 #include "refine/dem_refine.hpp"
+#include "refine/dem_refine_params.hpp"
 
 using ft::capi::guarded;
+
+static_assert(ft::kRefineMidpoint == FT_TERRAIN_MIDPOINT && ft::kRefineAdditions == FT_TERRAIN_ADDITIONS,
+              "ft_dem_refine_params.method takes the terrain's method values");
 
 extern "C" {
 
@@ -33,19 +37,7 @@ FT_API ft_status ft_heightfield_write(const ft_heightfield* hf, const char* path
 }
 
 FT_API void ft_dem_refine_params_init(ft_dem_refine_params* p) {
-  if (!p) return;
-  const ft::DemRefineConfig c;
-  *p = ft_dem_refine_params{};
-  p->struct_size = sizeof(ft_dem_refine_params);
-  p->levels_added = c.levels_added;
-  p->hurst = c.hurst;
-  p->sigma = c.sigma;
-  p->seed = c.seed;
-  p->method = FT_TERRAIN_MIDPOINT;
-  p->window_x = c.window_x;
-  p->window_y = c.window_y;
-  p->window_side = c.window_side;
-  p->threads = c.threads;
+  if (p) *p = ft::defaults_of<ft_dem_refine_params>(ft::dem_refine_param_table());
 }
 
 FT_API ft_status ft_dem_refine(const ft_heightfield* dem, const ft_dem_refine_params* p, ft_heightfield** out,
@@ -54,23 +46,8 @@ FT_API ft_status ft_dem_refine(const ft_heightfield* dem, const ft_dem_refine_pa
     ft::capi::reset_out(out);
     ft::check_not_null("dem", dem);
     ft::check_not_null("params", p);
-    ft::check_struct_size(p->struct_size, sizeof(ft_dem_refine_params), "ft_dem_refine_params");
     if (report) ft::check_struct_size(report->struct_size, sizeof(ft_dem_refine_report), "ft_dem_refine_report");
-    if (p->method != FT_TERRAIN_MIDPOINT && p->method != FT_TERRAIN_ADDITIONS)
-      ft::invalid("method must be FT_TERRAIN_MIDPOINT or FT_TERRAIN_ADDITIONS, got " + std::to_string(p->method));
-    ft::check_int_range("threads", p->threads, 0, 1024);
-    ft::DemRefineConfig c;
-    c.levels_added = p->levels_added;
-    c.hurst = p->hurst;
-    c.sigma = p->sigma;
-    c.seed = p->seed;
-    c.additions = p->method == FT_TERRAIN_ADDITIONS;
-    c.window_x = p->window_x;
-    c.window_y = p->window_y;
-    c.window_side = p->window_side;
-    c.threads = p->threads;
-    c.progress = p->progress;
-    c.progress_user = p->progress_user;
+    const ft::DemRefineConfig c = ft::dem_refine_config(ft::upgraded(ft::dem_refine_param_table(), *p));
     ft::DemRefineResult r = ft::refine_dem(dem->hf, c);
     if (report) {
       report->window_x = r.window_x;

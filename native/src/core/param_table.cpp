@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -39,8 +41,18 @@ void check_enum(const ft_param_info& row, int32_t v) {
   invalid(std::string(row.name) + " must be one of " + enum_choices(row) + ", got " + std::to_string(v));
 }
 
+// The shortest of %.15g and %.17g that reads back as `v`: a range says 0.99,
+// not 0.98999999999999999.
+std::string short_number(double v) {
+  if (!std::isfinite(v)) return format_number(v);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.15g", v);
+  if (std::strtod(buf, nullptr) != v) return format_number(v);
+  return buf;
+}
+
 std::string bound(double v) {
-  return std::fabs(v) >= 1.7e308 ? (v < 0 ? "-inf" : "inf") : format_number(v);
+  return std::fabs(v) >= 1.7e308 ? (v < 0 ? "-inf" : "inf") : short_number(v);
 }
 
 void check_number(const ft_param_info& row, double v, bool integer) {
@@ -48,11 +60,14 @@ void check_number(const ft_param_info& row, double v, bool integer) {
   const bool ok = std::isfinite(v) && (lo_open ? v > row.hard_min : v >= row.hard_min) &&
                   (hi_open ? v < row.hard_max : v <= row.hard_max);
   if (ok) return;
-  const std::string name = row.name, value = integer ? std::to_string(int64_t(v)) : format_number(v);
+  const std::string name = row.name, value = integer ? std::to_string(int64_t(v)) : short_number(v);
   if (integer) invalid(name + " must be in " + bound(row.hard_min) + ".." + bound(row.hard_max) + ", got " + value);
   // The words of check_range / check_positive, which the messages had before the tables.
+  if (row.hard_max >= 1.7e308 && row.hard_min <= -1.7e308) invalid(name + " must be a finite number, got " + value);
   if (row.hard_max >= 1.7e308)
     invalid(name + " must be a finite number " + (lo_open ? "> " : ">= ") + bound(row.hard_min) + ", got " + value);
+  if (row.hard_min <= -1.7e308)
+    invalid(name + " must be a finite number " + (hi_open ? "< " : "<= ") + bound(row.hard_max) + ", got " + value);
   invalid(name + " must be in " + (lo_open ? "(" : "[") + bound(row.hard_min) + ", " + bound(row.hard_max) +
           (hi_open ? ")" : "]") + ", got " + value);
 }

@@ -86,10 +86,10 @@ double automatic_line_radius(const SceneLines& l, const Camera& cam, double exte
 
 void validate_scene_params(const SceneParams& p) {
   if (p.terrain) validate_terrain(*p.terrain, p.world_size_x, p.world_size_y, p.vertical_scale);
-  if (p.has_sea) check_finite("sea_level", p.sea_level);
+  // sea_level and the sun are checked once, by ft_pov_scene_params' table
+  // (pov_params.cpp), before they get here; the camera keeps its own contract
+  // (margin and center_v have no row).
   validate_camera_options(p.camera);
-  check_range("sun_azimuth_deg", p.sun_azimuth_deg, -360, 360);
-  check_range("sun_elevation_deg", p.sun_elevation_deg, 1, 90);
   for (const auto& l : p.lines) {
     check_not_null("polyline set", l.set);
     if (l.kind != LineKind::kGeneric && l.kind != LineKind::kLightning && l.kind != LineKind::kCoastline)
@@ -209,7 +209,7 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
 
   for (size_t i = 0; i < p.lines.size(); ++i) {
     const SceneLines& l = p.lines[i];
-    SweepOptions o;
+    SweepOptions o = p.sweep;
     o.default_radius = l.radius > 0 ? l.radius : automatic_line_radius(l, cam, extent, p.image_width);
     o.radius_scale = l.radius_scale;
     PolylineSet sized;

@@ -12,6 +12,7 @@
 #include "core/polyline_set.hpp"
 #include "povray/camera.hpp"
 #include "povray/heightfield_export.hpp"
+#include "povray/sphere_sweep_export.hpp"
 
 namespace ft::pov {
 
@@ -46,6 +47,9 @@ struct SceneParams {
   std::string image_path;
   std::string title;                     // written as a comment
   int32_t image_width = 800;             // pixels the automatic line radius is sized for, 16..16384
+  // How every line set is swept: spline, segments per sweep, tolerance (the
+  // radii come from each SceneLines).
+  SweepOptions sweep;
 };
 
 struct SceneSummary {

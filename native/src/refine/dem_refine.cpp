@@ -12,8 +12,6 @@
 namespace ft {
 namespace {
 
-constexpr int kMaxAddedLevels = 12;
-
 // Counts of nodata samples in every rectangle, by a summed-area table.
 class HoleCounter {
  public:
@@ -127,9 +125,8 @@ GeoReference refined_georef(const GeoReference& g, int wx, int wy, int added) {
 double centre_kriging_factor(double h) { return std::pow(2.0, -h) - 0.25 - std::pow(2.0, h) / 8.0; }
 
 DemRefineResult refine_dem(const Heightfield& dem, const DemRefineConfig& c) {
-  check_int_range("levels_added", c.levels_added, 1, kMaxAddedLevels);
-  if (c.hurst >= 0) check_range("hurst", c.hurst, 0.0, 0.99);
-  if (!std::isfinite(c.sigma)) invalid("sigma must be finite (or <= 0 for auto), got " + format_number(c.sigma));
+  // Each field's range is the table's (dem_refine_params.cpp); the checks here
+  // relate the parameters to the DEM.
   if (dem.width() < 3 || dem.height() < 3)
     invalid("the DEM is " + std::to_string(dem.width()) + " x " + std::to_string(dem.height()) +
             "; refining needs at least 3 x 3 samples");

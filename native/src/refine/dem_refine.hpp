@@ -38,6 +38,9 @@
 
 namespace ft {
 
+// The most levels one refinement adds (the result is also held to the memory cap).
+constexpr int kMaxRefineLevels = 12;
+
 struct DemRefineConfig {
   int levels_added = 2;     // K, 1..12 (and the result within the memory cap)
   double hurst = -1;        // H in [0, 1); negative: measured from the DEM

@@ -1,0 +1,140 @@
+#include "povray/pov_params.hpp"
+
+#include <cfloat>
+
+namespace ft::pov {
+namespace {
+
+constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
+constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
+constexpr uint32_t kAbove = FT_PARAM_FLAG_MIN_EXCLUSIVE;  // > hard_min
+constexpr double kInf = DBL_MAX;
+
+#define ROW(field, type) FT_PARAM_ROW(ft_pov_scene_params, field, type)
+FT_PARAM_TABLE_BEGIN
+constexpr ft_param_info kSceneRows[] = {
+    {ROW(struct_size, FT_PARAM_UINT32), .flags = FT_PARAM_FLAG_STRUCT_SIZE, .element_kind = -1,
+     .default_value = sizeof(ft_pov_scene_params), .hard_min = 0, .hard_max = 4294967295.0, .unit = "bytes",
+     .label = "Struct Size", .doc = "sizeof(ft_pov_scene_params), set by ft_pov_scene_params_init", .methods = kAll},
+    {ROW(terrain, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
+     .unit = "", .label = "Terrain", .doc = "The ft_heightfield to show, or NULL (polylines only); not owned",
+     .methods = kAll},
+    {ROW(world_size_x, FT_PARAM_DOUBLE), .flags = kAbove, .element_kind = -1, .default_value = 1, .hard_min = 0,
+     .hard_max = kInf, .soft_min = 0.1, .soft_max = 1000, .unit = "scene units", .label = "Width",
+     .doc = "Terrain extent across its columns (world x)", .methods = kAll},
+    {ROW(world_size_y, FT_PARAM_DOUBLE), .flags = kAbove, .element_kind = -1, .default_value = 1, .hard_min = 0,
+     .hard_max = kInf, .soft_min = 0.1, .soft_max = 1000, .unit = "scene units", .label = "Depth",
+     .doc = "Terrain extent across its rows (world y)", .methods = kAll},
+    {ROW(vertical_scale, FT_PARAM_DOUBLE), .flags = kAbove, .element_kind = -1, .default_value = 1, .hard_min = 0,
+     .hard_max = kInf, .soft_min = 0.01, .soft_max = 100, .unit = "", .label = "Vertical Scale",
+     .doc = "World heights are the samples times this", .methods = kAll},
+    {ROW(has_sea, FT_PARAM_BOOL), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = 1,
+     .soft_min = 0, .soft_max = 1, .unit = "", .label = "Sea", .doc = "A sea plane at sea_level", .methods = kAll},
+    {ROW(sea_level, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0, .hard_min = -kInf, .hard_max = kInf,
+     .soft_min = -10, .soft_max = 10, .unit = "scene units", .label = "Sea Level",
+     .doc = "World z of the sea plane (with has_sea)", .methods = kAll},
+    {ROW(lines, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1, .unit = "",
+     .label = "Line Sets",
+     .doc = "line_set_count ft_pov_scene_lines (polylines, their kind and radius); NULL when the count is 0",
+     .methods = kAll},
+    {ROW(line_set_count, FT_PARAM_INT32), .flags = kData, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 1024, .soft_min = 0, .soft_max = 16, .unit = "", .label = "Line Set Count",
+     .doc = "Entries in lines", .methods = kAll},
+    {ROW(camera_azimuth_deg, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 200, .hard_min = -360,
+     .hard_max = 360, .soft_min = 0, .soft_max = 360, .unit = "degrees", .label = "Camera Azimuth",
+     .doc = "Compass direction from the content to the camera: 0 = +y (north), 90 = +x", .methods = kAll},
+    {ROW(camera_elevation_deg, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 22, .hard_min = 1,
+     .hard_max = 90, .soft_min = 5, .soft_max = 90, .unit = "degrees", .label = "Camera Elevation",
+     .doc = "Camera angle above the horizon, seen from the content", .methods = kAll},
+    {ROW(camera_fov_deg, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 50, .hard_min = 5, .hard_max = 150,
+     .soft_min = 20, .soft_max = 90, .unit = "degrees", .label = "Field of View",
+     .doc = "Horizontal field of view (POV-Ray's camera angle)", .methods = kAll},
+    {ROW(camera_aspect, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 4.0 / 3.0, .hard_min = 0.1,
+     .hard_max = 10, .soft_min = 0.5, .soft_max = 2.5, .unit = "", .label = "Aspect",
+     .doc = "Image width / height the framing is made for", .methods = kAll},
+    {ROW(camera_distance_scale, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 1, .hard_min = 0.1,
+     .hard_max = 100, .soft_min = 0.5, .soft_max = 4, .unit = "", .label = "Zoom Out",
+     .doc = "Camera distance relative to the one that frames the content (> 1 backs off)", .methods = kAll},
+    {ROW(sun_azimuth_deg, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 235, .hard_min = -360,
+     .hard_max = 360, .soft_min = 0, .soft_max = 360, .unit = "degrees", .label = "Sun Azimuth",
+     .doc = "Compass direction of the sun: 0 = +y (north), 90 = +x", .methods = kAll},
+    {ROW(sun_elevation_deg, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 35, .hard_min = 1,
+     .hard_max = 90, .soft_min = 5, .soft_max = 90, .unit = "degrees", .label = "Sun Elevation",
+     .doc = "Sun angle above the horizon", .methods = kAll},
+    {ROW(image_path, FT_PARAM_STRING), .flags = kData, .element_kind = -1, .unit = "", .label = "Terrain Image",
+     .doc = "Path of the terrain's 16-bit PNG; NULL: beside the scene, \"x.pov\" -> \"x.terrain.png\"",
+     .methods = kAll},
+};
+#undef ROW
+
+constexpr ft_param_enum_item kSplines[] = {
+    {FT_POV_SWEEP_LINEAR, "LINEAR", "Linear", "linear_spline sweeps: straight segments, as the polyline is"},
+    {FT_POV_SWEEP_CUBIC, "CUBIC", "Cubic", "cubic_spline sweeps: smooth through the vertices, slower to trace"},
+};
+
+#define ROW(field, type) FT_PARAM_ROW(ft_pov_sweep_params, field, type)
+constexpr ft_param_info kSweepRows[] = {
+    {ROW(struct_size, FT_PARAM_UINT32), .flags = FT_PARAM_FLAG_STRUCT_SIZE, .element_kind = -1,
+     .default_value = sizeof(ft_pov_sweep_params), .hard_min = 0, .hard_max = 4294967295.0, .unit = "bytes",
+     .label = "Struct Size", .doc = "sizeof(ft_pov_sweep_params), set by ft_pov_sweep_params_init", .methods = kAll},
+    {ROW(spline, FT_PARAM_ENUM), .element_kind = -1, .default_value = FT_POV_SWEEP_LINEAR, .hard_min = 0,
+     .hard_max = FT_POV_SWEEP_CUBIC, .soft_min = 0, .soft_max = FT_POV_SWEEP_CUBIC, .unit = "", .label = "Spline",
+     .doc = "The sphere_sweep's spline", .methods = kAll, .enum_count = 2, .enum_items = kSplines},
+    {ROW(segments_per_sweep, FT_PARAM_INT64), .element_kind = -1, .default_value = 32, .hard_min = 1,
+     .hard_max = 1073741824.0, .soft_min = 16, .soft_max = 64, .unit = "segments", .label = "Segments per Sweep",
+     .doc = "A polyline is cut into sweeps of this many segments (16..64 traces fastest: each piece gets a tight "
+            "bounding box)",
+     .methods = kAll},
+    {ROW(default_radius, FT_PARAM_DOUBLE), .flags = kAbove, .element_kind = -1, .default_value = 0.01,
+     .hard_min = 0, .hard_max = kInf, .soft_min = 0.0001, .soft_max = 0.1, .unit = "scene units",
+     .label = "Radius", .doc = "Tube radius where a vertex has none (radius 0)", .methods = kAll},
+    {ROW(radius_scale, FT_PARAM_DOUBLE), .flags = kAbove, .element_kind = -1, .default_value = 1, .hard_min = 0,
+     .hard_max = kInf, .soft_min = 0.1, .soft_max = 10, .unit = "", .label = "Radius Scale",
+     .doc = "Multiplies every radius (the taper is kept)", .methods = kAll},
+    {ROW(tolerance, FT_PARAM_DOUBLE), .flags = kAbove, .element_kind = -1, .default_value = 1e-3, .hard_min = 0,
+     .hard_max = kInf, .soft_min = 1e-6, .soft_max = 0.01, .unit = "", .label = "Tolerance",
+     .doc = "Cubic sweeps' intersection depth tolerance (POV-Ray's sphere_sweep tolerance)", .methods = kAll},
+};
+#undef ROW
+FT_PARAM_TABLE_END
+
+}  // namespace
+
+const ParamTable& scene_param_table() {
+  static const ParamTable table{"ft_pov_scene_params", sizeof(ft_pov_scene_params), kSceneRows};
+  return table;
+}
+
+const ParamTable& sweep_param_table() {
+  static const ParamTable table{"ft_pov_sweep_params", sizeof(ft_pov_sweep_params), kSweepRows};
+  return table;
+}
+
+void apply_scene_settings(const ft_pov_scene_params& c, SceneParams& s) {
+  check_ranges(scene_param_table(), &c);
+  s.world_size_x = c.world_size_x;
+  s.world_size_y = c.world_size_y;
+  s.vertical_scale = c.vertical_scale;
+  s.has_sea = c.has_sea != 0;
+  s.sea_level = c.sea_level;
+  s.camera.azimuth_deg = c.camera_azimuth_deg;
+  s.camera.elevation_deg = c.camera_elevation_deg;
+  s.camera.fov_deg = c.camera_fov_deg;
+  s.camera.aspect = c.camera_aspect;
+  s.camera.distance_scale = c.camera_distance_scale;
+  s.sun_azimuth_deg = c.sun_azimuth_deg;
+  s.sun_elevation_deg = c.sun_elevation_deg;
+}
+
+SweepOptions sweep_options(const ft_pov_sweep_params& c) {
+  check_ranges(sweep_param_table(), &c);
+  SweepOptions o;
+  o.spline = SweepSpline(c.spline);
+  o.segments_per_sweep = c.segments_per_sweep;
+  o.default_radius = c.default_radius;
+  o.radius_scale = c.radius_scale;
+  o.tolerance = c.tolerance;
+  return o;
+}
+
+}  // namespace ft::pov

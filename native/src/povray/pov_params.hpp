@@ -1,0 +1,23 @@
+// The tables of ft_pov_scene_params and ft_pov_sweep_params
+// (fracterra/params.h), and their settings carried into the exporter's own
+// types after the tables' range checks (for the C ABI and the CLI alike).
+#pragma once
+
+#include "core/param_table.hpp"
+#include "fracterra/povray.h"
+#include "povray/scene.hpp"
+#include "povray/sphere_sweep_export.hpp"
+
+namespace ft::pov {
+
+const ParamTable& scene_param_table();
+const ParamTable& sweep_param_table();
+
+// Checks `c`'s settings against the table and copies them into `s`: world
+// sizes, vertical scale, sea, camera and sun. The terrain, the line sets and
+// the image path are data the caller hands over in its own types.
+void apply_scene_settings(const ft_pov_scene_params& c, SceneParams& s);
+// Checks `c` against the table and returns it as SweepOptions.
+SweepOptions sweep_options(const ft_pov_sweep_params& c);
+
+}  // namespace ft::pov
