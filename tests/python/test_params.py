@@ -134,7 +134,9 @@ def test_cli_params_json_is_the_librarys_table(lib):
 # fields it offers in a form of its own instead (field -> that flag).
 CLI_COMMANDS = {
     "terrain": ("terrain", {"width": "--size", "height": "--size", "center_x": "--center", "center_y": "--center"}),
+    "profile": ("profile", {}),
     "polyline": ("polyline", {}),
+    "fractalize": ("fractalize", {}),
     "pov_scene": ("scene", {"world_size_x": "--size", "world_size_y": "--size", "vertical_scale": "--vertical-scale",
                             "has_sea": "--water", "sea_level": "--water"}),
     "pov_sweep": ("scene", {"default_radius": "--radius", "radius_scale": "--radius-scale"}),
@@ -184,6 +186,11 @@ def test_cli_help_has_every_setting_with_the_librarys_default(lib, kind_name):
         else:
             assert float(default) == pytest.approx(row["default_value"]), flag
     assert checked >= 1, command
+
+
+def test_every_described_struct_has_a_command():
+    """A new params struct gets its flags somewhere (or this list says where it is not offered)."""
+    assert set(CLI_COMMANDS) == set(binding.PARAMS_KINDS)
 
 
 def test_cli_refuses_a_table_flag_out_of_range_with_the_librarys_words():
