@@ -33,6 +33,7 @@ void add_erosion_options(CLI::App& app, erosion::ErosionConfig& c) {
   app.add_option("--uplift", f.uplift, "uplift, world units per year (>= 0)")->capture_default_str();
   auto& h = c.hydraulic;
   app.add_option("--hydraulic", h.iterations, "hydraulic (virtual-pipe water) passes, 0 = off")->capture_default_str();
+  app.add_option("--hydraulic-dt", h.dt, "seconds per hydraulic pass, 1e-6..1")->capture_default_str();
   app.add_option("--rain", h.rain, "water depth rained per pass, world units (>= 0)")->capture_default_str();
   app.add_option("--evaporation", h.evaporation, "fraction of the water evaporated per pass, 0..1")
       ->capture_default_str();

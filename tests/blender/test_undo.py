@@ -34,6 +34,19 @@ class UndoTest(unittest.TestCase):
         self.assertNotIn(name, bpy.data.objects)
         self.assertEqual(len(bpy.data.meshes), meshes)
 
+    def test_undo_removes_an_eroded_terrain_and_its_maps(self):
+        # Adding with an erosion preset is one undo step like any add: undo takes
+        # the object, its mesh (with the erosion attributes) away.
+        meshes = len(bpy.data.meshes)
+        bpy.ops.ed.undo_push(message="before the eroded terrain")
+        self.assertEqual(bpy.ops.mesh.fracterra_terrain_add(levels=5, seed=2, erode_preset="SCREE"), {"FINISHED"})
+        obj = bpy.context.active_object
+        name = obj.name
+        self.assertIn("fracterra_flow", obj.data.attributes)
+        self.assertEqual(bpy.ops.ed.undo(), {"FINISHED"})
+        self.assertNotIn(name, bpy.data.objects)
+        self.assertEqual(len(bpy.data.meshes), meshes)
+
 
 if __name__ == "__main__":
     addon_harness.run(globals())

@@ -57,7 +57,8 @@ TEST(ErosionCapi, BadInputIsAStatusWithTheParameterNamed) {
   ft_heightfield* out = reinterpret_cast<ft_heightfield*>(1);
   ft_heightfield* maps[FT_MAP_COUNT];
   EXPECT_EQ(ft_erode(hf, &p, &out, maps), FT_ERR_INVALID_ARGUMENT);
-  EXPECT_NE(std::string(ft_last_error()).find("hydraulic.rain"), std::string::npos) << ft_last_error();
+  // Checked by the table (params.h) at the C boundary: the C field's name.
+  EXPECT_NE(std::string(ft_last_error()).find("rain"), std::string::npos) << ft_last_error();
   EXPECT_EQ(out, nullptr);
   for (auto* m : maps) EXPECT_EQ(m, nullptr);
   ft_erosion_params_init(&p);

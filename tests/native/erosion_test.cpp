@@ -20,6 +20,7 @@
 #include "core/error.hpp"
 #include "erosion/drainage_stats.hpp"
 #include "erosion/erosion.hpp"
+#include "erosion/erosion_params.hpp"
 #include "erosion/flow_graph.hpp"
 #include "erosion/presets.hpp"
 #include "terrain/terrain.hpp"
@@ -433,3 +434,20 @@ TEST(ErodeCli, WritesTheTerrainAndSixMapsWithTheirRanges) {
 
 }  // namespace
 }  // namespace ft::erosion
+
+TEST(ErosionParams, TableDefaultsAreTheConfigDefaults) {
+  // ft_erosion_params_init writes the table's defaults; ErosionConfig{} has
+  // its own (C++ callers, the CLI). They must be one set of numbers.
+  const ft_erosion_params table = ft::defaults_of<ft_erosion_params>(ft::erosion_param_table());
+  const ft_erosion_params config = ft::erosion::to_c(ft::erosion::ErosionConfig{});
+  EXPECT_EQ(0, std::memcmp(&table, &config, sizeof table));
+  // And the table refuses what validate() refuses, naming the C field.
+  ft_erosion_params p = table;
+  p.evaporation = 1.5;
+  try {
+    ft::erosion::from_c(p);
+    ADD_FAILURE() << "evaporation 1.5 accepted";
+  } catch (const ft::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("evaporation"), std::string::npos) << e.what();
+  }
+}

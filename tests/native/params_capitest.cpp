@@ -70,6 +70,19 @@ const std::vector<Field> kFractalizeFields = {
     FT_FIELD(ft_fractalize_params, threads), FT_FIELD(ft_fractalize_params, progress),
     FT_FIELD(ft_fractalize_params, progress_user),
 };
+const std::vector<Field> kErosionFields = {
+    FT_FIELD(ft_erosion_params, struct_size), FT_FIELD(ft_erosion_params, fluvial_steps),
+    FT_FIELD(ft_erosion_params, fluvial_dt), FT_FIELD(ft_erosion_params, erodibility),
+    FT_FIELD(ft_erosion_params, area_exponent), FT_FIELD(ft_erosion_params, diffusion),
+    FT_FIELD(ft_erosion_params, uplift), FT_FIELD(ft_erosion_params, hydraulic_iterations),
+    FT_FIELD(ft_erosion_params, hydraulic_dt), FT_FIELD(ft_erosion_params, rain),
+    FT_FIELD(ft_erosion_params, evaporation), FT_FIELD(ft_erosion_params, capacity),
+    FT_FIELD(ft_erosion_params, dissolve), FT_FIELD(ft_erosion_params, deposit),
+    FT_FIELD(ft_erosion_params, thermal_iterations), FT_FIELD(ft_erosion_params, talus_degrees),
+    FT_FIELD(ft_erosion_params, thermal_rate), FT_FIELD(ft_erosion_params, periodic),
+    FT_FIELD(ft_erosion_params, threads), FT_FIELD(ft_erosion_params, progress),
+    FT_FIELD(ft_erosion_params, progress_user),
+};
 
 const std::vector<Field> kPovSceneFields = {
     FT_FIELD(ft_pov_scene_params, struct_size), FT_FIELD(ft_pov_scene_params, terrain),
@@ -140,6 +153,8 @@ const Kind kKinds[] = {
      init_of<ft_clouds_params, ft_clouds_params_init>},
     {FT_PARAMS_DEM_REFINE, "ft_dem_refine_params", sizeof(ft_dem_refine_params), &kDemRefineFields,
      init_dem_refine},
+    {FT_PARAMS_EROSION, "ft_erosion_params", sizeof(ft_erosion_params), &kErosionFields,
+     init_of<ft_erosion_params, ft_erosion_params_init>},
 };
 
 std::vector<const ft_param_info*> rows_of(int32_t kind) {

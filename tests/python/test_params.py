@@ -144,6 +144,10 @@ CLI_COMMANDS = {
     "clouds": ("clouds", {"threshold": "--threshold", "threshold_is_quantile": "--threshold"}),
     "dem_refine": ("refine", {"levels_added": "--levels", "hurst": "--hurst", "sigma": "--sigma",
                               "window_x": "--window", "window_y": "--window", "window_side": "--window"}),
+    # erode's flags are written by hand (not yet from the table): the pass counts and
+    # the talus angle under their short names; --threads shows its range, not TYPE=default.
+    "erosion": ("erode", {"fluvial_steps": "--fluvial", "hydraulic_iterations": "--hydraulic",
+                          "thermal_iterations": "--thermal", "talus_degrees": "--talus", "threads": "--threads"}),
 }
 # Flags users relied on before the flags came from the tables: each still works (an alias).
 CLI_ALIASES = {

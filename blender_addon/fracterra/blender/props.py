@@ -6,6 +6,7 @@ from bpy.props import (BoolProperty, EnumProperty, FloatProperty, FloatVectorPro
                        StringProperty)
 
 from ..core import params
+from . import erosion_ui
 from .polyline_build import regenerate_polyline
 from .terrain_build import regenerate_object
 
@@ -108,6 +109,8 @@ FRACTERRA_PG_terrain.__annotations__ = {
                                 description="Regenerate the terrain whenever a setting changes"),
     "last_error": StringProperty(name="Last Error", default="", options={"SKIP_SAVE"}),
     **terrain_annotations(_on_setting_changed),
+    # Picking an erosion preset fills the erosion settings, then regenerates as any change does.
+    "erode_preset": erosion_ui.preset_property(then=_on_setting_changed),
 }
 
 

@@ -12,7 +12,7 @@ from .. import core
 from ..core import params, raster
 from ..core.grid import NO_FLOOR, GridArrays, grid_arrays, grid_size, vertices
 from ..core.mesh_limits import check_grid, grid_shape
-from . import mesh_build
+from . import erosion_ui, mesh_build
 from .prefs import library_threads
 from .progress import Job, run_job
 from .reporting import SettingsError
@@ -137,13 +137,16 @@ def terrain_work(values, context, topology=True):
     # The library flattens the sea itself (ft_terrain_params.sea): no floor here.
     world_size, floor = values["world_size"], NO_FLOOR
 
+    def grid_of(hf):
+        if topology:
+            return grid_arrays(hf, world_size, floor, uvs=values["uvs"])
+        g = GridArrays(hf.width, hf.height)
+        g.co = vertices(hf, *grid_size(world_size, g.nx, g.ny), floor)
+        return g
+
     def work(progress):
-        with core.generate_terrain(values, reference=reference, progress=progress, threads=threads) as hf:
-            if topology:
-                return grid_arrays(hf, world_size, floor, uvs=values["uvs"])
-            g = GridArrays(hf.width, hf.height)
-            g.co = vertices(hf, *grid_size(world_size, g.nx, g.ny), floor)
-            return g
+        # Generation, then the Erode step when the settings ask for it.
+        return erosion_ui.generate_and_erode(values, reference, progress, threads, grid_of)
     return work
 
 
@@ -153,6 +156,7 @@ def _build_new_mesh(g, values, name):
     try:
         yield from mesh_build.fill_grid_mesh_steps(mesh, g, smooth=values["smooth"])
         mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
+        erosion_ui.set_maps(mesh, g.erosion_maps)
     except BaseException:  # GeneratorExit too: a cancel leaves nothing behind
         bpy.data.meshes.remove(mesh)
         raise
@@ -193,6 +197,7 @@ def _build_in_place(obj, g, values):
     if len(mesh.vertices) == g.vertex_count and len(mesh.polygons) == g.face_count:
         mesh_build.rewrite_positions(mesh, g.co)
         mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
+        erosion_ui.set_maps(mesh, g.erosion_maps)
         if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
             mesh_build.set_uvs(mesh, g.uv if values["uvs"] else None)
         mesh_build.set_smooth(mesh, values["smooth"])

@@ -5,7 +5,7 @@ from bpy_extras import object_utils
 from bpy_extras.io_utils import ImportHelper
 
 from ..core import params
-from . import props
+from . import erosion_ui, props
 from .progress import JobOperator
 from .settings_ui import draw_settings
 from .terrain_build import new_terrain_job, regenerate_job
@@ -43,7 +43,8 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
 
 
 # The operator's properties come from the same list as the object's settings.
-FRACTERRA_OT_terrain_add.__annotations__ = {**props.terrain_annotations()}
+FRACTERRA_OT_terrain_add.__annotations__ = {**props.terrain_annotations(),
+                                             "erode_preset": erosion_ui.preset_property()}
 
 
 class FRACTERRA_OT_terrain_regenerate(JobOperator, bpy.types.Operator):

@@ -18,7 +18,7 @@ built beside its library.
 
 import json
 import math
-from dataclasses import dataclass, field as dc_field
+from dataclasses import dataclass, field as dc_field, replace
 from pathlib import Path
 
 # Where the add-on's default differs from the library's, and why: the only
@@ -88,6 +88,8 @@ NOT_PROPERTIES = {
     "terrain": {"threads": _THREADS},
     "polyline": {"threads": _THREADS},
     "fractalize": {"threads": _THREADS},
+    "erosion": {"threads": _THREADS,
+                "periodic": "the terrain's own Periodic setting: a tiling terrain is eroded as a torus"},
 }
 # How Blender shows a field (subtype, unit, precision): presentation only.
 _BY_UNIT = {"scene units": {"subtype": "DISTANCE", "unit": "LENGTH"},
@@ -243,6 +245,25 @@ TERRAIN_PARAMS = _LIBRARY_TERRAIN + (
     Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
     Param("smooth", "bool", True, "Smooth Shading", "Shade faces smooth", geometry=True),
 )
+
+# The Erode step after generation (core/erosion.py runs it, blender/erosion_ui.py
+# draws it): ft_erosion_params as the library describes it, stored with the
+# terrain's settings so Regenerate reruns generation then erosion. In the
+# terrain's list they have no ft_terrain_params field (field None).
+EROSION_PARAMS = library_params("erosion")
+ERODE_PRESETS = (
+    ("NONE", "None", "No erosion: the fractal terrain as generated", 0),
+    ("VALLEYS", "Valleys", "Fluvial: stream power with uplift carves dendritic valley networks", 1),
+    ("RAIN", "Rain", "Hydraulic: water, sediment, erosion and deposition on the grid", 2),
+    ("SCREE", "Scree", "Thermal: slopes above the talus angle shed material", 3),
+    ("LAND", "Land", "All three: valleys, then rain, then scree", 4),
+    ("CUSTOM", "Custom", "The passes and rates below as set", 5),
+)
+TERRAIN_PARAMS = TERRAIN_PARAMS + (
+    Param("erode_preset", "enum", "NONE", "Erosion",
+          "Erode after generating: picking a preset sets the passes and rates below (then edit them)",
+          items=ERODE_PRESETS),
+) + tuple(replace(p, field=None) for p in EROSION_PARAMS)
 
 PARAMS_BY_NAME = {p.name: p for p in TERRAIN_PARAMS}
 

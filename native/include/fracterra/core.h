@@ -36,7 +36,8 @@ extern "C" {
 /// 2.6: landforms at the end of ft_terrain_params (levelling, height_offset, falloff,
 /// falloff_width, edge_level, sea, sea_level, sea_fraction); FT_FALLOFF_*, FT_SEA_*.
 /// 2.7: tile sets read back (ft_tileset_extent, ft_tileset_read_window).
-#define FT_ABI_VERSION_MINOR 7
+/// 2.8: the erosion parameters are described (FT_PARAMS_EROSION in params.h).
+#define FT_ABI_VERSION_MINOR 8
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -6,62 +6,18 @@
 #include "capi/handles.hpp"
 #include "erosion/drainage_stats.hpp"
 #include "erosion/erosion.hpp"
+#include "erosion/erosion_params.hpp"
 #include "erosion/presets.hpp"
 #include "fracterra/fracterra.h"
 
 using ft::capi::guarded;
-
-namespace {
-
-void to_c(const ft::erosion::ErosionConfig& c, ft_erosion_params* p) {
-  *p = {};
-  p->struct_size = sizeof(ft_erosion_params);
-  p->fluvial_steps = c.fluvial.steps;
-  p->fluvial_dt = c.fluvial.dt;
-  p->erodibility = c.fluvial.k;
-  p->area_exponent = c.fluvial.m;
-  p->diffusion = c.fluvial.diffusion;
-  p->uplift = c.fluvial.uplift;
-  p->hydraulic_iterations = c.hydraulic.iterations;
-  p->hydraulic_dt = c.hydraulic.dt;
-  p->rain = c.hydraulic.rain;
-  p->evaporation = c.hydraulic.evaporation;
-  p->capacity = c.hydraulic.capacity;
-  p->dissolve = c.hydraulic.dissolve;
-  p->deposit = c.hydraulic.deposit;
-  p->thermal_iterations = c.thermal.iterations;
-  p->talus_degrees = c.thermal.talus_degrees;
-  p->thermal_rate = c.thermal.rate;
-  p->periodic = c.periodic;
-  p->threads = c.threads;
-}
-
-ft::erosion::ErosionConfig from_c(const ft_erosion_params& p) {
-  ft::check_struct_size(p.struct_size, sizeof(ft_erosion_params), "ft_erosion_params");
-  ft::erosion::ErosionConfig c;
-  c.fluvial = {p.fluvial_steps, p.fluvial_dt, p.erodibility, p.area_exponent, p.diffusion, p.uplift};
-  c.hydraulic.iterations = p.hydraulic_iterations;
-  c.hydraulic.dt = p.hydraulic_dt;
-  c.hydraulic.rain = p.rain;
-  c.hydraulic.evaporation = p.evaporation;
-  c.hydraulic.capacity = p.capacity;
-  c.hydraulic.dissolve = p.dissolve;
-  c.hydraulic.deposit = p.deposit;
-  c.thermal = {p.thermal_iterations, p.talus_degrees, p.thermal_rate};
-  c.periodic = p.periodic != 0;
-  c.threads = p.threads;
-  c.progress = ft::Progress(p.progress, p.progress_user);
-  return c;
-}
-
-}  // namespace
 
 extern "C" {
 
 FT_API ft_status ft_erosion_params_init(ft_erosion_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    to_c(ft::erosion::ErosionConfig{}, p);
+    *p = ft::defaults_of<ft_erosion_params>(ft::erosion_param_table());
   });
 }
 
@@ -69,7 +25,7 @@ FT_API ft_status ft_erosion_preset(const char* name, ft_erosion_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
     ft::check_not_null("name", name);
-    to_c(ft::erosion::erosion_preset(name), p);
+    *p = ft::erosion::to_c(ft::erosion::erosion_preset(name));
   });
 }
 
@@ -81,7 +37,7 @@ FT_API ft_status ft_erode(const ft_heightfield* in, const ft_erosion_params* p, 
       for (int k = 0; k < FT_MAP_COUNT; ++k) maps[k] = nullptr;
     ft::check_not_null("in", in);
     ft::check_not_null("params", p);
-    ft::erosion::ErosionConfig c = from_c(*p);
+    ft::erosion::ErosionConfig c = ft::erosion::from_c(*p);
     ft::erosion::ErosionMaps m;
     auto result = std::make_unique<ft_heightfield>();
     result->hf = ft::erosion::erode(in->hf, c, maps ? &m : nullptr);

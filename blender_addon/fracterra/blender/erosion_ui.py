@@ -1,0 +1,224 @@
+"""The Erode step of a terrain in Blender: its settings in the redo panel and
+the sidebar, the preset that fills them, erosion after generation (in the
+job's worker thread), the maps as mesh point attributes and the node
+material that textures by them.
+
+Reads core and bpy only; terrain_build, props and settings_ui call it.
+"""
+
+import bpy
+import numpy as np
+from bpy.props import EnumProperty
+
+from .. import core
+from ..core import erosion, params
+from .mesh_build import SLOPE_ATTRIBUTE
+
+# Point attributes (0..1) beside fracterra_height and fracterra_slope.
+FLOW_ATTRIBUTE = "fracterra_flow"  # log drainage area: 0 on ridges, 1 at the main outlet
+DEPOSIT_ATTRIBUTE = "fracterra_deposit"  # sediment laid down
+WATER_ATTRIBUTE = "fracterra_water"  # water left by the rain
+ATTRIBUTES = (FLOW_ATTRIBUTE, DEPOSIT_ATTRIBUTE, WATER_ATTRIBUTE)
+MATERIAL_NAME = "Fracterra Eroded Terrain"
+# Share of the progress bar the generation fills when erosion follows (erosion
+# is the longer part).
+GENERATION_SHARE = 0.25
+
+# What the panels show of each process: its pass count, then its main rates.
+_GROUPS = (
+    ("Rivers", "fluvial_steps", ("erodibility", "uplift", "diffusion", "area_exponent", "fluvial_dt")),
+    ("Rain", "hydraulic_iterations", ("rain", "evaporation", "capacity", "dissolve", "deposit")),
+    ("Scree", "thermal_iterations", ("talus_degrees", "thermal_rate")),
+)
+
+
+def effective(values):
+    """The erosion settings a run uses: a preset picks which processes run and
+    how many passes (as `fracterra erode --preset` does), the rates are the
+    settings' own; None runs nothing; Custom takes the passes as set too.
+    (The library's preset also sets an uplift, meant for steady-state valleys
+    in `terrain --erode`; at the add-on's default scale, 10 units across and
+    heights about 1, 60 steps of it would raise the land 6 units.)"""
+    preset = values.get("erode_preset", "NONE")
+    if preset == "CUSTOM":
+        return values
+    if preset == "NONE":
+        return {**values, **{name: 0 for name in erosion.COUNTS}}
+    counts = erosion.preset_values(preset.lower())
+    return {**values, **{name: counts[name] for name in erosion.COUNTS}}
+
+
+def apply_preset(data):
+    """Shows the chosen preset's passes in `data` (operator or PropertyGroup),
+    so that switching to Custom starts from them; None zeroes the passes,
+    Custom leaves everything."""
+    preset = data.erode_preset
+    if preset == "CUSTOM":
+        return
+    if preset == "NONE":
+        for name in erosion.COUNTS:
+            setattr(data, name, 0)
+        return
+    counts = effective({"erode_preset": preset})
+    for name in erosion.COUNTS:
+        setattr(data, name, counts[name])
+
+
+def preset_property(then=None):
+    """The erode_preset EnumProperty whose update applies the preset (then calls `then`)."""
+    p = params.PARAMS_BY_NAME["erode_preset"]
+
+    def update(self, context):
+        apply_preset(self)
+        if then is not None:
+            then(self, context)
+
+    return EnumProperty(name=p.label, description=p.description, default=p.default,
+                        items=[(ident, label, tip, number) for ident, label, tip, number in p.items],
+                        update=update)
+
+
+def draw_erosion(layout, data):
+    """The Erode box of the settings: the preset, then each process's passes
+    (editable with Custom; a preset shows its own) and rates."""
+    box = layout.box().column(align=True)
+    box.prop(data, "erode_preset")
+    if data.erode_preset == "NONE":
+        return
+    for title, count, rates in _GROUPS:
+        sub = box.column(align=True)
+        row = sub.row(align=True)
+        row.enabled = data.erode_preset == "CUSTOM"
+        row.prop(data, count, text=f"{title}: {params.PARAMS_BY_NAME[count].label}")
+        if getattr(data, count) > 0:
+            for name in rates:
+                sub.prop(data, name)
+
+
+# --- in the job's worker thread (no bpy here)
+
+def _span(progress, start, end):
+    if progress is None:
+        return None
+    return lambda fraction: progress(start + (end - start) * fraction)
+
+
+def periodic_of(values):
+    return bool(values.get("periodic")) and params.is_used(params.PARAMS_BY_NAME["periodic"], values["method"])
+
+
+def generate_and_erode(values, reference, progress, threads, grid_of):
+    """Generates the terrain of `values` and, when its settings ask for it, erodes
+    it; returns grid_of(heightfield) with `.erosion_maps` ({attribute: float32
+    array} or None). Runs in the worker thread."""
+    values = effective(values)
+    if not erosion.requested(values):
+        with core.generate_terrain(values, reference=reference, progress=progress, threads=threads) as hf:
+            g = grid_of(hf)
+        g.erosion_maps = None
+        return g
+    with core.generate_terrain(values, reference=reference, progress=_span(progress, 0.0, GENERATION_SHARE),
+                               threads=threads) as hf:
+        eroded, maps = erosion.erode_arrays(hf, values=values, periodic=periodic_of(values), threads=threads,
+                                            progress=_span(progress, GENERATION_SHARE, 1.0))
+    with eroded:
+        g = grid_of(eroded)
+        spacing = values["world_size"] / (eroded.width - 1)
+        g.erosion_maps = attribute_maps({k: np.frombuffer(v, dtype=np.float32) for k, v in maps.items()},
+                                        spacing * spacing)
+    return g
+
+
+def _robust_unit(values):
+    """values over the 99th percentile of the positive ones, clipped to 0..1: a few
+    extreme cells (a lake, the outlet) must not squash all others to 0."""
+    positive = values[values > 0]
+    scale = float(np.percentile(positive, 99)) if positive.size else 0.0
+    if scale <= 0:
+        return np.zeros_like(values, dtype=np.float32)
+    return np.clip(values / scale, 0.0, 1.0).astype(np.float32)
+
+
+def attribute_maps(maps, cell_area):
+    """The library's maps (world units) as 0..1 attributes by name:
+    fracterra_flow: log of the drainage area in cells over the log of the largest
+    (0: a ridge cell drains only itself, 1: the largest outlet);
+    fracterra_deposit, fracterra_water: deposited sediment and water left, each
+    over its 99th percentile, clipped."""
+    cells = np.maximum(maps["drainage_area"] / cell_area, 1.0)
+    top = float(np.log(cells.max()))
+    flow = (np.log(cells) / top).astype(np.float32) if top > 0 else np.zeros_like(cells, dtype=np.float32)
+    return {FLOW_ATTRIBUTE: flow, DEPOSIT_ATTRIBUTE: _robust_unit(maps["deposited"]),
+            WATER_ATTRIBUTE: _robust_unit(maps["water_depth"])}
+
+
+# --- in the main thread (build steps)
+
+def set_maps(mesh, maps):
+    """Writes the erosion attributes of a terrain mesh, or removes them when it
+    was not eroded (so a material never shows stale channels)."""
+    for name in ATTRIBUTES:
+        layer = mesh.attributes.get(name)
+        if maps is None:
+            if layer is not None:
+                mesh.attributes.remove(layer)
+            continue
+        if layer is None:
+            layer = mesh.attributes.new(name, "FLOAT", "POINT")
+        layer.data.foreach_set("value", maps[name])
+    if maps is not None and len(mesh.materials) == 0:
+        mesh.materials.append(eroded_material())
+
+
+def eroded_material():
+    """The node material of eroded terrains (made once per file): rock where the
+    slope is steep, sediment in channels and on deposits, grass elsewhere, from
+    the point attributes fracterra_slope, fracterra_flow and fracterra_deposit."""
+    mat = bpy.data.materials.get(MATERIAL_NAME)
+    if mat is not None:
+        return mat
+    mat = bpy.data.materials.new(MATERIAL_NAME)
+    mat.use_nodes = True
+    nodes, links = mat.node_tree.nodes, mat.node_tree.links
+    bsdf = nodes.get("Principled BSDF")
+    bsdf.inputs["Roughness"].default_value = 0.85
+
+    def attribute(name, y):
+        node = nodes.new("ShaderNodeAttribute")
+        node.attribute_name = name
+        node.location = (-1000, y)
+        return node.outputs["Fac"]
+
+    def ramp(fac, lo, hi, y):
+        """0 below lo, 1 above hi, smooth between (a Map Range, smoothstep)."""
+        node = nodes.new("ShaderNodeMapRange")
+        node.interpolation_type = "SMOOTHSTEP"
+        node.inputs["From Min"].default_value, node.inputs["From Max"].default_value = lo, hi
+        node.location = (-800, y)
+        links.new(fac, node.inputs["Value"])
+        return node.outputs["Result"]
+
+    def mix(fac, a, b, y):
+        node = nodes.new("ShaderNodeMixRGB")
+        node.location = (-500, y)
+        links.new(fac, node.inputs["Fac"])
+        for socket, value in ((node.inputs["Color1"], a), (node.inputs["Color2"], b)):
+            if isinstance(value, tuple):
+                socket.default_value = value
+            else:
+                links.new(value, socket)
+        return node.outputs["Color"]
+
+    grass, sediment, rock = (0.16, 0.26, 0.07, 1.0), (0.55, 0.47, 0.33, 1.0), (0.33, 0.31, 0.29, 1.0)
+    channels = ramp(attribute(FLOW_ATTRIBUTE, 200), 0.45, 0.7, 200)
+    deposits = ramp(attribute(DEPOSIT_ATTRIBUTE, 0), 0.05, 0.4, 0)
+    math_max = nodes.new("ShaderNodeMath")
+    math_max.operation = "MAXIMUM"
+    math_max.location = (-650, 100)
+    links.new(channels, math_max.inputs[0])
+    links.new(deposits, math_max.inputs[1])
+    steep = ramp(attribute(SLOPE_ATTRIBUTE, -200), 0.3, 0.45, -200)
+    ground = mix(math_max.outputs["Value"], grass, sediment, 100)
+    colour = mix(steep, ground, rock, -100)
+    links.new(colour, bsdf.inputs["Base Color"])
+    return mat

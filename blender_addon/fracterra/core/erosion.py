@@ -1,0 +1,90 @@
+"""Erosion through the C ABI (fracterra/erosion.h): ft_erode and its maps,
+bpy-free (the pytest suite uses it directly).
+
+The settings are the library's ft_erosion_params rows (core.params.EROSION_PARAMS),
+stored with a terrain's own settings; a preset (ft_erosion_preset) fills them.
+"""
+
+import ctypes
+from ctypes import byref, c_void_p
+
+from . import params as params_mod
+from .binding import library
+from .terrain import Heightfield, _ProgressBridge
+
+# ft_erosion_map order (FT_MAP_DRAINAGE_AREA .. FT_MAP_DEPOSITED).
+MAPS = ("drainage_area", "slope", "curvature", "water_depth", "eroded", "deposited")
+PRESETS = ("valleys", "rain", "scree", "land")
+COUNTS = ("fluvial_steps", "hydraulic_iterations", "thermal_iterations")
+
+
+def _fill(p, values):
+    for param in params_mod.EROSION_PARAMS:
+        if param.name in values:
+            setattr(p, param.name, param.c_value(values[param.name]))
+    return p
+
+
+def erosion_struct(values=None, preset=None, **overrides):
+    """An ft_erosion_params from the library's init (or `preset`), then the values by name."""
+    lib = library()
+    p = lib.erosion_params_type()
+    if preset:
+        lib.check(lib.ft_erosion_preset(preset.lower().encode(), byref(p)))
+    else:
+        lib.check(lib.ft_erosion_params_init(byref(p)))
+    merged = dict(values or {})
+    merged.update(overrides)
+    return _fill(p, merged)
+
+
+def preset_values(preset):
+    """{setting: value} of a preset ("valleys", "rain", "scree", "land"), as the library defines it."""
+    p = erosion_struct(preset=preset)
+    return {param.name: _from_c(param, getattr(p, param.name)) for param in params_mod.EROSION_PARAMS}
+
+
+def _from_c(param, value):
+    if param.kind == "bool":
+        return bool(value)
+    if param.kind == "int":
+        return int(value)
+    return float(value)
+
+
+def requested(values):
+    """True when the settings ask for any erosion pass."""
+    return any(int(values.get(name, 0)) > 0 for name in COUNTS)
+
+
+def erode(hf, values=None, preset=None, periodic=False, threads=0, progress=None, maps=True):
+    """Erodes Heightfield `hf`: (eroded Heightfield, {map name: Heightfield}) (close them,
+    or use erode_arrays). progress: None or callable(fraction) -> True to cancel
+    (raises CancelledError)."""
+    lib = library()
+    p = erosion_struct(values, preset)
+    p.periodic = 1 if periodic else 0
+    p.threads = threads
+    bridge = _ProgressBridge(progress)
+    p.progress = bridge.c_fn
+    out = c_void_p()
+    handles = (c_void_p * len(MAPS))()
+    status = lib.ft_erode(hf.handle, byref(p), byref(out),
+                          ctypes.cast(handles, ctypes.POINTER(c_void_p)) if maps else None)
+    bridge.reraise()
+    lib.check(status)
+    made = {name: Heightfield(c_void_p(h)) for name, h in zip(MAPS, handles) if h} if maps else {}
+    return Heightfield(out), made
+
+
+def erode_arrays(hf, **kw):
+    """As erode(), but the maps come back as array.array('f') (row-major) and are closed."""
+    eroded, made = erode(hf, **kw)
+    arrays = {}
+    for name, m in made.items():
+        with m:
+            arrays[name] = m.to_array()
+    return eroded, arrays
+
+
+__all__ = ["MAPS", "PRESETS", "erosion_struct", "preset_values", "requested", "erode", "erode_arrays"]

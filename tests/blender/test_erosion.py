@@ -1,0 +1,151 @@
+"""The Erode step of a terrain in real Blender: added with a preset, the
+heights are the library's generation then erosion, bit for bit; the maps are
+point attributes that the terrain's node material reads; the settings stay on
+the object, so Regenerate reruns both, and None takes erosion away again;
+a cancel during erosion keeps nothing. (Bad settings cannot be entered: the
+properties carry the library's hard ranges; tests/python/test_erosion.py
+checks that the library refuses them naming the field.)"""
+
+import array
+import os
+import sys
+import time
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import addon_harness  # noqa: E402
+
+import bpy  # noqa: E402
+
+ATTRIBUTES = ("fracterra_flow", "fracterra_deposit", "fracterra_water")
+
+
+def core():
+    return addon_harness.submodule("core")
+
+
+def erosion():
+    return addon_harness.submodule("core.erosion")
+
+
+def clear_scene():
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj)
+    for mesh in list(bpy.data.meshes):
+        bpy.data.meshes.remove(mesh)
+
+
+def heights(mesh):
+    co = array.array("f", [0.0]) * (3 * len(mesh.vertices))
+    mesh.vertices.foreach_get("co", co)
+    return co[2::3]
+
+
+def attribute(mesh, name):
+    values = array.array("f", [0.0]) * len(mesh.vertices)
+    mesh.attributes[name].data.foreach_get("value", values)
+    return values
+
+
+def library_result(settings):
+    """Generation then erosion straight through the binding, with the object's
+    stored settings (a preset picks the passes, as `fracterra erode --preset`)."""
+    values = core().params.values_of(settings)
+    preset = settings.erode_preset
+    if preset not in ("NONE", "CUSTOM"):
+        counts = erosion().preset_values(preset.lower())
+        values.update({name: counts[name] for name in erosion().COUNTS})
+    with core().generate_terrain(values) as hf:
+        eroded, _maps = erosion().erode(hf, values=values, maps=False)
+    with eroded:
+        return eroded.to_array()
+
+
+class ErodeTest(unittest.TestCase):
+    def setUp(self):
+        clear_scene()
+
+    def add(self, **kw):
+        self.assertEqual(bpy.ops.mesh.fracterra_terrain_add(levels=6, seed=5, **kw), {"FINISHED"})
+        return bpy.context.active_object
+
+    def test_preset_erodes_the_librarys_terrain_bit_for_bit(self):
+        obj = self.add(erode_preset="LAND")
+        settings = obj.fracterra_terrain
+        self.assertEqual(settings.erode_preset, "LAND")
+        expected = library_result(settings)
+        self.assertEqual(heights(obj.data).tobytes(), expected.tobytes())
+        with core().generate_terrain(core().params.values_of(settings)) as hf:
+            self.assertNotEqual(heights(obj.data).tobytes(), hf.to_array().tobytes(), "not eroded")
+
+    def test_maps_are_attributes_the_material_reads(self):
+        obj = self.add(erode_preset="LAND")
+        mesh = obj.data
+        for name in ATTRIBUTES:
+            self.assertIn(name, mesh.attributes)
+            self.assertEqual(mesh.attributes[name].domain, "POINT")
+        flow = attribute(mesh, "fracterra_flow")
+        self.assertAlmostEqual(max(flow), 1.0, places=5)
+        self.assertEqual(min(flow), 0.0)  # ridge cells drain only themselves
+        # A channel network: a few cells carry much flow, most little.
+        self.assertGreater(sum(v > 0.6 for v in flow), 10)
+        self.assertGreater(sum(v < 0.3 for v in flow), len(flow) // 2)
+        self.assertGreater(max(attribute(mesh, "fracterra_water")), 0.0)
+        # Land's rivers lower every cell (no uplift): the deposits show after rain alone.
+        rain = self.add(erode_preset="RAIN").data
+        self.assertGreater(sum(v > 0 for v in attribute(rain, "fracterra_deposit")), 10)
+        material = mesh.materials[0]
+        read = {n.attribute_name for n in material.node_tree.nodes if n.type == "ATTRIBUTE"}
+        self.assertTrue({"fracterra_flow", "fracterra_deposit", "fracterra_slope"} <= read, read)
+        bsdf = material.node_tree.nodes["Principled BSDF"]
+        self.assertTrue(bsdf.inputs["Base Color"].is_linked)
+
+    def test_regenerate_reruns_generation_then_erosion(self):
+        obj = self.add(erode_preset="SCREE")
+        settings = obj.fracterra_terrain
+        settings.erode_preset = "CUSTOM"  # keeps the preset's passes, now editable
+        self.assertGreater(settings.thermal_iterations, 0)
+        settings.talus_degrees = 20.0
+        settings.seed = 9
+        before = heights(obj.data).tobytes()
+        self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
+        self.assertNotEqual(heights(obj.data).tobytes(), before)
+        self.assertEqual(heights(obj.data).tobytes(), library_result(settings).tobytes())
+        # None: the fractal terrain as generated, and no stale maps.
+        settings.erode_preset = "NONE"
+        self.assertEqual(settings.thermal_iterations, 0)
+        self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
+        with core().generate_terrain(core().params.values_of(settings)) as hf:
+            self.assertEqual(heights(obj.data).tobytes(), hf.to_array().tobytes())
+        for name in ATTRIBUTES:
+            self.assertNotIn(name, obj.data.attributes)
+
+
+class ErodeCancelTest(unittest.TestCase):
+    """progress.Runner (the modal operator's driver, Esc cancels): a cancel
+    while eroding keeps nothing."""
+
+    def test_cancel_while_eroding_keeps_nothing(self):
+        clear_scene()
+        progress = addon_harness.submodule("blender.progress")
+        build = addon_harness.submodule("blender.terrain_build")
+        share = addon_harness.submodule("blender.erosion_ui").GENERATION_SHARE
+        values = core().params.defaults()
+        values.update(levels=9, seed=3, erode_preset="LAND")
+        runner = progress.Runner(build.new_terrain_job(values, bpy.context))
+        runner.start()
+        deadline = time.monotonic() + 60
+        while runner.work_fraction <= share + 0.01 and time.monotonic() < deadline:
+            time.sleep(0.005)
+        self.assertGreater(runner.work_fraction, share, "erosion never started")
+        runner.cancel()
+        state = runner.step()
+        while state == progress.RUNNING and time.monotonic() < deadline:
+            runner._work_done.wait(0.01)
+            state = runner.step()
+        self.assertEqual(state, progress.CANCELLED)
+        self.assertEqual(len(bpy.data.meshes), 0)
+
+
+if __name__ == "__main__":
+    addon_harness.run(globals())
