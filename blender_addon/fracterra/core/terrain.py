@@ -119,6 +119,21 @@ def mandelbrot_level_height(nu, values=None, **overrides):
     return out.value
 
 
+def attach_reference(p, reference):
+    """Points ft_terrain_params `p` at a reference grid (size, values), size = 2^m + 1
+    and size^2 floats row-major, or at none (None). Returns the buffer the struct
+    points into: keep it alive as long as `p` is used."""
+    if reference is None:
+        return None
+    size, values = reference
+    buf = array.array("f", values)
+    if len(buf) != size * size:
+        raise InvalidArgumentError(f"the reference grid has {len(buf)} values; size {size} needs {size * size}")
+    p.reference = ctypes.cast(as_pointer(buf, c_float), POINTER(c_float))
+    p.reference_size = size
+    return buf
+
+
 def generate_terrain(values=None, reference=None, progress=None, threads=0, **overrides):
     """Generates a terrain; returns a Heightfield (close it, or use `with`).
 
@@ -131,14 +146,7 @@ def generate_terrain(values=None, reference=None, progress=None, threads=0, **ov
     lib = library()
     p = terrain_struct(values, **overrides)
     p.threads = threads
-    ref_buf = None
-    if reference is not None:
-        size, ref_values = reference
-        ref_buf = array.array("f", ref_values)
-        if len(ref_buf) != size * size:
-            raise InvalidArgumentError(f"the reference grid has {len(ref_buf)} values; size {size} needs {size * size}")
-        p.reference = ctypes.cast(as_pointer(ref_buf, c_float), POINTER(c_float))
-        p.reference_size = size
+    _ref_buf = attach_reference(p, reference)
     bridge = _ProgressBridge(progress)
     p.progress = bridge.c_fn
     out = c_void_p()

@@ -20,20 +20,19 @@ the same code runs on a cluster started with `dask scheduler` and
 """
 
 import argparse
-import array
 import ctypes
 import json
 import os
 import sys
 import time
-from ctypes import POINTER, byref, c_double, c_float, c_int32, c_int64, c_size_t, c_uint32, c_void_p
+from ctypes import POINTER, byref, c_double, c_int32, c_int64, c_size_t, c_uint32, c_void_p
 
 from . import params as params_mod
 from .binding import ENV_VAR, library
 from .errors import FracterraError, InvalidArgumentError
 from .handle import LibraryHandle
 from .binding import HurstResult
-from .terrain import as_pointer, terrain_struct
+from .terrain import attach_reference, terrain_struct
 
 FORMATS = {"png16": 0, "tiff": 1}
 _TILES_SIGNATURES = {
@@ -78,15 +77,7 @@ def _terrain(settings, reference):
     """(ft_terrain_params, buffer to keep alive) from settings by name and an optional
     reference grid (size, values)."""
     p = terrain_struct(settings)
-    keep = None
-    if reference is not None:
-        size, values = reference
-        keep = array.array("f", values)
-        if len(keep) != size * size:
-            raise InvalidArgumentError(f"the reference grid has {len(keep)} values; size {size} needs {size * size}")
-        p.reference = ctypes.cast(as_pointer(keep, c_float), POINTER(c_float))
-        p.reference_size = size
-    return p, keep
+    return p, attach_reference(p, reference)
 
 
 def _format(fmt):
