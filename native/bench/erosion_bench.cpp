@@ -5,7 +5,7 @@
 //                 native/bench/ant_eroder_anchor.py (run it first; it also
 //                 times A.N.T.'s eroder on them): FT_ANT_DIR=DIR/ant_N.npy.
 //                 Without them an fBm terrain of the same size stands in.
-//   Fluvial/N     stream power + diffusion, 10 time steps.
+//   Fluvial/N     stream power + diffusion, 10 time steps (FT_STEPS=100 for the 100).
 // Run: FT_ANT_DIR=/tmp/ant build/native/erosion_bench --benchmark_repetitions=3
 #include <benchmark/benchmark.h>
 
@@ -94,7 +94,7 @@ void Fluvial(benchmark::State& state) {
   c.fluvial.uplift = 1e-4;
   c.threads = bench_threads();
   for (auto _ : state) benchmark::DoNotOptimize(erode(src, c, nullptr).data());
-  state.counters["steps"] = 10;
+  state.counters["steps"] = c.fluvial.steps;
 }
 BENCHMARK(Fluvial)->Arg(513)->Arg(1025)->Arg(2049)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
