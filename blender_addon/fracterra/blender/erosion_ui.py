@@ -82,7 +82,10 @@ def draw_erosion(layout, data):
     """The Erode box of the settings: the preset, then each process's passes
     (editable with Custom; a preset shows its own) and rates."""
     box = layout.box().column(align=True)
-    box.prop(data, "erode_preset")
+    # A heading, then the menu across the box: as one split row the narrow
+    # sidebar cut its label to "Erosi..." (issue 17).
+    box.label(text=params.PARAMS_BY_NAME["erode_preset"].label)
+    box.prop(data, "erode_preset", text="")
     if data.erode_preset == "NONE":
         return
     for title, count, rates in _GROUPS:
