@@ -9,6 +9,7 @@
 #include "core/parallel.hpp"
 #include "erosion/erosion.hpp"
 #include "erosion/flow_graph.hpp"
+#include "erosion/multiple_flow.hpp"
 
 namespace ft::erosion {
 namespace {
@@ -116,12 +117,14 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     maps->water_depth = like(in);
     maps->eroded = like(in);
     maps->deposited = like(in);
+    // The area on the surface as it would drain with its pits filled (a
+    // lake's cells all carry what flows through it), by multiple flow
+    // directions so the map has no grid-aligned streaks.
     std::vector<float> filled(out.data(), out.data() + out.size());
-    FlowGraph graph;
     const int32_t sink = g.periodic ? periodic_sink(g, filled.data()) : -1;
-    route_filled(g, filled.data(), sink, graph);
+    fill_depressions(g, filled.data(), sink);
     std::vector<double> area;
-    accumulate_area(g, graph, area);
+    multiple_flow_area(g, filled.data(), sink, area);
     for (size_t i = 0; i < in.size(); ++i) {
       maps->drainage_area.data()[i] = float(area[i]);
       maps->water_depth.data()[i] = water[i];

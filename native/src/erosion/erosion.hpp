@@ -61,7 +61,7 @@ struct ErosionConfig {
 
 // Maps on the terrain's grid, in world units.
 struct ErosionMaps {
-  Heightfield drainage_area;  // upstream area of each cell (world units^2), D8 on the result
+  Heightfield drainage_area;  // upstream area of each cell (world units^2), multiple flow on the filled result
   Heightfield slope;          // |grad z| (rise over run)
   Heightfield curvature;      // Laplacian of z (1 / world units; > 0 in hollows and channels)
   Heightfield water_depth;    // water left by the hydraulic pass (0 when it did not run)

@@ -270,9 +270,14 @@ bool dyadic_method(const ft_terrain_params& p) {
 // Bytes a window's generation holds at its peak, beside the result.
 uint64_t window_work_bytes(const ft_terrain_params& p, int lod, int32_t w, int32_t h) {
   if (!dyadic_method(p)) return 0;
-  // The last stage's array (the window grown by its halo) and the stage
-  // before it, a quarter of that; additions at lod > 0 refine the footprint.
-  const uint64_t k = p.method == FT_TERRAIN_ADDITIONS ? uint64_t(1) << lod : 1;
+  // Plain midpoint writes its last stage straight into the window and
+  // alternates two arrays for the stages before it (a quarter and a
+  // sixteenth of it, halo included; bounded here by two quarters).
+  // Additions hold the last stage's array (the window grown by its halo) and
+  // the stage before it; at lod > 0 they refine the footprint.
+  if (p.method == FT_TERRAIN_MIDPOINT)
+    return checked_bytes(uint64_t(w) / 2 + 16, uint64_t(h) / 2 + 16, sizeof(float) * 2);
+  const uint64_t k = uint64_t(1) << lod;
   const uint64_t fw = (uint64_t(w) - 1) * k + 1 + 16, fh = (uint64_t(h) - 1) * k + 1 + 16;
   return checked_bytes(fw, fh, sizeof(float) * (k > 1 ? 3 : 2));
 }

@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include <omp.h>
+
 #include "core/buffer.hpp"
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
@@ -58,6 +60,29 @@ class WindowRefiner {
     Grid g{need[size_t(start)], coarse.data(), size_t(need[size_t(start)].nx())};
     double delta = c_.sigma * std::pow(0.5, 0.5 * c_.hurst * 2.0 * (first_ - 1));
     const double shrink = std::pow(0.5, 0.5 * c_.hurst);
+    if (start == target_) {  // nothing to refine: the window lies on the initial grid
+      for (int j = 0; j < w.height; ++j) std::copy_n(g.row(j), w.width, out + size_t(j) * size_t(w.width));
+      return;
+    }
+    if (!c_.additions) {
+      // Plain midpoint: each stage computes just its needed region, into one
+      // of two arrays allocated once (stages alternate between them), and the
+      // last stage straight into `out`: no per-stage allocation (whose first
+      // touch cost a fifth of the run) and no final copy.
+      Buffer<float> ping(stage_area(need, start + 1, target_ - 1)), pong(stage_area(need, start + 2, target_ - 1));
+      for (int s = start + 1; s <= target_; ++s) {
+        const double square_delta = delta * shrink;
+        delta = square_delta * shrink;
+        const Region& r = need[size_t(s)];
+        Grid f{r, s == target_ ? out : ((s - start) % 2 ? ping.data() : pong.data()),
+               s == target_ ? size_t(w.width) : size_t(r.nx())};
+        midpoint_stage(g, s, f, float(square_delta), float(delta));
+        g = f;
+        done += double(r.nx()) * r.ny();
+        c_.progress.report(std::min(1.0, done / total));
+      }
+      return;
+    }
     Buffer<float> fine;
     for (int s = start + 1; s <= target_; ++s) {
       const double square_delta = delta * shrink;
@@ -91,6 +116,13 @@ class WindowRefiner {
       g.x1 = std::min(n_, g.x1), g.y1 = std::min(n_, g.y1);
     }
     return g;
+  }
+
+  // The largest area among the stages first, first + 2, ... up to last.
+  static size_t stage_area(const std::vector<Region>& need, int first, int last) {
+    size_t a = 0;
+    for (int s = first; s <= last; s += 2) a = std::max(a, size_t(need[size_t(s)].nx()) * size_t(need[size_t(s)].ny()));
+    return a;
   }
 
   static Grid view(const Grid& g, const Region& r) {
@@ -130,6 +162,108 @@ class WindowRefiner {
   }
 
   bool pinned(int64_t x, int64_t y) const { return ref_step_ != 0 && x % ref_step_ == 0 && y % ref_step_ == 0; }
+
+  // Plain midpoint, stage s: the points of f.r (spacing half) from the
+  // coarse grid c (spacing big = 2 half, c.r grown from f.r), written to f.
+  //
+  // Row by row, as the whole-grid refiner fuses its steps: the fine rows
+  // pass through a few scratch rows (the span of grid rows around f.r, one
+  // fine point beyond it on each side, the square centres its border
+  // diamond points read), and the rows inside f.r are copied out. A grid
+  // row k is finished when the centre rows on both sides of it are done;
+  // rows of a thread's band start one grid row early. Every point reads the
+  // values, and is computed by the arithmetic, it gets in the whole grid.
+  void midpoint_stage(const Grid& c, int s, const Grid& f, float square_delta, float diamond_delta) const {
+    const int64_t big = c.r.step, half = big / 2;
+    const Region& r = f.r;
+    Region e{floor_div(r.x0 - half, big) * big, ceil_div(r.x1 + half, big) * big, floor_div(r.y0 - half, big) * big,
+             ceil_div(r.y1 + half, big) * big, half};
+    if (!c_.periodic) {
+      e.x0 = std::max<int64_t>(0, e.x0), e.y0 = std::max<int64_t>(0, e.y0);
+      e.x1 = std::min(n_, e.x1), e.y1 = std::min(n_, e.y1);
+    }
+    const int en = e.nx(), cn = (en + 1) / 2, rows = int((e.y1 - e.y0) / big);  // grid rows 0..rows
+    const int copy0 = int((r.x0 - e.x0) / half), copy_n = r.nx();
+    const size_t ci0 = size_t((e.x0 - c.r.x0) / big);
+    const int64_t cj0 = (e.y0 - c.r.y0) / big;
+    const int team = size_t(en) * size_t(2 * rows + 1) >= (size_t(1) << 16) ? threads_ : 1;
+
+#pragma omp parallel num_threads(team)
+    {
+      const int parts = omp_get_num_threads(), id = omp_get_thread_num();
+      const int k0 = int(int64_t(rows + 1) * id / parts), k1 = int(int64_t(rows + 1) * (id + 1) / parts);
+      std::vector<float> scratch(size_t(en) * 4 + 8), g(size_t(cn) + 8);
+      float *grid = scratch.data(), *next = grid + en, *above = next + en, *below = above + en;
+      auto expand = [&](float* row, int k) {
+        const float* src = c.row(int(cj0 + k)) + ci0;
+        for (int i = 0; i < cn; ++i) row[2 * i] = src[i];
+      };
+      auto emit = [&](const float* row, int64_t y) {
+        if (y >= r.y0 && y <= r.y1) std::copy_n(row + copy0, copy_n, f.row(int((y - r.y0) / half)));
+      };
+      // The centre row between grid rows up and dn (k - 1 and k): its
+      // centres, and unless only those are asked for (the row above a
+      // band, which the band before emits), its diamond points if it lies
+      // in the region.
+      auto centre_row = [&](float* row, const float* up, const float* dn, int k, bool centres_only) {
+        const int64_t y = e.y0 + k * big - half;
+        const uint32_t cy = uint32_t(canon(y));
+        draws(Counter{cy, uint32_t(s), Stream::kTerrainSquare}, (canon(e.x0 + half) - half) / big, cn - 1,
+              n_ / big, g.data());
+        detail::square_row(row, up, dn, 1, cn - 1, 2, 1, square_delta, g.data());
+        if (centres_only || y < r.y0 || y > r.y1) return;
+        draws(Counter{cy, uint32_t(s), Stream::kTerrainDiamond}, canon(e.x0) / big, cn, n_ / big, g.data());
+        if (cn > 2) detail::diamond_interior(row, up, dn, 2, cn - 2, 2, 1, diamond_delta, g.data() + 1);
+        // The end points: a terrain border has 3 neighbours; elsewhere the
+        // left or right centre is outside e, and the point outside f.r.
+        if (!c_.periodic && e.x0 == 0) row[0] = detail::border_mean(nullptr, row + 1, up, dn) + diamond_delta * g[0];
+        if (!c_.periodic && e.x1 == n_ && cn > 1)
+          row[en - 1] = detail::border_mean(row + en - 2, nullptr, up + en - 1, dn + en - 1) + diamond_delta * g[cn - 1];
+        emit(row, y);
+      };
+      // Grid row k's diamond points, between its coarse points, from the
+      // centre rows above and below (nullptr: none computed).
+      auto finish_grid = [&](float* row, const float* up, const float* dn, int k) {
+        const int64_t y = e.y0 + k * big;
+        if (y < r.y0 || y > r.y1) return;
+        if (cn > 1) {
+          draws(Counter{uint32_t(canon(y)), uint32_t(s), Stream::kTerrainDiamond}, (canon(e.x0 + half) - half) / big,
+                cn - 1, n_ / big, g.data());
+          if (up && dn) {
+            detail::diamond_interior(row, up, dn, 1, cn - 1, 2, 1, diamond_delta, g.data());
+          } else {  // the terrain's top or bottom border (f.r never reaches past e otherwise)
+            for (int i = 0; i < cn - 1; ++i)
+              row[2 * i + 1] = detail::border_mean(row + 2 * i, row + 2 * i + 2, up ? up + 2 * i + 1 : nullptr,
+                                                   dn ? dn + 2 * i + 1 : nullptr) +
+                               diamond_delta * g[i];
+          }
+        }
+        emit(row, y);
+      };
+      if (k0 < k1) {
+        bool have_above = false;
+        if (k0 > 0) {
+          expand(next, k0 - 1);
+          expand(grid, k0);
+          centre_row(above, next, grid, k0, true);
+          have_above = true;
+        } else {
+          expand(grid, k0);
+        }
+        for (int k = k0; k < k1; ++k) {
+          const bool have_below = k < rows;
+          if (have_below) {
+            expand(next, k + 1);
+            centre_row(below, grid, next, k + 1, false);
+          }
+          finish_grid(grid, have_above ? above : nullptr, have_below ? below : nullptr, k);
+          std::swap(grid, next);
+          std::swap(above, below);
+          have_above = have_below;
+        }
+      }
+    }
+  }
 
   // Stage s over the coarse grid's whole region, into a new array of half
   // its spacing. Points whose neighbours lie outside the region (and not

@@ -1,0 +1,31 @@
+// Drainage area by multiple flow directions, for the maps artists texture by.
+//
+// Single-flow routing (D8, flow_graph.hpp) is what the eroders and the
+// drainage statistics need: one receiver per cell, a stack, channels with a
+// length. As a picture it is wrong: every cell sends all its water to one of
+// eight neighbours, so on gentle slopes and valley floors the area gathers
+// in straight grid-aligned lines that a material shows as streaks. Here each
+// cell divides its water among all its lower neighbours in proportion to
+// contour length times slope (Quinn, Beven, Chevallier & Planchon 1991,
+// "The prediction of hillslope flow paths for distributed hydrological
+// modelling using digital terrain models"): water spreads on hillslopes and
+// fans, and still gathers in valleys, whose sides all slope toward them.
+#pragma once
+
+#include <vector>
+
+#include "erosion/d8_grid.hpp"
+
+namespace ft::erosion {
+
+// Drainage area in world units^2 (each cell spacing^2, including its own) on
+// `z`, which must drain: every cell that is not a base level (a bounded
+// grid's edge, a periodic grid's `sink`) has a strictly lower neighbour, as
+// after fill_depressions. Base levels keep what reaches them, so the base
+// levels' areas sum to the grid's area. Cells are visited once each in
+// topological order (a cell after all its higher neighbours), and each sums
+// its inflows in the fixed neighbour order: the result is exact to rounding
+// and independent of any thread count.
+void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vector<double>& area);
+
+}  // namespace ft::erosion
