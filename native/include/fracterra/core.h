@@ -39,7 +39,8 @@ extern "C" {
 /// 2.8: the erosion parameters are described (FT_PARAMS_EROSION in params.h).
 /// 2.9: a custom falloff mask (FT_FALLOFF_CUSTOM; falloff_mask, falloff_mask_width and
 /// falloff_mask_height at the end of ft_terrain_params).
-#define FT_ABI_VERSION_MINOR 9
+/// 2.11: ft_erosion_preset_fitted (erosion.h).
+#define FT_ABI_VERSION_MINOR 11
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

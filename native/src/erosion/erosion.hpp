@@ -30,6 +30,7 @@ struct FluvialConfig {
   double m = 0.5;             // area exponent (slope exponent n = 1: the implicit solve is exact)
   double diffusion = 1e-7;    // hillslope diffusivity (world units^2 / yr); 0 = none (1e-7 km^2/yr = 0.1 m^2/yr)
   double uplift = 0.0;        // uplift rate (world units / yr) of every cell (not a periodic grid's sink)
+  bool uplift_follows_terrain = false;  // each cell's rate x its input height above the lowest / the relief
 };
 
 struct HydraulicConfig {

@@ -36,6 +36,17 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
   // Base level of a bounded grid: the lowest input height (the sea).
   const float base = *std::min_element(z, z + n);
   const float inv_spacing = float(1.0 / g.spacing);
+  // Uplift per step of each cell: uniform, or following the input terrain
+  // (a mountain keeps rising where it stands, its plain not at all, so
+  // incision carves the landform instead of an uplifted block).
+  std::vector<float> lift;
+  if (c.uplift > 0.0 && c.uplift_follows_terrain) {
+    const float top = *std::max_element(z, z + n);
+    const double scale = top > base ? c.uplift * c.dt / (double(top) - base) : 0.0;
+    lift.resize(n);
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n); ++i) lift[i] = float(scale * (double(z[i]) - base));
+  }
   for (int32_t step = 0; step < c.steps; ++step) {
     if (c.uplift > 0.0) {
       const float u = float(c.uplift * c.dt);
@@ -43,7 +54,7 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
       for (int32_t y = 0; y < g.height; ++y)
         for (int32_t x = 0; x < g.width; ++x) {
           const size_t i = size_t(y) * g.width + x;
-          if (int32_t(i) != sink) z[i] += u;
+          if (int32_t(i) != sink) z[i] += lift.empty() ? u : lift[i];
         }
     }
     route_filled(g, z, sink, graph);
