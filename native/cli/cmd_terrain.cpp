@@ -45,7 +45,7 @@ void parse_center(const std::string& text, ft_terrain_params& p) {
 
 struct TerrainOptions {
   ft_terrain_params p = default_terrain_params();
-  std::string reference, out, size, pov, center, curves_out, erode;
+  std::string reference, falloff_mask, out, size, pov, center, curves_out, erode;
   std::vector<double> curves;
   bool stats = false, curves_world = false;
 };
@@ -81,6 +81,18 @@ int run(const TerrainOptions& o) {
               std::to_string(reference.height()) + "; it must be square, 2^m + 1 per side");
     p.reference = reference.data();
     p.reference_size = reference.width();
+  }
+  Heightfield mask;
+  if (!o.falloff_mask.empty()) {
+    // Any raster the project reads; 8- and 16-bit images read as 0..1 (white 1).
+    mask = read_heightfield(o.falloff_mask);
+    if (p.falloff != FT_FALLOFF_NONE && p.falloff != FT_FALLOFF_CUSTOM)
+      invalid("--falloff-mask is the custom falloff's mask; it cannot go with --falloff " +
+              std::string(p.falloff == FT_FALLOFF_SQUARE ? "square" : "radial"));
+    p.falloff = FT_FALLOFF_CUSTOM;
+    p.falloff_mask = mask.data();
+    p.falloff_mask_width = mask.width();
+    p.falloff_mask_height = mask.height();
   }
   Stopwatch clock;
   Heightfield hf = generate_terrain(p);
@@ -135,6 +147,13 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_option("--reference", o->reference,
                                    "reference grid (2^m + 1)^2: " + std::string(kHeightfieldReadHelp) +
                                        "; its values survive exactly (a DEM: see fracterra refine)")
+                        ->check(CLI::ExistingFile);
+                    app.add_option("--falloff-mask", o->falloff_mask,
+                                   "custom edge falloff (sets --falloff custom): a mask spanning the terrain, " +
+                                       std::string(kHeightfieldReadHelp) +
+                                       "; white (1) keeps the height, black (0) gives --edge-level; 8/16-bit "
+                                       "images read as 0..1, other rasters must hold 0..1; resampled bilinearly, "
+                                       "image row 0 (the top) at terrain row 0")
                         ->check(CLI::ExistingFile);
                     app.add_option("--erode", o->erode,
                                    "then erode it with a preset: valleys (fluvial), rain (hydraulic), scree "

@@ -13,6 +13,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import addon_harness  # noqa: E402
 
 import bpy  # noqa: E402
+import numpy as np  # noqa: E402
 
 
 def core():
@@ -192,6 +193,30 @@ class TerrainAddTest(unittest.TestCase):
                 else:
                     self.assertEqual(got, value, f"{preset.name}: {name}")
 
+    def test_retired_lowercase_presets_are_removed_on_register_and_user_presets_kept(self):
+        import addon_utils
+        import shutil
+        folder = Path(bpy.utils.user_resource("SCRIPTS", path="presets/operator/mesh.fracterra_terrain_add"))
+        old = sorted((Path(__file__).resolve().parent / "data" / "old_presets").glob("*.py"))
+        self.assertEqual(len(old), 6)
+        for src in old:  # as an earlier version of the add-on left them
+            shutil.copyfile(src, folder / src.name)
+        edited = folder / "archipelago.py"
+        edited.write_text(edited.read_text() + "op.seed = 99\n")  # the user changed it: theirs now
+        mine = folder / "my_mountains.py"
+        mine.write_text("import bpy\nop = bpy.context.active_operator\nop.seed = 5\n")
+        for path in (edited, mine):
+            self.addCleanup(path.unlink)
+        addon_utils.disable(addon_harness.PACKAGE, default_set=True)
+        self.assertIsNotNone(addon_utils.enable(addon_harness.PACKAGE, default_set=True, handle_error=None))
+        left = {p.name for p in folder.glob("*.py")}
+        self.assertFalse({"alpine_ridges.py", "feder_landscape.py", "ridged_mountains.py", "rough_badlands.py",
+                          "tileable_ground.py"} & left, left)
+        self.assertIn("archipelago.py", left)
+        self.assertIn("my_mountains.py", left)
+        self.assertIn("Archipelago.py", left)  # the capitalised ones are there (installed again if missing)
+        self.assertEqual(len([n for n in left if n[0].isupper()]), 7, left)
+
     def test_reference_grid_object_heights_survive_at_the_nodes(self):
         # A 9 x 9 grid (m = 3) in shuffled vertex order: the add-on sorts by y, then x.
         rng = random.Random(4)
@@ -332,6 +357,15 @@ class DrawTest(unittest.TestCase):
                 self.assertTrue(log)
                 for data, name in log:
                     self.assertIn(name, data.bl_rna.properties.keys(), f"{method}/{source}: {name}")
+        settings.falloff = "CUSTOM"
+        for source in ("OBJECT", "IMAGE"):
+            settings.falloff_mask_source = source
+            log = []
+            settings_ui.draw_settings(RecordingLayout(log), settings)
+            drawn = {name for _data, name in log}
+            self.assertIn("falloff_mask_object" if source == "OBJECT" else "falloff_mask_image_pick", drawn)
+            for data, name in log:
+                self.assertIn(name, data.bl_rna.properties.keys(), f"CUSTOM/{source}: {name}")
 
     def test_panels_and_menus_name_registered_operators(self):
         # Panels and menus refer to operators by id string: a typo would only show as a
@@ -351,6 +385,96 @@ class DrawTest(unittest.TestCase):
         for idname in operators:
             self.assertTrue(operator_exists(idname), idname)
         self.assertFalse(operator_exists("mesh.fracterra_no_such_operator"))
+
+
+class FalloffMaskTest(unittest.TestCase):
+    """Falloff 'Custom': the mask from an image or an object's silhouette, stored and regenerated."""
+    N = 33  # levels 5
+    BASE = dict(RAW, levels=5, seed=4, sigma=1.0, world_size=10.0)
+
+    def setUp(self):
+        clear_scene()
+        self.raw = np.array(library_heights(**self.BASE)).reshape(self.N, self.N)
+
+    def heights(self, obj):
+        return np.array(coords(obj.data)[2::3]).reshape(self.N, self.N)  # [row j (y), column i (x)]
+
+    def weight(self, obj):
+        """(z - edge) / (raw - edge): the mask's weight the library applied at each vertex."""
+        return (self.heights(obj) - -2.0) / (self.raw - -2.0)
+
+    def add(self, **kw):
+        return add_terrain(**{**self.BASE, "falloff": "CUSTOM", "edge_level": -2.0, **kw})
+
+    def test_image_mask_bottom_row_is_the_terrains_minus_y_edge(self):
+        img = bpy.data.images.new("mask", 2, 2)
+        img.pixels.foreach_set([0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1])  # bottom left black
+        obj = self.add(falloff_mask_source="IMAGE", falloff_mask_image="mask")
+        u = np.arange(self.N) / (self.N - 1)
+        expected = 1 - (1 - u[None, :]) * (1 - u[:, None])  # bilinear: 0 at (-x, -y), 1 at the other corners
+        np.testing.assert_allclose(self.weight(obj), expected, atol=1e-5)
+        self.assertEqual(tuple(obj.data.vertices[0].co), (-5.0, -5.0, -2.0))  # the black corner: the edge level
+        self.assertEqual(obj.fracterra_terrain.falloff_mask_image_pick, "mask")
+        # Stored on the object: a new image regenerates in place.
+        img.pixels.foreach_set([1] * 16)
+        bpy.context.view_layer.objects.active = obj
+        self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
+        np.testing.assert_array_equal(self.heights(obj), self.raw.astype(np.float32))
+        bpy.data.images.remove(img)
+
+    def half_plane(self):
+        """A quad over x in [0, 20], y in [-20, 20], 3 above the ground: the terrain's +x half and beyond."""
+        mesh = bpy.data.meshes.new("half")
+        mesh.from_pydata([(0, -20, 3), (20, -20, 3), (20, 20, 3), (0, 20, 3)], [], [(0, 1, 2, 3)])
+        obj = bpy.data.objects.new("Half", mesh)
+        bpy.context.scene.collection.objects.link(obj)
+        return obj
+
+    def test_object_silhouette_keeps_the_heights_inside_it_in_the_terrains_frame(self):
+        plane = self.half_plane()
+        obj = self.add(falloff_mask_object=plane.name, falloff_mask_soft=False)
+        z = self.heights(obj)
+        np.testing.assert_array_equal(z[:, 16:], self.raw[:, 16:].astype(np.float32))  # x >= 0: inside
+        self.assertTrue(np.all(z[:, :16] == -2.0))  # outside: the edge level
+        # The terrain moved 2 along x: the same plane now covers its local x >= -2 (column 9.6 on).
+        obj.location.x = 2.0
+        bpy.context.view_layer.update()
+        self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
+        z = self.heights(obj)
+        self.assertTrue(np.all(z[:, :10] == -2.0))
+        np.testing.assert_array_equal(z[:, 10:], self.raw[:, 10:].astype(np.float32))
+
+    def test_soft_edge_fades_inward_over_the_falloff_width(self):
+        plane = self.half_plane()
+        obj = self.add(falloff_mask_object=plane.name, falloff_mask_soft=True, falloff_width=0.5)
+        # Width 0.5 of the half width: 8 columns, from the outline (column 16) to column 24.
+        m = self.weight(obj)[16]
+        self.assertTrue(np.all(m[:16] <= 1e-6), m[:16])  # outside
+        self.assertLess(m[16], 0.05)  # on the outline: 9 of the blur's 17 columns inside
+        self.assertTrue(np.all(np.diff(m[16:25]) > 0), m[16:25])
+        np.testing.assert_allclose(m[24:], 1.0, atol=1e-6)
+
+    def test_closed_curve_outline_is_filled(self):
+        bpy.ops.curve.primitive_bezier_circle_add(radius=3.0, location=(0, 0, 0))
+        circle = bpy.context.active_object
+        obj = self.add(falloff_mask_object=circle.name, falloff_mask_soft=False)
+        m = self.weight(obj)
+        self.assertAlmostEqual(m[16, 16], 1.0, places=5)  # the centre
+        self.assertAlmostEqual(m[16, 24], 1.0, places=5)  # x = 2.5: inside
+        self.assertAlmostEqual(m[16, 27], 0.0, places=5)  # x = 3.44: outside
+        self.assertAlmostEqual(m[0, 0], 0.0, places=5)
+
+    def test_bad_masks_are_reports(self):
+        expect_report(self, lambda: self.add(falloff_mask_object=""), "choose a mesh or curve object")
+        expect_report(self, lambda: self.add(falloff_mask_source="IMAGE", falloff_mask_image=""),
+                      "Falloff mask", "choose an image")
+        bpy.ops.curve.primitive_bezier_curve_add()
+        line = bpy.context.active_object.name
+        expect_report(self, lambda: self.add(falloff_mask_object=line), "not closed", line)
+        self.assertEqual(len([m for m in bpy.data.meshes if m.users == 0]), 0, "a failed add left a mesh")
+        obj = self.add(falloff="NONE")
+        obj.fracterra_terrain.falloff, obj.fracterra_terrain.falloff_mask_object = "CUSTOM", obj.name
+        expect_report(self, lambda: bpy.ops.object.fracterra_terrain_regenerate(), "the terrain itself")
 
 
 class RegenerateTest(unittest.TestCase):
@@ -660,6 +784,23 @@ class TerrainToolsTest(unittest.TestCase):
         self.assertEqual(bpy.context.active_object.parent, terrain)
         bpy.ops.mesh.primitive_cube_add()
         self.assertFalse(bpy.ops.curve.fracterra_coastline_add.poll())
+
+    def test_coastline_quantile_is_taken_over_the_land_above_the_sea(self):
+        # 70% of the map is flat sea: a quantile of all heights (0.5) would fall on it and find nothing.
+        terrain = add_terrain(levels=5, seed=2, sea="FRACTION", sea_fraction=0.7, **RAW)
+        z = np.array(coords(terrain.data)[2::3])
+        sea = z.min()
+        self.assertGreater(np.mean(z == sea), 0.5)
+        self.assertEqual(bpy.ops.curve.fracterra_coastline_add(use_quantile=True, quantile=0.5), {"FINISHED"})
+        heights = {round(p[2], 5) for line in spline_points(bpy.context.active_object) for p in line}
+        self.assertEqual(len(heights), 1)  # one level: the median of the land, well above the sea
+        land = np.sort(z[z > sea])
+        self.assertAlmostEqual(heights.pop(), land[len(land) // 2], places=4)
+        # Quantile 0: the lowest land, the shore itself.
+        bpy.context.view_layer.objects.active = terrain
+        self.assertEqual(bpy.ops.curve.fracterra_coastline_add(use_quantile=True, quantile=0.0), {"FINISHED"})
+        shore = [p[2] for line in spline_points(bpy.context.active_object) for p in line]
+        self.assertTrue(all(sea < h <= land[0] + 1e-5 for h in shore), (sea, land[0], min(shore), max(shore)))
 
     def test_measures_of_a_terrain_and_a_curve(self):
         add_terrain(levels=7, seed=1, hurst=0.7)

@@ -3,7 +3,7 @@
 // ft_fractalize_params / ft_hurst_params / ft_clouds_params (struct_size
 // included; the last two over a small heightfield of input floats, NaN and
 // infinities included), with pointer fields (reference
-// grid, base polyline, IFS table, weights) holding what their counts claim,
+// grid, falloff mask, base polyline, IFS table, weights) holding what their counts claim,
 // and a progress callback that cancels after a few reports. Every call must return a known status
 // with a message, hand back either a complete result or NULL, and never
 // crash, leak or hang (the memory cap keeps accepted sizes small).
@@ -73,6 +73,17 @@ void fuzz_terrain(Bytes& in) {
   p.reference = ptr.use_reference ? ptr.reference.data() : nullptr;
   p.progress = ptr.use_progress ? cancel_after : nullptr;
   p.progress_user = &ptr.cancel;
+  // The custom falloff's mask holds what its sides claim (small ones only),
+  // values from the input: in and out of [0, 1], NaN included.
+  std::vector<float> mask;
+  const int64_t mw = p.falloff_mask_width, mh = p.falloff_mask_height;
+  if ((fixups & 2) && mw >= 0 && mh >= 0 && mw <= 65 && mh <= 65) {
+    mask.resize(size_t(mw * mh));
+    for (float& v : mask) v = in.left() >= 4 ? in.take<float>() : float(in.take<uint8_t>()) / 255.0f;
+    p.falloff_mask = mask.data();
+  } else {
+    p.falloff_mask = nullptr;
+  }
 
   ft_heightfield* hf = reinterpret_cast<ft_heightfield*>(&p);  // must be overwritten
   const ft_status s = ft_terrain_generate(&p, &hf);

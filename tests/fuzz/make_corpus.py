@@ -195,11 +195,11 @@ def profile(**kw):
 
 
 # Layout of an input: [which: even = terrain, odd = profile] [struct bytes]
-# [fixups: 1 = set struct_size, 2 = buffer one short, 4 = NULL dst]
-# [flags: 1 = reference, 2 = progress] [cancel after N reports] [reference floats...]
-def capi(name, which, params, fixups=1, flags=0, cancel=0, ref=()):
+# [fixups: 1 = set struct_size, 2 = buffer one short (profile) or a falloff mask (terrain), 4 = NULL dst]
+# [flags: 1 = reference, 2 = progress] [cancel after N reports] [reference floats...] [mask floats...]
+def capi(name, which, params, fixups=1, flags=0, cancel=0, ref=(), mask=()):
     put("capi_params", name, bytes([which]) + bytes(params) + bytes([fixups, flags, cancel]) +
-        b"".join(struct.pack("<f", v) for v in ref))
+        b"".join(struct.pack("<f", v) for v in ref) + b"".join(struct.pack("<f", v) for v in mask))
 
 
 capi("terrain_default", 0, terrain())
@@ -215,6 +215,10 @@ capi("terrain_struct_size_0", 0, terrain(struct_size=0), fixups=0)
 capi("terrain_cancel_at_2", 0, terrain(levels=6), flags=2, cancel=2)
 capi("terrain_reference_3", 0, terrain(reference_size=3, reference_scale=1), flags=1, ref=[1, 2, 3, 4, 5, 6, 7, 8, 9])
 capi("terrain_reference_bad_size", 0, terrain(reference_size=4), flags=1, ref=[0] * 16)
+capi("terrain_falloff_mask", 0, terrain(falloff=3, falloff_mask_width=3, falloff_mask_height=2), fixups=3,
+     mask=[0, 0.5, 1, 1, 0.25, 0])
+capi("terrain_falloff_mask_nan", 0, terrain(falloff=3, falloff_mask_width=2, falloff_mask_height=2), fixups=3,
+     mask=[0, float("nan"), 1, 1])
 capi("profile_default", 1, profile())
 capi("profile_reference", 1, profile(reference_size=5, reference_scale=2), flags=3, cancel=9, ref=[0, 1, 0, -1, 0])
 capi("profile_short_buffer", 1, profile(), fixups=3)

@@ -281,5 +281,36 @@ TEST_F(Cli, TerrainLandformFlagsComeFromTheTable) {
   EXPECT_NE(bad.err.find("falloff"), std::string::npos) << bad.err;
 }
 
+TEST_F(Cli, TerrainFalloffMaskFromAnImage) {
+  // A 2 x 2 mask as a 16-bit PNG: black at row 0, column 0, white elsewhere.
+  Heightfield mask(2, 2);
+  mask.data()[0] = 0, mask.data()[1] = 1, mask.data()[2] = 1, mask.data()[3] = 1;
+  write_heightfield(mask, path("mask.png"));
+  const std::string common = "terrain --levels 5 --seed 3 --edge-level -1 --out ";
+  ASSERT_EQ(run(common + path("raw.npy")).code, 0);
+  const CliRun r = run(common + path("masked.npy") + " --falloff-mask " + path("mask.png"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Heightfield raw = read_heightfield(path("raw.npy")), got = read_heightfield(path("masked.npy"));
+  EXPECT_EQ(got.at(0, 0), -1.0f);            // weight 0: the edge level
+  EXPECT_EQ(got.at(32, 32), raw.at(32, 32));  // weight 1: the height
+  EXPECT_EQ(got.at(32, 0), raw.at(32, 0));
+  EXPECT_NEAR(got.at(16, 16), -1 + 0.75 * (raw.at(16, 16) + 1), 1e-5);  // bilinear: 1 - 0.5 * 0.5
+  // Values outside 0..1, another falloff, a missing file: one clear line each, no file.
+  Heightfield two(2, 2);
+  std::fill(two.data(), two.data() + 4, 2.0f);
+  write_heightfield(two, path("two.npy"));
+  const CliRun bad = run(common + path("bad.npy") + " --falloff-mask " + path("two.npy"));
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("must be in [0, 1]"), std::string::npos) << bad.err;
+  const CliRun both = run(common + path("bad.npy") + " --falloff radial --falloff-mask " + path("mask.png"));
+  EXPECT_NE(both.code, 0);
+  EXPECT_NE(both.err.find("cannot go with --falloff radial"), std::string::npos) << both.err;
+  EXPECT_NE(run(common + path("bad.npy") + " --falloff-mask " + path("none.png")).code, 0);
+  const CliRun none = run(common + path("bad.npy") + " --falloff custom");
+  EXPECT_NE(none.code, 0);
+  EXPECT_NE(none.err.find("needs a mask"), std::string::npos) << none.err;
+  EXPECT_FALSE(fs::exists(path("bad.npy")));
+}
+
 }  // namespace
 }  // namespace ft

@@ -141,11 +141,67 @@ TEST(Landform, SeaAsAFractionCoversThatShareForEverySeed) {
   }
 }
 
+TEST(Landform, CustomMaskIsResampledBilinearlyOverTheWholeTerrain) {
+  ft_terrain_params p = params(FT_TERRAIN_MIDPOINT);  // 129 x 129
+  const Heightfield raw = generate_terrain(p);
+  // 3 x 2: columns at u = 0, 0.5, 1; rows at v = 0, 1.
+  const std::vector<float> mask = {0.0f, 0.5f, 1.0f,  //
+                                   1.0f, 0.25f, 0.0f};
+  p.falloff = FT_FALLOFF_CUSTOM, p.edge_level = -1.5;
+  p.falloff_mask = mask.data(), p.falloff_mask_width = 3, p.falloff_mask_height = 2;
+  const Heightfield masked = generate_terrain(p);
+  auto expect = [&](int i, int j, double m) {
+    EXPECT_NEAR(at(masked, i, j), -1.5 + m * (at(raw, i, j) + 1.5), 1e-5) << i << ", " << j << " mask " << m;
+  };
+  expect(0, 0, 0.0), expect(64, 0, 0.5), expect(128, 0, 1.0), expect(0, 128, 1.0), expect(128, 128, 0.0);
+  EXPECT_EQ(at(masked, 128, 0), at(raw, 128, 0));  // weight 1: exactly the height
+  EXPECT_EQ(at(masked, 0, 0), -1.5f);              // weight 0: exactly the edge level
+  // Inside: u = 32/128 (between columns 0 and 1 at 0.5), v = 96/128.
+  const double top = 0.5 * 0.0 + 0.5 * 0.5, bottom = 0.5 * 1.0 + 0.5 * 0.25;
+  expect(32, 96, 0.25 * top + 0.75 * bottom);
+  // A mask of ones changes nothing.
+  const std::vector<float> ones(16, 1.0f);
+  p.falloff_mask = ones.data(), p.falloff_mask_width = 4, p.falloff_mask_height = 4;
+  const Heightfield same = generate_terrain(p);
+  ASSERT_EQ(std::memcmp(same.data(), raw.data(), raw.size() * sizeof(float)), 0);
+}
+
+TEST(Landform, BadFalloffMasksAreRefused) {
+  std::vector<float> mask(4 * 3, 0.5f);
+  auto with = [&](auto change) {
+    ft_terrain_params p = params(FT_TERRAIN_FBM, 5);
+    p.falloff = FT_FALLOFF_CUSTOM;
+    p.falloff_mask = mask.data(), p.falloff_mask_width = 4, p.falloff_mask_height = 3;
+    change(p);
+    return refusal(p);
+  };
+  EXPECT_EQ(with([](auto&) {}), "no error");
+  EXPECT_NE(with([](auto& p) { p.falloff_mask = nullptr; }).find("needs a mask"), std::string::npos);
+  EXPECT_NE(with([](auto& p) { p.falloff_mask_width = 1; }).find("falloff_mask_width must be in 2..65536"),
+            std::string::npos);
+  EXPECT_NE(with([](auto& p) { p.falloff_mask_height = 0; }).find("falloff_mask_height"), std::string::npos);
+  EXPECT_NE(with([](auto& p) { p.falloff_mask_height = 70000; }).find("falloff_mask_height"), std::string::npos);
+  EXPECT_NE(with([](auto& p) { p.falloff_mask_width = -3; }).find("falloff_mask_width"), std::string::npos);
+  for (float bad : {NAN, -0.01f, 1.01f, INFINITY}) {
+    mask[6] = bad;
+    const std::string why = with([](auto&) {});
+    EXPECT_NE(why.find("must be in [0, 1]"), std::string::npos) << bad << ": " << why;
+    EXPECT_NE(why.find("sample 2, 1"), std::string::npos) << why;
+  }
+  mask[6] = 0.5f;
+  // Without the custom falloff the mask is not read at all (another falloff, or none).
+  EXPECT_EQ(with([](auto& p) { p.falloff = FT_FALLOFF_RADIAL, p.falloff_mask = nullptr; }), "no error");
+}
+
 TEST(Landform, WindowsWithLandformsEqualTheWholeBitForBit) {
+  // A 7 x 5 mask with a value per node, not a multiple of the terrain's grid.
+  std::vector<float> mask(7 * 5);
+  for (size_t k = 0; k < mask.size(); ++k) mask[k] = float((k * 37) % 11) / 10.0f;
   for (int method : {FT_TERRAIN_MIDPOINT, FT_TERRAIN_FBM, FT_TERRAIN_INTERPOLATED}) {
-    for (int falloff : {FT_FALLOFF_SQUARE, FT_FALLOFF_RADIAL}) {
+    for (int falloff : {FT_FALLOFF_SQUARE, FT_FALLOFF_RADIAL, FT_FALLOFF_CUSTOM}) {
       ft_terrain_params p = params(method, 9);
       p.levelling = 0.75, p.height_offset = 0.3, p.falloff = falloff, p.falloff_width = 0.4;
+      p.falloff_mask = mask.data(), p.falloff_mask_width = 7, p.falloff_mask_height = 5;
       p.edge_level = -0.7, p.sea = FT_SEA_HEIGHT, p.sea_level = -0.2;
       const Heightfield whole = generate_terrain(p);
       const int w = whole.width();
@@ -181,7 +237,7 @@ TEST(Landform, BadValuesAreRefusedByTheTable) {
     return refusal(p);
   };
   EXPECT_NE(with([](auto& p) { p.levelling = 1.5; }).find("levelling"), std::string::npos);
-  EXPECT_NE(with([](auto& p) { p.falloff = 3; }).find("falloff"), std::string::npos);
+  EXPECT_NE(with([](auto& p) { p.falloff = 4; }).find("falloff"), std::string::npos);
   EXPECT_NE(with([](auto& p) { p.falloff_width = 0; }).find("falloff_width"), std::string::npos);
   EXPECT_NE(with([](auto& p) { p.edge_level = NAN; }).find("edge_level"), std::string::npos);
   EXPECT_NE(with([](auto& p) { p.height_offset = 1e31; }).find("height_offset"), std::string::npos);

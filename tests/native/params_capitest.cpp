@@ -39,6 +39,8 @@ const std::vector<Field> kTerrainFields = {
     FT_FIELD(ft_terrain_params, falloff), FT_FIELD(ft_terrain_params, falloff_width),
     FT_FIELD(ft_terrain_params, edge_level), FT_FIELD(ft_terrain_params, sea),
     FT_FIELD(ft_terrain_params, sea_level), FT_FIELD(ft_terrain_params, sea_fraction),
+    FT_FIELD(ft_terrain_params, falloff_mask), FT_FIELD(ft_terrain_params, falloff_mask_width),
+    FT_FIELD(ft_terrain_params, falloff_mask_height),
 };
 
 const std::vector<Field> kProfileFields = {
@@ -378,6 +380,7 @@ TEST(Params, ASizeBetweenTwoVersionsIsRefusedNamingTheSizesAllowed) {
   const std::string sizes = std::to_string(offsetof(ft_terrain_params, world_size)) + ", " +
                             std::to_string(offsetof(ft_terrain_params, center_x)) + ", " +
                             std::to_string(offsetof(ft_terrain_params, levelling)) + ", " +
+                            std::to_string(offsetof(ft_terrain_params, falloff_mask)) + ", " +
                             std::to_string(sizeof(ft_terrain_params));
   EXPECT_NE(std::string(ft_last_error()).find(sizes), std::string::npos) << ft_last_error();
 }

@@ -82,7 +82,10 @@ def draw_erosion(layout, data):
     """The Erode box of the settings: the preset, then each process's passes
     (editable with Custom; a preset shows its own) and rates."""
     box = layout.box().column(align=True)
-    box.prop(data, "erode_preset")
+    # A heading, then the menu across the box: as one split row the narrow
+    # sidebar cut its label to "Erosi..." (issue 17).
+    box.label(text=params.PARAMS_BY_NAME["erode_preset"].label)
+    box.prop(data, "erode_preset", text="")
     if data.erode_preset == "NONE":
         return
     for title, count, rates in _GROUPS:
@@ -107,18 +110,20 @@ def periodic_of(values):
     return bool(values.get("periodic")) and params.is_used(params.PARAMS_BY_NAME["periodic"], values["method"])
 
 
-def generate_and_erode(values, reference, progress, threads, grid_of):
-    """Generates the terrain of `values` and, when its settings ask for it, erodes
+def generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=None):
+    """Generates the terrain of `values` (with its reference and falloff mask, as
+    core.generate_terrain takes them) and, when its settings ask for it, erodes
     it; returns grid_of(heightfield) with `.erosion_maps` ({attribute: float32
     array} or None). Runs in the worker thread."""
     values = effective(values)
     if not erosion.requested(values):
-        with core.generate_terrain(values, reference=reference, progress=progress, threads=threads) as hf:
+        with core.generate_terrain(values, reference=reference, progress=progress, threads=threads,
+                                   falloff_mask=falloff_mask) as hf:
             g = grid_of(hf)
         g.erosion_maps = None
         return g
     with core.generate_terrain(values, reference=reference, progress=_span(progress, 0.0, GENERATION_SHARE),
-                               threads=threads) as hf:
+                               threads=threads, falloff_mask=falloff_mask) as hf:
         eroded, maps = erosion.erode_arrays(hf, values=values, periodic=periodic_of(values), threads=threads,
                                             progress=_span(progress, GENERATION_SHARE, 1.0))
     with eroded:

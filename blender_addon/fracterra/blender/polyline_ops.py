@@ -3,6 +3,7 @@
 import json
 
 import bpy
+import numpy as np
 from bpy_extras import object_utils
 from mathutils import Matrix
 
@@ -135,6 +136,17 @@ class FRACTERRA_OT_polyline_regenerate(bpy.types.Operator):
         return {"FINISHED"}
 
 
+def land_quantile(hf, sea, q):
+    """The height with the fraction `q` of the land (heights above the flat sea
+    at `sea`) below it. The flat sea is left out: when it covers more than half
+    the map, a quantile of all heights would fall on it and find no coast."""
+    z = np.frombuffer(hf.to_array(), dtype=np.float32)
+    land = np.sort(z[z > sea])
+    if land.size == 0:
+        raise SettingsError(f"no land above the sea at {sea:g}: the whole terrain is sea; lower its Sea Level")
+    return float(land[min(land.size - 1, int(q * land.size))])
+
+
 # Why Terrain Coastline is greyed out, shown in its tooltip.
 COASTLINE_NEEDS = "Select a fractal terrain (Add > Mesh > Fractal Terrain) in Object Mode to draw its coastline"
 
@@ -158,9 +170,11 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
 
     use_quantile: bpy.props.BoolProperty(
         name="By Quantile", default=True,
-        description="Level as the fraction of the terrain below it (0.5: half is sea); off: a height")
+        description="Level as the fraction of the ground below it (0.5: half is sea); on a terrain with a "
+                    "flat sea, the fraction of the land above that sea; off: a height")
     quantile: bpy.props.FloatProperty(name="Quantile", default=0.5, min=0.0, max=1.0, subtype="FACTOR",
-                                      description="Fraction of the terrain below the coastline")
+                                      description="Fraction of the ground below the coastline; with a flat sea, "
+                                                  "of the land above it (0: the shore)")
     level: bpy.props.FloatProperty(name="Level", default=0.0, subtype="DISTANCE", unit="LENGTH",
                                    description="Height of the coastline (local z); at a terrain's flat sea it "
                                                "is taken just above it")
@@ -195,14 +209,18 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
                 sea = sea_height(settings, s["min"])
                 self.defaults_from(settings, sea)
                 level = self.quantile if self.use_quantile else self.level
-                if not self.use_quantile and sea is not None and level <= sea:
+                by_quantile = self.use_quantile
+                if by_quantile and sea is not None:
+                    level = land_quantile(hf, sea, self.quantile)
+                    by_quantile = False
+                if not by_quantile and sea is not None and level <= sea:
                     # The flattened sea lies exactly at the sea level and counts as land
                     # there (land: height >= level): take the level just above it.
                     level = sea + 1e-5 * max(s["max"] - s["min"], 1e-6)
-                with core.coastline(hf, level, quantile=self.use_quantile) as pl:
+                with core.coastline(hf, level, quantile=by_quantile) as pl:
                     if pl.line_count == 0:
                         # Not an empty curve without a word: say why.
-                        what = f"quantile {level:g}" if self.use_quantile else f"level {level:g}"
+                        what = f"quantile {level:g}" if by_quantile else f"level {level:g}"
                         self.report({"ERROR"}, f"no coastline at {what}: the terrain's heights are "
                                                f"[{s['min']:g}, {s['max']:g}] and no cell crosses it")
                         return {"CANCELLED"}

@@ -48,34 +48,45 @@ def reference_image_choices(images):
 
 
 # Blender keeps only pointers to the strings of a dynamic enum's items: the
-# list must outlive the callback (a known crash otherwise).
-_IMAGE_ITEMS = []
+# list must outlive the callback (a known crash otherwise); one per picker.
+_IMAGE_ITEMS = {}
 
 
-def _image_items(self, context):
-    _IMAGE_ITEMS[:] = [("NONE", "None", "No image", "BLANK1", 0)] + [
-        (name, name, "Use this image's brightness as the reference heights", "IMAGE_DATA", k + 1)
-        for k, name in enumerate(reference_image_choices(bpy.data.images))]
-    return _IMAGE_ITEMS
+def image_picker(store, description, item_tip, update=None):
+    """The picker drawn for the image-name setting `store`: an enum over the
+    readable images that reads and writes the stored name (prop_search would
+    list every image, Render Result and Viewer Node included)."""
+    items = _IMAGE_ITEMS.setdefault(store, [])
 
+    def get_items(self, context):
+        items[:] = [("NONE", "None", "No image", "BLANK1", 0)] + [
+            (name, name, item_tip, "IMAGE_DATA", k + 1) for k, name in enumerate(reference_image_choices(bpy.data.images))]
+        return items
 
-def _get_image_pick(self):
-    names = reference_image_choices(bpy.data.images)
-    return names.index(self.reference_image) + 1 if self.reference_image in names else 0
+    def get(self):
+        names = reference_image_choices(bpy.data.images)
+        name = getattr(self, store)
+        return names.index(name) + 1 if name in names else 0
 
+    def set(self, value):
+        names = reference_image_choices(bpy.data.images)
+        setattr(self, store, names[value - 1] if 0 < value <= len(names) else "")
 
-def _set_image_pick(self, value):
-    names = reference_image_choices(bpy.data.images)
-    self.reference_image = names[value - 1] if 0 < value <= len(names) else ""
+    kw = {"update": update} if update is not None else {}
+    return EnumProperty(name="Image", description=description, items=get_items, get=get, set=set,
+                        options={"SKIP_SAVE"}, **kw)
 
 
 def reference_image_picker(update=None):
-    """The picker drawn for reference_image: an enum over the readable images
-    that reads and writes the stored name (prop_search would list every image)."""
-    kw = {"update": update} if update is not None else {}
-    return EnumProperty(name="Image", description="Image whose brightness gives the reference heights (files "
-                                                  "and generated images; Open loads a file)",
-                        items=_image_items, get=_get_image_pick, set=_set_image_pick, options={"SKIP_SAVE"}, **kw)
+    return image_picker("reference_image", "Image whose brightness gives the reference heights (files and "
+                                           "generated images; Open loads a file)",
+                        "Use this image's brightness as the reference heights", update)
+
+
+def falloff_mask_image_picker(update=None):
+    return image_picker("falloff_mask_image", "Image whose brightness is the falloff mask: white keeps the height, "
+                                              "black gives the Edge Level (Open loads a file)",
+                        "Use this image as the falloff mask", update)
 
 
 def terrain_annotations(update=None, param_list=None):
@@ -83,6 +94,8 @@ def terrain_annotations(update=None, param_list=None):
     out = {p.name: bpy_property(p, update) for p in param_list or params.TERRAIN_PARAMS}
     if "reference_image" in out:
         out["reference_image_pick"] = reference_image_picker(update)
+    if "falloff_mask_image" in out:
+        out["falloff_mask_image_pick"] = falloff_mask_image_picker(update)
     return out
 
 

@@ -42,7 +42,7 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
             _prop(sub, data, name)
     sub = col.column(align=True)
     _prop(sub, data, "world_size")
-    draw_landform(col, data)
+    draw_landform(col, data, show_reference_pickers)
     if method == "FBM":
         box = col.box().column(align=True)
         box.label(text="Noise")
@@ -83,16 +83,33 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
     _prop(sub, data, "smooth")
 
 
-def draw_landform(col, data):
+def draw_landform(col, data, show_pickers=True):
     """Levelling, offset, edge falloff and sea (the library's landform fields):
-    the falloff's and the sea's own fields only when they are on."""
+    the falloff's and the sea's own fields only when they are on; a custom
+    falloff's mask source (an object, or an image with Open in the sidebar)."""
     box = col.box().column(align=True)
     box.label(text="Landform")
     _prop(box, data, "levelling")
     _prop(box, data, "height_offset")
     _prop(box, data, "falloff")
-    if data.falloff != "NONE":
+    falloff = data.falloff
+    if falloff == "CUSTOM":
+        _prop(box, data, "falloff_mask_source")
+        if data.falloff_mask_source == "OBJECT":
+            if show_pickers:
+                box.prop_search(data, "falloff_mask_object", bpy.data, "objects", text="Object")
+            _prop(box, data, "falloff_mask_soft")
+        elif show_pickers:
+            row = box.row(align=True)
+            _prop(row, data, "falloff_mask_image_pick")  # readable images only (props.image_picker)
+            if isinstance(data, bpy.types.PropertyGroup):  # the sidebar: open a file for this terrain
+                op = row.operator("object.fracterra_reference_image_open", text="", icon="FILEBROWSER")
+                op.target = "FALLOFF_MASK"
+    # The width shapes the square and radial falloffs, and a custom one's soft outline.
+    if falloff in ("SQUARE", "RADIAL") or (falloff == "CUSTOM" and data.falloff_mask_source == "OBJECT"
+                                           and data.falloff_mask_soft):
         _prop(box, data, "falloff_width")
+    if falloff != "NONE":
         _prop(box, data, "edge_level")
     _prop(box, data, "sea")
     if data.sea == "HEIGHT":

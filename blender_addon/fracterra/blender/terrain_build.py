@@ -7,12 +7,14 @@ import time
 
 import bpy
 import numpy as np
+from mathutils import Matrix
 
 from .. import core
 from ..core import params, raster
 from ..core.grid import NO_FLOOR, GridArrays, grid_arrays, grid_size, vertices
 from ..core.mesh_limits import check_grid, grid_shape
-from . import erosion_ui, mesh_build
+from . import erosion_ui, falloff_mask, mesh_build
+from .images import image_luminance
 from .prefs import library_threads
 from .progress import Job, run_job
 from .reporting import SettingsError
@@ -53,14 +55,6 @@ def reference_from_object(name):
     return size, _float_array(co[order, 2])
 
 
-def luminance(pixels):
-    """Rec. 709 luminance of an (h, w, channels) float array (one channel: itself), in float64."""
-    px = pixels.astype(np.float64)
-    if px.shape[2] >= 3:
-        return 0.2126 * px[:, :, 0] + 0.7152 * px[:, :, 1] + 0.0722 * px[:, :, 2]
-    return px[:, :, 0]
-
-
 def resample_bilinear(image, size):
     """`image` (h, w) resampled bilinearly to size x size points spanning it corner to corner."""
     h, w = image.shape
@@ -77,17 +71,8 @@ def resample_bilinear(image, size):
 def reference_from_image(name, levels, height):
     """(size, heights): the image's luminance resampled bilinearly to (2^levels + 1)^2
     points; white is `height`. Image row 0 (the bottom) is y = 0, as in the terrain."""
-    image = bpy.data.images.get(name) if name else None
-    if image is None:
-        raise SettingsError(f"Reference: choose an image for 'Image' (got {name or 'nothing'!r})")
-    w, h = image.size
-    if w < 1 or h < 1:
-        raise SettingsError(f"Reference image '{image.name}' has no pixels (is the file missing?)")
-    channels = image.channels
-    px = np.empty(w * h * channels, dtype=np.float32)
-    image.pixels.foreach_get(px)
     size = 2 ** levels + 1
-    return size, _float_array(height * resample_bilinear(luminance(px.reshape(h, w, channels)), size))
+    return size, _float_array(height * resample_bilinear(image_luminance(name, "Reference"), size))
 
 
 def reference_from_dem(path, levels, world_size, relief):
@@ -123,16 +108,20 @@ def reference_for(values):
     return None
 
 
-def terrain_work(values, context, topology=True):
+def terrain_work(values, context, topology=True, frame=None, terrain_name=None):
     """The bpy-free half of a terrain job: work(progress) -> core.grid.GridArrays.
 
     What needs Blender happens here first, in the main thread: a grid that
     Blender cannot hold is refused before any memory is taken, and the
-    reference object or image is read. `topology`: False when only the
+    reference and the falloff mask are read (a mask object is projected on
+    the terrain's footprint at `frame`, its world matrix; `terrain_name`: the
+    terrain object, refused as its own mask). `topology`: False when only the
     vertex positions are needed (an in-place rewrite).
     """
     check_grid(*grid_shape(values))
     reference = reference_for(values)
+    mask = falloff_mask.mask_for(values, frame if frame is not None else Matrix.Identity(4),
+                                 context.evaluated_depsgraph_get(), terrain_name)
     threads = library_threads(context)
     # The library flattens the sea itself (ft_terrain_params.sea): no floor here.
     world_size, floor = values["world_size"], NO_FLOOR
@@ -146,7 +135,7 @@ def terrain_work(values, context, topology=True):
 
     def work(progress):
         # Generation, then the Erode step when the settings ask for it.
-        return erosion_ui.generate_and_erode(values, reference, progress, threads, grid_of)
+        return erosion_ui.generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=mask)
     return work
 
 
@@ -163,16 +152,17 @@ def _build_new_mesh(g, values, name):
     return mesh, f"{g.nx} x {g.ny} vertices"
 
 
-def new_terrain_job(values, context, name="Fractal Terrain"):
-    """A progress.Job whose value is (mesh, summary): a new mesh holding the terrain of `values`."""
-    work = terrain_work(values, context)
+def new_terrain_job(values, context, name="Fractal Terrain", frame=None):
+    """A progress.Job whose value is (mesh, summary): a new mesh holding the terrain of
+    `values`, for an object at `frame` (its world matrix: where a mask object is seen)."""
+    work = terrain_work(values, context, frame=frame)
     return Job("Generating terrain", work, lambda g: _build_new_mesh(g, values, name))
 
 
-def new_terrain_mesh(values, context, name="Fractal Terrain"):
+def new_terrain_mesh(values, context, name="Fractal Terrain", frame=None):
     """(mesh, summary), built here and now (scripts, benchmarks)."""
     t0 = time.perf_counter()
-    mesh, summary = run_job(new_terrain_job(values, context, name))
+    mesh, summary = run_job(new_terrain_job(values, context, name, frame))
     return mesh, f"{summary} in {time.perf_counter() - t0:.2f} s"
 
 
@@ -216,7 +206,8 @@ def regenerate_job(obj, context):
     mesh = obj.data
     same_grid = len(mesh.vertices) == nx * ny and len(mesh.polygons) == (nx - 1) * (ny - 1)
     adds_uvs = values["uvs"] and mesh.uv_layers.get(mesh_build.UV_NAME) is None
-    work = terrain_work(values, context, topology=not same_grid or adds_uvs)
+    work = terrain_work(values, context, topology=not same_grid or adds_uvs, frame=obj.matrix_world.copy(),
+                        terrain_name=obj.name)
     return Job("Regenerating terrain", work, lambda g: _build_in_place(obj, g, values))
 
 

@@ -30,7 +30,9 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
     # From the menu it runs in the background with a progress bar (Esc
     # cancels); the redo panel and scripts run execute() (progress.JobOperator).
     def make_job(self, context):
-        return new_terrain_job(params.values_of(self), context)
+        # Where the object will stand: a mask object is seen over that footprint.
+        return new_terrain_job(params.values_of(self), context,
+                               frame=object_utils.add_object_align_init(context, self))
 
     def job_done(self, context, value):
         mesh, summary = value
@@ -77,13 +79,17 @@ class FRACTERRA_OT_terrain_regenerate(JobOperator, bpy.types.Operator):
 
 
 class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
-    """Open an image file as the active terrain's reference (its brightness becomes the heights)"""
+    """Open an image file for the active terrain: its reference (brightness becomes the heights) or its falloff mask"""
     bl_idname = "object.fracterra_reference_image_open"
-    bl_label = "Open Reference Image"
+    bl_label = "Open Image"
     bl_options = {"REGISTER", "UNDO"}
 
     filter_glob: bpy.props.StringProperty(
         default="*.png;*.jpg;*.jpeg;*.tif;*.tiff;*.exr;*.hdr;*.bmp;*.tga;*.webp", options={"HIDDEN"})
+    target: bpy.props.EnumProperty(
+        name="For", items=(("REFERENCE", "Reference", "The reference heights (Reference: Image)"),
+                           ("FALLOFF_MASK", "Falloff Mask", "The custom falloff's mask (Mask From: Image)")),
+        default="REFERENCE", options={"HIDDEN", "SKIP_SAVE"})
 
     @classmethod
     def poll(cls, context):
@@ -97,7 +103,13 @@ class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
             self.report({"ERROR"}, f"cannot open '{self.filepath}' as an image: {e}")
             return {"CANCELLED"}
         settings = context.active_object.fracterra_terrain
-        settings.reference_image = image.name
-        settings.reference_source = "IMAGE"
-        self.report({"INFO"}, f"Reference image: {image.name} ({image.size[0]} x {image.size[1]})")
+        if self.target == "FALLOFF_MASK":
+            settings.falloff_mask_image = image.name
+            settings.falloff_mask_source = "IMAGE"
+            what = "Falloff mask"
+        else:
+            settings.reference_image = image.name
+            settings.reference_source = "IMAGE"
+            what = "Reference image"
+        self.report({"INFO"}, f"{what}: {image.name} ({image.size[0]} x {image.size[1]})")
         return {"FINISHED"}

@@ -108,6 +108,11 @@ REFERENCE_SOURCES = (
      "to (2^m + 1)^2 reference points, in its true proportions", 3),
 )
 
+FALLOFF_MASK_SOURCES = (
+    ("OBJECT", "Object", "The outline of a mesh or curve object seen from above", 0),
+    ("IMAGE", "Image", "The brightness of an image (white keeps the height)", 1),
+)
+
 
 @dataclass(frozen=True)
 class Param:
@@ -241,6 +246,16 @@ TERRAIN_PARAMS = _LIBRARY_TERRAIN + (
           "Height of white in the image; for a DEM without georeferencing, the height of its highest point "
           "above its lowest (scene units)",
           soft_min=-1000.0, soft_max=1000.0, subtype="DISTANCE", unit="LENGTH", methods=_DYADIC),
+    # Where the custom falloff's mask comes from (Falloff 'Custom'; blender/falloff_mask.py).
+    Param("falloff_mask_source", "enum", "OBJECT", "Mask From",
+          "What gives the custom falloff's mask, spanning the terrain", items=FALLOFF_MASK_SOURCES),
+    Param("falloff_mask_object", "string", "", "Mask Object",
+          "Mesh or curve whose outline seen from above (its faces, or a closed curve's inside, projected on the "
+          "terrain's footprint) keeps the heights; outside it they fall to the Edge Level"),
+    Param("falloff_mask_image", "string", "", "Mask Image",
+          "Image spanning the terrain: white keeps the height, black gives the Edge Level, grey between"),
+    Param("falloff_mask_soft", "bool", True, "Soft Edge",
+          "Fade the object's outline inward over the Falloff Width (a smoothstep); off: a step at the outline"),
     # Mesh options.
     Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
     Param("smooth", "bool", True, "Smooth Shading", "Shade faces smooth", geometry=True),

@@ -134,19 +134,45 @@ def attach_reference(p, reference):
     return buf
 
 
-def generate_terrain(values=None, reference=None, progress=None, threads=0, **overrides):
+def attach_falloff_mask(p, mask):
+    """Points ft_terrain_params `p` at the custom falloff's mask (width, height,
+    values): width x height floats in [0, 1], row-major, row 0 at the terrain's
+    row 0 (an array.array('f') or anything with tobytes() giving float32 is taken
+    as is, other sequences are converted). None leaves the struct as it is.
+    Returns the buffer the struct points into: keep it alive while `p` is used."""
+    if mask is None:
+        return None
+    width, height, values = mask
+    if isinstance(values, array.array) and values.typecode == "f":
+        buf = values
+    elif str(getattr(values, "dtype", "")) == "float32":  # a numpy array: copied in one go
+        buf = array.array("f")
+        buf.frombytes(values.tobytes())
+    else:
+        buf = array.array("f", values)
+    if len(buf) != width * height:
+        raise InvalidArgumentError(f"the falloff mask has {len(buf)} values; {width} x {height} needs "
+                                   f"{width * height}")
+    p.falloff_mask = ctypes.cast(as_pointer(buf, c_float), POINTER(c_float))
+    p.falloff_mask_width, p.falloff_mask_height = width, height
+    return buf
+
+
+def generate_terrain(values=None, reference=None, progress=None, threads=0, falloff_mask=None, **overrides):
     """Generates a terrain; returns a Heightfield (close it, or use `with`).
 
     values/overrides: settings by name (see params.TERRAIN_PARAMS), e.g.
     method='MIDPOINT', levels=10, hurst=0.8, sigma=1.0, seed=7.
     reference: None or (size, values) with size = 2^m + 1 and size^2 floats,
-    row-major. progress: None or a callable(fraction) returning True to cancel
-    (raises CancelledError).
+    row-major. falloff_mask: None or (width, height, values) for falloff='CUSTOM'
+    (see attach_falloff_mask). progress: None or a callable(fraction) returning
+    True to cancel (raises CancelledError).
     """
     lib = library()
     p = terrain_struct(values, **overrides)
     p.threads = threads
     _ref_buf = attach_reference(p, reference)
+    _mask_buf = attach_falloff_mask(p, falloff_mask)
     bridge = _ProgressBridge(progress)
     p.progress = bridge.c_fn
     out = c_void_p()

@@ -68,12 +68,12 @@ class SchedulerUnreachable(FracterraError):
 
 
 def _lib():
-    """The library with the tile functions declared (ABI 2.9)."""
+    """The library with the tile functions declared (ABI 2.10)."""
     lib = library()
     if not getattr(lib, "_tiles_bound", False):
         missing = lib._bind(_TILES_SIGNATURES)
         if missing:
-            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.9 or later")
+            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.10 or later")
         lib._tiles_bound = True
     return lib
 

@@ -49,7 +49,8 @@ enum {
 enum {
   FT_FALLOFF_NONE = 0,         ///< heights run to the edge as generated
   FT_FALLOFF_SQUARE = 1,       ///< fall to edge_level along all four edges
-  FT_FALLOFF_RADIAL = 2        ///< fall to edge_level towards the inscribed ellipse (an island)
+  FT_FALLOFF_RADIAL = 2,       ///< fall to edge_level towards the inscribed ellipse (an island)
+  FT_FALLOFF_CUSTOM = 3        ///< a mask grid (falloff_mask, ABI 2.9): 1 keeps the height, 0 gives edge_level
 };
 
 /// Sea of a terrain (ft_terrain_params.sea, ABI 2.6): heights below it are flattened to it.
@@ -126,6 +127,14 @@ typedef struct ft_terrain_params {
   int32_t sea;               ///< FT_SEA_*; default FT_SEA_NONE
   double sea_level;          ///< FT_SEA_HEIGHT: the sea's height, scene units; default 0
   double sea_fraction;       ///< FT_SEA_FRACTION: the fraction of samples under the sea, [0, 1); default 0.3
+  /* Added in ABI 2.9: the mask of FT_FALLOFF_CUSTOM. It spans the whole terrain corner to corner
+     (mask sample (0, 0) at terrain sample (0, 0), (mw - 1, mh - 1) at the last) and is resampled
+     bilinearly at each sample's position in the whole, so windows stay equal to the whole. A height
+     z becomes edge_level + m (z - edge_level); falloff_width is not used (blur the mask instead). */
+  const float* falloff_mask; ///< falloff_mask_width x falloff_mask_height values in [0, 1], row-major
+                             ///< (row 0 at terrain row 0); the caller keeps it alive; default NULL
+  int32_t falloff_mask_width;  ///< 2..65536 with FT_FALLOFF_CUSTOM; default 0
+  int32_t falloff_mask_height; ///< 2..65536 with FT_FALLOFF_CUSTOM; default 0
 } ft_terrain_params;
 
 /// Fills `p` with the defaults documented above. `p` must not be NULL.

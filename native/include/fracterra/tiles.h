@@ -37,14 +37,14 @@ FT_API ft_status ft_tileset_open(const ft_terrain_params* p, int32_t tile, int32
 /// driver runs the pass elsewhere, ft_tile_height_range once per tile (any
 /// process, e.g. one Dask task each), then gives the union of the tiles'
 /// ranges to ft_tileset_set_height_range before writing tiles. Otherwise as
-/// ft_tileset_open, with *range_pending = 0. (ABI 2.9)
+/// ft_tileset_open, with *range_pending = 0. (ABI 2.10)
 FT_API ft_status ft_tileset_open_deferred(const ft_terrain_params* p, int32_t tile, int32_t format, const char* dir,
                                           ft_tileset** out, int32_t* range_pending);
 /// The exact height range of a set opened with its range pending: writes its
-/// manifest. Refused when the range is not pending, not finite or min > max. (ABI 2.9)
+/// manifest. Refused when the range is not pending, not finite or min > max. (ABI 2.10)
 FT_API ft_status ft_tileset_set_height_range(ft_tileset* set, double min, double max);
 /// The exact height range of tile (column, row) of terrain `p` cut into
-/// tiles of `tile` cells: the unit of work of the pass above. (ABI 2.9)
+/// tiles of `tile` cells: the unit of work of the pass above. (ABI 2.10)
 FT_API ft_status ft_tile_height_range(const ft_terrain_params* p, int32_t tile, int32_t column, int32_t row,
                                       double* min, double* max);
 /// NULL-safe.

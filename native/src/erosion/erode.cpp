@@ -122,7 +122,8 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     // directions so the map has no grid-aligned streaks.
     std::vector<float> filled(out.data(), out.data() + out.size());
     const int32_t sink = g.periodic ? periodic_sink(g, filled.data()) : -1;
-    fill_depressions(g, filled.data(), sink);
+    FlowGraph graph;  // its local fills are cheaper than a global fill
+    route_filled(g, filled.data(), sink, graph);
     std::vector<double> area;
     multiple_flow_area(g, filled.data(), sink, area);
     for (size_t i = 0; i < in.size(); ++i) {

@@ -13,56 +13,66 @@ constexpr double kContour[2] = {0.5, M_SQRT2 / 4.0};
 
 void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vector<double>& area) {
   const size_t n = g.size();
-  const double cell = g.spacing * g.spacing;
-  auto gives = [&](int32_t x, int32_t y) {
-    return g.periodic ? int32_t(size_t(y) * g.width + x) != sink : !g.on_edge(x, y);
-  };
-  // Weight of the water cell i sends toward neighbour k (0 unless lower).
-  auto weight = [&](size_t i, int64_t j, int k) {
-    const double drop = double(z[i]) - double(z[j]);
-    return drop > 0.0 ? kContour[k & 1] * drop / g.distance(k) : 0.0;
-  };
-  // Each giver's total weight, and each cell's count of higher givers (the
-  // inflows it waits for).
-  std::vector<double> total(n, 0.0);
+  const int32_t w = g.width, h = g.height;
+  // Interior cells (all eight neighbours inside, also on a torus) take them
+  // at fixed offsets; the others through the general lookup.
+  int64_t offset[8];
+  double factor[8];  // contour length over distance
+  for (int k = 0; k < 8; ++k) {
+    offset[k] = int64_t(kDy[k]) * w + kDx[k];
+    factor[k] = kContour[k & 1] / g.distance(k);
+  }
+  auto inner = [&](int32_t x, int32_t y) { return x > 0 && y > 0 && x < w - 1 && y < h - 1; };
+  auto nbr = [&](int64_t i, int32_t x, int32_t y, bool in, int k) { return in ? i + offset[k] : g.neighbour(x, y, k); };
+  // A base level keeps what reaches it; every other cell gives.
+  auto gives = [&](int64_t i, int32_t x, int32_t y) { return g.periodic ? i != sink : inner(x, y); };
+  // How many higher givers each cell waits for. Rows in parallel: each cell
+  // writes only its own count.
   std::vector<uint8_t> waiting(n, 0);
 #pragma omp parallel for schedule(static)
-  for (int32_t y = 0; y < g.height; ++y)
-    for (int32_t x = 0; x < g.width; ++x) {
-      const size_t i = size_t(y) * g.width + x;
-      double sum = 0.0;
+  for (int32_t y = 0; y < h; ++y)
+    for (int32_t x = 0; x < w; ++x) {
+      const int64_t i = int64_t(y) * w + x;
+      const bool in = inner(x, y);
       uint8_t higher = 0;
       for (int k = 0; k < 8; ++k) {
-        const int64_t j = g.neighbour(x, y, k);
-        if (j < 0) continue;
-        if (gives(int32_t(j % g.width), int32_t(j / g.width)) && z[j] > z[i]) ++higher;
-        sum += weight(i, j, k);
+        const int32_t nx = x + kDx[k], ny = y + kDy[k];
+        // A bounded grid's edge cells never give. (A torus's sink does not
+        // either, but it is the lowest cell: never a higher one.)
+        if (!g.periodic && !inner(nx, ny)) continue;
+        higher += z[nbr(i, x, y, in, k)] > z[i];
       }
-      total[i] = gives(x, y) ? sum : 0.0;
-      waiting[i] = higher;
+      waiting[size_t(i)] = higher;
     }
-  // Kahn's order: a cell is ready when its last higher giver is done. Its
-  // area is pulled from its higher givers in neighbour order, so the sums
-  // are the same whatever the order of the queue.
-  area.assign(n, 0.0);
+  // Kahn's order: a cell is ready when its last higher giver has passed its
+  // water on; then its area is final and it passes it on in turn. The queue
+  // is serial and starts in index order, so every sum is made in the same
+  // order on any thread count.
+  area.assign(n, g.spacing * g.spacing);
   std::vector<int32_t> ready;
   ready.reserve(n);
   for (size_t i = 0; i < n; ++i)
     if (waiting[i] == 0) ready.push_back(int32_t(i));
+  double share[8];
+  int64_t lower[8];
   for (size_t head = 0; head < ready.size(); ++head) {
     const int32_t i = ready[head];
-    const int32_t x = i % g.width, y = i / g.width;
-    double a = cell;
+    const int32_t x = i % w, y = i / w;
+    if (!gives(i, x, y)) continue;
+    const bool in = inner(x, y);
+    double total = 0.0;
+    int count = 0;
     for (int k = 0; k < 8; ++k) {
-      const int64_t j = g.neighbour(x, y, k);
-      if (j < 0 || !(z[j] > z[i]) || total[j] <= 0.0) continue;
-      a += area[j] * weight(size_t(j), i, (k + 4) & 7) / total[j];
+      const int64_t j = nbr(i, x, y, in, k);
+      if (j < 0 || !(z[j] < z[i])) continue;
+      share[count] = factor[k] * (double(z[i]) - double(z[j]));
+      total += share[count];
+      lower[count++] = j;
     }
-    area[i] = a;
-    if (total[i] <= 0.0) continue;
-    for (int k = 0; k < 8; ++k) {
-      const int64_t j = g.neighbour(x, y, k);
-      if (j >= 0 && z[j] < z[i] && --waiting[j] == 0) ready.push_back(int32_t(j));
+    const double give = area[size_t(i)] / total;
+    for (int c = 0; c < count; ++c) {
+      area[size_t(lower[c])] += give * share[c];
+      if (--waiting[size_t(lower[c])] == 0) ready.push_back(int32_t(lower[c]));
     }
   }
 }

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
-#include <queue>
 #include <vector>
 
 #include "erosion/flow_graph.hpp"
+#include "erosion/radix_heap.hpp"
 
 namespace ft::erosion {
 namespace {
@@ -45,14 +45,13 @@ struct OpenHeap {
 int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink) {
   const size_t n = g.size();
   std::vector<uint8_t> closed(n, 0);
-  std::vector<Open> heap_store;
-  heap_store.reserve(2 * size_t(g.width + g.height));
-  std::priority_queue<Open> open(std::less<Open>(), std::move(heap_store));
-  std::deque<int32_t> pit;
+  RadixHeap open;
+  std::vector<int32_t> pit;  // a FIFO: cells are taken from `pit_head`
+  size_t pit_head = 0;
   auto seed = [&](int32_t i) {
     if (!closed[i]) {
       closed[i] = 1;
-      open.push({z[i], i});
+      open.push(z[i], i);
     }
   };
   if (g.periodic) {
@@ -68,14 +67,13 @@ int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink) {
     }
   }
   int64_t raised = 0;
-  while (!open.empty() || !pit.empty()) {
+  while (!open.empty() || pit_head < pit.size()) {
     int32_t c;
-    if (!pit.empty()) {
-      c = pit.front();
-      pit.pop_front();
+    if (pit_head < pit.size()) {
+      c = pit[pit_head++];
+      if (pit_head == pit.size()) pit.clear(), pit_head = 0;
     } else {
-      c = open.top().i;
-      open.pop();
+      c = open.pop();
     }
     const int32_t cx = c % g.width, cy = c / g.width;
     const float above = std::nextafter(z[c], INFINITY);
@@ -88,7 +86,7 @@ int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink) {
         ++raised;
         pit.push_back(int32_t(j));
       } else {
-        open.push({z[j], int32_t(j)});
+        open.push(z[j], int32_t(j));
       }
     }
   }

@@ -20,7 +20,7 @@ void slope_curvature(const D8Grid& g, const float* z, float* slope, float* curva
         nbr[p] = j >= 0 ? z[j] : (o >= 0 ? 2.0 * z[i] - z[o] : z[i]);
       }
       const double gx = 0.5 * (nbr[0] - nbr[2]) * inv, gy = 0.5 * (nbr[1] - nbr[3]) * inv;
-      slope[i] = float(std::hypot(gx, gy));
+      slope[i] = float(std::sqrt(gx * gx + gy * gy));  // no overflow to guard against: hypot costs
       curvature[i] = float((nbr[0] + nbr[1] + nbr[2] + nbr[3] - 4.0 * z[i]) * inv * inv);
     }
 }

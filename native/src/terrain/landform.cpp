@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -28,7 +30,43 @@ bool has_landforms(const ft_terrain_params& p) {
   return p.levelling != 0 || p.height_offset != 0 || p.falloff != FT_FALLOFF_NONE || p.sea != FT_SEA_NONE;
 }
 
+double mask_weight(const ft_terrain_params& p, double u, double v) {
+  const int64_t mw = p.falloff_mask_width, mh = p.falloff_mask_height;
+  const double fx = u * double(mw - 1), fy = v * double(mh - 1);
+  const int64_t x0 = std::min(int64_t(fx), mw - 2), y0 = std::min(int64_t(fy), mh - 2);
+  const double tx = fx - double(x0), ty = fy - double(y0);
+  const float* r0 = p.falloff_mask + y0 * mw + x0;
+  const float* r1 = r0 + mw;
+  const double top = (1 - tx) * r0[0] + tx * r0[1], bottom = (1 - tx) * r1[0] + tx * r1[1];
+  return (1 - ty) * top + ty * bottom;
+}
+
+namespace {
+
+void validate_mask(const ft_terrain_params& p) {
+  if (p.falloff_mask == nullptr)
+    invalid("falloff 'custom' needs a mask (falloff_mask, falloff_mask_width x falloff_mask_height values in "
+            "[0, 1]; fracterra terrain --falloff-mask FILE); got none");
+  for (const auto& [name, side] : {std::pair{"falloff_mask_width", p.falloff_mask_width},
+                                   std::pair{"falloff_mask_height", p.falloff_mask_height}})
+    if (side < 2 || side > kMaxMaskSide)
+      invalid(std::string(name) + " must be in 2.." + std::to_string(kMaxMaskSide) + " (bilinear resampling needs "
+              "two samples a side), got " + std::to_string(side));
+  const size_t n = size_t(p.falloff_mask_width) * size_t(p.falloff_mask_height);
+  for (size_t i = 0; i < n; ++i) {
+    const float m = p.falloff_mask[i];
+    if (!(m >= 0.0f && m <= 1.0f))  // NaN fails both
+      invalid("the falloff mask's values must be in [0, 1] (1 keeps the height, 0 gives the edge level); "
+              "sample " + std::to_string(i % size_t(p.falloff_mask_width)) + ", " +
+              std::to_string(i / size_t(p.falloff_mask_width)) + " is " + std::to_string(m) +
+              " (normalise an image to 0..1)");
+  }
+}
+
+}  // namespace
+
 void validate_landforms(const ft_terrain_params& p, bool whole) {
+  if (p.falloff == FT_FALLOFF_CUSTOM) validate_mask(p);
   if (!whole && p.sea == FT_SEA_FRACTION)
     invalid("sea 'fraction' puts the sea at a quantile of the whole terrain's heights, which a window does not "
             "hold; give the sea as a height (sea 'height', sea_level) for windows, e.g. the level that "
@@ -56,7 +94,8 @@ void apply_landforms(const ft_terrain_params& p, const Corners& c, const Placeme
       z += p.height_offset;
       if (p.falloff != FT_FALLOFF_NONE) {
         // Outside the band (weight 1) the height stays exactly as it was.
-        const double m = falloff_weight(p.falloff, p.falloff_width, u, v);
+        const double m = p.falloff == FT_FALLOFF_CUSTOM ? mask_weight(p, u, v)
+                                                        : falloff_weight(p.falloff, p.falloff_width, u, v);
         if (m < 1) z = p.edge_level + m * (z - p.edge_level);
       }
       row[i] = float(z);

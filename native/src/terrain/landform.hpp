@@ -16,6 +16,8 @@ namespace ft {
 // Bound of |height_offset|, |edge_level| and |sea_level|: far inside float
 // range, so adding them keeps the generators' height bound valid.
 inline constexpr double kMaxLandformHeight = 1e30;
+// Largest side of a custom falloff mask (that of the largest free-size terrain).
+inline constexpr int32_t kMaxMaskSide = 65536;
 
 // The whole terrain's corner heights (x, y): (0, 0), (W - 1, 0), (0, H - 1), (W - 1, H - 1).
 struct Corners {
@@ -30,8 +32,11 @@ struct Placement {
 
 // True when the settings change the method's heights at all.
 bool has_landforms(const ft_terrain_params& p);
-// The cross-field checks: a sea fraction needs the whole terrain.
+// The cross-field checks: a sea fraction needs the whole terrain; a custom
+// falloff needs a mask of 2..65536 per side whose values are all in [0, 1].
 void validate_landforms(const ft_terrain_params& p, bool whole);
+// The custom falloff mask at (u, v) in [0, 1]^2 of the whole terrain, bilinear.
+double mask_weight(const ft_terrain_params& p, double u, double v);
 // Levelling, offset and falloff of `hf` placed at `at`, with the whole's corners.
 void apply_landforms(const ft_terrain_params& p, const Corners& corners, const Placement& at, Heightfield& hf,
                      int threads);

@@ -21,7 +21,7 @@ constexpr uint64_t kFbm = method_bit(FT_TERRAIN_FBM);
 constexpr uint64_t kMandelbrot = method_bit(FT_TERRAIN_MANDELBROT);
 // Spectral synthesis always tiles and the Mandelbrot set never does.
 constexpr uint64_t kCanTile = kDyadic | kFbm | method_bit(FT_TERRAIN_INTERPOLATED);
-constexpr uint32_t kAbi11 = 0x10001, kAbi12 = 0x10002, kAbi26 = 0x20006;
+constexpr uint32_t kAbi11 = 0x10001, kAbi12 = 0x10002, kAbi26 = 0x20006, kAbi29 = 0x20009;
 
 constexpr ft_param_enum_item kMethods[] = {
     {FT_TERRAIN_MIDPOINT, "MIDPOINT", "Midpoint",
@@ -64,6 +64,9 @@ constexpr ft_param_enum_item kFalloffs[] = {
     {FT_FALLOFF_SQUARE, "SQUARE", "Square", "Heights fall to the edge level along all four edges"},
     {FT_FALLOFF_RADIAL, "RADIAL", "Radial", "Heights fall to the edge level towards the inscribed ellipse: an "
                                             "island"},
+    {FT_FALLOFF_CUSTOM, "CUSTOM", "Custom", "A mask spanning the terrain (an image; in Blender also an "
+                                            "object's outline): white keeps the height, black gives the edge "
+                                            "level, grey between"},
 };
 constexpr ft_param_enum_item kSeas[] = {
     {FT_SEA_NONE, "NONE", "None", "No sea"},
@@ -212,11 +215,11 @@ constexpr ft_param_info kTerrainRows[] = {
      .unit = "scene units", .label = "Height Offset", .doc = "Added to every height (after the levelling)",
      .methods = FT_PARAM_ALL_METHODS},
     {ROW(falloff, FT_PARAM_ENUM), .since = kAbi26, .element_kind = -1, .default_value = FT_FALLOFF_NONE,
-     .hard_min = FT_FALLOFF_NONE, .hard_max = FT_FALLOFF_RADIAL, .soft_min = FT_FALLOFF_NONE,
-     .soft_max = FT_FALLOFF_RADIAL, .unit = "", .label = "Falloff",
-     .doc = "Heights fall smoothly to the edge level near the edges (square) or towards an inscribed ellipse "
-            "(radial: an island), so the terrain does not end in a wall",
-     .methods = FT_PARAM_ALL_METHODS, .enum_count = 3, .enum_items = kFalloffs},
+     .hard_min = FT_FALLOFF_NONE, .hard_max = FT_FALLOFF_CUSTOM, .soft_min = FT_FALLOFF_NONE,
+     .soft_max = FT_FALLOFF_CUSTOM, .unit = "", .label = "Falloff",
+     .doc = "Heights fall smoothly to the edge level near the edges (square), towards an inscribed ellipse "
+            "(radial: an island) or where a mask is dark (custom), so the terrain does not end in a wall",
+     .methods = FT_PARAM_ALL_METHODS, .enum_count = 4, .enum_items = kFalloffs},
     {ROW(falloff_width, FT_PARAM_DOUBLE), .flags = kAbove, .since = kAbi26, .element_kind = -1,
      .default_value = 0.3, .hard_min = 0, .hard_max = 1, .soft_min = 0.05, .soft_max = 1, .unit = "",
      .label = "Falloff Width",
@@ -241,6 +244,18 @@ constexpr ft_param_info kTerrainRows[] = {
      .element_kind = -1, .default_value = 0.3, .hard_min = 0, .hard_max = 1, .soft_min = 0, .soft_max = 0.95,
      .unit = "", .label = "Sea Fraction",
      .doc = "Share of the terrain under the sea (sea 'fraction'): the sea is at that quantile of the heights",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(falloff_mask, FT_PARAM_POINTER), .flags = kData, .since = kAbi29, .element_type = FT_PARAM_FLOAT,
+     .element_kind = -1, .unit = "", .label = "Falloff Mask",
+     .doc = "The custom falloff's mask: width x height values in [0, 1], row-major, spanning the whole terrain "
+            "corner to corner, resampled bilinearly (1 keeps the height, 0 gives the edge level); NULL: none",
+     .methods = FT_PARAM_ALL_METHODS},
+    {ROW(falloff_mask_width, FT_PARAM_INT32), .flags = kData, .since = kAbi29, .element_kind = -1,
+     .default_value = 0, .hard_min = 0, .hard_max = kMaxMaskSide, .unit = "samples", .label = "Falloff Mask Width",
+     .doc = "Columns of the falloff mask, 2..65536 with the custom falloff", .methods = FT_PARAM_ALL_METHODS},
+    {ROW(falloff_mask_height, FT_PARAM_INT32), .flags = kData, .since = kAbi29, .element_kind = -1,
+     .default_value = 0, .hard_min = 0, .hard_max = kMaxMaskSide, .unit = "samples",
+     .label = "Falloff Mask Height", .doc = "Rows of the falloff mask, 2..65536 with the custom falloff",
      .methods = FT_PARAM_ALL_METHODS},
 };
 FT_PARAM_TABLE_END

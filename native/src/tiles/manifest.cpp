@@ -59,6 +59,13 @@ nlohmann::json terrain_identity(const ft_terrain_params& p) {
     const uLong crc = crc32(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(p.reference), uInt(n * sizeof(float)));
     j["reference"] = {{"size", p.reference_size}, {"crc32", uint32_t(crc)}};
   }
+  if (p.falloff == FT_FALLOFF_CUSTOM && p.falloff_mask != nullptr) {
+    // Another mask makes another terrain: its tiles must not be reused.
+    const size_t n = size_t(p.falloff_mask_width) * size_t(p.falloff_mask_height);
+    const uLong crc =
+        crc32_z(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(p.falloff_mask), n * sizeof(float));
+    j["falloff_mask"] = {{"width", p.falloff_mask_width}, {"height", p.falloff_mask_height}, {"crc32", uint32_t(crc)}};
+  }
   return j;
 }
 

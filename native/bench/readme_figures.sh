@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Runs the benchmarks behind the README's speed table one after another, in
+# one run, each with its baseline, and logs the load average before and after
+# each: the source of the table's figures (medians of 3 repetitions, or 5 for
+# the window overhead). Takes 15-20 minutes on the 2-core machine; run it on
+# an otherwise idle machine.
+#
+#   native/bench/readme_figures.sh [BUILD_DIR] [OUT_DIR] [SECTION ...]
+#
+# SECTIONS: terrain window noise polyline povray subdiv blender erosion
+# fluvial (default: all). Each writes OUT_DIR/SECTION.txt.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=$(realpath "${1:-build}")
+out=$(realpath -m "${2:-/tmp/fracterra-figures}")
+shift $(( $# > 2 ? 2 : $# ))
+sections=("$@")
+[ ${#sections[@]} -gt 0 ] || sections=(terrain window noise polyline povray subdiv blender erosion fluvial)
+mkdir -p "$out" "$out/ant"
+gb=(--benchmark_repetitions=3 --benchmark_report_aggregates_only=true)
+
+run() {  # SECTION COMMAND...: the command's output and the load around it
+  local name=$1
+  shift
+  {
+    echo "# $(date -u +%FT%TZ) $*"
+    echo "# before: $(uptime)"
+    "$@"
+    echo "# after: $(uptime)"
+  } >>"$out/$name.txt" 2>&1
+  echo "$name: $out/$name.txt"
+}
+
+for s in "${sections[@]}"; do
+  case $s in
+    terrain) run terrain "$build/native/terrain_bench" "${gb[@]}" --benchmark_filter='Naive|FracterraMidpoint' ;;
+    window)
+      run window "$build/native/terrain_bench" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+        --benchmark_filter='MidpointWindow/threads:1|FracterraMidpoint/levels:12/threads:1' ;;
+    noise) run noise "$build/native/noise_bench" "${gb[@]}" ;;
+    polyline) run polyline "$build/native/polyline_bench" "${gb[@]}" ;;
+    povray) run povray "$build/native/povray_bench" --repetitions 3 ;;
+    subdiv) (cd "$build/native" && run subdiv ./subdiv_bench "${gb[@]}") ;;
+    blender)
+      run blender blender -b --factory-startup --python examples/bench_blender.py -- --repeat 3 \
+        --library "$build/native/libfracterra.so" ;;
+    erosion)
+      run erosion blender -b --factory-startup --python native/bench/ant_eroder_anchor.py -- "$out/ant" 513 1025
+      for t in 1 2; do
+        FT_ANT_DIR="$out/ant" FT_BENCH_THREADS=$t run erosion "$build/native/erosion_bench" "${gb[@]}" \
+          --benchmark_filter=AntPasses
+      done ;;
+    fluvial) FT_STEPS=100 run fluvial "$build/native/erosion_bench" "${gb[@]}" --benchmark_filter=Fluvial/2049 ;;
+    *) echo "unknown section: $s" >&2; exit 2 ;;
+  esac
+done
