@@ -7,8 +7,10 @@
 
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/param_flags.hpp"
 #include "core/error.hpp"
 #include "erosion/erosion.hpp"
+#include "erosion/erosion_params.hpp"
 #include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
 
@@ -19,36 +21,26 @@ struct ErodeCli {
   std::string in, out, maps, preset;
   double world_size = 0;
   bool stats = false;
-  erosion::ErosionConfig c;
+  // The settings from ft_erosion_params' table (erosion_params.cpp): what
+  // the flags wrote over the table's defaults.
+  ft_erosion_params flags = defaults_of<ft_erosion_params>(erosion_param_table());
 };
 
-void add_erosion_options(CLI::App& app, erosion::ErosionConfig& c) {
-  auto& f = c.fluvial;
-  app.add_option("--fluvial", f.steps, "fluvial (stream power + diffusion) time steps, 0 = off")->capture_default_str();
-  app.add_option("--fluvial-dt", f.dt, "years per fluvial step (> 0)")->capture_default_str();
-  app.add_option("--erodibility", f.k, "stream-power K (>= 0)")->capture_default_str();
-  app.add_option("--area-exponent", f.m, "stream-power m, 0..2 (n = 1)")->capture_default_str();
-  app.add_option("--diffusion", f.diffusion, "hillslope diffusivity, world units^2 per year (>= 0)")
-      ->capture_default_str();
-  app.add_option("--uplift", f.uplift, "uplift, world units per year (>= 0)")->capture_default_str();
-  auto& h = c.hydraulic;
-  app.add_option("--hydraulic", h.iterations, "hydraulic (virtual-pipe water) passes, 0 = off")->capture_default_str();
-  app.add_option("--hydraulic-dt", h.dt, "seconds per hydraulic pass, 1e-6..1")->capture_default_str();
-  app.add_option("--rain", h.rain, "water depth rained per pass, world units (>= 0)")->capture_default_str();
-  app.add_option("--evaporation", h.evaporation, "fraction of the water evaporated per pass, 0..1")
-      ->capture_default_str();
-  app.add_option("--capacity", h.capacity, "sediment capacity constant (>= 0)")->capture_default_str();
-  app.add_option("--dissolve", h.dissolve, "fraction of the capacity deficit eroded per pass, 0..1")
-      ->capture_default_str();
-  app.add_option("--deposit", h.deposit, "fraction of the excess sediment deposited per pass, 0..1")
-      ->capture_default_str();
-  auto& t = c.thermal;
-  app.add_option("--thermal", t.iterations, "thermal (talus) passes, 0 = off")->capture_default_str();
-  app.add_option("--talus", t.talus_degrees, "angle of repose in degrees, 0..89")->capture_default_str();
-  app.add_option("--thermal-rate", t.rate, "fraction of the excess moved per pass, (0, 1]")->capture_default_str();
-  app.add_flag("--periodic", c.periodic, "the terrain tiles: erode it as a torus (stays seamless)");
-  app.add_option("--threads", c.threads, "worker threads, 0 = all cores (output never depends on it)")
-      ->check(CLI::Range(0, 1024))->capture_default_str();
+// The flag names erode had before its flags came from the table (issue 15's
+// `--fluvial 60 --hydraulic 100 --thermal 20 --talus 33`) stay as aliases.
+const std::map<std::string, std::string> kAliases = {{"fluvial_steps", "--fluvial"},
+                                                     {"hydraulic_iterations", "--hydraulic"},
+                                                     {"thermal_iterations", "--thermal"},
+                                                     {"talus_degrees", "--talus"}};
+
+// The settings to erode `hf` with: the flags over the table's defaults, or
+// over the preset fitted to the terrain when one is named (a flag given on
+// the command line wins over the preset's value).
+erosion::ErosionConfig settings(const ErodeCli& o, const CLI::App& app, const Heightfield& hf) {
+  if (o.preset.empty()) return erosion::from_c(o.flags);
+  ft_erosion_params p = erosion::to_c(erosion::erosion_preset(o.preset, hf));
+  overlay_given_flags(app, erosion_param_table(), &o.flags, &p);
+  return erosion::from_c(p);
 }
 
 Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) and write its maps",
@@ -59,24 +51,21 @@ Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) an
                     app.add_option("--maps", o->maps,
                                    "folder for the maps as 16-bit PNGs with their ranges (and maps.json)");
                     app.add_option("--preset", o->preset,
-                                   "start from a preset: valleys, rain, scree or land (options given override it)");
+                                   "start from a preset: valleys (fluvial with uplift), rain (hydraulic), scree "
+                                   "(thermal) or land (all three); flags given override its values. Its uplift "
+                                   "rate would raise the land by the terrain's relief over the preset's steps, so "
+                                   "incision keeps about the relief the terrain had");
                     app.add_option("--world-size", o->world_size,
                                    "extent along x in world units when the file does not record it [default: 10]");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, the height range before and after, what left at the edges");
-                    add_erosion_options(app, o->c);
+                    add_param_flags(app, erosion_param_table(), &o->flags, {}, kAliases);
                     return [o, &app] {
                       if (o->out.empty() && o->maps.empty() && !o->stats) invalid("give --out FILE, --maps DIR and/or --stats");
-                      erosion::ErosionConfig c = o->c;
-                      if (!o->preset.empty()) {
-                        // Options given on the command line win over the preset's.
-                        erosion::ErosionConfig p = erosion::erosion_preset(o->preset);
-                        if (app.count("--fluvial") == 0) c.fluvial.steps = p.fluvial.steps;
-                        if (app.count("--hydraulic") == 0) c.hydraulic.iterations = p.hydraulic.iterations;
-                        if (app.count("--thermal") == 0) c.thermal.iterations = p.thermal.iterations;
-                      }
+                      if (!o->preset.empty()) erosion::erosion_preset(o->preset);  // an unknown name fails before reading
                       Heightfield hf = read_heightfield(o->in);
                       if (o->world_size > 0) hf.set_world_size(o->world_size);
                       else if (hf.world_size() <= 0) hf.set_world_size(10.0);
+                      const erosion::ErosionConfig c = settings(*o, app, hf);
                       if (!o->maps.empty()) std::filesystem::create_directories(o->maps);
                       erosion::ErosionMaps maps;
                       erosion::MassBudget budget;
@@ -90,6 +79,7 @@ Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) an
                         nlohmann::json j = {{"seconds", seconds},       {"carried_out", budget.carried_out},
                                             {"min", after.min},         {"max", after.max},
                                             {"input_min", before.min},  {"input_max", before.max},
+                                            {"uplift", c.fluvial.uplift},
                                             {"world_size", eroded.world_size()}};
                         std::printf("%s\n", j.dump().c_str());
                       }

@@ -97,7 +97,7 @@ int run(const TerrainOptions& o) {
   Stopwatch clock;
   Heightfield hf = generate_terrain(p);
   if (!o.erode.empty()) {
-    erosion::ErosionConfig e = erosion::erosion_preset(o.erode);
+    erosion::ErosionConfig e = erosion::erosion_preset(o.erode, hf);  // uplift fitted to its relief
     // Spectral terrains tile with period W x H (the FFT grid); the others'
     // periodic grids repeat their first row and column, which a torus of
     // W x H would not keep equal, so they erode bounded.

@@ -147,4 +147,17 @@ void add_param_flags(CLI::App& app, const ParamTable& table, void* params, const
   }
 }
 
+bool flag_given(const CLI::App& app, const char* field) {
+  const std::string flag = flag_of(field);
+  for (const std::string& name : {flag, "--no-" + flag.substr(2)})
+    if (const CLI::Option* o = app.get_option_no_throw(name); o && o->count() > 0) return true;
+  return false;
+}
+
+void overlay_given_flags(const CLI::App& app, const ParamTable& table, const void* given, void* base) {
+  for (const ft_param_info& row : table.rows)
+    if (!(row.flags & (FT_PARAM_FLAG_STRUCT_SIZE | FT_PARAM_FLAG_DATA)) && flag_given(app, row.name))
+      std::memcpy(static_cast<char*>(base) + row.offset, static_cast<const char*>(given) + row.offset, row.size);
+}
+
 }  // namespace ft::cli

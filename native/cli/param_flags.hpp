@@ -33,4 +33,13 @@ std::string cli_name(const ft_param_enum_item& item);
 void add_param_flags(CLI::App& app, const ParamTable& table, void* params, const std::set<std::string>& skip = {},
                      const std::map<std::string, std::string>& aliases = {});
 
+// Whether the flag of field `field` (under any of its names, or its --no-X
+// form) was given on the command line.
+bool flag_given(const CLI::App& app, const char* field);
+
+// Copies from `given` (the struct add_param_flags wrote into) over `base`
+// (a struct of the same table, e.g. a preset's) the fields whose flags were
+// given on the command line: a preset under explicit flags.
+void overlay_given_flags(const CLI::App& app, const ParamTable& table, const void* given, void* base);
+
 }  // namespace ft::cli

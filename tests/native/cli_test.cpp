@@ -17,6 +17,8 @@
 
 #include "tables/param_registry.hpp"
 #include "io/atomic_file.hpp"
+#include "erosion/erosion.hpp"
+#include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
 #include "terrain/terrain.hpp"
 
@@ -219,7 +221,8 @@ TEST_F(Cli, CommandsWithATableOfferEveryOneOfItsSettings) {
   };
   const Case cases[] = {{"terrain", FT_PARAMS_TERRAIN, {"width", "height", "center_x", "center_y"}},
                         {"profile", FT_PARAMS_PROFILE, {}},
-                        {"fractalize", FT_PARAMS_FRACTALIZE, {}}};
+                        {"fractalize", FT_PARAMS_FRACTALIZE, {}},
+                        {"erode", FT_PARAMS_EROSION, {}}};
   for (const Case& c : cases) {
     const std::string help = run(std::string(c.command) + " --help").out;
     int flags = 0;
@@ -230,7 +233,9 @@ TEST_F(Cli, CommandsWithATableOfferEveryOneOfItsSettings) {
         continue;
       std::string flag = std::string("--") + row->name;
       std::replace(flag.begin(), flag.end(), '_', '-');
-      EXPECT_NE(help.find(flag + " "), std::string::npos) << c.command << ": no " << flag;
+      // "--flag TYPE" or, with the name it had before the tables, "--flag,--old TYPE".
+      EXPECT_TRUE(help.find(flag + " ") != std::string::npos || help.find(flag + ",") != std::string::npos)
+          << c.command << ": no " << flag;
       ++flags;
     }
     EXPECT_GT(flags, 3) << c.command;
@@ -243,6 +248,41 @@ TEST_F(Cli, CommandsWithATableOfferEveryOneOfItsSettings) {
   ASSERT_EQ(mid.code, 0) << mid.err;
   ASSERT_EQ(add.code, 0) << add.err;
   EXPECT_NE(read_file(path("m.obj")), read_file(path("a.obj"))) << "--mode reaches the library";
+}
+
+TEST_F(Cli, ErodePresetsKeepTheirUpliftAndFlagsOverrideThem) {
+  // `erode --preset` is the library's preset fitted to the terrain, uplift
+  // included (it once dropped the uplift), and a flag given beside it wins,
+  // under its table name or its old short name alike.
+  const std::string in = path("t.npy");
+  ASSERT_EQ(run("terrain --method fbm --size 65 --seed 2 --out " + in).code, 0);
+  Heightfield hf = read_heightfield(in);
+  hf.set_world_size(10);  // erode's default for a file that records none (.npy)
+  erosion::ErosionConfig preset = erosion::erosion_preset("valleys", hf);
+  ASSERT_GT(preset.fluvial.uplift, 0.0);
+  const auto same = [&](const std::string& args, const erosion::ErosionConfig& c) {
+    const CliRun r = run("erode --in " + in + " " + args + " --out " + path("e.npy"));
+    ASSERT_EQ(r.code, 0) << args << ": " << r.err;
+    const Heightfield got = read_heightfield(path("e.npy")), want = erosion::erode(hf, c, nullptr);
+    ASSERT_EQ(got.size(), want.size());
+    EXPECT_TRUE(std::equal(got.data(), got.data() + got.size(), want.data())) << args;
+  };
+  same("--preset valleys", preset);
+  erosion::ErosionConfig no_uplift = preset;
+  no_uplift.fluvial.uplift = 0;
+  const Heightfield a = erosion::erode(hf, preset, nullptr), b = erosion::erode(hf, no_uplift, nullptr);
+  EXPECT_FALSE(std::equal(a.data(), a.data() + a.size(), b.data())) << "the uplift must change the terrain";
+  same("--preset valleys --uplift 0", no_uplift);
+  erosion::ErosionConfig custom = preset;
+  custom.fluvial.steps = 5, custom.thermal.iterations = 3, custom.thermal.talus_degrees = 40;
+  same("--preset valleys --fluvial 5 --thermal-iterations 3 --talus 40", custom);
+  // Without a preset the flags stand over the table's defaults; their ranges are the library's.
+  erosion::ErosionConfig plain;
+  plain.hydraulic.iterations = 4;
+  same("--hydraulic 4", plain);
+  const CliRun bad = run("erode --in " + in + " --preset valleys --thermal-rate 0 --stats");
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("thermal_rate must be in (0, 1], got 0"), std::string::npos) << bad.err;
 }
 
 TEST_F(Cli, ProfileWritesCsvWithTwoToTheLevelsPlusOneRows) {

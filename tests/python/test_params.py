@@ -144,10 +144,7 @@ CLI_COMMANDS = {
     "clouds": ("clouds", {"threshold": "--threshold", "threshold_is_quantile": "--threshold"}),
     "dem_refine": ("refine", {"levels_added": "--levels", "hurst": "--hurst", "sigma": "--sigma",
                               "window_x": "--window", "window_y": "--window", "window_side": "--window"}),
-    # erode's flags are written by hand (not yet from the table): the pass counts and
-    # the talus angle under their short names; --threads shows its range, not TYPE=default.
-    "erosion": ("erode", {"fluvial_steps": "--fluvial", "hydraulic_iterations": "--hydraulic",
-                          "thermal_iterations": "--thermal", "talus_degrees": "--talus", "threads": "--threads"}),
+    "erosion": ("erode", {}),
 }
 # Flags users relied on before the flags came from the tables: each still works (an alias).
 CLI_ALIASES = {
@@ -156,6 +153,9 @@ CLI_ALIASES = {
                   "camera_fov_deg": "--fov", "camera_distance_scale": "--zoom-out",
                   "sun_azimuth_deg": "--sun-azimuth", "sun_elevation_deg": "--sun-elevation"},
     "clouds": {"bit_depth": "--bits"},
+    # issue 15's short names: `erode --fluvial 60 --hydraulic 100 --thermal 20 --talus 33`
+    "erosion": {"fluvial_steps": "--fluvial", "hydraulic_iterations": "--hydraulic",
+                "thermal_iterations": "--thermal", "talus_degrees": "--talus"},
 }
 
 

@@ -1,6 +1,7 @@
 // Erosion presets and the maps folder (see presets.hpp).
 #include "erosion/presets.hpp"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
@@ -14,8 +15,9 @@ std::vector<std::string> erosion_preset_names() { return {"valleys", "rain", "sc
 ErosionConfig erosion_preset(const std::string& name) {
   ErosionConfig c;
   if (name == "valleys" || name == "land") {
-    // Uplift balanced by incision: close to steady state after 60 steps,
-    // graded channels (slope ~ area^-m) rather than a decaying landscape.
+    // Uplift balanced by incision: graded channels (slope ~ area^-m)
+    // rather than a decaying landscape. 1e-4 suits a relief of about 6
+    // units; erosion_preset(name, terrain) fits it to the terrain.
     c.fluvial.steps = 60;
     c.fluvial.uplift = 1e-4;
   }
@@ -25,6 +27,16 @@ ErosionConfig erosion_preset(const std::string& name) {
     std::string known;
     for (const auto& n : erosion_preset_names()) known += (known.empty() ? "" : ", ") + n;
     invalid("unknown erosion preset '" + name + "' (known: " + known + ")");
+  }
+  return c;
+}
+
+ErosionConfig erosion_preset(const std::string& name, const Heightfield& terrain) {
+  ErosionConfig c = erosion_preset(name);
+  if (c.fluvial.uplift > 0) {
+    const HeightStats s = terrain.stats();
+    const double relief = s.max - s.min, years = double(c.fluvial.steps) * c.fluvial.dt;
+    c.fluvial.uplift = std::isfinite(relief) && relief > 0 ? relief / years : 0;
   }
   return c;
 }
