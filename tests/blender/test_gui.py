@@ -152,13 +152,18 @@ def wait_for_jobs(limit=60.0):
 
 
 def expand_redo_panel():
-    """Clicks the collapsed Adjust Last Operation panel open, as a user does."""
-    _, area, _ = view3d()
-    hud = next((r for r in area.regions if r.type == "HUD" and r.width > 1), None)
-    check(hud is not None, "no redo panel (Adjust Last Operation) appeared")
-    if hud is not None:
+    """Clicks the collapsed Adjust Last Operation panel open, as a user does. Its
+    header is a toggle and Blender keeps it open or closed from one operator to
+    the next, so it clicks only while the panel is a bare header (and looks again)."""
+    for _attempt in range(3):
+        _, area, _ = view3d()
+        hud = next((r for r in area.regions if r.type == "HUD" and r.width > 1), None)
+        check(hud is not None, "no redo panel (Adjust Last Operation) appeared")
+        if hud is None or hud.height > 60:  # open: more than its header
+            break
         window = bpy.context.window_manager.windows[0]
         xdotool("mousemove", str(hud.x + 20), str(window.height - (hud.y + hud.height - 10)), "click", "1")
+        yield STEP
     yield STEP
 
 
@@ -345,7 +350,7 @@ def scenario(shot):
 
     # Object > Fractalize on a cube, and File > Export > POV-Ray (its file browser, closed).
     with in_view3d():
-        bpy.ops.mesh.primitive_cube_add(location=(-4, 0, 1))
+        bpy.ops.mesh.primitive_cube_add(location=(-7, 0, 1))  # beside the 10 m terrain, in view
     yield STEP
     faces = len(bpy.context.active_object.data.polygons)
     yield from run_from_script("object.fracterra_fractalize")

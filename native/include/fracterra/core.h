@@ -39,7 +39,10 @@ extern "C" {
 /// 2.8: the erosion parameters are described (FT_PARAMS_EROSION in params.h).
 /// 2.9: a custom falloff mask (FT_FALLOFF_CUSTOM; falloff_mask, falloff_mask_width and
 /// falloff_mask_height at the end of ft_terrain_params).
-/// 2.11: ft_erosion_preset_fitted (erosion.h).
+/// 2.10: tile sets journal their finished tiles; a set's exact height range can
+///      be computed per tile elsewhere (ft_tileset_open_deferred, ft_tile_height_range).
+/// 2.11: ft_erosion_preset_fitted (erosion.h); uplift_follows_terrain at the end of
+///      ft_erosion_params.
 #define FT_ABI_VERSION_MINOR 11
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
