@@ -1,5 +1,6 @@
 """Headless Blender: the add-on's default terrain and every terrain preset, rendered
-one by one, beside A.N.T. Landscape's default (Blender's bundled add-on).
+one by one, beside A.N.T. Landscape's default (Blender's bundled add-on), and
+the default shaped by a custom falloff mask from an object and from an image.
 
     blender -b --factory-startup --python examples/22_blender_presets.py -- --out docs/images/presets
 
@@ -7,7 +8,10 @@ Each terrain is added the way the redo panel's preset menu does it: the
 operator's defaults, then the preset file's assignments. It gets the material
 by height and slope, the sky and the sun of example 20 and a camera framed on
 its own size, and is rendered with Cycles to <out>/<name>.png; a flat sea
-plane is added where the preset has a sea. Exits non-zero on any error.
+plane is added where the preset has a sea. The masks: mask-object.png, the
+outline of a wavy polygon (an n-gon 1 above the ground, faded inward over a
+falloff width of 0.25); mask-image.png, a generated image of two soft blobs
+(two islands in a sea at 0.3). Exits non-zero on any error.
 """
 
 import argparse
@@ -18,6 +22,7 @@ import time
 from pathlib import Path
 
 import bpy
+import numpy as np
 
 HERE = Path(__file__).resolve().parent
 _spec = importlib.util.spec_from_file_location("blender_scene_20", HERE / "20_blender_scene.py")
@@ -89,6 +94,32 @@ def frame_and_render(obj, size, sea, args, path, material):
     return min(zs), max(zs)
 
 
+def mask_object():
+    """A wavy n-gon over the default terrain's footprint: its outline shapes the land."""
+    t = np.linspace(0, 2 * math.pi, 96, endpoint=False)
+    r = 3.3 * (1 + 0.22 * np.sin(3 * t) + 0.1 * np.cos(5 * t + 1))
+    mesh = bpy.data.meshes.new("Outline")
+    mesh.from_pydata([(float(x), float(y), 1.0) for x, y in zip(r * np.cos(t), 0.85 * r * np.sin(t))], [],
+                     [tuple(range(len(t)))])
+    outline = bpy.data.objects.new("Outline", mesh)
+    bpy.context.scene.collection.objects.link(outline)
+    return {"falloff_mask_source": "OBJECT", "falloff_mask_object": outline.name, "falloff_width": 0.25}
+
+
+def mask_image():
+    """A 256^2 image of two soft blobs (white: land kept), row 0 the terrain's -y edge."""
+    n = 256
+    u = np.linspace(-1, 1, n)
+    x, y = np.meshgrid(u, u)
+    blobs = np.exp(-((x + 0.35) ** 2 + (y + 0.2) ** 2) / 0.12) + 0.8 * np.exp(-((x - 0.45) ** 2 + (y - 0.35) ** 2) / 0.06)
+    m = np.clip(1.3 * blobs, 0, 1)
+    image = bpy.data.images.new("Two Islands", n, n)
+    px = np.ones((n, n, 4), dtype=np.float32)
+    px[:, :, 0] = px[:, :, 1] = px[:, :, 2] = m
+    image.pixels.foreach_set(px.ravel())
+    return {"falloff_mask_source": "IMAGE", "falloff_mask_image": image.name, "sea": "HEIGHT", "sea_level": 0.3}
+
+
 def main():
     args = parse_args()
     out = Path(args.out).resolve()
@@ -123,6 +154,23 @@ def main():
         lo, hi = frame_and_render(obj, size, sea, args, out / f"{slug}.png", material)
         print(f"22_blender_presets: {name}: relief {hi - lo:.2f} over {size:g} ({(hi - lo) / size:.2f}), "
               f"{time.perf_counter() - t0:.1f} s -> {out / slug}.png")
+    for name, make in (("Mask Object", mask_object), ("Mask Image", mask_image)):
+        if only and name not in only:
+            continue
+        clear()
+        values = {"levels": min(9, args.max_levels), "falloff": "CUSTOM", **make()}
+        result = bpy.ops.mesh.fracterra_terrain_add(location=(0, 0, 0), **values)
+        if result != {"FINISHED"}:
+            raise RuntimeError(f"{name}: the terrain operator returned {result}")
+        obj = bpy.context.active_object
+        s = obj.fracterra_terrain
+        sea = s.sea_level if s.sea == "HEIGHT" else None
+        for other in bpy.data.objects:  # the mask object is not in the picture
+            if other != obj:
+                other.hide_render = True
+        slug = name.lower().replace(" ", "-")
+        frame_and_render(obj, s.world_size, sea, args, out / f"{slug}.png", material)
+        print(f"22_blender_presets: {name} -> {out / slug}.png")
     if not args.no_ant and (not only or "ANT" in only):
         import addon_utils
         clear()

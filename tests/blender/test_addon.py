@@ -591,6 +591,35 @@ class ProgressTest(unittest.TestCase):
         self.assertEqual(coords(obj.data), before)
         self.assertEqual(len(bpy.data.meshes), 1)
 
+    def test_polyline_cancelled_while_building_leaves_no_curve(self):
+        pb = addon_harness.submodule("blender.polyline_build")
+        values = {p.name: p.default for p in core().params.POLYLINE_PARAMS}
+        values.update(method="FPL", depth=18, branch_prob=0.0)  # 2^18 + 1 points: a step of 100k points or more
+        curves = len(bpy.data.curves)
+        runner = self.progress.Runner(pb.polyline_job(values, [(0, 0, 0), (10, 0, 0)], bpy.context))
+        runner.start()
+        runner._work_done.wait(60)
+        self.assertEqual(runner.step(), self.progress.RUNNING)  # a first step of splines is in the curve
+        self.assertEqual(len(bpy.data.curves), curves + 1)
+        runner.cancel()
+        self.assertEqual(runner.step(), self.progress.CANCELLED)
+        self.assertEqual(len(bpy.data.curves), curves)
+
+    def test_fractalize_cancelled_keeps_the_mesh(self):
+        bpy.ops.mesh.primitive_cube_add()
+        cube = bpy.context.active_object
+        before = coords(cube.data)
+        op = addon_harness.submodule("blender.fractalize_op")
+        fake = type("Op", (), {p.name: p.default for p in core().params.FRACTALIZE_PARAMS})()
+        fake.levels = 6
+        runner = self.progress.Runner(op.FRACTERRA_OT_fractalize.make_job(fake, bpy.context))
+        runner.cancel()
+        runner.start()
+        self.assertEqual(self.run_steps(runner), self.progress.CANCELLED)
+        self.assertIs(bpy.context.active_object.data, cube.data)
+        self.assertEqual(coords(cube.data), before)
+        self.assertEqual(len(bpy.data.meshes), 1)
+
     def test_status_text_shows_the_bar_and_how_to_cancel(self):
         text = self.progress.status_text("Generating terrain", 0.5)
         self.assertIn(" 50%", text)

@@ -152,13 +152,18 @@ def wait_for_jobs(limit=60.0):
 
 
 def expand_redo_panel():
-    """Clicks the collapsed Adjust Last Operation panel open, as a user does."""
-    _, area, _ = view3d()
-    hud = next((r for r in area.regions if r.type == "HUD" and r.width > 1), None)
-    check(hud is not None, "no redo panel (Adjust Last Operation) appeared")
-    if hud is not None:
+    """Clicks the collapsed Adjust Last Operation panel open, as a user does. Its
+    header is a toggle and Blender keeps it open or closed from one operator to
+    the next, so it clicks only while the panel is a bare header (and looks again)."""
+    for _attempt in range(3):
+        _, area, _ = view3d()
+        hud = next((r for r in area.regions if r.type == "HUD" and r.width > 1), None)
+        check(hud is not None, "no redo panel (Adjust Last Operation) appeared")
+        if hud is None or hud.height > 60:  # open: more than its header
+            break
         window = bpy.context.window_manager.windows[0]
         xdotool("mousemove", str(hud.x + 20), str(window.height - (hud.y + hud.height - 10)), "click", "1")
+        yield STEP
     yield STEP
 
 
@@ -217,6 +222,39 @@ def scenario(shot):
     check(DRAWN.get("FRACTERRA_PT_terrain", 0) > 0, "the Fractal Terrain sidebar panel was not drawn")
     shot("terrain-sidebar")
 
+    # Falloff 'Custom' from the sidebar: an object's outline (a circle drawn over the
+    # terrain), then an image; its fields drawn, Regenerate applies it.
+    terrain = bpy.context.active_object
+    with in_view3d():
+        bpy.ops.curve.primitive_bezier_circle_add(radius=3.0, location=(1.0, 0.0, 0.0))
+    circle = bpy.context.active_object
+    bpy.context.view_layer.objects.active = terrain
+    settings = terrain.fracterra_terrain
+    settings.falloff, settings.falloff_mask_source, settings.falloff_mask_object = "CUSTOM", "OBJECT", circle.name
+    settings.falloff_width = 0.2
+    with in_view3d():
+        bpy.ops.object.fracterra_terrain_regenerate("INVOKE_DEFAULT", True)
+    yield from wait_for_jobs()
+    corner = terrain.data.vertices[0].co.z
+    check(abs(corner - settings.edge_level) < 1e-6, f"the custom falloff left the corner at {corner}")
+    shot("terrain-sidebar-custom-falloff-object")
+    mask = bpy.data.images.new("Mask", 64, 64)
+    settings.falloff_mask_source, settings.falloff_mask_image_pick = "IMAGE", "Mask"
+    yield STEP
+    shot("terrain-sidebar-custom-falloff-image")
+    check(settings.falloff_mask_image == "Mask", "the mask image picker did not store the image")
+    settings.falloff = "RADIAL"
+    bpy.data.images.remove(mask)
+    bpy.data.objects.remove(circle)
+    with in_view3d():
+        bpy.ops.object.fracterra_terrain_regenerate("INVOKE_DEFAULT", True)
+    yield from wait_for_jobs()
+    settings.erode_preset = "LAND"
+    yield STEP
+    shot("terrain-sidebar-erosion")  # the Erosion box's heading, not cut to "Erosi..."
+    settings.erode_preset = "NONE"
+    yield STEP
+
     # Undo after Regenerate restores the heights.
     terrain = bpy.context.active_object
     name = terrain.name
@@ -241,6 +279,7 @@ def scenario(shot):
     check(terrain.fracterra_measures.kind == "terrain", "Measure stored nothing")
     check(DRAWN.get("FRACTERRA_PT_measures", 0) > 0, "the measures panel was not drawn")
     yield from run_from_script("curve.fracterra_coastline_add")
+    yield from wait_for_jobs()
     yield from expand_redo_panel()
     shot("coastline-redo-panel")
     op = bpy.context.window_manager.operators[-1]
@@ -291,6 +330,7 @@ def scenario(shot):
     # Add > Curve > Fractal Polyline at the 3D cursor, re-edited in place from its panel.
     bpy.context.scene.cursor.location = (3.0, 0.0, 0.0)
     yield from run_from_script("curve.fracterra_polyline_add")
+    yield from wait_for_jobs()
     check(bpy.context.active_object.fracterra_polyline.is_polyline, "Add > Curve > Fractal Polyline added nothing")
     yield from expand_redo_panel()
     shot("polyline-redo-panel")
@@ -300,7 +340,7 @@ def scenario(shot):
     bolt.fracterra_polyline.depth = 5
     with in_view3d():
         bpy.ops.object.fracterra_polyline_regenerate("INVOKE_DEFAULT", True)
-    yield STEP
+    yield from wait_for_jobs()
     check(bpy.context.active_object.name == bolt_name, "the polyline was not regenerated in place")
     check(len(bpy.data.objects[bolt_name].data.splines[0].points) == 2 ** 5 + 1 != points,
           "the polyline's new depth did not apply")
@@ -310,10 +350,11 @@ def scenario(shot):
 
     # Object > Fractalize on a cube, and File > Export > POV-Ray (its file browser, closed).
     with in_view3d():
-        bpy.ops.mesh.primitive_cube_add(location=(-4, 0, 1))
+        bpy.ops.mesh.primitive_cube_add(location=(-7, 0, 1))  # beside the 10 m terrain, in view
     yield STEP
     faces = len(bpy.context.active_object.data.polygons)
     yield from run_from_script("object.fracterra_fractalize")
+    yield from wait_for_jobs()
     check(len(bpy.context.active_object.data.polygons) > faces, "Object > Fractalize did not refine the cube")
     yield from expand_redo_panel()
     shot("fractalize-redo-panel")

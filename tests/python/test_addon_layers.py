@@ -11,7 +11,7 @@ import pytest
 BLENDER_DIR = Path(__file__).resolve().parents[2] / "blender_addon" / "fracterra" / "blender"
 OPERATOR_MODULES = {"terrain_ops", "polyline_ops", "measure_op", "fractalize_op", "pov_export", "dem_io_ops",
                     "tiles_import_op"}
-SHARED_NAMES = {"SettingsError", "WindowProgress", "REPORTED"}
+SHARED_NAMES = {"SettingsError", "REPORTED"}
 
 
 def modules():

@@ -253,3 +253,21 @@ def test_world_size_reaches_the_heightfield(core):
         assert hf.world_size == 42.0
     with pytest.raises(core.InvalidArgumentError, match="world_size"):
         core.generate_terrain(levels=3, world_size=0.0)
+
+
+def test_custom_falloff_mask_from_python_sequences_and_numpy(core):
+    np = pytest.importorskip("numpy")
+    with core.generate_terrain(levels=4, seed=2, edge_level=-1.0) as raw:
+        z = raw.to_array()
+    mask = (2, 2, [0.0, 1.0, 1.0, 1.0])  # black at row 0, column 0
+    for given in (mask, (2, 2, np.array(mask[2], dtype=np.float32))):
+        with core.generate_terrain(levels=4, seed=2, edge_level=-1.0, falloff="CUSTOM", falloff_mask=given) as hf:
+            got = hf.to_array()
+        assert got[0] == -1.0  # weight 0: the edge level
+        assert got[16 * 17 + 16] == z[16 * 17 + 16]  # weight 1: the height
+    with pytest.raises(core.InvalidArgumentError, match="falloff mask has 3 values"):
+        core.generate_terrain(levels=4, falloff="CUSTOM", falloff_mask=(2, 2, [0.0, 1.0, 1.0]))
+    with pytest.raises(core.InvalidArgumentError, match=r"must be in \[0, 1\]"):
+        core.generate_terrain(levels=4, falloff="CUSTOM", falloff_mask=(2, 2, [0.0, 1.0, 2.0, 1.0]))
+    with pytest.raises(core.InvalidArgumentError, match="needs a mask"):
+        core.generate_terrain(levels=4, falloff="CUSTOM")

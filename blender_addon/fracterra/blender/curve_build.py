@@ -8,26 +8,43 @@ import numpy as np
 from .. import core
 
 
-def curve_from_polylines(name, pl, bevel, transform=None, unit_radius=False):
-    """A new curve datablock with one POLY spline per line of `pl`, radii from the library.
+class LineArrays:
+    """A library polyline set copied out into numpy arrays (in any thread, e.g. a
+    job's worker), so the handle can be freed before Blender data is built:
+    xyz (n, 3) float64, radii (n,) float32, offsets (lines + 1,)."""
 
-    transform: None or f(x, y, z) -> (x, y, z) on float64 arrays (e.g. sample
-    units to local coordinates). unit_radius: every point's radius is 1 (lines
-    the library gives no radii, e.g. coastlines), so bevel_depth is the radius.
-    """
+    def __init__(self, pl, unit_radius=False):
+        self.xyz = np.asarray(pl.xyz(), dtype=np.float64).reshape(-1, 3)
+        self.radii = np.ones(pl.vertex_count, np.float32) if unit_radius else np.asarray(pl.radii(), dtype=np.float32)
+        self.offsets = list(pl.offsets())
+        self.line_count, self.vertex_count = pl.line_count, pl.vertex_count
+
+
+def new_curve(name, bevel):
+    """An empty 3D curve datablock; with `bevel`, a round tube of each point's radius."""
     curve = bpy.data.curves.new(name, "CURVE")
     curve.dimensions = "3D"
     if bevel:
         curve.bevel_depth = 1.0  # times each point's radius
         curve.bevel_resolution = 2
         curve.use_fill_caps = True
-    xyz = np.asarray(pl.xyz(), dtype=np.float64).reshape(-1, 3)
-    radii = np.ones(pl.vertex_count, np.float32) if unit_radius else np.asarray(pl.radii(), dtype=np.float32)
-    offsets = pl.offsets()
+    return curve
+
+
+def fill_curve_steps(curve, lines, transform=None, points_per_step=100_000):
+    """Adds one POLY spline per line of `lines` (LineArrays) to `curve`, yielding
+    the fraction done about every `points_per_step` points (build steps of a
+    progress.Job: a long curve does not freeze the window in one go).
+
+    transform: None or f(x, y, z) -> (x, y, z) on float64 arrays (e.g. sample
+    units to local coordinates)."""
+    xyz = lines.xyz
     if transform:
         xyz = np.stack(transform(xyz[:, 0], xyz[:, 1], xyz[:, 2]), axis=1)
     co = np.ones((len(xyz), 4), dtype=np.float32)  # x, y, z, w = 1
     co[:, :3] = xyz
+    offsets, radii = lines.offsets, lines.radii
+    total, since = max(len(xyz), 1), 0
     for a, b in zip(offsets[:-1], offsets[1:]):
         if b - a < 2:
             continue
@@ -35,13 +52,16 @@ def curve_from_polylines(name, pl, bevel, transform=None, unit_radius=False):
         spline.points.add(b - a - 1)
         spline.points.foreach_set("co", co[a:b].ravel())
         spline.points.foreach_set("radius", radii[a:b])
-    return curve
+        since += b - a
+        if since >= points_per_step:
+            since = 0
+            yield b / total
 
 
-def point_cloud_from_polylines(name, pl):
-    """A mesh of loose vertices, one per polyline vertex (IFS point sets)."""
+def point_cloud_from_arrays(name, xyz):
+    """A mesh of loose vertices at `xyz` ((n, 3) floats: IFS point sets)."""
     mesh = bpy.data.meshes.new(name)
-    xyz = np.asarray(pl.xyz(), dtype=np.float32)
+    xyz = np.ascontiguousarray(xyz, dtype=np.float32).ravel()
     mesh.vertices.add(len(xyz) // 3)
     mesh.vertices.foreach_set("co", xyz)
     mesh.update()

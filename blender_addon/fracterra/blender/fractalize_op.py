@@ -7,7 +7,8 @@ from ..core import params, subdiv
 from . import props
 from .mesh_build import set_smooth
 from .prefs import library_threads
-from .reporting import REPORTED, SettingsError, WindowProgress
+from .progress import Job, JobOperator
+from .reporting import SettingsError
 
 
 def _edge_creases(mesh):
@@ -62,7 +63,24 @@ def fill_polygon_mesh(mesh, positions, sizes, indices):
     mesh.update(calc_edges=True)
 
 
-class FRACTERRA_OT_fractalize(bpy.types.Operator):
+def _fractalized_mesh(name, result, smooth, materials):
+    """Build steps of the new mesh (one step: filling it is a few array copies);
+    removed again if cancelled or failed."""
+    positions, sizes, indices = result
+    mesh = bpy.data.meshes.new(name)
+    try:
+        fill_polygon_mesh(mesh, positions, sizes, indices)
+        set_smooth(mesh, smooth)
+        for mat in materials:
+            mesh.materials.append(mat)
+        yield 1.0
+    except BaseException:  # GeneratorExit too: a cancel leaves no mesh behind
+        bpy.data.meshes.remove(mesh)
+        raise
+    return mesh, len(sizes)
+
+
+class FRACTERRA_OT_fractalize(JobOperator, bpy.types.Operator):
     """Subdivide the active mesh with fractal (midpoint or additions) displacements, using OpenSubdiv"""
     bl_idname = "object.fracterra_fractalize"
     bl_label = "Fractalize"
@@ -73,27 +91,32 @@ class FRACTERRA_OT_fractalize(bpy.types.Operator):
         obj = context.active_object
         return obj is not None and obj.type == "MESH" and context.mode == "OBJECT"
 
-    def execute(self, context):
-        obj = context.active_object
-        try:
-            with ft_mesh_of(obj.data, self.use_creases) as base, WindowProgress(context) as progress, \
-                    subdiv.fractalize(base, self.levels, self.hurst, self.sigma, self.seed, self.scheme, self.mode,
-                                      self.fix_boundary, self.scale_by_edge_length,
-                                      threads=library_threads(context), progress=progress) as out:
-                positions, sizes, indices = out.positions(), out.face_sizes(), out.face_indices()
-        except REPORTED as e:
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
-        mesh = bpy.data.meshes.new(obj.data.name + " Fractal")
-        fill_polygon_mesh(mesh, positions, sizes, indices)
-        set_smooth(mesh, self.smooth)
-        for mat in obj.data.materials:
-            mesh.materials.append(mat)
+    # From the menu it runs in the background with a progress bar (Esc cancels):
+    # OpenSubdiv's refinement in the worker thread, the mesh swapped in at the
+    # end, so a cancel leaves the object as it was.
+    def make_job(self, context):
+        obj = self._obj = context.active_object
+        base = ft_mesh_of(obj.data, self.use_creases)  # read here (it needs bpy); freed by the work
+        settings = (self.levels, self.hurst, self.sigma, self.seed, self.scheme, self.mode, self.fix_boundary,
+                    self.scale_by_edge_length)
+        threads = library_threads(context)
+
+        def work(progress):
+            with base, subdiv.fractalize(base, *settings, threads=threads, progress=progress) as out:
+                return out.positions(), out.face_sizes(), out.face_indices()
+
+        name, smooth, materials = obj.data.name + " Fractal", self.smooth, list(obj.data.materials)
+        return Job("Fractalizing", work, lambda result: _fractalized_mesh(name, result, smooth, materials),
+                   work_share=0.9)
+
+    def job_done(self, context, value):
+        mesh, faces = value
+        obj = self._obj
         old = obj.data
         obj.data = mesh
         if old.users == 0:
             bpy.data.meshes.remove(old)
-        self.report({"INFO"}, f"Fractalized: {len(sizes)} faces")
+        self.report({"INFO"}, f"Fractalized: {faces} faces in {self.job_seconds:.2f} s")
         return {"FINISHED"}
 
 

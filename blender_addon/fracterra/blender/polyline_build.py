@@ -1,5 +1,7 @@
 """From polyline settings to curve (or point-cloud) data, for a new object or
-an existing one regenerated in place from the settings stored on it."""
+an existing one regenerated in place from the settings stored on it, as
+progress.Jobs: the library generates in the worker thread, the curve is
+built in steps in the main thread (status-bar progress, Esc cancels)."""
 
 import json
 
@@ -7,9 +9,10 @@ import bpy
 
 from .. import core
 from ..core import params
-from .curve_build import curve_from_polylines, point_cloud_from_polylines
+from .curve_build import LineArrays, fill_curve_steps, new_curve, point_cloud_from_arrays
 from .prefs import library_threads
-from .reporting import SettingsError, WindowProgress
+from .progress import Job, run_job
+from .reporting import SettingsError
 
 
 def default_radius(base):
@@ -20,18 +23,37 @@ def default_radius(base):
     return max(chord, 1e-3) / 200
 
 
-def polyline_data(values, base, context):
-    """(data, summary): a new curve, or a mesh of points for IFS, for `values` along `base`."""
+def polyline_job(values, base, context, label="Generating polyline"):
+    """A progress.Job whose value is (data, summary): a new curve, or a mesh of
+    points for IFS, for `values` along `base`. Nothing is left if it is cancelled."""
     # Only what the method uses: the library refuses e.g. branching for a Koch curve,
     # and the settings stored on an object keep every field.
     values = {p.name: values[p.name] for p in params.POLYLINE_PARAMS if params.is_used(p, values["method"])}
-    with WindowProgress(context) as progress, \
-            core.generate_polylines(values, base=base, progress=progress, threads=library_threads(context)) as pl:
+    threads = library_threads(context)
+
+    def work(progress):
+        with core.generate_polylines(values, base=base, progress=progress, threads=threads) as pl:
+            return LineArrays(pl)
+
+    def build(lines):
+        summary = f"{lines.line_count} line(s), {lines.vertex_count} vertices"
         if values["method"] == "IFS":
-            data = point_cloud_from_polylines("Fractal Points", pl)
-        else:
-            data = curve_from_polylines("Fractal Polyline", pl, values["bevel"])
-        return data, f"{pl.line_count} line(s), {pl.vertex_count} vertices"
+            return point_cloud_from_arrays("Fractal Points", lines.xyz), summary
+        curve = new_curve("Fractal Polyline", values["bevel"])
+        try:
+            yield from fill_curve_steps(curve, lines)
+        except BaseException:  # GeneratorExit too: a cancel leaves no curve behind
+            bpy.data.curves.remove(curve)
+            raise
+        return curve, summary
+        yield  # noqa: unreachable - a generator even for IFS
+
+    return Job(label, work, build)
+
+
+def polyline_data(values, base, context):
+    """(data, summary), built here and now (scripts)."""
+    return run_job(polyline_job(values, base, context))
 
 
 def stored_base(settings):
@@ -44,20 +66,32 @@ def stored_base(settings):
     return [tuple(settings.start), tuple(settings.end)]
 
 
-def regenerate_polyline(obj, context):
-    """Rebuilds a fractal polyline object's data from its stored settings; the
-    object (name, transform, parent, modifiers, materials) stays. Returns a summary."""
+def regenerate_job(obj, context):
+    """A progress.Job that rebuilds a fractal polyline object's data from its stored
+    settings; the object (name, transform, parent, modifiers, materials) stays.
+    Its value is a summary."""
     settings = obj.fracterra_polyline
     values = params.values_of(settings, params.POLYLINE_PARAMS)
     wants = "MESH" if values["method"] == "IFS" else "CURVE"
     if obj.type != wants:
         raise SettingsError("IFS points are a mesh and the other methods a curve: switching between them "
                             "changes the object type; add a new Fractal Polyline instead")
-    data, summary = polyline_data(values, stored_base(settings), context)
-    old = obj.data
-    for mat in old.materials:
-        data.materials.append(mat)
-    obj.data = data
-    if old.users == 0:
-        (bpy.data.meshes if wants == "MESH" else bpy.data.curves).remove(old)
-    return summary
+    job = polyline_job(values, stored_base(settings), context, "Regenerating polyline")
+    make = job.build
+
+    def build(lines):
+        data, summary = yield from make(lines)
+        old = obj.data
+        for mat in old.materials:
+            data.materials.append(mat)
+        obj.data = data
+        if old.users == 0:
+            (bpy.data.meshes if wants == "MESH" else bpy.data.curves).remove(old)
+        return summary
+
+    return Job(job.label, job.work, build)
+
+
+def regenerate_polyline(obj, context):
+    """Rebuilds a fractal polyline object here and now (auto-update, scripts); returns a summary."""
+    return run_job(regenerate_job(obj, context))

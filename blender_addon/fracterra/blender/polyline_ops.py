@@ -10,9 +10,10 @@ from mathutils import Matrix
 from .. import core
 from ..core import params
 from . import props
-from .curve_build import curve_from_polylines, link_new_object, spline_nodes
-from .polyline_build import default_radius, polyline_data, regenerate_polyline
-from .reporting import REPORTED, SettingsError
+from .curve_build import LineArrays, fill_curve_steps, link_new_object, new_curve, spline_nodes
+from .polyline_build import default_radius, polyline_job, regenerate_job
+from .progress import Job, JobOperator
+from .reporting import SettingsError
 from .settings_ui import draw_polyline_settings
 from .terrain_objects import heightfield_of, is_polyline, is_terrain, sea_height
 
@@ -69,7 +70,7 @@ def base_polyline(values, context):
     return nodes, obj.matrix_world.copy()
 
 
-class FRACTERRA_OT_polyline_add(bpy.types.Operator, object_utils.AddObjectHelper):
+class FRACTERRA_OT_polyline_add(JobOperator, bpy.types.Operator, object_utils.AddObjectHelper):
     """Add a fractal polyline (FPL 2D/3D with branching, Koch, dragon, Sierpinski, IFS, profile) at the 3D cursor"""
     bl_idname = "curve.fracterra_polyline_add"
     bl_label = "Fractal Polyline"
@@ -84,35 +85,38 @@ class FRACTERRA_OT_polyline_add(bpy.types.Operator, object_utils.AddObjectHelper
             col.prop(self, "location")
             col.prop(self, "rotation")
 
-    def execute(self, context):
+    # From the menu it runs in the background with a progress bar (Esc cancels);
+    # the redo panel and scripts run execute() (progress.JobOperator).
+    def make_job(self, context):
         values = params.values_of(self, params.POLYLINE_PARAMS)
-        try:
-            base, matrix = base_polyline(values, context)
-            if not self.properties.is_property_set("radius"):
-                self.radius = values["radius"] = default_radius(base)
-            data, summary = polyline_data(values, base, context)
-        except REPORTED as e:
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
+        base, self._matrix = base_polyline(values, context)
+        if not self.properties.is_property_set("radius"):
+            self.radius = values["radius"] = default_radius(base)
+        self._base = base
+        return polyline_job(values, base, context)
+
+    def job_done(self, context, value):
+        data, summary = value
+        values = params.values_of(self, params.POLYLINE_PARAMS)
         if values["base_source"] == "POINTS":
             # At the 3D cursor (or Location), aligned as asked, like Blender's own primitives.
             obj = object_utils.object_data_add(context, data, operator=self)
         else:
-            obj = link_new_object(context, data.name, data, matrix)
+            obj = link_new_object(context, data.name, data, self._matrix)
         settings = obj.fracterra_polyline
         props.copy_settings(self, settings, params.POLYLINE_PARAMS)
-        settings.base_nodes = json.dumps([list(p) for p in base]) if values["base_source"] == "ACTIVE" else ""
+        settings.base_nodes = json.dumps([list(p) for p in self._base]) if values["base_source"] == "ACTIVE" else ""
         settings.is_polyline = True
         # How exporters should show it (POV-Ray: glowing lightning or a plain tube).
         obj["fracterra_kind"] = "LIGHTNING" if values["method"] == "FPL3D" else "LINE"
-        self.report({"INFO"}, f"Fractal polyline: {summary}")
+        self.report({"INFO"}, f"Fractal polyline: {summary} in {self.job_seconds:.2f} s")
         return {"FINISHED"}
 
 
 FRACTERRA_OT_polyline_add.__annotations__ = props.terrain_annotations(param_list=params.POLYLINE_PARAMS)
 
 
-class FRACTERRA_OT_polyline_regenerate(bpy.types.Operator):
+class FRACTERRA_OT_polyline_regenerate(JobOperator, bpy.types.Operator):
     """Regenerate the active fractal polyline from its settings, in place"""
     bl_idname = "object.fracterra_polyline_regenerate"
     bl_label = "Regenerate Polyline"
@@ -122,17 +126,21 @@ class FRACTERRA_OT_polyline_regenerate(bpy.types.Operator):
     def poll(cls, context):
         return is_polyline(context.active_object) and context.mode == "OBJECT"
 
-    def execute(self, context):
-        obj = context.active_object
-        try:
-            summary = regenerate_polyline(obj, context)
-        except REPORTED as e:
+    def make_job(self, context):
+        self._obj = context.active_object
+        self._obj.fracterra_polyline.last_error = ""
+        return regenerate_job(self._obj, context)
+
+    def _refuse(self, e):
+        obj = bpy.context.active_object
+        if is_polyline(obj):
             obj.fracterra_polyline.last_error = str(e)
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
-        obj.fracterra_polyline.last_error = ""
+        return super()._refuse(e)
+
+    def job_done(self, context, summary):
+        obj = self._obj
         obj["fracterra_kind"] = "LIGHTNING" if obj.fracterra_polyline.method == "FPL3D" else "LINE"
-        self.report({"INFO"}, f"Fractal polyline: {summary}")
+        self.report({"INFO"}, f"Fractal polyline: {summary} in {self.job_seconds:.2f} s")
         return {"FINISHED"}
 
 
@@ -162,7 +170,7 @@ def coastline_terrain(obj):
     return None
 
 
-class FRACTERRA_OT_coastline_add(bpy.types.Operator):
+class FRACTERRA_OT_coastline_add(JobOperator, bpy.types.Operator):
     """Add the coastline (level set) of the active fractal terrain as a curve"""
     bl_idname = "curve.fracterra_coastline_add"
     bl_label = "Terrain Coastline"
@@ -198,41 +206,57 @@ class FRACTERRA_OT_coastline_add(bpy.types.Operator):
         if not is_set("radius"):
             self.radius = settings.world_size / 500
 
-    def execute(self, context):
+    def make_job(self, context):
         terrain = coastline_terrain(context.active_object)
         settings = terrain.fracterra_terrain
+        hf = heightfield_of(terrain)  # read here (it needs bpy); freed by the work
         try:
-            with heightfield_of(terrain) as hf:
-                nx, ny = hf.width, hf.height
-                world_size_x, world_size_y = core.grid_size(settings.world_size, nx, ny)
-                s = hf.stats()
-                sea = sea_height(settings, s["min"])
-                self.defaults_from(settings, sea)
-                level = self.quantile if self.use_quantile else self.level
-                by_quantile = self.use_quantile
-                if by_quantile and sea is not None:
-                    level = land_quantile(hf, sea, self.quantile)
-                    by_quantile = False
-                if not by_quantile and sea is not None and level <= sea:
-                    # The flattened sea lies exactly at the sea level and counts as land
-                    # there (land: height >= level): take the level just above it.
-                    level = sea + 1e-5 * max(s["max"] - s["min"], 1e-6)
-                with core.coastline(hf, level, quantile=by_quantile) as pl:
-                    if pl.line_count == 0:
-                        # Not an empty curve without a word: say why.
-                        what = f"quantile {level:g}" if by_quantile else f"level {level:g}"
-                        self.report({"ERROR"}, f"no coastline at {what}: the terrain's heights are "
-                                               f"[{s['min']:g}, {s['max']:g}] and no cell crosses it")
-                        return {"CANCELLED"}
-                    def to_local(x, y, z):
-                        return (x / (nx - 1) - 0.5) * world_size_x, (y / (ny - 1) - 0.5) * world_size_y, z
-                    curve = curve_from_polylines("Coastline", pl, bevel=False, transform=to_local,
-                                                 unit_radius=True)
-                    lines = pl.line_count
-        except REPORTED as e:
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
-        curve.bevel_depth = self.radius  # times each point's radius of 1
+            nx, ny = hf.width, hf.height
+            world_size_x, world_size_y = core.grid_size(settings.world_size, nx, ny)
+            s = hf.stats()
+            sea = sea_height(settings, s["min"])
+            self.defaults_from(settings, sea)
+            level = self.quantile if self.use_quantile else self.level
+            by_quantile = self.use_quantile
+            if by_quantile and sea is not None:
+                level = land_quantile(hf, sea, self.quantile)
+                by_quantile = False
+            if not by_quantile and sea is not None and level <= sea:
+                # The flattened sea lies exactly at the sea level and counts as land
+                # there (land: height >= level): take the level just above it.
+                level = sea + 1e-5 * max(s["max"] - s["min"], 1e-6)
+        except BaseException:
+            hf.close()
+            raise
+
+        def work(progress):
+            with hf, core.coastline(hf, level, quantile=by_quantile) as pl:
+                if pl.line_count == 0:
+                    # Not an empty curve without a word: say why.
+                    what = f"quantile {level:g}" if by_quantile else f"level {level:g}"
+                    raise SettingsError(f"no coastline at {what}: the terrain's heights are "
+                                        f"[{s['min']:g}, {s['max']:g}] and no cell crosses it")
+                return LineArrays(pl, unit_radius=True)
+
+        def to_local(x, y, z):
+            return (x / (nx - 1) - 0.5) * world_size_x, (y / (ny - 1) - 0.5) * world_size_y, z
+
+        def build(lines):
+            curve = new_curve("Coastline", bevel=False)
+            try:
+                yield from fill_curve_steps(curve, lines, transform=to_local)
+            except BaseException:  # GeneratorExit too: a cancel leaves no curve behind
+                bpy.data.curves.remove(curve)
+                raise
+            curve.bevel_depth = self.radius  # times each point's radius of 1
+            return curve, lines.line_count
+
+        self._terrain = terrain
+        return Job("Tracing coastline", work, build, work_share=0.3)
+
+    def job_done(self, context, value):
+        curve, lines = value
+        terrain = self._terrain
         obj = link_new_object(context, f"{terrain.name} Coastline", curve, terrain.matrix_world.copy())
         obj.parent = terrain
         obj.matrix_parent_inverse = terrain.matrix_world.inverted()
