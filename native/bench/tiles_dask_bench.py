@@ -12,7 +12,8 @@ Reports (JSON on stdout, medians of --reps runs where it says so):
   generation samples/s  tile windows generated on the cluster and dropped (no encoding), the first
                         --generation-tiles tiles (default all), samples / wall time, median of reps;
   end-to-end samples/s  the tile set written (tiles, manifest, VRT, overviews) / wall time, once
-                        (--write-reps for more; each rewrites the set from scratch);
+                        (--write-reps for more; each rewrites the set from scratch), and of that
+                        the finish (VRT and overviews, GDAL on all cores);
   peak memory per worker (ru_maxrss of each worker process), and the machine load (uptime).
 """
 
@@ -97,6 +98,8 @@ def main():
         report["write_seconds"] = times
         report["end_to_end_samples_per_s"] = samples / statistics.median(times)
         report["tiles"] = summaries[-1]["tiles"]
+        # The manifest and the VRT mosaic with its overviews, in the driver after the tiles.
+        report["finish_seconds"] = [sm["finish_seconds"] for sm in summaries]
         report["disk_bytes"] = sum(os.path.getsize(os.path.join(a.out, f)) for f in os.listdir(a.out))
         if a.measure:
             t = time.perf_counter()

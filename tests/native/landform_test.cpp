@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "terrain/terrain.hpp"
+#include "tiles/manifest.hpp"
 
 using namespace ft;
 
@@ -221,6 +222,20 @@ TEST(Landform, WindowsWithLandformsEqualTheWholeBitForBit) {
       }
     }
   }
+}
+
+TEST(Landform, TileSetsTellTerrainsWithOtherMasksApart) {
+  // A tile set reuses tiles only for the same terrain: the mask is part of it.
+  std::vector<float> a(9, 0.5f), same = a, other = a;
+  other[4] = 0.25f;
+  auto identity = [](const std::vector<float>& mask) {
+    ft_terrain_params p = params(FT_TERRAIN_MIDPOINT);
+    p.falloff = FT_FALLOFF_CUSTOM, p.falloff_mask = mask.data(), p.falloff_mask_width = p.falloff_mask_height = 3;
+    return terrain_identity(p);
+  };
+  EXPECT_EQ(identity(a), identity(same));  // the content counts, not where it lies
+  EXPECT_NE(identity(a), identity(other));
+  EXPECT_TRUE(identity(a).contains("falloff_mask"));
 }
 
 TEST(Landform, SeaFractionIsRefusedForWindows) {

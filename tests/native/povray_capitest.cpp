@@ -95,9 +95,9 @@ TEST(PovCapi, TheDefaultCameraElevationIsAutoByWhatTheSceneHolds) {
 }
 
 TEST(PovCapi, CameraMarginAndCentreAreSettingsOfTheTable) {
-  // margin and center_v are rows of ft_pov_scene_params (ABI 2.10): their
+  // margin and center_v are rows of ft_pov_scene_params (ABI 2.11): their
   // defaults are CameraOptions', the table checks their ranges in its words,
-  // they reach the framing, and a 2.9 caller's smaller struct gets the defaults.
+  // they reach the framing, and a 2.10 caller's smaller struct gets the defaults.
   TempDir t;
   std::vector<float> z(17 * 17);
   for (size_t i = 0; i < z.size(); ++i) z[i] = float(std::cos(i * 0.21));
@@ -131,7 +131,7 @@ TEST(PovCapi, CameraMarginAndCentreAreSettingsOfTheTable) {
   p.camera_margin = 0.2;
   ASSERT_EQ(ft_pov_write_scene(&p, (t / "moved.pov").c_str()), FT_OK) << ft_last_error();
   EXPECT_NE(slurp(t / "moved.pov"), by_default) << "margin and center_v reach the camera";
-  // A caller of ABI 2.9 knows neither field: its struct ends before them.
+  // A caller of ABI 2.10 knows neither field: its struct ends before them.
   ft_pov_scene_params old;
   ft_pov_scene_params_init(&old);
   old.terrain = hf;

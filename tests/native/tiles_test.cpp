@@ -2,10 +2,13 @@
 // samples and one height scale, so neighbouring 16-bit tiles agree exactly on
 // their shared edges and every tile is the quantised window of the whole
 // terrain; the height range holds the whole; a rerun resumes (skips tiles
-// whose CRC-32 matches) and a folder holding another terrain is refused; the
+// whose CRC-32 matches, from a journal of finished tiles) and a folder
+// holding another terrain is refused; the exact height range can come from
+// per-tile tasks; the
 // VRT mosaic has the whole's size in gdalinfo.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -193,6 +196,86 @@ TEST(Tiles, RerunSkipsTilesWhoseChecksumMatches) {
   EXPECT_EQ(write_all(again, p), 2);
   EXPECT_TRUE(again.done(1, 0));
   fs::remove_all(dir);
+}
+
+std::string file_text(const fs::path& path) {
+  std::ifstream f(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+}
+
+// Recording n tiles must cost O(n): each record appends one line to the
+// journal and leaves manifest.json alone (it used to rewrite it, O(n) each).
+// A killed run's journal, torn last line included, is folded in on resume,
+// and the finished set is the same bytes as an uninterrupted one.
+TEST(Tiles, RecordingAppendsToAJournalFoldedInOnResume) {
+  const ft_terrain_params p = midpoint(8, 11);
+  const fs::path straight = fresh_dir("journal_straight"), dir = fresh_dir("journal");
+  {
+    TileSet set(p, 128, TileFormat::png16, straight.string());
+    write_all(set, p);
+    set.finish();
+  }
+  {
+    TileSet set(p, 128, TileFormat::png16, dir.string());
+    const std::string opened = file_text(dir / kManifestName);
+    set.record(0, 0, write_tile(p, set.spec(), set.dir(), 0, 0));
+    set.record(1, 0, write_tile(p, set.spec(), set.dir(), 1, 0));
+    EXPECT_EQ(file_text(dir / kManifestName), opened);  // not rewritten
+    const std::string journal = file_text(dir / kJournalName);
+    EXPECT_EQ(std::count(journal.begin(), journal.end(), '\n'), 2) << journal;
+    std::ofstream(dir / kJournalName, std::ios::app) << "{\"column\": 0, \"row\": 1, \"cr";  // killed mid-append
+  }  // the run is killed here: no finish
+  TileSet again(p, 128, TileFormat::png16, dir.string());
+  EXPECT_FALSE(fs::exists(dir / kJournalName));  // folded into the manifest
+  EXPECT_EQ(again.recorded(), 2);
+  EXPECT_TRUE(again.done(0, 0));
+  EXPECT_TRUE(again.done(1, 0));
+  EXPECT_FALSE(again.done(0, 1));  // the torn line recorded nothing
+  const nlohmann::json m = nlohmann::json::parse(file_text(dir / kManifestName));
+  EXPECT_FALSE(m["tiles"][1]["crc32"].is_null());
+  EXPECT_EQ(write_all(again, p), 2);
+  again.finish();
+  EXPECT_FALSE(fs::exists(dir / kJournalName));
+  EXPECT_EQ(file_text(dir / kManifestName), file_text(straight / kManifestName));
+  fs::remove_all(dir);
+  fs::remove_all(straight);
+}
+
+// The exact range pass run elsewhere (Dask: one task per tile): a deferred
+// set waits for the union of its tiles' ranges, writes nothing before it,
+// and ends with the range the in-process pass gives.
+TEST(Tiles, ExactRangeCanComeFromPerTileTasks) {
+  ft_terrain_params p = midpoint(9, 3);
+  p.falloff = FT_FALLOFF_RADIAL, p.falloff_width = 0.5, p.edge_level = -2;  // needs the exact pass
+  ASSERT_TRUE(needs_exact_pass(p));
+  const fs::path dir = fresh_dir("deferred");
+  TileSet set(p, 128, TileFormat::png16, dir.string(), true);
+  ASSERT_TRUE(set.range_pending());
+  EXPECT_FALSE(fs::exists(dir / kManifestName));
+  EXPECT_THROW(set.record(0, 0, 1), Error);
+  EXPECT_THROW(set.finish(), Error);
+  EXPECT_THROW(set.set_height_range(NAN, 1.0), Error);
+  EXPECT_THROW(set.set_height_range(1.0, 0.0), Error);
+  double lo = INFINITY, hi = -INFINITY;
+  for (int32_t row = 0; row < set.spec().grid.rows(); ++row)
+    for (int32_t col = 0; col < set.spec().grid.columns(); ++col) {
+      const HeightRange t = tile_height_range(p, set.spec().grid, col, row);
+      lo = std::min(lo, t.min), hi = std::max(hi, t.max);
+    }
+  set.set_height_range(lo, hi);
+  EXPECT_FALSE(set.range_pending());
+  EXPECT_THROW(set.set_height_range(lo, hi), Error);  // fixed once
+  const HeightRange whole = tileset_height_range(p, set.spec().grid);
+  EXPECT_EQ(set.spec().height_min, whole.min);
+  EXPECT_EQ(set.spec().height_max, whole.max);
+  EXPECT_EQ(write_all(set, p), 16);
+  set.finish();
+  EXPECT_EQ(TileSet(p, 128, TileFormat::png16, dir.string(), true).spec().height_max, whole.max);  // resumed
+  // Plain midpoint keeps its bound from the coarse pass: never pending.
+  const fs::path plain = fresh_dir("deferred_plain");
+  EXPECT_FALSE(TileSet(midpoint(9, 3), 128, TileFormat::png16, plain.string(), true).range_pending());
+  fs::remove_all(dir);
+  fs::remove_all(plain);
 }
 
 TEST(Tiles, FolderOfAnotherTerrainIsRefused) {

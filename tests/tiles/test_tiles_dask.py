@@ -13,7 +13,9 @@ import sys
 import time
 from pathlib import Path
 
+import cloudpickle
 import pytest
+from distributed.diagnostics.plugin import WorkerPlugin
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "blender_addon"))
@@ -66,21 +68,61 @@ def test_localcluster_writes_the_same_bytes_as_one_process(reference, client, tm
     assert len(summary["worker_peak_rss_mib"]) == 2
 
 
+class TaskMarkers(WorkerPlugin):
+    """On every worker: an empty file KEY.PID.start when a tile task starts executing there, and
+    KEY.PID.end when its result is in the worker's memory (creating a file is atomic)."""
+
+    def __init__(self, folder):
+        self.folder = folder
+
+    def transition(self, key, start, finish, **kwargs):
+        if not str(key).startswith("fracterra-tile-"):
+            return
+        tag = "start" if finish == "executing" else "end" if (start, finish) == ("executing", "memory") else None
+        if tag:
+            open(os.path.join(self.folder, f"{key}.{os.getpid()}.{tag}"), "w").close()
+
+
+def marked(folder, pid, tag):
+    return {p.name.split(".")[0] for p in Path(folder).glob(f"*.{pid}.{tag}")}
+
+
 def test_a_killed_worker_changes_nothing(reference, client, tmp_path):
-    pids = client.run(os.getpid)
-    killed = []
+    # The worker is killed while a task is provably running on it: it is
+    # frozen (SIGSTOP) first, and killed only if the markers show a task that
+    # started there and has no result yet (else it resumes, and the next
+    # finished tile tries again). That task must then run again elsewhere.
+    marks = tmp_path / "marks"
+    marks.mkdir()
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])  # workers cannot import this file
+    client.register_worker_plugin(TaskMarkers(str(marks)), name="task-markers")
+    victim = sorted(client.run(os.getpid).values())[0]
+    lost = []
 
     def kill_one(c, done, total):
-        if done == 3 and not killed:
-            victim = sorted(pids.values())[0]
-            os.kill(victim, signal.SIGKILL)  # a real worker process, mid-run
-            killed.append(victim)
+        if lost:
+            return
+        os.kill(victim, signal.SIGSTOP)
+        running = marked(marks, victim, "start") - marked(marks, victim, "end")
+        if running:
+            os.kill(victim, signal.SIGKILL)  # a real worker process, mid-task
+            lost.extend(running)
+        else:
+            os.kill(victim, signal.SIGCONT)
 
-    summary = tiles.build_tileset(SETTINGS, tmp_path / "set", TILE, client=client, progress=False, on_tile=kill_one)
-    assert killed, "no worker was killed"
+    try:
+        summary = tiles.build_tileset(SETTINGS, tmp_path / "set", TILE, client=client, progress=False,
+                                      on_tile=kill_one)
+    finally:
+        client.unregister_worker_plugin("task-markers")
+    assert lost, "the worker never had a task in flight when a tile finished"
     assert summary["written"] == 16
-    # The nanny started a new worker process in its place.
-    assert killed[0] not in client.run(os.getpid).values()
+    # The nanny started a new worker process in its place, and every lost
+    # task ran to its end on a live worker.
+    assert victim not in client.run(os.getpid).values()
+    for key in lost:
+        assert key not in marked(marks, victim, "end")
+        assert [p for p in marks.glob(f"{key}.*.end")], f"{key} was lost with the worker and never run again"
     got = files(tmp_path / "set")
     assert sorted(got) == sorted(reference)  # no temporary file left behind
     for name in reference:
@@ -104,6 +146,24 @@ def test_a_killed_driver_resumes(reference, client, tmp_path):
     got = files(tmp_path / "set")
     for name in reference:
         assert got[name] == reference[name], name
+
+
+def test_the_exact_height_range_pass_runs_on_dask(client, tmp_path):
+    # Additions have no cheap coarse stage: the range is the exact union of the
+    # tiles' ranges, here one Dask task per tile, and the set equals the one-process CLI's.
+    cli = tmp_path / "cli"
+    subprocess.run([CLI, "tiles", "--method", "additions", "--levels", "9", "--hurst", "0.6", "--seed", "3",
+                    "--tile", "128", "--quiet", "--out", str(cli)], check=True, capture_output=True)
+    settings = {"method": "ADDITIONS", "levels": 9, "hurst": 0.6, "seed": 3}
+    summary = tiles.build_tileset(settings, tmp_path / "set", 128, client=client, progress=False)
+    assert "range_seconds" in summary  # the pass ran as tasks, not in the library's open
+    assert client.run_on_scheduler(
+        lambda dask_scheduler: sum(1 for k in dask_scheduler.task_prefixes if k.startswith("fracterra-range")))
+    want = files(cli)
+    got = files(tmp_path / "set")
+    assert sorted(got) == sorted(want)
+    for name in want:
+        assert got[name] == want[name], name
 
 
 def test_another_terrains_folder_is_refused(client, tmp_path):

@@ -6,13 +6,21 @@ The samples are read back from the tile files by the library
 midpoint terrain is exactly its coarser stage. The set's row 0 is its north
 edge; meshes are built north up (+y), in the set's world units (or scaled to
 Size), centred on the window; per-tile objects share their edge vertices with
-their neighbours, so they meet without cracks."""
+their neighbours, so they meet without cracks.
+
+Shading: Blender's smooth normals of a separate object see only its own
+faces, so at a shared edge the two tiles' normals differ and a seam line shows
+under a low light (rendered in docs/scale.md). Every vertex therefore gets a
+custom normal from the central differences of the set's samples around it,
+read with a margin of one sample beyond the piece: the same normal on both
+sides of a tile edge, and the same in one mesh as in per-tile objects."""
 
 import array
 import os
 import time
 
 import bpy
+import numpy as np
 from bpy_extras.io_utils import ImportHelper
 
 from .. import core
@@ -23,16 +31,45 @@ from . import mesh_build
 from .reporting import REPORTED, SettingsError
 
 
-def _north_up(hf, world_size):
-    """A new core.Heightfield (caller closes): `hf` with its rows reversed (north up)."""
-    w, h = hf.width, hf.height
-    values = hf.to_array()
-    out = array.array("f")
-    for y in reversed(range(h)):
-        out.extend(values[y * w:(y + 1) * w])
-    flipped = core.Heightfield.from_values(w, h, out)
+def _north_up(values, world_size):
+    """A new core.Heightfield (caller closes) of `values` (rows from the north) with its rows
+    reversed (north up)."""
+    h, w = values.shape
+    flipped = core.Heightfield.from_values(w, h, array.array("f", values[::-1].astype(np.float32).tobytes()))
     flipped._lib.ft_heightfield_set_world_size(flipped.handle, world_size)
     return flipped
+
+
+def _read_with_margin(folder, lod, x, y, w, h, ew, eh):
+    """(samples of the window, rows from the north, as a (h + top + bottom, w + left + right)
+    array, (left, top)): the window grown by one sample on each side where the set has one."""
+    mx0, my0 = max(0, x - 1), max(0, y - 1)
+    mx1, my1 = min(ew, x + w + 1), min(eh, y + h + 1)
+    with core_tiles.read_window(folder, lod, mx0, my0, mx1 - mx0, my1 - my0) as hf:
+        values = np.array(hf.to_array(), dtype=np.float64).reshape(my1 - my0, mx1 - mx0)
+    return values, (x - mx0, y - my0)
+
+
+def _normals(margin, offset, w, h, step_x, step_y):
+    """Unit normals (w h x 3, vertex order of the north-up mesh) of the window at `offset` in
+    `margin`, whose z is already scaled: central differences of the set's samples (one-sided
+    only at the set's own borders); step_x, step_y: scene units per column east and per row
+    north."""
+    g_rows, g_cols = np.gradient(margin)  # per row (southwards) and per column (eastwards)
+    ox, oy = offset
+    dzdx = g_cols[oy:oy + h, ox:ox + w] / step_x
+    dzdy = -g_rows[oy:oy + h, ox:ox + w] / step_y
+    n = np.dstack((-dzdx, -dzdy, np.ones_like(dzdx)))[::-1]
+    n /= np.linalg.norm(n, axis=2, keepdims=True)
+    return n.reshape(-1, 3).astype(np.float32)
+
+
+def _set_normals(mesh, normals):
+    """Custom per-vertex normals (Blender 3.x needs auto smooth for them to show)."""
+    if hasattr(mesh, "use_auto_smooth"):
+        mesh.use_auto_smooth = True
+        mesh.auto_smooth_angle = 3.14159
+    mesh.normals_split_custom_set_from_vertices(normals)
 
 
 def _pieces(m, lod, x0, y0, w, h, per_tile):
@@ -107,16 +144,18 @@ class FRACTERRA_OT_import_tiles(bpy.types.Operator, ImportHelper):
         last = None
         pieces = _pieces(m, self.lod, self.x0, self.y0, w, h, self.mode == "TILES")
         for a, b, pw, ph in pieces:
-            with core_tiles.read_window(folder, self.lod, self.x0 + a, self.y0 + b, pw, ph) as hf:
-                world = spacing * (pw - 1)
-                with _north_up(hf, world) as flipped:
-                    g = grid_arrays(flipped, world)
+            margin, (ox, oy) = _read_with_margin(folder, self.lod, self.x0 + a, self.y0 + b, pw, ph, ew, eh)
+            world = spacing * (pw - 1)
+            with _north_up(margin[oy:oy + ph, ox:ox + pw], world) as flipped:
+                g = grid_arrays(flipped, world)
             if scale != 1.0:
-                g.co = array.array("f", (v * scale for v in g.co))
+                g.co = array.array("f", (np.frombuffer(g.co, dtype=np.float32) * scale).tobytes())
+            normals = _normals(margin * scale, (ox, oy), pw, ph, spacing * scale, spacing * scale)
             name = f"{collection.name} r{self.y0 + b} c{self.x0 + a}" if len(pieces) > 1 else collection.name
             mesh = bpy.data.meshes.new(name)
             try:
                 mesh_build.fill_grid_mesh(mesh, g, smooth=True)
+                _set_normals(mesh, normals)
             except BaseException:
                 bpy.data.meshes.remove(mesh)
                 raise

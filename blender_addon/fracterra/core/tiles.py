@@ -1,10 +1,11 @@
 """Tile sets on Dask: a terrain larger than memory written as tiles, one task per tile.
 
 The library does the tile logic (fracterra/tiles.h): the driver opens the set
-(which refuses a folder holding another terrain and computes the common
-height range), submits one Dask task per tile still to do, records each
-finished tile's CRC-32 in the manifest as results arrive, and finishes with
-the VRT mosaic. A task is pure (terrain settings, tile size, format, range,
+(which refuses a folder holding another terrain and, for plain midpoint,
+bounds the common height range from a coarse pass), runs the exact range pass
+where one is needed as one Dask task per tile, submits one Dask task per tile
+still to do, records each finished tile's CRC-32 in the manifest's journal as
+results arrive, and finishes with the VRT mosaic. A task is pure (terrain settings, tile size, format, range,
 folder, column, row -> column, row, CRC-32): each worker loads
 libfracterra.so through this binding and calls ft_tile_write, which writes
 under a temporary name and renames, so a task lost with a killed worker is
@@ -37,6 +38,10 @@ from .terrain import attach_reference, terrain_struct
 FORMATS = {"png16": 0, "tiff": 1}
 _TILES_SIGNATURES = {
     "ft_tileset_open": (c_int32, [c_void_p, c_int32, c_int32, ctypes.c_char_p, POINTER(c_void_p)]),
+    "ft_tileset_open_deferred": (c_int32, [c_void_p, c_int32, c_int32, ctypes.c_char_p, POINTER(c_void_p),
+                                           POINTER(c_int32)]),
+    "ft_tileset_set_height_range": (c_int32, [c_void_p, c_double, c_double]),
+    "ft_tile_height_range": (c_int32, [c_void_p, c_int32, c_int32, c_int32, POINTER(c_double), POINTER(c_double)]),
     "ft_tileset_free": (None, [c_void_p]),
     "ft_tileset_grid": (c_int32, [c_void_p, POINTER(c_int32), POINTER(c_int32)]),
     "ft_tileset_height_range": (c_int32, [c_void_p, POINTER(c_double), POINTER(c_double)]),
@@ -63,12 +68,12 @@ class SchedulerUnreachable(FracterraError):
 
 
 def _lib():
-    """The library with the tile functions declared (ABI 2.7)."""
+    """The library with the tile functions declared (ABI 2.10)."""
     lib = library()
     if not getattr(lib, "_tiles_bound", False):
         missing = lib._bind(_TILES_SIGNATURES)
         if missing:
-            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.7 or later")
+            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.10 or later")
         lib._tiles_bound = True
     return lib
 
@@ -96,6 +101,20 @@ def write_tile(col, row, settings, reference, tile, fmt, height_min, height_max,
     return col, row, crc.value
 
 
+def tile_height_range(col, row, settings, reference, tile):
+    """One Dask task of the exact height-range pass: tile (col, row)'s (min, max)."""
+    lib = _lib()
+    p, _keep = _terrain(settings, reference)
+    lo, hi = c_double(), c_double()
+    lib.check(lib.ft_tile_height_range(byref(p), tile, col, row, byref(lo), byref(hi)))
+    return lo.value, hi.value
+
+
+def _range_union(parts):
+    """Reduces [(min, max), ...] to their union (a Dask task)."""
+    return min(lo for lo, _ in parts), max(hi for _, hi in parts)
+
+
 class TileSet(LibraryHandle):
     """The driver's side of a tile set folder (ft_tileset*)."""
 
@@ -108,6 +127,20 @@ class TileSet(LibraryHandle):
         out = c_void_p()
         lib.check(lib.ft_tileset_open(byref(p), tile, _format(fmt), os.fsencode(str(out_dir)), byref(out)))
         return cls(out)
+
+    @classmethod
+    def open_deferred(cls, settings, out_dir, tile=4096, fmt="png16", reference=None):
+        """(set, pending): like open, but a new set needing the exact range pass is left pending
+        (set_height_range gives it) instead of running that pass here."""
+        lib = _lib()
+        p, _keep = _terrain(settings, reference)
+        out, pending = c_void_p(), c_int32()
+        lib.check(lib.ft_tileset_open_deferred(byref(p), tile, _format(fmt), os.fsencode(str(out_dir)), byref(out),
+                                               byref(pending)))
+        return cls(out), bool(pending.value)
+
+    def set_height_range(self, lo, hi):
+        self._lib.check(self._lib.ft_tileset_set_height_range(self.handle, lo, hi))
 
     def grid(self):
         cols, rows = c_int32(), c_int32()
@@ -198,27 +231,49 @@ def _peak_rss_mib():
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 
 
+def exact_height_range(settings, tile, client, reference=None):
+    """The exact (min, max) of the whole terrain: one Dask task per tile, reduced on Dask in
+    groups of 16 (the pass the library would otherwise run serially in the driver)."""
+    w, h = _extent(settings, reference)
+    cols, rows = (w - 2) // tile + 1, (h - 2) // tile + 1
+    tiles = [(c, r) for r in range(rows) for c in range(cols)]
+    parts = client.map(tile_height_range, [c for c, _ in tiles], [r for _, r in tiles], settings=settings,
+                       reference=reference, tile=tile, retries=3,
+                       key=[f"fracterra-range-{c}-{r}" for c, r in tiles])
+    groups = [client.submit(_range_union, parts[i:i + 16], key=f"fracterra-range-group-{i}")
+              for i in range(0, len(parts), 16)]
+    return client.submit(_range_union, groups, key="fracterra-range-total").result()
+
+
 def build_tileset(settings, out_dir, tile=4096, fmt="png16", reference=None, client=None, scheduler=None,
                   workers=2, memory_limit="3GB", connect_timeout=10, progress=True, task_threads=1, retries=3,
                   on_tile=None):
     """Writes (or resumes) the tile set of the terrain `settings` (names as in params.TERRAIN_PARAMS,
     e.g. {"method": "MIDPOINT", "levels": 14, "hurst": 0.8}) into `out_dir`, one Dask task per tile
-    still to do. Returns a summary dict (tiles written and skipped, seconds, peak worker memory).
+    still to do; a new set whose height range needs the exact pass gets it from one task per tile
+    too. Returns a summary dict (tiles written and skipped, seconds, peak worker memory).
     on_tile(client, done, total), if given, is called after each recorded tile (tests kill workers there)."""
     start = time.monotonic()
     settings = dict(settings)
     settings["threads"] = task_threads
-    with TileSet.open(settings, out_dir, tile, fmt, reference) as ts:
-        cols, rows = ts.grid()
-        lo, hi = ts.height_range()
-        todo = [(c, r) for r in range(rows) for c in range(cols) if not ts.done(c, r)]
-        summary = {"tiles": cols * rows, "columns": cols, "rows": rows, "written": len(todo),
-                   "skipped": cols * rows - len(todo), "height_range": [lo, hi]}
-        if todo:
-            own = client is None
-            if own:
-                client = connect(scheduler, workers, memory_limit, connect_timeout)
-            try:
+    ts, pending = TileSet.open_deferred(settings, out_dir, tile, fmt, reference)
+    own = False
+    with ts:
+        try:
+            cols, rows = ts.grid()
+            summary = {"tiles": cols * rows, "columns": cols, "rows": rows}
+            if pending:
+                if client is None:
+                    client, own = connect(scheduler, workers, memory_limit, connect_timeout), True
+                t = time.monotonic()
+                ts.set_height_range(*exact_height_range(settings, tile, client, reference))
+                summary["range_seconds"] = time.monotonic() - t
+            lo, hi = ts.height_range()
+            todo = [(c, r) for r in range(rows) for c in range(cols) if not ts.done(c, r)]
+            summary.update({"written": len(todo), "skipped": cols * rows - len(todo), "height_range": [lo, hi]})
+            if todo:
+                if client is None:
+                    client, own = connect(scheduler, workers, memory_limit, connect_timeout), True
                 from distributed import as_completed
                 from tqdm import tqdm
                 futures = client.map(write_tile, [c for c, _ in todo], [r for _, r in todo], settings=settings,
@@ -233,13 +288,15 @@ def build_tileset(settings, out_dir, tile=4096, fmt="png16", reference=None, cli
                         if on_tile is not None:
                             on_tile(client, done, len(todo))
                 summary["worker_peak_rss_mib"] = sorted(client.run(_peak_rss_mib).values())
-            finally:
-                if own:
-                    cluster = client.cluster
-                    client.close()
-                    if cluster is not None:
-                        cluster.close()
+        finally:
+            if own:
+                cluster = client.cluster
+                client.close()
+                if cluster is not None:
+                    cluster.close()
+        t = time.monotonic()
         ts.finish()
+        summary["finish_seconds"] = time.monotonic() - t
     summary["seconds"] = time.monotonic() - start
     return summary
 

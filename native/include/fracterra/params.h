@@ -59,7 +59,7 @@ enum {
   FT_PARAM_FLAG_MIN_EXCLUSIVE = 4, ///< the value must be > hard_min (not >=)
   FT_PARAM_FLAG_MAX_EXCLUSIVE = 8, ///< the value must be < hard_max (not <=)
   FT_PARAM_FLAG_ZERO_IS_AUTO = 16  ///< 0 is accepted too, outside the hard range: "auto", the
-                                   ///< library picks the value (the row's doc says how); ABI 2.10
+                                   ///< library picks the value (the row's doc says how); ABI 2.11
 };
 
 /// Every method of the struct (its `method` field) uses the field.

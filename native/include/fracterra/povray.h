@@ -49,9 +49,9 @@ typedef struct ft_pov_scene_params {
   double sun_azimuth_deg;           ///< -360..360; default 235
   double sun_elevation_deg;         ///< 1..90; default 35
   const char* image_path;           ///< terrain PNG; NULL = beside the scene, "x.pov" -> "x.terrain.png"
-  double camera_margin;             ///< free border, fraction of the half-frame, 0..0.5; default 0.04 (ABI 2.10)
+  double camera_margin;             ///< free border, fraction of the half-frame, 0..0.5; default 0.04 (ABI 2.11)
   double camera_center_v;           ///< image row (0 top .. 1 bottom) of the content's middle, 0.2..0.8;
-                                    ///< default 0.55 (above 0.5 leaves more sky) (ABI 2.10)
+                                    ///< default 0.55 (above 0.5 leaves more sky) (ABI 2.11)
 } ft_pov_scene_params;
 
 /// Fills `p` with the defaults above (FT_ERR_INVALID_ARGUMENT for NULL).

@@ -31,15 +31,33 @@ typedef struct ft_tileset ft_tileset;
 /// docs/scale.md) and its manifest written at once.
 FT_API ft_status ft_tileset_open(const ft_terrain_params* p, int32_t tile, int32_t format, const char* dir,
                                  ft_tileset** out);
+/// Like ft_tileset_open, but a new set whose height range needs the exact
+/// pass over every tile (every method but plain midpoint and Mandelbrot) is
+/// opened without one: *range_pending = 1, nothing is written yet, and the
+/// driver runs the pass elsewhere, ft_tile_height_range once per tile (any
+/// process, e.g. one Dask task each), then gives the union of the tiles'
+/// ranges to ft_tileset_set_height_range before writing tiles. Otherwise as
+/// ft_tileset_open, with *range_pending = 0. (ABI 2.10)
+FT_API ft_status ft_tileset_open_deferred(const ft_terrain_params* p, int32_t tile, int32_t format, const char* dir,
+                                          ft_tileset** out, int32_t* range_pending);
+/// The exact height range of a set opened with its range pending: writes its
+/// manifest. Refused when the range is not pending, not finite or min > max. (ABI 2.10)
+FT_API ft_status ft_tileset_set_height_range(ft_tileset* set, double min, double max);
+/// The exact height range of tile (column, row) of terrain `p` cut into
+/// tiles of `tile` cells: the unit of work of the pass above. (ABI 2.10)
+FT_API ft_status ft_tile_height_range(const ft_terrain_params* p, int32_t tile, int32_t column, int32_t row,
+                                      double* min, double* max);
 /// NULL-safe.
 FT_API void ft_tileset_free(ft_tileset* set);
 /// Tiles across and down.
 FT_API ft_status ft_tileset_grid(const ft_tileset* set, int32_t* columns, int32_t* rows);
-/// The common height range of the set (what ft_tile_write needs).
+/// The common height range of the set (what ft_tile_write needs); refused
+/// while it is pending (ft_tileset_open_deferred).
 FT_API ft_status ft_tileset_height_range(const ft_tileset* set, double* min, double* max);
 /// *done = 1 when the tile's file exists and its CRC-32 is the one recorded.
 FT_API ft_status ft_tileset_tile_done(const ft_tileset* set, int32_t column, int32_t row, int32_t* done);
-/// Records a written tile's CRC-32 (rewrites manifest.json atomically).
+/// Records a written tile's CRC-32: appended to manifest.journal and flushed
+/// to disk (folded into manifest.json on resume and at finish).
 FT_API ft_status ft_tileset_record(ft_tileset* set, int32_t column, int32_t row, uint32_t crc32);
 /// Every tile recorded: writes mosaic.vrt (+ .ovr overviews) and marks the manifest complete.
 FT_API ft_status ft_tileset_finish(ft_tileset* set);

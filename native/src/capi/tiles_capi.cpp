@@ -5,6 +5,7 @@
 #include "capi/handles.hpp"
 #include "fracterra/tiles.h"
 #include "terrain/terrain_params.hpp"
+#include "tiles/height_range.hpp"
 #include "tiles/tileset.hpp"
 #include "tiles/tileset_reader.hpp"
 
@@ -41,6 +42,43 @@ FT_API ft_status ft_tileset_open(const ft_terrain_params* p, int32_t tile, int32
   });
 }
 
+FT_API ft_status ft_tileset_open_deferred(const ft_terrain_params* p, int32_t tile, int32_t format, const char* dir,
+                                          ft_tileset** out, int32_t* range_pending) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("params", p);
+    ft::check_not_null("dir", dir);
+    ft::check_not_null("range_pending", range_pending);
+    *range_pending = 0;
+    auto s = std::make_unique<ft_tileset>();
+    s->set = std::make_unique<ft::TileSet>(ft::upgraded(ft::terrain_param_table(), *p), tile, format_of(format), dir,
+                                           true);
+    *range_pending = s->set->range_pending() ? 1 : 0;
+    *out = s.release();
+  });
+}
+
+FT_API ft_status ft_tileset_set_height_range(ft_tileset* set, double min, double max) {
+  return guarded([&] {
+    ft::check_not_null("set", set);
+    set->set->set_height_range(min, max);
+  });
+}
+
+FT_API ft_status ft_tile_height_range(const ft_terrain_params* p, int32_t tile, int32_t column, int32_t row,
+                                      double* min, double* max) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    ft::check_not_null("min", min);
+    ft::check_not_null("max", max);
+    *min = *max = 0;
+    const ft_terrain_params q = ft::upgraded(ft::terrain_param_table(), *p);
+    const ft::TileSpec spec = ft::make_tile_spec(q, tile, ft::TileFormat::tiff);
+    const ft::HeightRange r = ft::tile_height_range(q, spec.grid, column, row);
+    *min = r.min, *max = r.max;
+  });
+}
+
 FT_API void ft_tileset_free(ft_tileset* set) { delete set; }
 
 FT_API ft_status ft_tileset_grid(const ft_tileset* set, int32_t* columns, int32_t* rows) {
@@ -56,6 +94,8 @@ FT_API ft_status ft_tileset_height_range(const ft_tileset* set, double* min, dou
   return guarded([&] {
     ft::check_not_null("min", min);
     ft::check_not_null("max", max);
+    if (set_of(set).range_pending())
+      ft::invalid("the tile set's height range is pending: give it with ft_tileset_set_height_range");
     *min = set_of(set).spec().height_min;
     *max = set_of(set).spec().height_max;
   });

@@ -9,7 +9,7 @@ constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbove = FT_PARAM_FLAG_MIN_EXCLUSIVE;  // > hard_min
 constexpr double kInf = DBL_MAX;
-constexpr uint32_t kAbi210 = 0x2000A;  // camera_margin, camera_center_v; elevation 0 = auto
+constexpr uint32_t kAbi211 = 0x2000B;  // camera_margin, camera_center_v; elevation 0 = auto
 
 #define ROW(field, type) FT_PARAM_ROW(ft_pov_scene_params, field, type)
 FT_PARAM_TABLE_BEGIN
@@ -71,10 +71,10 @@ constexpr ft_param_info kSceneRows[] = {
     {ROW(image_path, FT_PARAM_STRING), .flags = kData, .element_kind = -1, .unit = "", .label = "Terrain Image",
      .doc = "Path of the terrain's 16-bit PNG; NULL: beside the scene, \"x.pov\" -> \"x.terrain.png\"",
      .methods = kAll},
-    {ROW(camera_margin, FT_PARAM_DOUBLE), .since = kAbi210, .element_kind = -1, .default_value = 0.04,
+    {ROW(camera_margin, FT_PARAM_DOUBLE), .since = kAbi211, .element_kind = -1, .default_value = 0.04,
      .hard_min = 0, .hard_max = 0.5, .soft_min = 0, .soft_max = 0.2, .unit = "", .label = "Margin",
      .doc = "Free border around the framed content, as a fraction of the half-frame", .methods = kAll},
-    {ROW(camera_center_v, FT_PARAM_DOUBLE), .since = kAbi210, .element_kind = -1, .default_value = 0.55,
+    {ROW(camera_center_v, FT_PARAM_DOUBLE), .since = kAbi211, .element_kind = -1, .default_value = 0.55,
      .hard_min = 0.2, .hard_max = 0.8, .soft_min = 0.4, .soft_max = 0.7, .unit = "", .label = "Vertical Centre",
      .doc = "Image row (0 top .. 1 bottom) where the middle of the framed content lands; above 0.5 leaves more "
             "sky",

@@ -48,12 +48,22 @@ HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& gri
   r = {INFINITY, -INFINITY, "exact"};
   for (int32_t row = 0; row < grid.rows(); ++row)
     for (int32_t col = 0; col < grid.columns(); ++col) {
-      const Window w = grid.window(col, row);
-      const HeightStats s = generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height).stats();
-      r.min = std::min(r.min, s.min);
-      r.max = std::max(r.max, s.max);
+      const HeightRange t = tile_height_range(p, grid, col, row);
+      r.min = std::min(r.min, t.min);
+      r.max = std::max(r.max, t.max);
     }
   return r;
+}
+
+bool needs_exact_pass(const ft_terrain_params& p) {
+  return p.method != FT_TERRAIN_MANDELBROT && !has_midpoint_bound(p);
+}
+
+HeightRange tile_height_range(const ft_terrain_params& p, const TileGrid& grid, int32_t col, int32_t row) {
+  grid.check_tile(col, row);
+  const Window w = grid.window(col, row);
+  const HeightStats s = generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height).stats();
+  return {s.min, s.max, "exact"};
 }
 
 }  // namespace ft

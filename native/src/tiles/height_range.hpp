@@ -35,6 +35,12 @@ struct HeightRange {
 
 HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& grid);
 
+// Whether p's range comes from the exact pass over every tile (the last case
+// above), and that pass's unit of work: one tile's exact range, which any
+// process can compute (Dask runs one task per tile; the union is the set's).
+bool needs_exact_pass(const ft_terrain_params& p);
+HeightRange tile_height_range(const ft_terrain_params& p, const TileGrid& grid, int32_t col, int32_t row);
+
 // The widening of the bound above after coarse stage m of a midpoint terrain
 // of `levels` levels: 5.9 sum_{k = 2m + 1}^{2 levels} sigma 2^(-k H / 2).
 double midpoint_bound_margin(int levels, int m, double hurst, double sigma);

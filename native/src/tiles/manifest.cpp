@@ -1,7 +1,10 @@
 #include "tiles/manifest.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <zlib.h>
 
+#include <cerrno>
 #include <cstring>
 #include <filesystem>
 
@@ -78,6 +81,45 @@ std::optional<nlohmann::json> read_manifest(const std::string& dir) {
 
 void write_manifest(const std::string& dir, const nlohmann::json& m) {
   write_file_atomically(path_in(dir, kManifestName), m.dump(1) + "\n");
+}
+
+void append_journal(const std::string& dir, int32_t col, int32_t row, uint32_t crc) {
+  const std::string path = path_in(dir, kJournalName);
+  const std::string line = nlohmann::json{{"column", col}, {"row", row}, {"crc32", crc}}.dump() + "\n";
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0) fail(FT_ERR_IO, "cannot open '" + path + "': " + std::strerror(errno));
+  // One write of a short line: O_APPEND puts it whole at the end.
+  const bool ok = ::write(fd, line.data(), line.size()) == ssize_t(line.size()) && ::fdatasync(fd) == 0;
+  const int err = errno;
+  ::close(fd);
+  if (!ok) fail(FT_ERR_IO, "cannot append to '" + path + "': " + std::strerror(err));
+}
+
+int64_t replay_journal(const std::string& dir, nlohmann::json& m) {
+  const std::string path = path_in(dir, kJournalName);
+  if (!std::filesystem::exists(path)) return 0;
+  const std::string text = read_file(path);
+  nlohmann::json& tiles = m["tiles"];
+  const int64_t columns = m.value("columns", int64_t(0)), rows = m.value("rows", int64_t(0));
+  int64_t applied = 0;
+  for (size_t at = 0, end; (end = text.find('\n', at)) != std::string::npos; at = end + 1) {
+    const nlohmann::json e = nlohmann::json::parse(text.begin() + std::ptrdiff_t(at), text.begin() + std::ptrdiff_t(end),
+                                                   nullptr, false);
+    if (!e.is_object() || !e.contains("column") || !e.contains("row") || !e.contains("crc32") ||
+        !e["column"].is_number_integer() || !e["row"].is_number_integer() || !e["crc32"].is_number_unsigned())
+      continue;  // not a line this writes: skipped, the tile is redone
+    const int64_t col = e["column"].get<int64_t>(), row = e["row"].get<int64_t>();
+    if (col < 0 || col >= columns || row < 0 || row >= rows) continue;
+    tiles[size_t(row * columns + col)]["crc32"] = e["crc32"].get<uint32_t>();
+    ++applied;
+  }
+  return applied;
+}
+
+void remove_journal(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::remove(path_in(dir, kJournalName), ec);
+  if (ec) fail(FT_ERR_IO, "cannot remove '" + path_in(dir, kJournalName) + "': " + ec.message());
 }
 
 std::string identity_difference(const nlohmann::json& wanted, const nlohmann::json& existing) {

@@ -1,5 +1,6 @@
 #include "tiles/tileset.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -52,13 +53,14 @@ nlohmann::json new_manifest(const nlohmann::json& terrain, const TileSpec& s, co
 
 }  // namespace
 
-TileSet::TileSet(const ft_terrain_params& p, int64_t tile, TileFormat format, std::string dir) : dir_(std::move(dir)) {
+TileSet::TileSet(const ft_terrain_params& p, int64_t tile, TileFormat format, std::string dir, bool defer_exact_pass)
+    : dir_(std::move(dir)) {
   spec_ = make_tile_spec(p, tile, format);
   if (dir_.empty()) invalid("give the tile set's folder");
   make_folder(dir_);
 
-  const nlohmann::json terrain = terrain_identity(p);
-  const nlohmann::json wanted = {{"terrain", terrain}, {"tile", spec_.grid.tile}, {"tile_format", format_name(format)}};
+  terrain_ = terrain_identity(p);
+  const nlohmann::json wanted = {{"terrain", terrain_}, {"tile", spec_.grid.tile}, {"tile_format", format_name(format)}};
   if (std::optional<nlohmann::json> old = read_manifest(dir_)) {
     const std::string diff = identity_difference(wanted, *old);
     if (!diff.empty())
@@ -67,13 +69,41 @@ TileSet::TileSet(const ft_terrain_params& p, int64_t tile, TileFormat format, st
     manifest_ = std::move(*old);
     spec_.height_min = manifest_["height_range"]["min"].get<double>();
     spec_.height_max = manifest_["height_range"]["max"].get<double>();
+    // Fold the last run's journal in: manifest first, then the journal
+    // goes (a crash between the two replays it again, to the same effect).
+    if (replay_journal(dir_, manifest_) > 0) write_manifest(dir_, manifest_);
+    remove_journal(dir_);
+    return;
+  }
+  if (defer_exact_pass && needs_exact_pass(p)) {
+    range_pending_ = true;
     return;
   }
   const HeightRange r = tileset_height_range(p, spec_.grid);
   spec_.height_min = r.min;
   spec_.height_max = r.max;
-  manifest_ = new_manifest(terrain, spec_, r);
+  remove_journal(dir_);  // a stale one of a removed manifest belongs to no set
+  manifest_ = new_manifest(terrain_, spec_, r);
   write_manifest(dir_, manifest_);
+}
+
+void TileSet::set_height_range(double min, double max) {
+  if (!range_pending_) invalid("the tile set in '" + dir_ + "' already has its height range");
+  if (!std::isfinite(min) || !std::isfinite(max) || min > max)
+    invalid("a tile set's height range must be finite with min <= max, got [" + format_number(min) + ", " +
+            format_number(max) + "]");
+  spec_.height_min = min;
+  spec_.height_max = max;
+  remove_journal(dir_);
+  manifest_ = new_manifest(terrain_, spec_, HeightRange{min, max, "exact"});
+  write_manifest(dir_, manifest_);
+  range_pending_ = false;
+}
+
+void TileSet::check_range_fixed(const char* what) const {
+  if (range_pending_)
+    invalid(std::string("the tile set in '") + dir_ + "' has no height range yet: give it (the union of its tiles' " +
+            "ranges) before " + what);
 }
 
 nlohmann::json& TileSet::entry(int32_t col, int32_t row) {
@@ -83,6 +113,7 @@ nlohmann::json& TileSet::entry(int32_t col, int32_t row) {
 
 bool TileSet::done(int32_t col, int32_t row) const {
   spec_.grid.check_tile(col, row);
+  if (range_pending_) return false;
   const nlohmann::json& e = manifest_["tiles"][size_t(row) * size_t(spec_.grid.columns()) + size_t(col)];
   if (e["crc32"].is_null()) return false;
   const std::string path = (std::filesystem::path(dir_) / e["file"].get<std::string>()).string();
@@ -92,8 +123,9 @@ bool TileSet::done(int32_t col, int32_t row) const {
 }
 
 void TileSet::record(int32_t col, int32_t row, uint32_t crc) {
+  check_range_fixed("recording tiles");
   entry(col, row)["crc32"] = crc;
-  write_manifest(dir_, manifest_);
+  append_journal(dir_, col, row, crc);
 }
 
 int64_t TileSet::recorded() const {
@@ -103,6 +135,7 @@ int64_t TileSet::recorded() const {
 }
 
 void TileSet::finish() {
+  check_range_fixed("finishing");
   const int64_t n = recorded();
   if (n != spec_.grid.count())
     invalid("the tile set in '" + dir_ + "' has " + std::to_string(n) + " of " + std::to_string(spec_.grid.count()) +
@@ -111,6 +144,7 @@ void TileSet::finish() {
   manifest_["vrt"] = kMosaicName;
   manifest_["complete"] = true;
   write_manifest(dir_, manifest_);
+  remove_journal(dir_);
 }
 
 }  // namespace ft

@@ -22,15 +22,24 @@ class TileSet {
   // manifest: a folder that holds another tile set's manifest (other
   // parameters, tile size or format) is refused with the first difference. A
   // new set gets its height range (height_range.hpp) and its manifest at once;
-  // a resumed one keeps the range in its manifest.
-  TileSet(const ft_terrain_params& p, int64_t tile, TileFormat format, std::string dir);
+  // a resumed one keeps the range in its manifest. With `defer_exact_pass`,
+  // a new set whose range needs the exact pass over every tile is left
+  // without one (range_pending()) and nothing is written until
+  // set_height_range() gives it: a driver runs that pass elsewhere, one task
+  // per tile (tile_height_range, Dask).
+  TileSet(const ft_terrain_params& p, int64_t tile, TileFormat format, std::string dir, bool defer_exact_pass = false);
 
   const TileSpec& spec() const noexcept { return spec_; }
   const std::string& dir() const noexcept { return dir_; }
   const nlohmann::json& manifest() const noexcept { return manifest_; }
+  bool range_pending() const noexcept { return range_pending_; }
+  // The exact range of a pending set (the union of its tiles' ranges):
+  // writes the new manifest. Refused when the range is not pending or is
+  // not finite and ordered.
+  void set_height_range(double min, double max);
   // True when the tile's file exists and its CRC-32 is the one recorded.
   bool done(int32_t col, int32_t row) const;
-  // Records a written tile's CRC-32 and rewrites the manifest.
+  // Records a written tile's CRC-32 in the manifest's journal (manifest.hpp).
   void record(int32_t col, int32_t row, uint32_t crc);
   // Tiles with a recorded CRC-32.
   int64_t recorded() const;
@@ -39,9 +48,11 @@ class TileSet {
 
  private:
   nlohmann::json& entry(int32_t col, int32_t row);
+  void check_range_fixed(const char* what) const;
   TileSpec spec_;
   std::string dir_;
-  nlohmann::json manifest_;
+  nlohmann::json terrain_, manifest_;
+  bool range_pending_ = false;
 };
 
 }  // namespace ft
