@@ -480,5 +480,25 @@ TEST(Cancellation, ProgressCallbackCanStopAGeneration) {
   EXPECT_GE(calls, 5);
 }
 
+// A cancel in the middle of the last stage, taken by the calling thread
+// while the team runs its shares of that stage (midpoint.cpp): the status
+// comes back, no exception escapes a parallel region, and no later report
+// follows; the fractions never go back.
+TEST(Cancellation, ACancelInsideAParallelStageStopsIt) {
+  ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 12, 0.5, 1);
+  p.threads = 2;
+  std::vector<double> seen;
+  p.progress = [](void* user, double fraction) -> int32_t {
+    static_cast<std::vector<double>*>(user)->push_back(fraction);
+    return fraction > 0.8;  // the last stage spans 0.75..1
+  };
+  p.progress_user = &seen;
+  EXPECT_EQ(status_of(p), FT_ERR_CANCELLED);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_GT(seen.back(), 0.8);
+  EXPECT_LT(seen.back(), 1.0);
+  for (size_t i = 1; i < seen.size(); ++i) EXPECT_GE(seen[i], seen[i - 1]);
+}
+
 }  // namespace
 }  // namespace ft

@@ -30,6 +30,7 @@ class Refiner {
   float* row(int y) { return x_ + size_t(y) * w_; }
 
   // refiner.cpp
+  void first_touch();
   void place_corners();
   void place_reference();
   double stage_samples(int s) const;
