@@ -444,6 +444,28 @@ TEST(Erosion, MapsAreInWorldUnits) {
   EXPECT_GT(m.water_depth.stats().max, 0.0);
 }
 
+TEST(Erosion, UpliftNeverShowsAsDeposit) {
+  // Rivers only cut: with uplift and no hydraulic pass, a cell ends at most
+  // at its input height plus what it was lifted, so the deposited map is 0
+  // but where diffusion fills a hollow or the fill raises a lake floor (a
+  // few cells: bound 5%; measured 0). Measured against the input alone, the
+  // uplift left where rivers did not cut it away would show as deposit on
+  // most cells (measured 88%).
+  const Heightfield hf = fbm_terrain(65, 3);
+  ErosionConfig c = erosion_preset("valleys", hf);
+  c.fluvial.uplift_follows_terrain = false;  // uniform, and faster than the rivers cut
+  c.fluvial.uplift *= 5;
+  ErosionMaps m;
+  const Heightfield out = erode(hf, c, &m);
+  int64_t deposited = 0, above_input = 0;
+  for (size_t i = 0; i < hf.size(); ++i) {
+    deposited += m.deposited.data()[i] > 1e-6f;
+    above_input += out.data()[i] > hf.data()[i] + 1e-6f;
+  }
+  EXPECT_LT(deposited, int64_t(hf.size() / 20));
+  EXPECT_GT(above_input, int64_t(hf.size() / 4)) << "the uplift shows against the input: the test means something";
+}
+
 TEST(DrainageStatistics, FluvialErosionMakesRealLandscapes) {
   // Real landscapes: Hack's h about 0.5-0.6, concavity theta about 0.35-0.7.
   // Ensemble: 4 fBm terrains (H = 0.8, 129^2, seeds 1-4) eroded by the

@@ -79,7 +79,7 @@ def erode(hf, values=None, preset=None, periodic=False, threads=0, progress=None
     or use erode_arrays). progress: None or callable(fraction) -> True to cancel
     (raises CancelledError)."""
     lib = library()
-    p = erosion_struct(values, preset)
+    p = erosion_struct(values, preset, terrain=hf)  # a preset fitted to hf, as `fracterra erode --preset`
     p.periodic = 1 if periodic else 0
     p.threads = threads
     bridge = _ProgressBridge(progress)

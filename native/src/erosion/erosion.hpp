@@ -87,6 +87,9 @@ void validate(const ErosionConfig& c, const Heightfield& hf);
 // The processes one by one, in place. `budget` may be null.
 void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& progress);
 void hillslope_diffusion(const D8Grid& g, float* z, double diffusivity_dt);
+// What fluvial() adds to each cell per step: the uplift, uniform or following
+// the input `z0`; 0 at a periodic grid's sink; empty without uplift.
+std::vector<float> uplift_per_step(const D8Grid& g, const float* z0, const FluvialConfig& c);
 void hydraulic(const D8Grid& g, float* z, const HydraulicConfig& c, float* water_out, MassBudget* budget,
                const Progress& progress);
 void thermal(const D8Grid& g, float* z, const ThermalConfig& c, const Progress& progress);
