@@ -10,7 +10,10 @@ out="$(mkdir -p "${1:-eroded-out}" && cd "${1:-eroded-out}" && pwd)"
 ft="${FRACTERRA:-$root/build/native/fracterra}"
 size="${SIZE:-513}"
 "$ft" terrain --method fbm --size "$size" --hurst 0.8 --seed 7 --world-size 10 --out "$out/terrain.png"
-"$ft" erode --in "$out/terrain.png" --preset land --out "$out/eroded.png" --maps "$out/maps" --stats \
+# Without the preset's uplift: the eroded and deposited maps are height
+# differences, so uplift would count as deposit everywhere and sand the
+# whole terrain; the edges, held at the base level, would stand as walls.
+"$ft" erode --in "$out/terrain.png" --preset land --uplift 0 --out "$out/eroded.png" --maps "$out/maps" --stats \
   > "$out/erode.json"
 "$ft" analyze "$out/eroded.png" --drainage > "$out/analysis.json"
 range() {  # min max of a heightfield PNG, from the JSON fracterra wrote

@@ -45,7 +45,9 @@ step "the Mandelbrot set as a terrain (seed 002) and its curves of equal escape 
 
 step "erosion: an fBm terrain (513^2) eroded by the land preset (rivers, rain, scree), with its maps"
 "$ft" terrain --method fbm --size 513 --hurst 0.8 --seed 7 --world-size 10 --out "$out/uneroded.png"
-"$ft" erode --in "$out/uneroded.png" --preset land --out "$out/eroded.png" --maps "$out/erosion-maps"
+# Without the preset's uplift: the eroded/deposited maps are height differences,
+# so uplift would show as deposit everywhere (docs/erosion.md).
+"$ft" erode --in "$out/uneroded.png" --preset land --uplift 0 --out "$out/eroded.png" --maps "$out/erosion-maps"
 "$ft" relief --in "$out/uneroded.png" --out "$out/uneroded-relief.png"
 "$ft" relief --in "$out/eroded.png" --out "$out/eroded-relief.png"
 

@@ -166,20 +166,12 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                         ->capture_default_str();
                     app.add_option("--antialias", o->r.antialias, "anti-aliasing threshold (povray +A), 0 = off")
                         ->check(CLI::Range(0.0, 3.0))->capture_default_str();
-                    auto* elevation = app.get_option("--camera-elevation-deg");
                     auto* aspect = app.get_option("--camera-aspect");
-                    return [o, elevation, aspect] {
+                    // The camera elevation's default is auto: the library picks it by what the scene holds.
+                    return [o, aspect] {
                       o->aspect_given = aspect->count() > 0;
                       if (o->terrain.empty() && o->tiles.empty() && o->polylines.empty())
                         invalid("give --terrain or --tiles and/or --polyline");
-                      // Polylines alone are seen from high above unless told otherwise.
-                      if (o->terrain.empty() && o->tiles.empty() && elevation->count() == 0) {
-                        bool all_lightning = !o->kinds.empty() && o->kinds.size() == o->polylines.size();
-                        for (int k : o->kinds) all_lightning = all_lightning && k == int(pov::LineKind::kLightning);
-                        o->scene.camera_elevation_deg =
-                            pov::polyline_camera(all_lightning ? pov::LineKind::kLightning : pov::LineKind::kGeneric)
-                                .elevation_deg;
-                      }
                       return run(*o);
                     };
                   },

@@ -25,6 +25,11 @@ std::string number_text(double v, bool integer) {
 bool is_integer(int32_t type) { return type != FT_PARAM_DOUBLE && type != FT_PARAM_FLOAT; }
 
 std::string range_text(const ft_param_info& row) {
+  if (row.flags & FT_PARAM_FLAG_ZERO_IS_AUTO) {
+    ft_param_info plain = row;
+    plain.flags &= ~uint32_t(FT_PARAM_FLAG_ZERO_IS_AUTO);
+    return "auto (0) or " + range_text(plain);
+  }
   const bool integer = is_integer(row.type);
   const bool lo = row.hard_min > -1.7e308, hi = row.hard_max < 1.7e308;
   const char* open = (row.flags & FT_PARAM_FLAG_MIN_EXCLUSIVE) ? "> " : ">= ";
@@ -69,6 +74,11 @@ void parse_into(void* params, const ft_param_info& row, const std::string& text)
     for (int i = 0; i < row.enum_count; ++i) names += (i ? ", " : "") + cli_name(row.enum_items[i]);
     bad(flag + " must be one of " + names + ", got '" + text + "'");
   }
+  // "auto" is the sentinel the row documents (0).
+  if ((row.flags & FT_PARAM_FLAG_ZERO_IS_AUTO) && lower_dashed(text.c_str()) == "auto") {
+    std::memset(static_cast<char*>(params) + row.offset, 0, row.size);  // 0 of any numeric type
+    return;
+  }
   char* end = nullptr;
   errno = 0;
   const char* s = text.c_str();
@@ -91,6 +101,7 @@ void parse_into(void* params, const ft_param_info& row, const std::string& text)
 
 std::string current_text(const void* params, const ft_param_info& row) {
   const double v = read_number(row, params);
+  if (v == 0 && (row.flags & FT_PARAM_FLAG_ZERO_IS_AUTO)) return "auto";
   if (row.type == FT_PARAM_ENUM)
     for (int i = 0; i < row.enum_count; ++i)
       if (row.enum_items[i].value == int32_t(v)) return cli_name(row.enum_items[i]);

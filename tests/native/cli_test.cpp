@@ -20,6 +20,7 @@
 #include "erosion/erosion.hpp"
 #include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
+#include "povray/scene.hpp"
 #include "terrain/terrain.hpp"
 
 namespace ft {
@@ -283,6 +284,38 @@ TEST_F(Cli, ErodePresetsKeepTheirUpliftAndFlagsOverrideThem) {
   const CliRun bad = run("erode --in " + in + " --preset valleys --thermal-rate 0 --stats");
   EXPECT_NE(bad.code, 0);
   EXPECT_NE(bad.err.find("thermal_rate must be in (0, 1], got 0"), std::string::npos) << bad.err;
+}
+
+TEST_F(Cli, SceneHelpSaysWhatTheAutoCameraElevationPicks) {
+  // The camera elevation's default is auto, and --help says what auto picks
+  // for each kind of scene: the library's numbers (scene.hpp), not 22 for all.
+  const std::string help = run("scene --help").out;
+  EXPECT_NE(help.find("--camera-elevation-deg,--elevation FLOAT=auto"), std::string::npos) << help;
+  const auto says = [&](double deg, const std::string& words) {
+    const std::string text = std::to_string(int(deg)) + " " + words;
+    EXPECT_NE(help.find(text), std::string::npos) << "scene --help must say \"" << text << "\"";
+  };
+  says(pov::kTerrainElevationDeg, "with a terrain");
+  says(pov::kLinesElevationDeg, "for polylines alone");
+  says(pov::kLightningElevationDeg, "when every line set is lightning");
+  EXPECT_NE(help.find("range auto (0) or [1, 90] degrees"), std::string::npos);
+  // --camera-margin and --camera-center-v come from their new rows.
+  EXPECT_NE(help.find("--camera-margin FLOAT=0.04"), std::string::npos);
+  EXPECT_NE(help.find("--camera-center-v FLOAT=0.55"), std::string::npos);
+  // Auto (or "auto" spelled out) is the elevation given by hand, and the
+  // flag still overrides it.
+  std::ofstream(path("l.csv")) << "0,0,0,0\n1,0.2,0.1,0\n2,0.1,0.3,0\n";
+  const auto scene = [&](const std::string& args, const std::string& dir) {
+    fs::create_directories(dir_ / dir);
+    const CliRun r = run("scene --polyline " + path("l.csv") + " --pov " + path(dir + "/s.pov") + " " + args);
+    EXPECT_EQ(r.code, 0) << args << ": " << r.err;
+    return read_file(path(dir + "/s.pov"));
+  };
+  const std::string by_default = scene("", "a");
+  EXPECT_EQ(by_default, scene("--elevation 70", "b"));
+  EXPECT_EQ(by_default, scene("--camera-elevation-deg auto", "b"));
+  EXPECT_NE(by_default, scene("--elevation 40", "b"));
+  EXPECT_NE(run("scene --polyline " + path("l.csv") + " --pov " + path("x.pov") + " --elevation 0.5").code, 0);
 }
 
 TEST_F(Cli, ProfileWritesCsvWithTwoToTheLevelsPlusOneRows) {

@@ -95,7 +95,8 @@ const std::vector<Field> kPovSceneFields = {
     FT_FIELD(ft_pov_scene_params, camera_elevation_deg), FT_FIELD(ft_pov_scene_params, camera_fov_deg),
     FT_FIELD(ft_pov_scene_params, camera_aspect), FT_FIELD(ft_pov_scene_params, camera_distance_scale),
     FT_FIELD(ft_pov_scene_params, sun_azimuth_deg), FT_FIELD(ft_pov_scene_params, sun_elevation_deg),
-    FT_FIELD(ft_pov_scene_params, image_path),
+    FT_FIELD(ft_pov_scene_params, image_path), FT_FIELD(ft_pov_scene_params, camera_margin),
+    FT_FIELD(ft_pov_scene_params, camera_center_v),
 };
 const std::vector<Field> kPovSweepFields = {
     FT_FIELD(ft_pov_sweep_params, struct_size), FT_FIELD(ft_pov_sweep_params, spline),
@@ -234,7 +235,9 @@ TEST(Params, TheNewTablesDefaultsAreTheHeadersWords) {
   EXPECT_EQ(s.vertical_scale, 1);
   EXPECT_EQ(s.has_sea, 0);
   EXPECT_EQ(s.camera_azimuth_deg, 200);
-  EXPECT_EQ(s.camera_elevation_deg, 22);
+  EXPECT_EQ(s.camera_elevation_deg, 0);  // auto
+  EXPECT_EQ(s.camera_margin, 0.04);
+  EXPECT_EQ(s.camera_center_v, 0.55);
   EXPECT_EQ(s.camera_fov_deg, 50);
   EXPECT_EQ(s.camera_aspect, 4.0 / 3.0);
   EXPECT_EQ(s.camera_distance_scale, 1);

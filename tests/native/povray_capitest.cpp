@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -54,6 +55,90 @@ TEST(PovCapi, WritesASceneWithTerrainAndLines) {
   EXPECT_NE(sdl.find("FT_Lightning_Tex"), std::string::npos);
   EXPECT_TRUE(fs::exists(t / "s.terrain.png"));
   ft_polylines_free(pl);
+  ft_heightfield_free(hf);
+}
+
+TEST(PovCapi, TheDefaultCameraElevationIsAutoByWhatTheSceneHolds) {
+  // camera_elevation_deg 0 (the default) frames a terrain from 22 degrees,
+  // polylines alone from 70 and lightning alone from 12: each auto scene is
+  // the one written with that elevation given, byte for byte. Before auto,
+  // the C ABI framed polylines alone from 22, unlike the CLI.
+  TempDir t;
+  std::vector<float> z(17 * 17);
+  for (size_t i = 0; i < z.size(); ++i) z[i] = float(std::sin(i * 0.37));
+  ft_heightfield* hf = nullptr;
+  ASSERT_EQ(ft_heightfield_create(17, 17, z.data(), &hf), FT_OK);
+  const double xyz[] = {0.1, 0.1, 0.5, 0.2, 0.3, 0.4, 0.3, 0.2, 0.1, 0.6, 0.1, 0.2};
+  ft_polylines* pl = nullptr;
+  ASSERT_EQ(ft_polylines_create(xyz, nullptr, 4, nullptr, 1, &pl), FT_OK);
+  auto scene = [&](const ft_heightfield* terrain, int32_t kind, double elevation, const char* dir) {
+    fs::create_directories(t / dir);
+    ft_pov_scene_params p;
+    EXPECT_EQ(ft_pov_scene_params_init(&p), FT_OK);
+    p.terrain = terrain;
+    ft_pov_scene_lines lines = {pl, kind, 0.01};
+    p.lines = &lines;
+    p.line_set_count = 1;
+    p.camera_elevation_deg = elevation;
+    EXPECT_EQ(ft_pov_write_scene(&p, (t / (std::string(dir) + "/s.pov")).c_str()), FT_OK) << ft_last_error();
+    return slurp(t / (std::string(dir) + "/s.pov"));
+  };
+  ft_pov_scene_params d;
+  ft_pov_scene_params_init(&d);
+  EXPECT_EQ(d.camera_elevation_deg, 0.0) << "auto is the default";
+  EXPECT_EQ(scene(nullptr, FT_POV_LINE, 0, "a"), scene(nullptr, FT_POV_LINE, 70, "b"));
+  EXPECT_NE(scene(nullptr, FT_POV_LINE, 0, "a"), scene(nullptr, FT_POV_LINE, 22, "b")) << "control";
+  EXPECT_EQ(scene(nullptr, FT_POV_LIGHTNING, 0, "a"), scene(nullptr, FT_POV_LIGHTNING, 12, "b"));
+  EXPECT_EQ(scene(hf, FT_POV_LIGHTNING, 0, "a"), scene(hf, FT_POV_LIGHTNING, 22, "b"));
+  ft_polylines_free(pl);
+  ft_heightfield_free(hf);
+}
+
+TEST(PovCapi, CameraMarginAndCentreAreSettingsOfTheTable) {
+  // margin and center_v are rows of ft_pov_scene_params (ABI 2.11): their
+  // defaults are CameraOptions', the table checks their ranges in its words,
+  // they reach the framing, and a 2.10 caller's smaller struct gets the defaults.
+  TempDir t;
+  std::vector<float> z(17 * 17);
+  for (size_t i = 0; i < z.size(); ++i) z[i] = float(std::cos(i * 0.21));
+  ft_heightfield* hf = nullptr;
+  ASSERT_EQ(ft_heightfield_create(17, 17, z.data(), &hf), FT_OK);
+  ft_pov_scene_params p;
+  ASSERT_EQ(ft_pov_scene_params_init(&p), FT_OK);
+  EXPECT_EQ(p.camera_margin, 0.04);
+  EXPECT_EQ(p.camera_center_v, 0.55);
+  p.terrain = hf;
+  ASSERT_EQ(ft_pov_write_scene(&p, (t / "default.pov").c_str()), FT_OK) << ft_last_error();
+  const std::string by_default = slurp(t / "default.pov");
+  p.camera_center_v = 0.9;
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("camera_center_v must be in [0.2, 0.8], got 0.9"), std::string::npos)
+      << ft_last_error();
+  p.camera_center_v = 0.55;
+  p.camera_margin = 0.6;
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("camera_margin must be in [0, 0.5], got 0.6"), std::string::npos)
+      << ft_last_error();
+  p.camera_margin = 0.04;
+  p.camera_elevation_deg = 0.5;  // 0 is auto; between 0 and 1 is neither
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("camera_elevation_deg must be 0 (auto) or in [1, 90], got 0.5"),
+            std::string::npos)
+      << ft_last_error();
+  EXPECT_FALSE(fs::exists(t / "x.pov"));
+  p.camera_elevation_deg = 0;
+  p.camera_center_v = 0.7;
+  p.camera_margin = 0.2;
+  ASSERT_EQ(ft_pov_write_scene(&p, (t / "moved.pov").c_str()), FT_OK) << ft_last_error();
+  EXPECT_NE(slurp(t / "moved.pov"), by_default) << "margin and center_v reach the camera";
+  // A caller of ABI 2.10 knows neither field: its struct ends before them.
+  ft_pov_scene_params old;
+  ft_pov_scene_params_init(&old);
+  old.terrain = hf;
+  old.struct_size = offsetof(ft_pov_scene_params, camera_margin);
+  old.camera_margin = old.camera_center_v = -1;  // beyond its size: never read
+  ASSERT_EQ(ft_pov_write_scene(&old, (t / "default.pov").c_str()), FT_OK) << ft_last_error();
+  EXPECT_EQ(slurp(t / "default.pov"), by_default);
   ft_heightfield_free(hf);
 }
 

@@ -187,6 +187,8 @@ def test_cli_help_has_every_setting_with_the_librarys_default(lib, kind_name):
         if row["type"] == "enum":
             ident = next(n for n, _l, _d, v in row["items"] if v == row["default_value"])
             assert default == ident.lower().replace("_", "-"), flag
+        elif row["flags"] & binding.FLAG_ZERO_IS_AUTO and row["default_value"] == 0:
+            assert default == "auto", flag  # the sentinel the row documents
         else:
             assert float(default) == pytest.approx(row["default_value"]), flag
     assert checked >= 1, command

@@ -41,7 +41,10 @@ extern "C" {
 /// falloff_mask_height at the end of ft_terrain_params).
 /// 2.10: tile sets journal their finished tiles; a set's exact height range can
 ///      be computed per tile elsewhere (ft_tileset_open_deferred, ft_tile_height_range).
-#define FT_ABI_VERSION_MINOR 10
+/// 2.11: ft_pov_scene_params.camera_margin and camera_center_v (described, so the camera's
+/// ranges are checked once); camera_elevation_deg 0 = auto, by the scene's content
+/// (FT_PARAM_FLAG_ZERO_IS_AUTO in params.h); 0 is ft_pov_scene_params_init's default.
+#define FT_ABI_VERSION_MINOR 11
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

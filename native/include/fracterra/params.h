@@ -57,7 +57,9 @@ enum {
   FT_PARAM_FLAG_DATA = 2,        ///< data handed over by the program (pointers, their counts,
                                  ///< callbacks), not a setting: no CLI flag, no UI property
   FT_PARAM_FLAG_MIN_EXCLUSIVE = 4, ///< the value must be > hard_min (not >=)
-  FT_PARAM_FLAG_MAX_EXCLUSIVE = 8  ///< the value must be < hard_max (not <=)
+  FT_PARAM_FLAG_MAX_EXCLUSIVE = 8, ///< the value must be < hard_max (not <=)
+  FT_PARAM_FLAG_ZERO_IS_AUTO = 16  ///< 0 is accepted too, outside the hard range: "auto", the
+                                   ///< library picks the value (the row's doc says how); ABI 2.11
 };
 
 /// Every method of the struct (its `method` field) uses the field.

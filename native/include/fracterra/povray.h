@@ -41,13 +41,17 @@ typedef struct ft_pov_scene_params {
   const ft_pov_scene_lines* lines;  ///< line_set_count entries; may be NULL when the count is 0
   int32_t line_set_count;           ///< 0..1024; default 0
   double camera_azimuth_deg;        ///< from the content to the camera, 0 = +y, 90 = +x; -360..360; default 200
-  double camera_elevation_deg;      ///< 1..90; default 22
+  double camera_elevation_deg;      ///< 1..90, or 0 = auto (default): 22 over a terrain, 70 for
+                                    ///< polylines alone, 12 when every line set is lightning
   double camera_fov_deg;            ///< horizontal field of view, 5..150; default 50
   double camera_aspect;             ///< width / height the framing is for, 0.1..10; default 4/3
   double camera_distance_scale;     ///< > 1 backs off from the framed distance, 0.1..100; default 1
   double sun_azimuth_deg;           ///< -360..360; default 235
   double sun_elevation_deg;         ///< 1..90; default 35
   const char* image_path;           ///< terrain PNG; NULL = beside the scene, "x.pov" -> "x.terrain.png"
+  double camera_margin;             ///< free border, fraction of the half-frame, 0..0.5; default 0.04 (ABI 2.11)
+  double camera_center_v;           ///< image row (0 top .. 1 bottom) of the content's middle, 0.2..0.8;
+                                    ///< default 0.55 (above 0.5 leaves more sky) (ABI 2.11)
 } ft_pov_scene_params;
 
 /// Fills `p` with the defaults above (FT_ERR_INVALID_ARGUMENT for NULL).

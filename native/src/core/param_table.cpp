@@ -56,11 +56,15 @@ std::string bound(double v) {
 }
 
 void check_number(const ft_param_info& row, double v, bool integer) {
+  if (v == 0 && (row.flags & FT_PARAM_FLAG_ZERO_IS_AUTO)) return;
   const bool lo_open = row.flags & FT_PARAM_FLAG_MIN_EXCLUSIVE, hi_open = row.flags & FT_PARAM_FLAG_MAX_EXCLUSIVE;
   const bool ok = std::isfinite(v) && (lo_open ? v > row.hard_min : v >= row.hard_min) &&
                   (hi_open ? v < row.hard_max : v <= row.hard_max);
   if (ok) return;
   const std::string name = row.name, value = integer ? std::to_string(int64_t(v)) : short_number(v);
+  if (row.flags & FT_PARAM_FLAG_ZERO_IS_AUTO)
+    invalid(name + " must be 0 (auto) or in " + (lo_open ? "(" : "[") + bound(row.hard_min) + ", " +
+            bound(row.hard_max) + (hi_open ? ")" : "]") + ", got " + value);
   if (integer) invalid(name + " must be in " + bound(row.hard_min) + ".." + bound(row.hard_max) + ", got " + value);
   // The words of check_range / check_positive, which the messages had before the tables.
   if (row.hard_max >= 1.7e308 && row.hard_min <= -1.7e308) invalid(name + " must be a finite number, got " + value);

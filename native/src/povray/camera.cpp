@@ -20,16 +20,6 @@ Vec3 unit(const Vec3& a) {
 
 }  // namespace
 
-void validate_camera_options(const CameraOptions& o) {
-  check_range("camera azimuth_deg", o.azimuth_deg, -360, 360);
-  check_range("camera elevation_deg", o.elevation_deg, 1, 90);
-  check_range("camera fov_deg", o.fov_deg, 5, 150);
-  check_range("camera aspect", o.aspect, 0.1, 10);
-  check_range("camera margin", o.margin, 0, 0.5);
-  check_range("camera distance_scale", o.distance_scale, 0.1, 100);
-  check_range("camera center_v", o.center_v, 0.2, 0.8);
-}
-
 bool Camera::project(const Vec3& p, double& u, double& v) const {
   const Vec3 d{p[0] - location[0], p[1] - location[1], p[2] - location[2]};
   const double depth = dot(d, direction);
@@ -43,7 +33,6 @@ bool Camera::project(const Vec3& p, double& u, double& v) const {
 }
 
 Camera frame_points(const std::vector<Vec3>& points, const CameraOptions& o) {
-  validate_camera_options(o);
   if (points.empty()) invalid("there is nothing to frame: no points");
   Vec3 lo = points[0], hi = points[0];
   for (const Vec3& p : points)

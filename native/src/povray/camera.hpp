@@ -8,6 +8,8 @@
 
 namespace ft::pov {
 
+// The ranges are ft_pov_scene_params' table's (pov_params.cpp), checked
+// where settings enter the library; frame_points trusts them.
 struct CameraOptions {
   double azimuth_deg = 200;    // compass direction from the content to the camera: 0 = +y (north), 90 = +x
   double elevation_deg = 22;   // above the horizon, 1..90
@@ -28,7 +30,6 @@ struct Camera {
   bool project(const Vec3& p, double& u, double& v) const;
 };
 
-void validate_camera_options(const CameraOptions& o);
 // The camera placed towards the given azimuth and elevation from the centre
 // of the points' box, tilted so the middle of their picture lands on row
 // center_v, just far enough for every point to fit the frame within the margin.

@@ -9,6 +9,7 @@ constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbove = FT_PARAM_FLAG_MIN_EXCLUSIVE;  // > hard_min
 constexpr double kInf = DBL_MAX;
+constexpr uint32_t kAbi211 = 0x2000B;  // camera_margin, camera_center_v; elevation 0 = auto
 
 #define ROW(field, type) FT_PARAM_ROW(ft_pov_scene_params, field, type)
 FT_PARAM_TABLE_BEGIN
@@ -43,9 +44,15 @@ constexpr ft_param_info kSceneRows[] = {
     {ROW(camera_azimuth_deg, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 200, .hard_min = -360,
      .hard_max = 360, .soft_min = 0, .soft_max = 360, .unit = "degrees", .label = "Camera Azimuth",
      .doc = "Compass direction from the content to the camera: 0 = +y (north), 90 = +x", .methods = kAll},
-    {ROW(camera_elevation_deg, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 22, .hard_min = 1,
-     .hard_max = 90, .soft_min = 5, .soft_max = 90, .unit = "degrees", .label = "Camera Elevation",
-     .doc = "Camera angle above the horizon, seen from the content", .methods = kAll},
+    // Auto, because one number cannot suit every scene: a terrain is seen from
+    // low (22), polylines alone from high above (70), lightning, which is
+    // vertical, nearly from the side (12). scene.hpp holds the three values.
+    {ROW(camera_elevation_deg, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_ZERO_IS_AUTO, .element_kind = -1,
+     .default_value = 0, .hard_min = 1, .hard_max = 90, .soft_min = 5, .soft_max = 90, .unit = "degrees",
+     .label = "Camera Elevation",
+     .doc = "Camera angle above the horizon, seen from the content; 0: auto, by what the scene holds: 22 with a "
+            "terrain, 70 for polylines alone, 12 when every line set is lightning",
+     .methods = kAll},
     {ROW(camera_fov_deg, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 50, .hard_min = 5, .hard_max = 150,
      .soft_min = 20, .soft_max = 90, .unit = "degrees", .label = "Field of View",
      .doc = "Horizontal field of view (POV-Ray's camera angle)", .methods = kAll},
@@ -63,6 +70,14 @@ constexpr ft_param_info kSceneRows[] = {
      .doc = "Sun angle above the horizon", .methods = kAll},
     {ROW(image_path, FT_PARAM_STRING), .flags = kData, .element_kind = -1, .unit = "", .label = "Terrain Image",
      .doc = "Path of the terrain's 16-bit PNG; NULL: beside the scene, \"x.pov\" -> \"x.terrain.png\"",
+     .methods = kAll},
+    {ROW(camera_margin, FT_PARAM_DOUBLE), .since = kAbi211, .element_kind = -1, .default_value = 0.04,
+     .hard_min = 0, .hard_max = 0.5, .soft_min = 0, .soft_max = 0.2, .unit = "", .label = "Margin",
+     .doc = "Free border around the framed content, as a fraction of the half-frame", .methods = kAll},
+    {ROW(camera_center_v, FT_PARAM_DOUBLE), .since = kAbi211, .element_kind = -1, .default_value = 0.55,
+     .hard_min = 0.2, .hard_max = 0.8, .soft_min = 0.4, .soft_max = 0.7, .unit = "", .label = "Vertical Centre",
+     .doc = "Image row (0 top .. 1 bottom) where the middle of the framed content lands; above 0.5 leaves more "
+            "sky",
      .methods = kAll},
 };
 #undef ROW
@@ -111,6 +126,7 @@ const ParamTable& sweep_param_table() {
 }
 
 void apply_scene_settings(const ft_pov_scene_params& c, SceneParams& s) {
+  // The camera's ranges are checked here only: frame_points trusts them.
   check_ranges(scene_param_table(), &c);
   s.world_size_x = c.world_size_x;
   s.world_size_y = c.world_size_y;
@@ -122,6 +138,8 @@ void apply_scene_settings(const ft_pov_scene_params& c, SceneParams& s) {
   s.camera.fov_deg = c.camera_fov_deg;
   s.camera.aspect = c.camera_aspect;
   s.camera.distance_scale = c.camera_distance_scale;
+  s.camera.margin = c.camera_margin;
+  s.camera.center_v = c.camera_center_v;
   s.sun_azimuth_deg = c.sun_azimuth_deg;
   s.sun_elevation_deg = c.sun_elevation_deg;
 }

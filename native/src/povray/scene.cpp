@@ -86,10 +86,8 @@ double automatic_line_radius(const SceneLines& l, const Camera& cam, double exte
 
 void validate_scene_params(const SceneParams& p) {
   if (p.terrain) validate_terrain(*p.terrain, p.world_size_x, p.world_size_y, p.vertical_scale);
-  // sea_level and the sun are checked once, by ft_pov_scene_params' table
-  // (pov_params.cpp), before they get here; the camera keeps its own contract
-  // (margin and center_v have no row).
-  validate_camera_options(p.camera);
+  // sea_level, the sun and the camera are checked once, by
+  // ft_pov_scene_params' table (pov_params.cpp), before they get here.
   for (const auto& l : p.lines) {
     check_not_null("polyline set", l.set);
     if (l.kind != LineKind::kGeneric && l.kind != LineKind::kLightning && l.kind != LineKind::kCoastline)
@@ -101,6 +99,13 @@ void validate_scene_params(const SceneParams& p) {
   }
   check_int_range("image_width", p.image_width, 16, 16384);
   if (!p.terrain && p.lines.empty()) invalid("a scene needs a terrain or at least one polyline set");
+}
+
+double auto_camera_elevation(const SceneParams& p) {
+  if (p.terrain || p.tiles) return kTerrainElevationDeg;
+  bool all_lightning = !p.lines.empty();
+  for (const auto& l : p.lines) all_lightning = all_lightning && l.kind == LineKind::kLightning;
+  return all_lightning ? kLightningElevationDeg : kLinesElevationDeg;
 }
 
 SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
@@ -140,7 +145,9 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   const double extent = std::max({hi[0] - lo[0], hi[2] - lo[2], hi[1] - lo[1], 1e-9});
   sum.lo = lo;
   sum.hi = hi;
-  sum.camera = frame_points(frame, p.camera);
+  CameraOptions camera = p.camera;
+  if (camera.elevation_deg == 0) camera.elevation_deg = auto_camera_elevation(p);
+  sum.camera = frame_points(frame, camera);
   const Camera& cam = sum.camera;
   const Vec3 centre = cam.look_at;
 

@@ -42,6 +42,7 @@ struct SceneParams {
   bool has_sea = false;
   double sea_level = 0;                // world z of the sea
   std::vector<SceneLines> lines;
+  // camera.elevation_deg 0 = auto: auto_camera_elevation() of this scene.
   CameraOptions camera;
   double sun_azimuth_deg = 235, sun_elevation_deg = 35;
   // The terrain PNG; "" = beside the scene, named after it ("x.pov" -> "x.terrain.png").
@@ -79,11 +80,20 @@ void set_scene_terrain(SceneParams& p, const Heightfield& hf, double world_size_
 // with heights unscaled (or, without one, with the defaults above).
 SceneSummary write_terrain_scene(const Heightfield& hf, const std::string& pov_path);
 
-// Camera defaults for a polyline alone: seen from high above (70 degrees),
-// or nearly from the side (12 degrees) for lightning, which is vertical.
+// The automatic camera elevations (ft_pov_scene_params.camera_elevation_deg
+// 0): a terrain is seen from low, polylines alone from high above, and
+// lightning, which is vertical, nearly from the side. The table's doc and
+// `scene --help` state these numbers; a test holds them together.
+constexpr double kTerrainElevationDeg = 22, kLinesElevationDeg = 70, kLightningElevationDeg = 12;
+// The elevation auto picks for `p`: kTerrainElevationDeg with a terrain (or
+// tiles), else kLightningElevationDeg when every line set is lightning, else
+// kLinesElevationDeg.
+double auto_camera_elevation(const SceneParams& p);
+
+// Camera defaults for a polyline alone: what auto picks for its kind.
 inline CameraOptions polyline_camera(LineKind kind = LineKind::kGeneric) {
   CameraOptions c;
-  c.elevation_deg = kind == LineKind::kLightning ? 12 : 70;
+  c.elevation_deg = kind == LineKind::kLightning ? kLightningElevationDeg : kLinesElevationDeg;
   return c;
 }
 
