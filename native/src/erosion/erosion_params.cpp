@@ -31,8 +31,9 @@ constexpr ft_param_info kRows[] = {
     {ROW(area_exponent, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.5, .hard_min = 0, .hard_max = 2,
      .soft_min = 0.3, .soft_max = 0.7, .unit = "", .label = "Area Exponent",
      .doc = "m in K A^m S (slope exponent n = 1); the concavity of graded rivers is m / n", .methods = kAll},
+    // Label "Diffusion", not "Hillslope Diffusion": Blender's narrow sidebar cut the longer one.
     {ROW(diffusion, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 1e-7, .hard_min = 0, .hard_max = DBL_MAX,
-     .soft_min = 0, .soft_max = 1e-5, .unit = "world units^2/yr", .label = "Hillslope Diffusion",
+     .soft_min = 0, .soft_max = 1e-5, .unit = "world units^2/yr", .label = "Diffusion",
      .doc = "Hillslope diffusivity D in dz/dt = D laplacian(z), implicit; 0: none", .methods = kAll},
     {ROW(uplift, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = DBL_MAX,
      .soft_min = 0, .soft_max = 1e-3, .unit = "world units/yr", .label = "Uplift",
