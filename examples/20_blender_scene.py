@@ -36,7 +36,8 @@ def parse_args():
     p.add_argument("--sigma", type=float, default=1.5, help="vertical scale in metres, > 0 (default 1.5)")
     p.add_argument("--seed", type=int, default=7, help="random seed, 0..2^31-1 (default 7)")
     p.add_argument("--size", type=float, default=20.0, help="terrain extent in metres (default 20)")
-    p.add_argument("--sea-level", type=float, default=None, help="flatten below this height and add water")
+    p.add_argument("--sea-level", type=float, default=0.3,
+                   help="flatten below this height and add water (default 0.3: the plain is under the sea)")
     p.add_argument("--resolution", default="480x270", help="preview size WxH, also for --pov-render (default 480x270)")
     p.add_argument("--samples", type=int, default=16, help="Cycles samples (default 16)")
     p.add_argument("--engine", default="CYCLES", choices=["CYCLES", "BLENDER_EEVEE"],
@@ -186,8 +187,8 @@ def main():
     kw = dict(method=args.method, levels=args.levels, hurst=args.hurst, sigma=args.sigma, seed=args.seed,
               world_size=args.size, width=2 ** args.levels + 1, height=2 ** args.levels + 1,
               location=(0, 0, 0))
-    # The demo's terrain is a piece of a larger land (no island falloff, no levelling).
-    kw.update(levelling=0.0, height_offset=0.0, falloff="NONE")
+    # The demo's terrain is the add-on's default landform (a mountain falling
+    # to a plain), with the sea over the plain: an island, as in the POV-Ray demo.
     if args.sea_level is not None:
         kw.update(sea="HEIGHT", sea_level=args.sea_level)
     bpy.ops.mesh.fracterra_terrain_add(**kw)
