@@ -45,4 +45,5 @@ for s in before after; do
   povray +L"$root/povray_macros" +I"$out/$s.pov" +O"$out/$s.png" +W"${WIDTH:-800}" +H"${HEIGHT:-600}" \
     +A0.3 -D -V >/dev/null 2>&1
 done
-echo "wrote $out/before.png $out/after.png, maps in $out/maps, drainage statistics in $out/analysis.json"
+FRACTERRA_LIBRARY="${FRACTERRA_LIBRARY:-$(dirname "$ft")/libfracterra.so}" python3 "$root/examples/maps_montage.py" "$out/maps" "$out/maps.png" >/dev/null
+echo "wrote $out/before.png $out/after.png, maps in $out/maps (side by side: $out/maps.png), drainage statistics in $out/analysis.json"

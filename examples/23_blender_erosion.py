@@ -12,8 +12,8 @@ erosion.blend. Exits non-zero with a message on any error.
 """
 
 import argparse
+import importlib.util
 import math
-import os
 import sys
 from pathlib import Path
 
@@ -21,6 +21,9 @@ import bpy
 
 ROOT = Path(__file__).resolve().parent.parent
 
+_spec = importlib.util.spec_from_file_location("blender_scene_20", ROOT / "examples" / "20_blender_scene.py")
+scene20 = importlib.util.module_from_spec(_spec)  # its enable_addon, shared by the Blender examples
+_spec.loader.exec_module(scene20)
 
 def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
@@ -33,16 +36,6 @@ def parse_args():
     args = p.parse_args(argv)
     args.width, args.height = (int(v) for v in args.resolution.lower().split("x"))
     return args
-
-
-def enable_addon(library):
-    import addon_utils
-    if not any(m.__name__ == "fracterra" for m in addon_utils.modules()):
-        lib = library or os.environ.get("FRACTERRA_LIBRARY") or str(ROOT / "build" / "native" / "libfracterra.so")
-        os.environ["FRACTERRA_LIBRARY"] = lib
-        sys.path.insert(0, str(ROOT / "blender_addon"))
-    if addon_utils.enable("fracterra", default_set=True, handle_error=None) is None:
-        raise RuntimeError("could not enable the fracterra add-on")
 
 
 def terrain(args, x, erode):
@@ -59,7 +52,7 @@ def main():
     args = parse_args()
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    enable_addon(args.library)
+    scene20.enable_addon(args.library)
     for obj in list(bpy.data.objects):
         bpy.data.objects.remove(obj)
     before = terrain(args, -5.6, "NONE")

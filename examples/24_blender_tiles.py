@@ -13,8 +13,8 @@ tile; left lod 0, right lod 2). docs/scale.md shows it.
 """
 
 import argparse
+import importlib.util
 import math
-import os
 import sys
 from pathlib import Path
 
@@ -24,6 +24,9 @@ ROOT = Path(__file__).resolve().parent.parent
 SETTINGS = {"method": "MIDPOINT", "levels": 9, "hurst": 0.75, "seed": 7, "sigma": 1.0}
 TILE = 128
 
+_spec = importlib.util.spec_from_file_location("blender_scene_20", ROOT / "examples" / "20_blender_scene.py")
+scene20 = importlib.util.module_from_spec(_spec)  # its enable_addon, shared by the Blender examples
+_spec.loader.exec_module(scene20)
 
 def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
@@ -35,16 +38,6 @@ def parse_args():
     args = p.parse_args(argv)
     args.width, args.height = (int(v) for v in args.resolution.lower().split("x"))
     return args
-
-
-def enable_addon(library):
-    import addon_utils
-    if not any(m.__name__ == "fracterra" for m in addon_utils.modules()):
-        os.environ["FRACTERRA_LIBRARY"] = (library or os.environ.get("FRACTERRA_LIBRARY")
-                                           or str(ROOT / "build" / "native" / "libfracterra.so"))
-        sys.path.insert(0, str(ROOT / "blender_addon"))
-    if addon_utils.enable("fracterra", default_set=True, handle_error=None) is None:
-        raise RuntimeError("could not enable the fracterra add-on")
 
 
 def write_tileset(folder):
@@ -146,7 +139,7 @@ def main():
     args = parse_args()
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    enable_addon(args.library)
+    scene20.enable_addon(args.library)
     folder = out / "set"
     write_tileset(folder)
     paths = []

@@ -444,6 +444,28 @@ TEST(Erosion, MapsAreInWorldUnits) {
   EXPECT_GT(m.water_depth.stats().max, 0.0);
 }
 
+TEST(Erosion, UpliftNeverShowsAsDeposit) {
+  // Rivers only cut: with uplift and no hydraulic pass, a cell ends at most
+  // at its input height plus what it was lifted, so the deposited map is 0
+  // but where diffusion fills a hollow or the fill raises a lake floor (a
+  // few cells: bound 5%; measured 0). Measured against the input alone, the
+  // uplift left where rivers did not cut it away would show as deposit on
+  // most cells (measured 88%).
+  const Heightfield hf = fbm_terrain(65, 3);
+  ErosionConfig c = erosion_preset("valleys", hf);
+  c.fluvial.uplift_follows_terrain = false;  // uniform, and faster than the rivers cut
+  c.fluvial.uplift *= 5;
+  ErosionMaps m;
+  const Heightfield out = erode(hf, c, &m);
+  int64_t deposited = 0, above_input = 0;
+  for (size_t i = 0; i < hf.size(); ++i) {
+    deposited += m.deposited.data()[i] > 1e-6f;
+    above_input += out.data()[i] > hf.data()[i] + 1e-6f;
+  }
+  EXPECT_LT(deposited, int64_t(hf.size() / 20));
+  EXPECT_GT(above_input, int64_t(hf.size() / 4)) << "the uplift shows against the input: the test means something";
+}
+
 TEST(DrainageStatistics, FluvialErosionMakesRealLandscapes) {
   // Real landscapes: Hack's h about 0.5-0.6, concavity theta about 0.35-0.7.
   // Ensemble: 4 fBm terrains (H = 0.8, 129^2, seeds 1-4) eroded by the
@@ -479,8 +501,10 @@ TEST(ErosionPreset, FittedUpliftKeepsTheTerrainsReliefAndGradesItsChannels) {
   // The CLI's presets fit their uplift to the terrain (presets.hpp): over the
   // preset's run it would lift the land by its relief, and incision balances
   // it. On an fBm terrain 10 units across (relief about 1) the eroded relief
-  // stays within [0.7, 1.5] of the input's (measured 1.1 at 257^2; without
-  // uplift 60 steps flatten it to 0.25, with the fixed 1e-4 it grows to 5.4),
+  // stays within [0.4, 1.5] of the input's (measured 0.52 at 129^2: the
+  // uplift follows the input heights, so the low ground rises little and
+  // wears down; a uniform uplift kept 1.1; without uplift 60 steps flatten it
+  // to 0.25, with the fixed 1e-4 it grows to 5.4),
   // and the channels are graded: theta within 3 fit standard errors of the
   // real range 0.35-0.7 (see FluvialErosionMakesRealLandscapes).
   const Heightfield hf = fbm_terrain(129, 5);
@@ -488,7 +512,7 @@ TEST(ErosionPreset, FittedUpliftKeepsTheTerrainsReliefAndGradesItsChannels) {
   const ErosionConfig fitted = erosion_preset("valleys", hf);
   EXPECT_DOUBLE_EQ(fitted.fluvial.uplift * fitted.fluvial.steps * fitted.fluvial.dt, relief);
   const HeightStats after = erode(hf, fitted, nullptr).stats();
-  EXPECT_GE(after.max - after.min, 0.7 * relief);
+  EXPECT_GE(after.max - after.min, 0.4 * relief);
   EXPECT_LE(after.max - after.min, 1.5 * relief);
   const DrainageStats s = drainage_stats(erode(hf, fitted, nullptr), false);
   EXPECT_GE(s.theta, 0.35 - 3 * s.theta_stderr);
@@ -498,6 +522,48 @@ TEST(ErosionPreset, FittedUpliftKeepsTheTerrainsReliefAndGradesItsChannels) {
   EXPECT_GT(fixed.max - fixed.min, 3 * relief);
   // Presets without uplift are the same fitted or not.
   EXPECT_EQ(erosion_preset("rain", hf).fluvial.uplift, 0.0);
+}
+
+TEST(ErosionPreset, FittedUpliftKeepsALandformsPlain) {
+  // A mountain on a plain (radial falloff to the edge level): the fitted
+  // uplift follows the input heights, so the plain, at the lowest height,
+  // hardly rises, while the mountain keeps rising where it stands. Plain
+  // cells: within 2% of the relief above the lowest input height. Bound: their
+  // mean rise under 5% of the relief (its own uplift is at most 2% of it,
+  // and the preset's rivers only cut into it). Control: uniform uplift at the
+  // same rate adds the whole relief to the plain over the run, of which the
+  // rivers draining it to the edges wear most away: measured 17% of the
+  // relief left; bound 10%.
+  ft_terrain_params p = default_terrain_params();
+  p.method = FT_TERRAIN_FBM;
+  p.width = p.height = 129;
+  p.seed = 5;
+  p.hurst = 0.8;
+  // The add-on's default landform (core/params.py): levelled, raised so
+  // the falloff shapes a mountain, a radial falloff to the edge level.
+  p.sigma = 2.0;
+  p.levelling = 1.0;
+  p.height_offset = 1.5;
+  p.falloff = FT_FALLOFF_RADIAL;
+  p.falloff_width = 0.9;
+  Heightfield hf = generate_terrain(p);
+  hf.set_world_size(10.0);
+  const HeightStats in = hf.stats();
+  const double relief = in.max - in.min;
+  auto plain_rise = [&](const ErosionConfig& c) {
+    const Heightfield out = erode(hf, c, nullptr);
+    double rise = 0;
+    int64_t cells = 0;
+    for (size_t i = 0; i < hf.size(); ++i)
+      if (hf.data()[i] - in.min < 0.02 * relief) rise += out.data()[i] - hf.data()[i], ++cells;
+    EXPECT_GT(cells, int64_t(hf.size() / 10)) << "the terrain has a plain";
+    return rise / double(cells);
+  };
+  ErosionConfig fitted = erosion_preset("valleys", hf);
+  ASSERT_TRUE(fitted.fluvial.uplift_follows_terrain);
+  EXPECT_LT(std::fabs(plain_rise(fitted)), 0.05 * relief);  // measured -0.2%
+  fitted.fluvial.uplift_follows_terrain = false;
+  EXPECT_GT(plain_rise(fitted), 0.1 * relief);
 }
 
 TEST(ErodeCli, WritesTheTerrainAndSixMapsWithTheirRanges) {

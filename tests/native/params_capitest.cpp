@@ -83,7 +83,7 @@ const std::vector<Field> kErosionFields = {
     FT_FIELD(ft_erosion_params, thermal_iterations), FT_FIELD(ft_erosion_params, talus_degrees),
     FT_FIELD(ft_erosion_params, thermal_rate), FT_FIELD(ft_erosion_params, periodic),
     FT_FIELD(ft_erosion_params, threads), FT_FIELD(ft_erosion_params, progress),
-    FT_FIELD(ft_erosion_params, progress_user),
+    FT_FIELD(ft_erosion_params, progress_user), FT_FIELD(ft_erosion_params, uplift_follows_terrain),
 };
 
 const std::vector<Field> kPovSceneFields = {

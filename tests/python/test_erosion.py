@@ -26,6 +26,20 @@ def test_presets_are_the_librarys(erosion):
     assert erosion.requested(land)
 
 
+def test_a_presets_uplift_is_fitted_to_the_terrain(core, erosion):
+    # The rate that raises the terrain by its relief over the preset's run.
+    valleys = erosion.preset_values("valleys")
+    with _terrain(core) as hf:
+        heights = hf.to_array()
+        relief = max(heights) - min(heights)
+        fitted = erosion.fitted_uplift("valleys", hf)
+        assert fitted["uplift"] == pytest.approx(relief / (valleys["fluvial_steps"] * valleys["fluvial_dt"]), rel=1e-9)
+        assert fitted["uplift_follows_terrain"] is True
+        assert erosion.fitted_uplift("rain", hf)["uplift"] == 0.0
+        with pytest.raises(core.InvalidArgumentError, match="preset"):
+            erosion.fitted_uplift("glaciers", hf)
+
+
 def test_land_preset_erodes_and_returns_every_map(core, erosion):
     with _terrain(core) as hf:
         before = hf.to_array()
@@ -42,7 +56,13 @@ def test_land_preset_erodes_and_returns_every_map(core, erosion):
     # a good part of the grid (each cell counts its own area).
     assert max(maps["drainage_area"]) > 50 * cell_area
     assert min(maps["drainage_area"]) == pytest.approx(cell_area, rel=1e-5)
-    assert max(maps["deposited"]) > 0 and max(maps["eroded"]) > 0
+    assert max(maps["eroded"]) > 0
+    # Deposits are measured against the input plus the fluvial uplift (so the
+    # uplift never shows as deposit); the rain alone lays sediment down.
+    with _terrain(core) as hf:
+        rained, rain_maps = erosion.erode_arrays(hf, preset="rain")
+        rained.close()
+    assert max(rain_maps["deposited"]) > 0
     assert max(maps["water_depth"]) > 0
 
 

@@ -26,7 +26,8 @@ GENERATION_SHARE = 0.25
 
 # What the panels show of each process: its pass count, then its main rates.
 _GROUPS = (
-    ("Rivers", "fluvial_steps", ("erodibility", "uplift", "diffusion", "area_exponent", "fluvial_dt")),
+    ("Rivers", "fluvial_steps", ("erodibility", "uplift", "uplift_follows_terrain", "diffusion", "area_exponent",
+                                "fluvial_dt")),
     ("Rain", "hydraulic_iterations", ("rain", "evaporation", "capacity", "dissolve", "deposit")),
     ("Scree", "thermal_iterations", ("talus_degrees", "thermal_rate")),
 )
@@ -36,9 +37,8 @@ def effective(values):
     """The erosion settings a run uses: a preset picks which processes run and
     how many passes (as `fracterra erode --preset` does), the rates are the
     settings' own; None runs nothing; Custom takes the passes as set too.
-    (The library's preset also sets an uplift, meant for steady-state valleys
-    in `terrain --erode`; at the add-on's default scale, 10 units across and
-    heights about 1, 60 steps of it would raise the land 6 units.)"""
+    (A preset with rivers also sets the uplift, fitted to the generated
+    terrain's relief: generate_and_erode, as `fracterra erode --preset`.)"""
     preset = values.get("erode_preset", "NONE")
     if preset == "CUSTOM":
         return values
@@ -95,6 +95,11 @@ def draw_erosion(layout, data):
         row.prop(data, count, text=f"{title}: {params.PARAMS_BY_NAME[count].label}")
         if getattr(data, count) > 0:
             for name in rates:
+                if name in erosion.FITTED and data.erode_preset != "CUSTOM":
+                    # A preset fits them to the terrain (generate_and_erode).
+                    if name == "uplift":
+                        sub.label(text=f"{params.PARAMS_BY_NAME[name].label}: fitted to the terrain")
+                    continue
                 sub.prop(data, name)
 
 
@@ -124,6 +129,9 @@ def generate_and_erode(values, reference, progress, threads, grid_of, falloff_ma
         return g
     with core.generate_terrain(values, reference=reference, progress=_span(progress, 0.0, GENERATION_SHARE),
                                threads=threads, falloff_mask=falloff_mask) as hf:
+        preset = values.get("erode_preset", "NONE")
+        if preset not in ("NONE", "CUSTOM"):
+            values = {**values, **erosion.fitted_uplift(preset, hf)}
         eroded, maps = erosion.erode_arrays(hf, values=values, periodic=periodic_of(values), threads=threads,
                                             progress=_span(progress, GENERATION_SHARE, 1.0))
     with eroded:

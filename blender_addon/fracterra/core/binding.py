@@ -17,7 +17,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 2
-ABI_MINOR_MIN = 11  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library)
+ABI_MINOR_MIN = 12  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library); 2.12: ft_erosion_preset_fitted, uplift_follows_terrain
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -239,6 +239,7 @@ SIGNATURES = {
     # erosion.h (ABI 2.1; its params described from 2.6): the maps come back as FT_MAP_COUNT handles.
     "ft_erosion_params_init": (c_int32, [_Described("erosion")]),
     "ft_erosion_preset": (c_int32, [c_char_p, _Described("erosion")]),
+    "ft_erosion_preset_fitted": (c_int32, [c_char_p, _HF, _Described("erosion")]),
     "ft_erode": (c_int32, [_HF, _Described("erosion"), POINTER(_HF), POINTER(_HF)]),
     # raster.h (ABI 1.4); its structs are in core/raster.py.
     "ft_heightfield_read": (c_int32, [c_char_p, c_int32, POINTER(_HF)]),

@@ -25,11 +25,14 @@ def _fill(p, values):
     return p
 
 
-def erosion_struct(values=None, preset=None, **overrides):
-    """An ft_erosion_params from the library's init (or `preset`), then the values by name."""
+def erosion_struct(values=None, preset=None, terrain=None, **overrides):
+    """An ft_erosion_params from the library's init (or `preset`, fitted to the
+    Heightfield `terrain` when given: see fitted_uplift), then the values by name."""
     lib = library()
     p = lib.erosion_params_type()
-    if preset:
+    if preset and terrain is not None:
+        lib.check(lib.ft_erosion_preset_fitted(preset.lower().encode(), terrain.handle, byref(p)))
+    elif preset:
         lib.check(lib.ft_erosion_preset(preset.lower().encode(), byref(p)))
     else:
         lib.check(lib.ft_erosion_params_init(byref(p)))
@@ -42,6 +45,20 @@ def preset_values(preset):
     """{setting: value} of a preset ("valleys", "rain", "scree", "land"), as the library defines it."""
     p = erosion_struct(preset=preset)
     return {param.name: _from_c(param, getattr(p, param.name)) for param in params_mod.EROSION_PARAMS}
+
+
+FITTED = ("uplift", "uplift_follows_terrain")
+
+
+def fitted_uplift(preset, terrain):
+    """{"uplift": ..., "uplift_follows_terrain": ...} of `preset` fitted to
+    Heightfield `terrain`: each cell rises by its height above the lowest over the
+    preset's fluvial run, so incision balances it and the landform keeps its shape
+    (uplift 0 for presets without rivers). The library's rule
+    (ft_erosion_preset_fitted), as `fracterra erode --preset` uses it."""
+    p = erosion_struct(preset=preset, terrain=terrain)
+    return {param.name: _from_c(param, getattr(p, param.name))
+            for param in params_mod.EROSION_PARAMS if param.name in FITTED}
 
 
 def _from_c(param, value):
@@ -62,7 +79,7 @@ def erode(hf, values=None, preset=None, periodic=False, threads=0, progress=None
     or use erode_arrays). progress: None or callable(fraction) -> True to cancel
     (raises CancelledError)."""
     lib = library()
-    p = erosion_struct(values, preset)
+    p = erosion_struct(values, preset, terrain=hf)  # a preset fitted to hf, as `fracterra erode --preset`
     p.periodic = 1 if periodic else 0
     p.threads = threads
     bridge = _ProgressBridge(progress)
@@ -87,4 +104,4 @@ def erode_arrays(hf, **kw):
     return eroded, arrays
 
 
-__all__ = ["MAPS", "PRESETS", "erosion_struct", "preset_values", "requested", "erode", "erode_arrays"]
+__all__ = ["MAPS", "PRESETS", "FITTED", "erosion_struct", "fitted_uplift", "preset_values", "requested", "erode", "erode_arrays"]

@@ -94,7 +94,8 @@ NOT_PROPERTIES = {
 # How Blender shows a field (subtype, unit, precision): presentation only.
 _BY_UNIT = {"scene units": {"subtype": "DISTANCE", "unit": "LENGTH"},
             "radians": {"subtype": "ANGLE", "unit": "ROTATION"}}
-_PRECISION = {"hurst": 3, "center_x": 6, "center_y": 6}
+_PRECISION = {"hurst": 3, "center_x": 6, "center_y": 6,
+              "erodibility": 6, "uplift": 6}  # their defaults (2e-4, ~1e-5) are 0.000 at 3 digits
 # Settings whose change changes the vertex count (rebuild, not rewrite).
 _GEOMETRY = {"method", "levels", "width", "height"}
 SNAPSHOT = Path(__file__).resolve().parent / "params.json"

@@ -44,7 +44,9 @@ extern "C" {
 /// 2.11: ft_pov_scene_params.camera_margin and camera_center_v (described, so the camera's
 /// ranges are checked once); camera_elevation_deg 0 = auto, by the scene's content
 /// (FT_PARAM_FLAG_ZERO_IS_AUTO in params.h); 0 is ft_pov_scene_params_init's default.
-#define FT_ABI_VERSION_MINOR 11
+/// 2.12: ft_erosion_preset_fitted (erosion.h); uplift_follows_terrain at the end of
+///      ft_erosion_params.
+#define FT_ABI_VERSION_MINOR 12
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -46,12 +46,19 @@ typedef struct ft_erosion_params {
   int32_t threads;               ///< 0: all cores; output never depends on it
   ft_progress_fn progress;       ///< may be NULL; return non-zero to cancel (FT_ERR_CANCELLED)
   void* progress_user;
+  int32_t uplift_follows_terrain;  ///< non-zero: each cell's uplift is `uplift` x its input height above the
+                                   ///< lowest over the input's relief (the landform keeps its shape; ABI 2.12)
 } ft_erosion_params;
 
 FT_API ft_status ft_erosion_params_init(ft_erosion_params* p);
 /// "valleys" (fluvial with uplift), "rain" (hydraulic), "scree" (thermal) or
 /// "land" (all three) over the defaults.
 FT_API ft_status ft_erosion_preset(const char* name, ft_erosion_params* p);
+/// The preset fitted to `terrain` (what `fracterra erode --preset` and the
+/// add-on's Erode step use): the uplift of "valleys" and "land" becomes the
+/// rate that raises the land by the terrain's relief over the preset's
+/// fluvial run, so the eroded land keeps about its relief. (ABI 2.12)
+FT_API ft_status ft_erosion_preset_fitted(const char* name, const ft_heightfield* terrain, ft_erosion_params* p);
 
 /// Erodes `in` (grid spacing world_size / (width - 1); 1 when the world size is unknown). On
 /// success `*out` is a new heightfield (free with ft_heightfield_free) and,

@@ -29,6 +29,15 @@ FT_API ft_status ft_erosion_preset(const char* name, ft_erosion_params* p) {
   });
 }
 
+FT_API ft_status ft_erosion_preset_fitted(const char* name, const ft_heightfield* terrain, ft_erosion_params* p) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    ft::check_not_null("name", name);
+    ft::check_not_null("terrain", terrain);
+    *p = ft::erosion::to_c(ft::erosion::erosion_preset(name, terrain->hf));
+  });
+}
+
 FT_API ft_status ft_erode(const ft_heightfield* in, const ft_erosion_params* p, ft_heightfield** out,
                           ft_heightfield** maps) {
   return guarded([&] {

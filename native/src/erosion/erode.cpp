@@ -102,6 +102,13 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     done += weight;
   };
   std::vector<float> water(maps ? in.size() : 0, 0.0f);
+  // The maps' eroded and deposited depths are against the input plus what
+  // the fluvial run lifted it, so uplift never shows as deposit.
+  std::vector<float> lifted;
+  if (maps && c.fluvial.steps > 0) {
+    lifted = uplift_per_step(g, in.data(), c.fluvial);
+    for (float& v : lifted) v *= float(c.fluvial.steps);
+  }
   if (c.fluvial.steps > 0)
     run(c.fluvial.steps * 20.0, [&](const Progress& p) { fluvial(g, out.data(), c.fluvial, p); });
   if (c.hydraulic.iterations > 0)
@@ -129,7 +136,7 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     for (size_t i = 0; i < in.size(); ++i) {
       maps->drainage_area.data()[i] = float(area[i]);
       maps->water_depth.data()[i] = water[i];
-      const float change = out.data()[i] - in.data()[i];
+      const float change = out.data()[i] - (in.data()[i] + (lifted.empty() ? 0.0f : lifted[i]));
       maps->eroded.data()[i] = std::max(0.0f, -change);
       maps->deposited.data()[i] = std::max(0.0f, change);
     }

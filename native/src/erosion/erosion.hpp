@@ -30,6 +30,7 @@ struct FluvialConfig {
   double m = 0.5;             // area exponent (slope exponent n = 1: the implicit solve is exact)
   double diffusion = 1e-7;    // hillslope diffusivity (world units^2 / yr); 0 = none (1e-7 km^2/yr = 0.1 m^2/yr)
   double uplift = 0.0;        // uplift rate (world units / yr) of every cell (not a periodic grid's sink)
+  bool uplift_follows_terrain = false;  // each cell's rate x its input height above the lowest / the relief
 };
 
 struct HydraulicConfig {
@@ -86,6 +87,9 @@ void validate(const ErosionConfig& c, const Heightfield& hf);
 // The processes one by one, in place. `budget` may be null.
 void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& progress);
 void hillslope_diffusion(const D8Grid& g, float* z, double diffusivity_dt);
+// What fluvial() adds to each cell per step: the uplift, uniform or following
+// the input `z0`; 0 at a periodic grid's sink; empty without uplift.
+std::vector<float> uplift_per_step(const D8Grid& g, const float* z0, const FluvialConfig& c);
 void hydraulic(const D8Grid& g, float* z, const HydraulicConfig& c, float* water_out, MassBudget* budget,
                const Progress& progress);
 void thermal(const D8Grid& g, float* z, const ThermalConfig& c, const Progress& progress);

@@ -31,8 +31,9 @@ constexpr ft_param_info kRows[] = {
     {ROW(area_exponent, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.5, .hard_min = 0, .hard_max = 2,
      .soft_min = 0.3, .soft_max = 0.7, .unit = "", .label = "Area Exponent",
      .doc = "m in K A^m S (slope exponent n = 1); the concavity of graded rivers is m / n", .methods = kAll},
+    // Label "Diffusion", not "Hillslope Diffusion": Blender's narrow sidebar cut the longer one.
     {ROW(diffusion, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 1e-7, .hard_min = 0, .hard_max = DBL_MAX,
-     .soft_min = 0, .soft_max = 1e-5, .unit = "world units^2/yr", .label = "Hillslope Diffusion",
+     .soft_min = 0, .soft_max = 1e-5, .unit = "world units^2/yr", .label = "Diffusion",
      .doc = "Hillslope diffusivity D in dz/dt = D laplacian(z), implicit; 0: none", .methods = kAll},
     {ROW(uplift, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = DBL_MAX,
      .soft_min = 0, .soft_max = 1e-3, .unit = "world units/yr", .label = "Uplift",
@@ -80,6 +81,11 @@ constexpr ft_param_info kRows[] = {
      .doc = "Called as erosion advances; may cancel; NULL: none", .methods = kAll},
     {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
      .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback", .methods = kAll},
+    {ROW(uplift_follows_terrain, FT_PARAM_BOOL), .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Uplift Follows Terrain",
+     .doc = "Each cell rises at Uplift x its input height above the lowest over the input's relief, so a "
+            "landform keeps its shape (a plain at the lowest height stays); off: every cell at the Uplift rate",
+     .methods = kAll},
 };
 FT_PARAM_TABLE_END
 #undef ROW
@@ -101,6 +107,7 @@ ft_erosion_params to_c(const ErosionConfig& c) {
   p.area_exponent = c.fluvial.m;
   p.diffusion = c.fluvial.diffusion;
   p.uplift = c.fluvial.uplift;
+  p.uplift_follows_terrain = c.fluvial.uplift_follows_terrain;
   p.hydraulic_iterations = c.hydraulic.iterations;
   p.hydraulic_dt = c.hydraulic.dt;
   p.rain = c.hydraulic.rain;
@@ -120,7 +127,8 @@ ErosionConfig from_c(const ft_erosion_params& given) {
   const ft_erosion_params p = upgraded(erosion_param_table(), given);
   check_ranges(erosion_param_table(), &p);
   ErosionConfig c;
-  c.fluvial = {p.fluvial_steps, p.fluvial_dt, p.erodibility, p.area_exponent, p.diffusion, p.uplift};
+  c.fluvial = {p.fluvial_steps, p.fluvial_dt, p.erodibility, p.area_exponent, p.diffusion, p.uplift,
+               p.uplift_follows_terrain != 0};
   c.hydraulic.iterations = p.hydraulic_iterations;
   c.hydraulic.dt = p.hydraulic_dt;
   c.hydraulic.rain = p.rain;

@@ -37,6 +37,10 @@ ErosionConfig erosion_preset(const std::string& name, const Heightfield& terrain
     const HeightStats s = terrain.stats();
     const double relief = s.max - s.min, years = double(c.fluvial.steps) * c.fluvial.dt;
     c.fluvial.uplift = std::isfinite(relief) && relief > 0 ? relief / years : 0;
+    // In proportion to each cell's height: a landform on a plain keeps its
+    // shape (uniform uplift raised the plain too, into a dissected plateau
+    // with walls at the edges).
+    c.fluvial.uplift_follows_terrain = true;
   }
   return c;
 }

@@ -26,6 +26,23 @@ inline bool lake_floor(float zi, float zr) { return zi - zr <= 16.0f * FLT_EPSIL
 
 }  // namespace
 
+std::vector<float> uplift_per_step(const D8Grid& g, const float* z0, const FluvialConfig& c) {
+  if (!(c.uplift > 0.0)) return {};
+  const size_t n = g.size();
+  const auto [low, high] = std::minmax_element(z0, z0 + n);
+  const float base = *low, top = *high;
+  // Uniform, or following the input terrain: a mountain keeps rising where
+  // it stands and its plain not at all, so incision carves the landform
+  // instead of an uplifted block.
+  const double u = c.uplift * c.dt, scale = top > base ? u / (double(top) - base) : 0.0;
+  std::vector<float> lift(n);
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < int64_t(n); ++i)
+    lift[i] = float(c.uplift_follows_terrain ? scale * (double(z0[i]) - base) : u);
+  if (g.periodic) lift[size_t(periodic_sink(g, z0))] = 0.0f;  // the torus's outlet stays
+  return lift;
+}
+
 void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& progress) {
   const size_t n = g.size();
   FlowGraph graph;
@@ -36,15 +53,11 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
   // Base level of a bounded grid: the lowest input height (the sea).
   const float base = *std::min_element(z, z + n);
   const float inv_spacing = float(1.0 / g.spacing);
+  const std::vector<float> lift = uplift_per_step(g, z, c);
   for (int32_t step = 0; step < c.steps; ++step) {
-    if (c.uplift > 0.0) {
-      const float u = float(c.uplift * c.dt);
+    if (!lift.empty()) {
 #pragma omp parallel for schedule(static)
-      for (int32_t y = 0; y < g.height; ++y)
-        for (int32_t x = 0; x < g.width; ++x) {
-          const size_t i = size_t(y) * g.width + x;
-          if (int32_t(i) != sink) z[i] += u;
-        }
+      for (int64_t i = 0; i < int64_t(n); ++i) z[i] += lift[i];
     }
     route_filled(g, z, sink, graph);
     accumulate_area(g, graph, area);
