@@ -2,6 +2,8 @@
 // input as a status with a message, cancel, and nothing leaked on failure.
 #include <gtest/gtest.h>
 
+#include <cstddef>
+
 #include <cmath>
 #include <string>
 
@@ -67,6 +69,31 @@ TEST(ErosionCapi, BadInputIsAStatusWithTheParameterNamed) {
   EXPECT_EQ(ft_erosion_preset("volcano", &p), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("valleys"), std::string::npos);
   EXPECT_EQ(ft_erode(nullptr, &p, &out, nullptr), FT_ERR_INVALID_ARGUMENT);
+  ft_heightfield_free(hf);
+}
+
+TEST(ErosionCapi, TheFittedPresetAndItsUpliftFlagAreValidated) {
+  ft_heightfield* hf = terrain(33);
+  ft_erosion_params p;
+  ASSERT_EQ(ft_erosion_preset_fitted("valleys", hf, &p), FT_OK) << ft_last_error();
+  EXPECT_GT(p.uplift, 0.0);
+  EXPECT_EQ(p.uplift_follows_terrain, 1);
+  EXPECT_EQ(ft_erosion_preset_fitted("volcano", hf, &p), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("valleys"), std::string::npos) << ft_last_error();
+  EXPECT_EQ(ft_erosion_preset_fitted("valleys", nullptr, &p), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("terrain"), std::string::npos) << ft_last_error();
+  EXPECT_EQ(ft_erosion_preset_fitted(nullptr, hf, &p), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_erosion_preset_fitted("valleys", hf, nullptr), FT_ERR_INVALID_ARGUMENT);
+  // A caller from before the flag (ABI 2.11's size) is accepted and gets it
+  // off (the flag is a C boolean: any non-zero value is on).
+  ft_heightfield* out = nullptr;
+  ft_erosion_params_init(&p);
+  p.struct_size = uint32_t(offsetof(ft_erosion_params, uplift_follows_terrain));
+  p.uplift_follows_terrain = 2;  // beyond the caller's struct: never read
+  p.fluvial_steps = 1;
+  p.uplift = 1e-5;
+  EXPECT_EQ(ft_erode(hf, &p, &out, nullptr), FT_OK) << ft_last_error();
+  ft_heightfield_free(out);
   ft_heightfield_free(hf);
 }
 

@@ -8,6 +8,7 @@ namespace {
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr double kMaxSteps = erosion::kMaxErosionSteps;
+constexpr uint32_t kAbi212 = 0x2000C;  // uplift_follows_terrain
 // The defaults are ErosionConfig's (erosion.hpp); the test
 // ErosionParams.TableDefaultsAreTheConfigDefaults holds them together.
 
@@ -81,7 +82,7 @@ constexpr ft_param_info kRows[] = {
      .doc = "Called as erosion advances; may cancel; NULL: none", .methods = kAll},
     {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
      .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback", .methods = kAll},
-    {ROW(uplift_follows_terrain, FT_PARAM_BOOL), .element_kind = -1, .default_value = 0, .hard_min = 0,
+    {ROW(uplift_follows_terrain, FT_PARAM_BOOL), .since = kAbi212, .element_kind = -1, .default_value = 0, .hard_min = 0,
      .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Uplift Follows Terrain",
      .doc = "Each cell rises at Uplift x its input height above the lowest over the input's relief, so a "
             "landform keeps its shape (a plain at the lowest height stays); off: every cell at the Uplift rate",
