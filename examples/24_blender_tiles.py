@@ -28,6 +28,7 @@ _spec = importlib.util.spec_from_file_location("blender_scene_20", ROOT / "examp
 scene20 = importlib.util.module_from_spec(_spec)  # its enable_addon, shared by the Blender examples
 _spec.loader.exec_module(scene20)
 
+
 def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     p = argparse.ArgumentParser(prog="24_blender_tiles.py", description=__doc__.split("\n\n")[0])
