@@ -130,10 +130,12 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     std::vector<float> filled(out.data(), out.data() + out.size());
     const int32_t sink = g.periodic ? periodic_sink(g, filled.data()) : -1;
     FlowGraph graph;  // its local fills are cheaper than a global fill
-    route_filled(g, filled.data(), sink, graph);
+    route_and_fill(g, filled.data(), sink, graph);
     std::vector<double> area;
     multiple_flow_area(g, filled.data(), sink, area);
-    for (size_t i = 0; i < in.size(); ++i) {
+    const int64_t cells = int64_t(in.size());
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < cells; ++i) {
       maps->drainage_area.data()[i] = float(area[i]);
       maps->water_depth.data()[i] = water[i];
       const float change = out.data()[i] - (in.data()[i] + (lifted.empty() ? 0.0f : lifted[i]));
