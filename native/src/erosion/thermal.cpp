@@ -20,8 +20,9 @@ namespace {
 // The two halves of a pass on cells x0 .. x1 - 1 of a row that have all
 // eight neighbours at the fixed offsets `off` (`i` = row + x). Restrict
 // parameters of functions that are not inlined (GCC keeps restrict only on
-// parameters): the loops then vectorise.
-[[gnu::noinline]] void shares_interior(const float* __restrict z, float* __restrict share, int64_t row, int32_t x0,
+// parameters): the loops then vectorise, and are built for AVX-512, AVX2
+// and the baseline (the same bits on each, as in hydraulic.cpp).
+[[gnu::noinline]] __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"))) void shares_interior(const float* __restrict z, float* __restrict share, int64_t row, int32_t x0,
                                        int32_t x1, const int64_t* off, const float* talus, float half_rate) {
   const int64_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
   const float t[8] = {talus[0], talus[1], talus[2], talus[3], talus[4], talus[5], talus[6], talus[7]};
@@ -39,7 +40,7 @@ namespace {
   }
 }
 
-[[gnu::noinline]] void moves_interior(const float* __restrict z, const float* __restrict share,
+[[gnu::noinline]] __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"))) void moves_interior(const float* __restrict z, const float* __restrict share,
                                       float* __restrict next, int64_t row, int32_t x0, int32_t x1, const int64_t* off,
                                       const float* talus) {
   const int64_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
