@@ -30,6 +30,7 @@ enum class Stream : uint32_t {
   kNoise = 9,               // fbm octave i: level i
   kNoiseWarpX = 15,         // domain warp, x field: level = octave
   kNoiseWarpY = 16,         // domain warp, y field: level = octave
+  kFluvialRouting = 17,     // Rho8 receivers of the fluvial eroder: level = time step
   kPolyline = 10,
   kPolylineBranch = 11,
   kIfs = 12,
