@@ -25,16 +25,17 @@ void BM_StdNormalDistribution(benchmark::State& state) {
 
 void BM_GaussianFill(benchmark::State& state) {
   std::vector<float> out(kCount);
-  const bool avx2 = state.range(0) != 0;
+  const auto path = ft::detail::RngPath(state.range(0));
+  if (!ft::detail::rng_path_available(path)) return state.SkipWithError("not on this CPU");
   for (auto _ : state) {
-    ft::detail::gaussian_fill_on_path(avx2, 1, ft::Counter{1, 2, ft::Stream::kFirstUser}, 0, kCount, out.data());
+    ft::detail::gaussian_fill_on_path(path, 1, ft::Counter{1, 2, ft::Stream::kFirstUser}, 0, kCount, out.data());
     benchmark::DoNotOptimize(out.data());
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * kCount);
 }
 
 BENCHMARK(BM_StdNormalDistribution);
-BENCHMARK(BM_GaussianFill)->Arg(0)->Arg(1)->ArgName("avx2");
+BENCHMARK(BM_GaussianFill)->Arg(0)->Arg(1)->Arg(2)->ArgName("path");  // baseline, avx2, avx512
 
 }  // namespace
 

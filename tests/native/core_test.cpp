@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -111,12 +113,55 @@ TEST(AtomicFile, MissingFolderIsAClearIoError) {
 
 namespace ft {
 namespace {
+using detail::dispatch_path;
+using detail::gaussian_fill_on_path;
+using detail::rng_path_available;
+using detail::RngPath;
+using detail::uniform_fill_on_path;
+
 TEST(Rng, AllDispatchPathsGiveTheSameBits) {
-  const Counter c{5, 6, Stream::kTerrainSquare};
-  std::vector<float> a(10001), b(10001);
-  detail::gaussian_fill_on_path(true, 99, c, 3, a.size(), a.data());
-  detail::gaussian_fill_on_path(false, 99, c, 3, b.size(), b.data());
-  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0) << "path " << detail::dispatch_path();
+  // Every path against baseline x86-64, bit for bit: heads that start inside
+  // a block (first % 4 != 0), lengths that end inside one and inside a batch
+  // (the AVX2 path's 64 blocks, AVX-512's 16), counters that wrap past 2^32
+  // blocks, and the uniform fill too. A path this CPU lacks is skipped (say
+  // which: CI on an older machine would test fewer).
+  const struct { uint64_t seed; Counter c; uint64_t first; size_t n; } cases[] = {
+      {99, {5, 6, Stream::kTerrainSquare}, 3, 10001},
+      {0xfedcba9876543210ULL, {0, 13, Stream::kTerrainDiamond}, 0, 4096},
+      {1, {8191, 1, Stream::kTerrainCorners}, 0, 4},
+      {2, {7, 2, Stream::kNoise}, 1, 2},
+      {3, {7, 2, Stream::kNoise}, 2, 63},
+      {4, {1, 14, Stream::kFirstUser}, 5, 65},
+      {5, {4097, 13, Stream::kTerrainSquare}, 61, 259},
+      {6, {3, 3, Stream::kTerrainAddNew}, (uint64_t(1) << 34) - 30, 100},  // block counter wraps
+  };
+  for (const RngPath path : {RngPath::kAvx2, RngPath::kAvx512}) {
+    if (!rng_path_available(path)) {
+      std::printf("[ skipped ] path %d: not on this CPU\n", int(path));
+      continue;
+    }
+    for (const auto& k : cases) {
+      for (const bool gaussian : {true, false}) {
+        std::vector<float> a(k.n + 1, -7.0f), b(k.n + 1, -7.0f);  // the last one must stay untouched
+        (gaussian ? gaussian_fill_on_path : uniform_fill_on_path)(path, k.seed, k.c, k.first, k.n, a.data());
+        (gaussian ? gaussian_fill_on_path : uniform_fill_on_path)(RngPath::kBaseline, k.seed, k.c, k.first, k.n,
+                                                                  b.data());
+        EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0)
+            << "path " << int(path) << (gaussian ? " gaussian" : " uniform") << " first " << k.first << " n " << k.n;
+        EXPECT_EQ(a[k.n], -7.0f);
+      }
+    }
+  }
+}
+
+TEST(Rng, DispatchTakesTheFastestPathTheCpuHas) {
+  // So that the benchmarks measure what users run (FT_DISPATCH unset here).
+  const char* expected = rng_path_available(RngPath::kAvx512) ? "avx512"
+                         : rng_path_available(RngPath::kAvx2) ? "avx2"
+                                                              : "baseline";
+  if (!std::getenv("FT_DISPATCH")) {
+    EXPECT_STREQ(dispatch_path(), expected);
+  }
 }
 }  // namespace
 }  // namespace ft

@@ -1,5 +1,7 @@
 #include "core/rng.hpp"
 
+#include "core/rng_paths.hpp"
+
 #include <immintrin.h>
 
 #include <bit>
@@ -192,8 +194,9 @@ void box_muller(float u1, float u2, float& z0, float& z1) { box_muller_inline(u1
 }  // namespace detail
 
 // Runtime dispatch: the same kernel compiled for AVX2 and for baseline
-// x86-64. -ffp-contract=off and libm-free math make both give the same bits;
-// FT_DISPATCH=baseline forces the baseline path (tests compare the two).
+// x86-64, and written out for AVX-512 (rng_avx512.cpp). -ffp-contract=off and
+// libm-free math make all give the same bits; FT_DISPATCH=baseline or
+// FT_DISPATCH=avx2 caps the path (tests compare them all).
 namespace {
 using FillFn = void (*)(uint64_t, const Counter&, uint64_t, size_t, float*);
 
@@ -212,30 +215,51 @@ void uniform_fill_baseline(uint64_t seed, const Counter& c, uint64_t first, size
   fill_any<false, false>(seed, c, first, n, out);
 }
 
-bool use_avx2() {
-  static const bool yes = [] {
+constexpr FillFn kGaussianFills[] = {gaussian_fill_baseline, gaussian_fill_avx2, detail::gaussian_fill_avx512};
+constexpr FillFn kUniformFills[] = {uniform_fill_baseline, uniform_fill_avx2, detail::uniform_fill_avx512};
+
+detail::RngPath chosen_path() {
+  using detail::RngPath;
+  static const RngPath path = [] {
     const char* force = std::getenv("FT_DISPATCH");
-    if (force && std::string_view(force) == "baseline") return false;
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0;
+    const std::string_view cap = force ? force : "";
+    if (cap == "baseline") return RngPath::kBaseline;
+    if (cap != "avx2" && detail::rng_path_available(RngPath::kAvx512)) return RngPath::kAvx512;
+    return detail::rng_path_available(RngPath::kAvx2) ? RngPath::kAvx2 : RngPath::kBaseline;
   }();
-  return yes;
+  return path;
 }
 }  // namespace
 
 void gaussian_fill(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
-  (use_avx2() ? gaussian_fill_avx2 : gaussian_fill_baseline)(seed, c, first, n, out);
+  kGaussianFills[int(chosen_path())](seed, c, first, n, out);
 }
 
 void uniform_fill(uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
-  (use_avx2() ? uniform_fill_avx2 : uniform_fill_baseline)(seed, c, first, n, out);
+  kUniformFills[int(chosen_path())](seed, c, first, n, out);
 }
 
 namespace detail {
-const char* dispatch_path() { return use_avx2() ? "avx2" : "baseline"; }
-void gaussian_fill_on_path(bool avx2, uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
-  if (avx2 && __builtin_cpu_supports("avx2")) gaussian_fill_avx2(seed, c, first, n, out);
-  else gaussian_fill_baseline(seed, c, first, n, out);
+bool rng_path_available(RngPath path) {
+  __builtin_cpu_init();
+  switch (path) {
+    case RngPath::kBaseline: return true;
+    case RngPath::kAvx2: return __builtin_cpu_supports("avx2") != 0;
+    case RngPath::kAvx512:
+      return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+             __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq");
+  }
+  return false;
+}
+const char* dispatch_path() {
+  static constexpr const char* kNames[] = {"baseline", "avx2", "avx512"};
+  return kNames[int(chosen_path())];
+}
+void gaussian_fill_on_path(RngPath path, uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+  kGaussianFills[int(rng_path_available(path) ? path : RngPath::kBaseline)](seed, c, first, n, out);
+}
+void uniform_fill_on_path(RngPath path, uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out) {
+  kUniformFills[int(rng_path_available(path) ? path : RngPath::kBaseline)](seed, c, first, n, out);
 }
 }  // namespace detail
 

@@ -30,6 +30,7 @@ enum class Stream : uint32_t {
   kNoise = 9,               // fbm octave i: level i
   kNoiseWarpX = 15,         // domain warp, x field: level = octave
   kNoiseWarpY = 16,         // domain warp, y field: level = octave
+  kFluvialRouting = 17,     // Rho8 receivers of the fluvial eroder: level = time step
   kPolyline = 10,
   kPolylineBranch = 11,
   kIfs = 12,
@@ -86,10 +87,17 @@ namespace detail {
 // Written without libm calls (polynomial log and sincos) so it vectorises and
 // gives identical results on every path. Accuracy ~1e-7 relative.
 void box_muller(float u1, float u2, float& z0, float& z1);
-// "avx2" or "baseline": the path gaussian_fill takes on this machine.
+// The dispatch paths of gaussian_fill and uniform_fill, fastest last.
+enum class RngPath { kBaseline, kAvx2, kAvx512 };
+// Whether this CPU (and OS) can run a path.
+bool rng_path_available(RngPath path);
+// "avx512", "avx2" or "baseline": the path the fills take on this machine,
+// the fastest available unless FT_DISPATCH=baseline or FT_DISPATCH=avx2 caps it.
 const char* dispatch_path();
-// gaussian_fill on a chosen path (AVX2 only where the CPU has it).
-void gaussian_fill_on_path(bool avx2, uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out);
+// The fills on a chosen path, which must be available (the tests and
+// benchmarks compare the paths).
+void gaussian_fill_on_path(RngPath path, uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out);
+void uniform_fill_on_path(RngPath path, uint64_t seed, const Counter& c, uint64_t first, size_t n, float* out);
 }  // namespace detail
 
 }  // namespace ft

@@ -1,4 +1,4 @@
-// D8 receivers, the stack and drainage area (see flow_graph.hpp).
+// D8 (or Rho8) receivers, the stack and drainage area (see flow_graph.hpp).
 #include "erosion/flow_graph.hpp"
 
 #include <algorithm>
@@ -15,23 +15,35 @@ int32_t periodic_sink(const D8Grid& g, const float* z) {
 
 namespace {
 
+// Rho8's weight of a diagonal drop: 1 / rho, rho = 2 - r uniform in (1, 2),
+// the diagonal's run in spacings. On a plane whose fall line makes the angle
+// a (0 <= a <= 45 degrees) with a row, the diagonal's drop per run
+// (cos a + sin a) / rho beats the row's cos a when rho < 1 + tan a: with
+// probability tan a, so a path's mean step (1, tan a) lies along the fall
+// line (Fairfield & Leymarie 1991).
+inline float diagonal_weight(float r) { return 1.0f / (2.0f - r); }
+
 // Steepest descent on cells x0 .. x1 - 1 of an interior row (all eight
 // neighbours at the offsets `off`): selects instead of branches, restrict
 // parameters of a function that is not inlined, so the loop vectorises.
-// Ties go to the first direction (strict >), as in the general path.
-[[gnu::noinline]] int64_t steepest_interior(const float* __restrict z, int32_t* __restrict receiver,
-                                            float* __restrict length, int64_t row, int32_t x0, int32_t x1,
-                                            const int32_t* off, float straight, float diag) {
+// Ties go to the first direction (strict >), as in the general path. A
+// diagonal drop is over a run of sqrt 2 (D8) or 2 - r (Rho8, r = `random`,
+// indexed like z).
+template <bool kRho8>
+[[gnu::noinline]] int64_t steepest_interior(const float* __restrict z, const float* __restrict random,
+                                            int32_t* __restrict receiver, float* __restrict length, int64_t row,
+                                            int32_t x0, int32_t x1, const int32_t* off, float straight, float diag) {
   const int32_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
   const float inv_diag = float(1.0 / M_SQRT2);
   int64_t pits = 0;
   for (int32_t x = x0; x < x1; ++x) {
     const int32_t i = int32_t(row + x);
+    const float w = kRho8 ? diagonal_weight(random[i]) : inv_diag;
     float best_slope = 0.0f, best_length = 0.0f;
     int32_t best_off = 0;
 #pragma GCC unroll 8
     for (int k = 0; k < 8; ++k) {
-      const float drop = (z[i] - z[i + o[k]]) * ((k & 1) ? inv_diag : 1.0f);
+      const float drop = (z[i] - z[i + o[k]]) * ((k & 1) ? w : 1.0f);
       const bool steeper = drop > best_slope;
       best_slope = steeper ? drop : best_slope;
       best_off = steeper ? o[k] : best_off;
@@ -47,7 +59,7 @@ namespace {
 // The general path: cell (x, y) of any row; returns 1 for a new pit.
 int route_cell(const D8Grid& g, const float* z, int32_t sink, FlowGraph& graph, int32_t x, int32_t y) {
   const size_t i = size_t(y) * g.width + x;
-  const float inv_diag = float(1.0 / M_SQRT2);
+  const float w = graph.random.empty() ? float(1.0 / M_SQRT2) : diagonal_weight(graph.random[i]);
   int32_t best = int32_t(i);
   int best_k = -1;
   float best_slope = 0.0f;  // drop per unit of spacing
@@ -55,7 +67,7 @@ int route_cell(const D8Grid& g, const float* z, int32_t sink, FlowGraph& graph, 
   if (!base) {
     for (int k = 0; k < 8; ++k) {
       const int64_t j = g.neighbour(x, y, k);
-      const float drop = (z[i] - z[j]) * ((k & 1) ? inv_diag : 1.0f);
+      const float drop = (z[i] - z[j]) * ((k & 1) ? w : 1.0f);
       if (drop > best_slope) {
         best_slope = drop;
         best = int32_t(j);
@@ -87,7 +99,11 @@ void route_steepest(const D8Grid& g, const float* z, int32_t sink, FlowGraph& gr
     pits += route_cell(g, z, sink, graph, 0, y);
     pits += route_cell(g, z, sink, graph, g.width - 1, y);
     const int64_t row = int64_t(y) * g.width;
-    pits += steepest_interior(z, graph.receiver.data(), graph.length.data(), row, 1, g.width - 1, off, straight, diag);
+    pits += graph.random.empty()
+                ? steepest_interior<false>(z, nullptr, graph.receiver.data(), graph.length.data(), row, 1,
+                                           g.width - 1, off, straight, diag)
+                : steepest_interior<true>(z, graph.random.data(), graph.receiver.data(),
+                                          graph.length.data(), row, 1, g.width - 1, off, straight, diag);
     // A periodic grid's sink is a base level wherever it is: the interior
     // path routed it like any cell (and counted it if it had no lower
     // neighbour).
@@ -187,7 +203,7 @@ void route_and_fill(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
   // one or two cells deep.
   for (int round = 0; graph.pits > 0; ++round) {
     if (round >= 4 || graph.pits * 16 > int64_t(g.size())) {
-      fill_depressions(g, z, sink);
+      fill_depressions(g, z, sink, graph.random.empty() ? nullptr : graph.random.data());
       route_steepest(g, z, sink, graph);
     } else {
       fill_pits_locally(g, z, sink, graph);

@@ -1,7 +1,7 @@
 // Single-flow (D8) routing, in the shape of fastscapelib's flow graph:
-// receivers by steepest descent, the stack order of Braun & Willett (2013),
-// drainage area accumulated down the stack, and pit resolution by
-// Priority-Flood+epsilon (Barnes, Lehman & Mulla 2014). Eroders take a
+// receivers by steepest descent (or Rho8's randomised descent), the stack
+// order of Braun & Willett (2013), drainage area accumulated down the stack,
+// and pit resolution by Priority-Flood+epsilon (Barnes, Lehman & Mulla 2014). Eroders take a
 // FlowGraph and reuse it; the arrays are allocated once and refilled each
 // time step, so a step allocates nothing.
 #pragma once
@@ -33,13 +33,36 @@ struct FlowGraph {
   uint32_t stamp = 0;
   std::vector<int32_t> region;
   std::vector<int32_t> changed;  // cells the last fill_pits_locally raised
+  // Rho8 (see draw_rho8): one uniform number in (0, 1) per cell for this
+  // step, read by the routing and the fills; empty: plain D8 and one float
+  // step per filled cell.
+  std::vector<float> random;
 };
 
 // The cell a periodic grid drains to: the lowest sample (the first in row
 // order among equals), so that a torus has one outlet.
 int32_t periodic_sink(const D8Grid& g, const float* z);
 
-// Receivers by steepest descent (ties: the first direction in kDx order).
+// Rho8 (Fairfield & Leymarie 1991): draws each cell's random number r,
+// uniform in (0, 1), for the routings and fills that follow. D8 sends the
+// water of a plane whose fall line lies between a row and a diagonal all
+// along the nearer grid direction: one long straight channel across a gentle
+// slope. Rho8 takes a diagonal's run as 2 - r spacings instead of sqrt 2, so
+// the diagonal wins with probability tan(aspect): paths zigzag along the fall
+// line on average and converge where they meet. The fills raise a flat by
+// 1 to 4 float steps per cell by r instead of one, in order of height: a
+// flat drains along wandering paths to its spill instead of straight rows
+// and diagonals (a flood in FIFO order grades a flat by Chebyshev distance,
+// and the valleys that later cut through it were straight lines). r comes
+// from the counter RNG at (stream kFluvialRouting, level `step`, the cell's
+// position relative to `origin`): the same on any thread count, and a
+// periodic grid keyed from its sink (the lowest sample) draws the same
+// numbers for the same terrain shifted across its edges.
+void draw_rho8(const D8Grid& g, int32_t origin, uint32_t step, FlowGraph& graph);
+
+// Receivers by steepest descent (ties: the first direction in kDx order),
+// diagonal drops over a run of 2 - r spacings when graph.random is drawn
+// (Rho8), else sqrt 2 (D8).
 // Bounded grids: every edge cell is a base level. Periodic grids: `sink` is.
 // An interior cell with no lower neighbour becomes its own receiver and is
 // counted in graph.pits. Rows in parallel: the result does not depend on the
@@ -59,7 +82,10 @@ void accumulate_area(const D8Grid& g, const FlowGraph& graph, std::vector<double
 // cell (Priority-Flood+epsilon, Barnes et al. 2014, Algorithm 3 with the pit
 // queue), so every cell then has a strictly lower neighbour on a path to an
 // edge (bounded) or to `sink` (periodic). Returns the number of cells raised.
-int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink);
+// With `random` (one number in (0, 1) per cell, see draw_rho8) a raised cell
+// is 1 to 4 float steps above the cell it was reached from, and raised cells
+// are visited in order of height, not first in first out.
+int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* random = nullptr);
 
 // Fills the depression of every pit of the last routing, one at a time in
 // index order, by a Priority-Flood+epsilon restricted to that depression: a
@@ -67,7 +93,8 @@ int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink);
 // outside the depression, or an outlet), then the depression is raised to
 // drain to it. Cost: the depressions' size, not the grid's (diffusion leaves
 // many small pits each step; a global fill each step would dominate). The
-// raised cells are listed in graph.changed.
+// raised cells are listed in graph.changed. graph.random, when drawn, grades
+// the fill as in fill_depressions.
 void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph);
 
 // Routes again the cells in graph.changed and their neighbours (the only

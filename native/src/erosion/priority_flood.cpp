@@ -2,7 +2,11 @@
 // optimal depression-filling and watershed-labeling algorithm", Alg. 3):
 // cells are visited from the outlets upwards in order of height; a cell not
 // above the one it was reached from is raised one float step above it and
-// goes through a FIFO (no heap cost inside depressions).
+// goes through a FIFO (no heap cost inside depressions). With random numbers
+// (Rho8's, see flow_graph.hpp) a raised cell is 1 to 4 float steps above
+// and goes through the heap instead: a flat is graded by a random passage
+// time from its spill, not by Chebyshev distance, so its drainage wanders
+// instead of running along rows and diagonals.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -40,9 +44,17 @@ struct OpenHeap {
   }
 };
 
+// 1 float step above z, or 1 to 4 by the cell's random number.
+inline float raised(float z, const float* random, int32_t j) {
+  float up = std::nextafter(z, INFINITY);
+  if (random)
+    for (int k = int(random[j] * 4.0f); k > 0; --k) up = std::nextafter(up, INFINITY);
+  return up;
+}
+
 }  // namespace
 
-int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink) {
+int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* random) {
   const size_t n = g.size();
   std::vector<uint8_t> closed(n, 0);
   RadixHeap open;
@@ -66,7 +78,7 @@ int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink) {
       seed(int32_t(y * size_t(g.width) + g.width - 1));
     }
   }
-  int64_t raised = 0;
+  int64_t raised_cells = 0;
   while (!open.empty() || pit_head < pit.size()) {
     int32_t c;
     if (pit_head < pit.size()) {
@@ -76,21 +88,21 @@ int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink) {
       c = open.pop();
     }
     const int32_t cx = c % g.width, cy = c / g.width;
-    const float above = std::nextafter(z[c], INFINITY);
     for (int k = 0; k < 8; ++k) {
       const int64_t j = g.neighbour(cx, cy, k);
       if (j < 0 || closed[j]) continue;
       closed[j] = 1;
       if (z[j] <= z[c]) {
-        z[j] = above;
-        ++raised;
-        pit.push_back(int32_t(j));
+        z[j] = raised(z[c], random, int32_t(j));
+        ++raised_cells;
+        if (random) open.push(z[j], int32_t(j));
+        else pit.push_back(int32_t(j));
       } else {
         open.push(z[j], int32_t(j));
       }
     }
   }
-  return raised;
+  return raised_cells;
 }
 
 void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
@@ -158,6 +170,7 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
     open.push({z[spill], spill});
     graph.closed[spill] = stamp;
     for (const int32_t c : graph.region) graph.closed[c] = stamp - 1;  // in the region, not yet closed
+    const float* random = graph.random.empty() ? nullptr : graph.random.data();
     while (!open.empty() || !pit_queue.empty()) {
       int32_t c;
       if (!pit_queue.empty()) {
@@ -167,7 +180,6 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
         c = open.pop();
       }
       const int32_t cx = c % g.width, cy = c / g.width;
-      const float above = std::nextafter(z[c], INFINITY);
       for (int k = 0; k < 8; ++k) {
         const int64_t j = g.neighbour(cx, cy, k);
         if (j < 0 || graph.closed[j] == stamp) continue;
@@ -177,8 +189,9 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
         if (!in_region && (is_outlet(int32_t(j)) || z[j] < spill_level || z[j] > z[c])) continue;
         graph.closed[j] = stamp;
         if (z[j] <= z[c]) {
-          z[j] = above;
-          pit_queue.push_back(int32_t(j));
+          z[j] = raised(z[c], random, int32_t(j));
+          if (random) open.push({z[j], int32_t(j)});
+          else pit_queue.push_back(int32_t(j));
           graph.changed.push_back(int32_t(j));
         } else {
           open.push({z[j], int32_t(j)});

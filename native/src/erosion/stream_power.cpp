@@ -59,6 +59,10 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
 #pragma omp parallel for schedule(static)
       for (int64_t i = 0; i < int64_t(n); ++i) z[i] += lift[i];
     }
+    // Rho8 receivers, drawn anew each step: over a gentle slope D8 would
+    // carve one straight channel along the grid direction nearest the fall
+    // line; Rho8's paths follow the fall line on average.
+    draw_rho8(g, g.periodic ? sink : -1, uint32_t(step), graph);
     route_filled(g, z, sink, graph);
     accumulate_area(g, graph, area);
     const double kdt = c.k * c.dt;

@@ -1,0 +1,31 @@
+// Rho8's random numbers (see draw_rho8 in flow_graph.hpp).
+#include <algorithm>
+
+#include "core/rng.hpp"
+#include "erosion/flow_graph.hpp"
+
+namespace ft::erosion {
+namespace {
+
+// The routing's own key: erode() takes a heightfield, not a generator's
+// seed; the terrain itself is what varies between runs.
+constexpr uint64_t kRho8Seed = 0x52686f38;  // "Rho8"
+
+}  // namespace
+
+void draw_rho8(const D8Grid& g, int32_t origin, uint32_t step, FlowGraph& graph) {
+  graph.random.resize(g.size());
+  const int32_t ox = origin < 0 ? 0 : origin % g.width, oy = origin < 0 ? 0 : origin / g.width;
+#pragma omp parallel for schedule(static)
+  for (int32_t y = 0; y < g.height; ++y) {
+    // Cell (x, y) draws the number of (x - ox, y - oy) wrapped into the
+    // grid: row and index of the counter, so a torus shifted across its
+    // edges (and its sink with it) draws the same numbers for the same cells.
+    const Counter c{uint32_t(y >= oy ? y - oy : y - oy + g.height), step, Stream::kFluvialRouting};
+    float* w = graph.random.data() + int64_t(y) * g.width;
+    uniform_fill(kRho8Seed, c, 0, size_t(g.width - ox), w + ox);
+    if (ox > 0) uniform_fill(kRho8Seed, c, uint64_t(g.width - ox), size_t(ox), w);
+  }
+}
+
+}  // namespace ft::erosion
