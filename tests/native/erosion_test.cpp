@@ -4,6 +4,7 @@
 // periodic seams, bad input, cancel, and the drainage statistics of eroded
 // terrains against real landscapes.
 #include <gtest/gtest.h>
+#include <omp.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -190,6 +191,30 @@ TEST(MultipleFlow, ConservesAreaAndDrainsEveryCellOnFractalTerrains) {
         if (periodic ? int32_t(i) == sink : g.on_edge(x, y)) base += area[i];
       }
     EXPECT_NEAR(base, double(g.size()) * cell, 1e-9 * g.size() * cell) << "periodic " << periodic;
+  }
+}
+
+TEST(MultipleFlow, SameAreasOnAnyThreadCount) {
+  // The threads split the rows into bands and pass cells across band edges
+  // (atomic counts, inboxes): the areas must not depend on how many bands,
+  // to the bit, bounded and on a torus (whose first and last rows meet).
+  for (bool periodic : {false, true}) {
+    const Heightfield hf = fbm_terrain(131, 9, periodic);
+    const D8Grid g = grid_of(hf, periodic);
+    std::vector<float> z(hf.data(), hf.data() + hf.size());
+    const int32_t sink = periodic ? periodic_sink(g, z.data()) : -1;
+    fill_depressions(g, z.data(), sink);
+    const int saved = omp_get_max_threads();
+    std::vector<double> one, other;
+    omp_set_num_threads(1);
+    multiple_flow_area(g, z.data(), sink, one);
+    for (int threads : {2, 3, 7}) {
+      omp_set_num_threads(threads);
+      multiple_flow_area(g, z.data(), sink, other);
+      EXPECT_EQ(0, std::memcmp(one.data(), other.data(), one.size() * sizeof(double)))
+          << threads << " threads, periodic " << periodic;
+    }
+    omp_set_num_threads(saved);
   }
 }
 
