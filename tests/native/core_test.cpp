@@ -1,6 +1,7 @@
 // The core layer: counter-based randomness, memory cap, atomic files.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -159,7 +160,7 @@ TEST(Rng, UnitIsAScaledOddInteger) {
   // (one rounding of the same number either way): every one of the 2^24 values.
   for (uint32_t k = 0; k < (1u << 24); ++k) {
     const float a = bits_to_unit_open(k << 8), b = float(2 * k + 1) * 0x1p-25f;
-    if (std::memcmp(&a, &b, sizeof a) != 0) FAIL() << "k " << k << ": " << a << " != " << b;
+    if (std::bit_cast<uint32_t>(a) != std::bit_cast<uint32_t>(b)) FAIL() << "k " << k << ": " << a << " != " << b;
   }
 }
 
