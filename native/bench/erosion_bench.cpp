@@ -73,7 +73,7 @@ void AntHydraulic(benchmark::State& state) {
     benchmark::DoNotOptimize(out.data());
   }
 }
-BENCHMARK(AntHydraulic)->Arg(513)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(AntHydraulic)->Arg(513)->Arg(1025)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void AntMaps(benchmark::State& state) {
   const ft::Heightfield src = grid(int32_t(state.range(0)));

@@ -78,8 +78,10 @@ TEST(FlowAccumulation, ExactOnAVShapedValley) {
   const auto area = areas_of(hf, graph);
   for (int32_t y = 1; y < h - 1; ++y) {
     EXPECT_EQ(area[y * w + axis], double((h - 1 - y) * (w - 2))) << y;
-    for (int32_t x = 1; x < w - 1; ++x)
-      if (x != axis) EXPECT_EQ(area[y * w + x], double(x > axis ? w - 1 - x : x)) << x << "," << y;
+    for (int32_t x = 1; x < w - 1; ++x) {
+      if (x == axis) continue;
+      EXPECT_EQ(area[y * w + x], double(x > axis ? w - 1 - x : x)) << x << "," << y;
+    }
   }
 }
 

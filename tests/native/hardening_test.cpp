@@ -287,7 +287,7 @@ TEST_F(PovInjection, ControlCharactersAndBackslashesInAPathAreRefusedAndNothingI
   // processing), so a path with one cannot be referred to: refused, like a
   // line break, before anything is written.
   const Heightfield hf = terrain();
-  for (const std::string name : {std::string("line\n") + kDirective + "\nx.png",
+  for (const std::string& name : {std::string("line\n") + kDirective + "\nx.png",
                                  std::string("evil\\\" ") + kDirective + " #declare FtQ = \"x.png"}) {
     pov::SceneParams p;
     pov::set_scene_terrain(p, hf);

@@ -7,6 +7,7 @@
 // (the exact statement of the midpoint method), fitted in log-log.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -18,6 +19,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "golden.hpp"
+#include "terrain/midpoint_steps.hpp"
 #include "terrain/terrain.hpp"
 
 namespace ft {
@@ -498,6 +500,48 @@ TEST(Cancellation, ACancelInsideAParallelStageStopsIt) {
   EXPECT_GT(seen.back(), 0.8);
   EXPECT_LT(seen.back(), 1.0);
   for (size_t i = 1; i < seen.size(); ++i) EXPECT_GE(seen[i], seen[i - 1]);
+}
+
+TEST(MidpointSteps, Avx512KernelsGiveThePortableLoopsBits) {
+  // The AVX-512 kernels against the portable loops, bit for bit, on rows of
+  // random values: strides 2, 4 and 8, several starts x0, counts that end
+  // inside a vector group and span several, and nothing written but the
+  // points (the other places keep their values, 16 past the end included).
+  if (!detail::steps_avx512()) GTEST_SKIP() << "no AVX-512 on this CPU (or FT_DISPATCH caps it)";
+  std::vector<float> up(400), dn(400), g(40);
+  uint32_t state = 12345;
+  auto next = [&state] { return float(int32_t(state = state * 1664525u + 1013904223u)) * 0x1p-31f; };
+  for (auto& v : up) v = next();
+  for (auto& v : dn) v = next();
+  for (auto& v : g) v = next();
+  for (const int big : {2, 4, 8}) {
+    ASSERT_TRUE(detail::steps_avx512_stride(big));
+    const int half = big / 2;
+    for (int x0 = half; x0 <= half + 3; ++x0)
+      for (int count = 0; count <= 37; ++count) {
+        const int end = x0 + big * count - half;  // one past the last point's right neighbour
+        std::vector<float> row(size_t(std::max(end, x0)) + 16);
+        for (auto& v : row) v = next();
+        for (const bool square : {true, false}) {
+          std::vector<float> a = row, b = row;
+          if (square) {
+            detail::square_row_avx512(a.data(), up.data(), dn.data(), x0, count, big, 0.3f, g.data());
+            detail::square_row_portable(b.data(), up.data(), dn.data(), x0, count, big, half, 0.3f, g.data());
+          } else {
+            detail::diamond_interior_avx512(a.data(), up.data(), dn.data(), x0, count, big, 0.3f, g.data());
+            detail::diamond_interior_portable(b.data(), up.data(), dn.data(), x0, count, big, half, 0.3f, g.data());
+          }
+          ASSERT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0)
+              << (square ? "square" : "diamond") << " big " << big << " x0 " << x0 << " count " << count;
+          for (int x = 0; x < int(row.size()); ++x) {
+            const bool point = x >= x0 && (x - x0) % big == 0 && (x - x0) / big < count;
+            if (!point) {
+              ASSERT_EQ(a[size_t(x)], row[size_t(x)]) << "big " << big << " x " << x;
+            }
+          }
+        }
+      }
+  }
 }
 
 }  // namespace

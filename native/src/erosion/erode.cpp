@@ -5,6 +5,7 @@
 #include <omp.h>
 #include <vector>
 
+#include "core/buffer.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "erosion/erosion.hpp"
@@ -78,8 +79,12 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
   } restore{saved};
 
   const D8Grid g = grid_of(in, c.periodic);
+  // Fresh grids are set by the team (their pages are zeroed by the kernel
+  // on first touch: serial work otherwise).
+  const int64_t cells = int64_t(in.size());
   Heightfield out = like(in);
-  std::copy(in.data(), in.data() + in.size(), out.data());
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < cells; ++i) out.data()[i] = in.data()[i];
   // Progress: the three processes share the bar by their pass counts.
   const double total = double(c.fluvial.steps) * 20 + c.hydraulic.iterations + c.thermal.iterations + 1;
   double done = 0;
@@ -101,7 +106,16 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     body(Progress(&Scaled::call, &scaled));
     done += weight;
   };
-  std::vector<float> water(maps ? in.size() : 0, 0.0f);
+  if (maps) {
+    maps->drainage_area = like(in);
+    maps->slope = like(in);
+    maps->curvature = like(in);
+    maps->water_depth = like(in);
+    maps->eroded = like(in);
+    maps->deposited = like(in);
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < cells; ++i) maps->water_depth.data()[i] = 0.0f;  // without a hydraulic pass
+  }
   // The maps' eroded and deposited depths are against the input plus what
   // the fluvial run lifted it, so uplift never shows as deposit.
   std::vector<float> lifted;
@@ -113,29 +127,25 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     run(c.fluvial.steps * 20.0, [&](const Progress& p) { fluvial(g, out.data(), c.fluvial, p); });
   if (c.hydraulic.iterations > 0)
     run(c.hydraulic.iterations, [&](const Progress& p) {
-      hydraulic(g, out.data(), c.hydraulic, maps ? water.data() : nullptr, budget, p);
+      hydraulic(g, out.data(), c.hydraulic, maps ? maps->water_depth.data() : nullptr, budget, p);
     });
   if (c.thermal.iterations > 0)
     run(c.thermal.iterations, [&](const Progress& p) { thermal(g, out.data(), c.thermal, p); });
   if (maps) {
-    maps->drainage_area = like(in);
-    maps->slope = like(in);
-    maps->curvature = like(in);
-    maps->water_depth = like(in);
-    maps->eroded = like(in);
-    maps->deposited = like(in);
     // The area on the surface as it would drain with its pits filled (a
     // lake's cells all carry what flows through it), by multiple flow
     // directions so the map has no grid-aligned streaks.
-    std::vector<float> filled(out.data(), out.data() + out.size());
+    Buffer<float> filled(in.size());
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < cells; ++i) filled[i] = out.data()[i];
     const int32_t sink = g.periodic ? periodic_sink(g, filled.data()) : -1;
     FlowGraph graph;  // its local fills are cheaper than a global fill
-    route_filled(g, filled.data(), sink, graph);
+    route_and_fill(g, filled.data(), sink, graph);
     std::vector<double> area;
     multiple_flow_area(g, filled.data(), sink, area);
-    for (size_t i = 0; i < in.size(); ++i) {
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < cells; ++i) {
       maps->drainage_area.data()[i] = float(area[i]);
-      maps->water_depth.data()[i] = water[i];
       const float change = out.data()[i] - (in.data()[i] + (lifted.empty() ? 0.0f : lifted[i]));
       maps->eroded.data()[i] = std::max(0.0f, -change);
       maps->deposited.data()[i] = std::max(0.0f, change);

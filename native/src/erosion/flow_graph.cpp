@@ -194,7 +194,7 @@ void reroute_changed(const D8Grid& g, const float* z, int32_t sink, FlowGraph& g
   graph.pits = pits;
 }
 
-void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
+void route_and_fill(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
   route_steepest(g, z, sink, graph);
   // Local fills can spill into a neighbouring pit that a later fill raises;
   // another round handles that. A fractal terrain's first step has pits
@@ -213,6 +213,10 @@ void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
       else route_steepest(g, z, sink, graph);
     }
   }
+}
+
+void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
+  route_and_fill(g, z, sink, graph);
   build_stack(g, graph);
 }
 

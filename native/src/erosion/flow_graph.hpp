@@ -101,9 +101,13 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
 // ones whose steepest descent a local fill can change), keeping graph.pits.
 void reroute_changed(const D8Grid& g, const float* z, int32_t sink, FlowGraph& graph);
 
-// The usual sequence: route; while pits remain, fill them locally and route
-// the raised cells again (a global fill and a full routing when pits are
-// more than one cell in 16, or after a few rounds); then the stack.
+// Route; while pits remain, fill them locally and route the raised cells
+// again (a global fill and a full routing when pits are more than one cell
+// in 16, or after a few rounds). Afterwards every cell that is not a base
+// level has a strictly lower neighbour (what multiple_flow_area needs).
+void route_and_fill(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph);
+
+// The usual sequence for an eroder: route_and_fill, then the stack.
 void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph);
 
 }  // namespace ft::erosion

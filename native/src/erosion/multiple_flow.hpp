@@ -23,8 +23,8 @@ namespace ft::erosion {
 // grid's edge, a periodic grid's `sink`) has a strictly lower neighbour, as
 // after fill_depressions. Base levels keep what reaches them, so the base
 // levels' areas sum to the grid's area. Cells are visited once each in
-// topological order (a cell after all its higher neighbours) by one serial
-// queue: the result is the same on any thread count.
+// topological order (a cell after all its higher neighbours) from one serial
+// stack: the result is the same on any thread count.
 void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vector<double>& area);
 
 }  // namespace ft::erosion

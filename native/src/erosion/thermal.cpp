@@ -10,8 +10,9 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <vector>
+#include <utility>
 
+#include "core/buffer.hpp"
 #include "erosion/erosion.hpp"
 
 namespace ft::erosion {
@@ -20,8 +21,9 @@ namespace {
 // The two halves of a pass on cells x0 .. x1 - 1 of a row that have all
 // eight neighbours at the fixed offsets `off` (`i` = row + x). Restrict
 // parameters of functions that are not inlined (GCC keeps restrict only on
-// parameters): the loops then vectorise.
-[[gnu::noinline]] void shares_interior(const float* __restrict z, float* __restrict share, int64_t row, int32_t x0,
+// parameters): the loops then vectorise, and are built for AVX-512, AVX2
+// and the baseline (the same bits on each, as in hydraulic.cpp).
+[[gnu::noinline]] __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"))) void shares_interior(const float* __restrict z, float* __restrict share, int64_t row, int32_t x0,
                                        int32_t x1, const int64_t* off, const float* talus, float half_rate) {
   const int64_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
   const float t[8] = {talus[0], talus[1], talus[2], talus[3], talus[4], talus[5], talus[6], talus[7]};
@@ -39,7 +41,7 @@ namespace {
   }
 }
 
-[[gnu::noinline]] void moves_interior(const float* __restrict z, const float* __restrict share,
+[[gnu::noinline]] __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"))) void moves_interior(const float* __restrict z, const float* __restrict share,
                                       float* __restrict next, int64_t row, int32_t x0, int32_t x1, const int64_t* off,
                                       const float* talus) {
   const int64_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
@@ -110,27 +112,38 @@ void thermal(const D8Grid& g, float* z, const ThermalConfig& c, const Progress& 
   float talus[8];
   for (int k = 0; k < 8; ++k) talus[k] = float(std::tan(c.talus_degrees * M_PI / 180.0) * g.distance(k));
   const float half_rate = float(c.rate) * 0.5f;
-  // share[i]: what cell i sends per unit of excess drop (0: nothing).
-  std::vector<float> share(n), next(n);
+  // share[i]: what cell i sends per unit of excess drop (0: nothing). The
+  // passes alternate between z and `spare` (huge pages, first touched by
+  // the team), and the result is copied to z once if it ends in `spare`.
+  Buffer<float> share(n), spare(n);
+  const int64_t cells = int64_t(n);
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < cells; ++i) share[i] = spare[i] = 0.0f;
+  float* cur = z;
+  float* next = spare.data();
   for (int32_t it = 0; it < c.iterations; ++it) {
 #pragma omp parallel for schedule(static)
     for (int32_t y = 0; y < h; ++y)
       each_in_row(
           g, y,
           [&](int64_t row, int32_t x0, int32_t x1, const int64_t* off) {
-            shares_interior(z, share.data(), row, x0, x1, off, talus, half_rate);
+            shares_interior(cur, share.data(), row, x0, x1, off, talus, half_rate);
           },
-          [&](int32_t x) { shares_edge(g, z, share.data(), x, y, talus, half_rate); });
+          [&](int32_t x) { shares_edge(g, cur, share.data(), x, y, talus, half_rate); });
 #pragma omp parallel for schedule(static)
     for (int32_t y = 0; y < h; ++y)
       each_in_row(
           g, y,
           [&](int64_t row, int32_t x0, int32_t x1, const int64_t* off) {
-            moves_interior(z, share.data(), next.data(), row, x0, x1, off, talus);
+            moves_interior(cur, share.data(), next, row, x0, x1, off, talus);
           },
-          [&](int32_t x) { moves_edge(g, z, share.data(), next.data(), x, y, talus); });
-    std::copy(next.begin(), next.end(), z);
+          [&](int32_t x) { moves_edge(g, cur, share.data(), next, x, y, talus); });
+    std::swap(cur, next);
     progress.report(double(it + 1) / c.iterations);
+  }
+  if (cur != z) {
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < cells; ++i) z[i] = cur[i];
   }
 }
 

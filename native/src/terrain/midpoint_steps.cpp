@@ -1,5 +1,9 @@
 #include "terrain/midpoint_steps.hpp"
 
+#include <string_view>
+
+#include "core/rng.hpp"
+
 namespace ft::detail {
 namespace {
 
@@ -30,17 +34,36 @@ inline void diamond_points(float* row, const float* up, const float* dn, int x0,
 }  // namespace
 
 __attribute__((target_clones("avx2", "default")))
-void square_row(float* row, const float* up, const float* dn, int x0, int count, int big, int half, float delta,
-                const float* g) {
+void square_row_portable(float* row, const float* up, const float* dn, int x0, int count, int big, int half,
+                         float delta, const float* g) {
   if (big == 2) square_points<2>(row, up, dn, x0, count, big, half, delta, g);
   else square_points<0>(row, up, dn, x0, count, big, half, delta, g);
 }
 
 __attribute__((target_clones("avx2", "default")))
-void diamond_interior(float* row, const float* up, const float* dn, int x0, int count, int big, int half,
-                      float delta, const float* g) {
+void diamond_interior_portable(float* row, const float* up, const float* dn, int x0, int count, int big, int half,
+                               float delta, const float* g) {
   if (big == 2) diamond_points<2>(row, up, dn, x0, count, big, half, delta, g);
   else diamond_points<0>(row, up, dn, x0, count, big, half, delta, g);
+}
+
+// The AVX-512 kernels where the Gaussians take the AVX-512 path too: one
+// switch (FT_DISPATCH=avx2 or baseline turns both off).
+bool steps_avx512() {
+  static const bool yes = std::string_view(dispatch_path()) == "avx512";
+  return yes;
+}
+
+void square_row(float* row, const float* up, const float* dn, int x0, int count, int big, int half, float delta,
+                const float* g) {
+  if (steps_avx512_stride(big) && steps_avx512()) square_row_avx512(row, up, dn, x0, count, big, delta, g);
+  else square_row_portable(row, up, dn, x0, count, big, half, delta, g);
+}
+
+void diamond_interior(float* row, const float* up, const float* dn, int x0, int count, int big, int half,
+                      float delta, const float* g) {
+  if (steps_avx512_stride(big) && steps_avx512()) diamond_interior_avx512(row, up, dn, x0, count, big, delta, g);
+  else diamond_interior_portable(row, up, dn, x0, count, big, half, delta, g);
 }
 
 }  // namespace ft::detail

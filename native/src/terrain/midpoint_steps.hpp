@@ -22,6 +22,22 @@ void square_row(float* row, const float* up, const float* dn, int x0, int count,
 void diamond_interior(float* row, const float* up, const float* dn, int x0, int count, int big, int half,
                       float delta, const float* g);
 
+// The loops behind square_row and diamond_interior: portable C++ compiled
+// for AVX2 and baseline x86-64 (midpoint_steps.cpp), and for strides big
+// 2, 4 and 8 (steps_avx512_stride; half = big / 2) written for AVX-512
+// (midpoint_steps_avx512.cpp), taken where steps_avx512(). All give the
+// same bits (tests compare them).
+void square_row_portable(float* row, const float* up, const float* dn, int x0, int count, int big, int half,
+                         float delta, const float* g);
+void diamond_interior_portable(float* row, const float* up, const float* dn, int x0, int count, int big, int half,
+                               float delta, const float* g);
+bool steps_avx512();
+bool steps_avx512_stride(int big);
+void square_row_avx512(float* row, const float* up, const float* dn, int x0, int count, int big, float delta,
+                       const float* g);
+void diamond_interior_avx512(float* row, const float* up, const float* dn, int x0, int count, int big, float delta,
+                             const float* g);
+
 // A border point's mean of the k (3, or 2 at a corner) neighbours present,
 // in the order left, right, up, down; a missing neighbour is passed as
 // nullptr.
