@@ -154,6 +154,15 @@ TEST(Rng, AllDispatchPathsGiveTheSameBits) {
   }
 }
 
+TEST(Rng, UnitIsAScaledOddInteger) {
+  // rng_avx512.cpp relies on bits_to_unit_open(bits) == float(2 (bits >> 8) + 1) / 2^25
+  // (one rounding of the same number either way): every one of the 2^24 values.
+  for (uint32_t k = 0; k < (1u << 24); ++k) {
+    const float a = bits_to_unit_open(k << 8), b = float(2 * k + 1) * 0x1p-25f;
+    if (std::memcmp(&a, &b, sizeof a) != 0) FAIL() << "k " << k << ": " << a << " != " << b;
+  }
+}
+
 TEST(Rng, DispatchTakesTheFastestPathTheCpuHas) {
   // So that the benchmarks measure what users run (FT_DISPATCH unset here).
   const char* expected = rng_path_available(RngPath::kAvx512) ? "avx512"
