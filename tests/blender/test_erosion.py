@@ -117,6 +117,25 @@ class ErodeTest(unittest.TestCase):
         bsdf = material.node_tree.nodes["Principled BSDF"]
         self.assertTrue(bsdf.inputs["Base Color"].is_linked)
 
+    def test_diffusion_reads_in_the_sidebar_and_keeps_the_librarys_value(self):
+        # Blender shows 6 decimals at most: the diffusion's default 1e-7 read
+        # 0.000000. The sidebar draws it times 1e7 (core/params.py
+        # display_scale_of); the setting, its preset and what the library gets
+        # keep the table's value.
+        obj = self.add(erode_preset="LAND")
+        settings = obj.fracterra_terrain
+        row = next(r for r in core().params._description()["erosion"] if r["name"] == "diffusion")
+        self.assertAlmostEqual(settings.diffusion, row["default"], delta=1e-7 * row["default"])
+        self.assertAlmostEqual(settings.diffusion_shown, 1.0, places=5)
+        self.assertIn("\u00d71e-7", settings.bl_rna.properties["diffusion_shown"].name)
+        settings.diffusion_shown = 2.5
+        self.assertAlmostEqual(settings.diffusion, 2.5e-7, delta=1e-13)
+        self.assertAlmostEqual(core().params.values_of(settings)["diffusion"], 2.5e-7, delta=1e-13)
+        # The operator's redo panel draws the same scaled property: set through it.
+        self.assertEqual(bpy.ops.mesh.fracterra_terrain_add(levels=6, seed=5, erode_preset="LAND", diffusion_shown=3.0),
+                         {"FINISHED"})
+        self.assertAlmostEqual(bpy.context.active_object.fracterra_terrain.diffusion, 3e-7, delta=1e-13)
+
     def test_regenerate_reruns_generation_then_erosion(self):
         obj = self.add(erode_preset="SCREE")
         settings = obj.fracterra_terrain

@@ -1,6 +1,7 @@
 // The core layer: counter-based randomness, memory cap, atomic files.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -151,6 +152,15 @@ TEST(Rng, AllDispatchPathsGiveTheSameBits) {
         EXPECT_EQ(a[k.n], -7.0f);
       }
     }
+  }
+}
+
+TEST(Rng, UnitIsAScaledOddInteger) {
+  // rng_avx512.cpp relies on bits_to_unit_open(bits) == float(2 (bits >> 8) + 1) / 2^25
+  // (one rounding of the same number either way): every one of the 2^24 values.
+  for (uint32_t k = 0; k < (1u << 24); ++k) {
+    const float a = bits_to_unit_open(k << 8), b = float(2 * k + 1) * 0x1p-25f;
+    if (std::bit_cast<uint32_t>(a) != std::bit_cast<uint32_t>(b)) FAIL() << "k " << k << ": " << a << " != " << b;
   }
 }
 

@@ -100,7 +100,9 @@ def draw_erosion(layout, data):
                     if name == "uplift":
                         sub.label(text=f"{params.PARAMS_BY_NAME[name].label}: fitted to the terrain")
                     continue
-                sub.prop(data, name)
+                # A value too small for Blender's 6 decimals is drawn scaled (props.display_property).
+                shown = params.shown_name(name) if params.PARAMS_BY_NAME[name].display_scale else name
+                sub.prop(data, shown)
 
 
 # --- in the job's worker thread (no bpy here)

@@ -1,6 +1,8 @@
 """Blender properties made from the one parameter list (core.params), and the
 PropertyGroups kept on objects (terrain and polyline settings, measures)."""
 
+import math
+
 import bpy
 from bpy.props import (BoolProperty, EnumProperty, FloatProperty, FloatVectorProperty, IntProperty,
                        StringProperty)
@@ -39,6 +41,26 @@ def bpy_property(p, update=None):
     if p.kind == "vector":
         return FloatVectorProperty(size=3, subtype=p.subtype, unit=p.unit, **kw)
     raise TypeError(f"unknown parameter kind {p.kind!r} for {p.name}")
+
+
+def display_property(p):
+    """The setting `p` as Blender draws it when its values are too small for
+    Blender's 6 decimals (params.display_scale_of): its value times
+    p.display_scale, read from and written to the setting itself, so the
+    setting (what presets, the library and the file keep) has one value."""
+    scale = p.display_scale
+    power = round(math.log10(scale))
+
+    def get(self):
+        return getattr(self, p.name) * scale
+
+    def set(self, value):
+        setattr(self, p.name, value / scale)
+
+    kw = {key: getattr(p, key) * scale for key in ("min", "max", "soft_min", "soft_max") if getattr(p, key) is not None}
+    return FloatProperty(name=f"{p.label} \u00d71e-{power}", get=get, set=set, precision=3, options={"SKIP_SAVE"},
+                         description=f"{p.description}. Shown times 1e{power}: {p.default * scale:g} here is "
+                                     f"{p.default:g}", **kw)
 
 
 def reference_image_choices(images):
@@ -91,7 +113,11 @@ def falloff_mask_image_picker(update=None):
 
 def terrain_annotations(update=None, param_list=None):
     """{name: property} for every setting (terrain unless another list is given)."""
-    out = {p.name: bpy_property(p, update) for p in param_list or params.TERRAIN_PARAMS}
+    out = {}
+    for p in param_list or params.TERRAIN_PARAMS:
+        out[p.name] = bpy_property(p, update)
+        if p.display_scale is not None:
+            out[params.shown_name(p.name)] = display_property(p)
     if "reference_image" in out:
         out["reference_image_pick"] = reference_image_picker(update)
     if "falloff_mask_image" in out:

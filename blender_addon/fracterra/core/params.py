@@ -96,6 +96,24 @@ _BY_UNIT = {"scene units": {"subtype": "DISTANCE", "unit": "LENGTH"},
             "radians": {"subtype": "ANGLE", "unit": "ROTATION"}}
 _PRECISION = {"hurst": 3, "center_x": 6, "center_y": 6,
               "erodibility": 6, "uplift": 6}  # their defaults (2e-4, ~1e-5) are 0.000 at 3 digits
+# Blender shows at most 6 decimals: a float whose default is under 1e-4 (the
+# diffusion's 1e-7 read 0.000000) is shown times the power of ten that brings
+# its default to 1..10, the power in its label (props.display_property). The
+# value stored and passed to the library stays the table's.
+_SCALE_BELOW = 1e-4
+
+
+def shown_name(name):
+    """The Blender property that draws setting `name` scaled (blender/props.py display_property)."""
+    return f"{name}_shown"
+
+
+def display_scale_of(row):
+    """The power of ten Blender shows the field of `row` times, or None."""
+    default = row["default"]
+    if row["type"] not in ("double", "float") or not 0 < default < _SCALE_BELOW:
+        return None
+    return 10.0 ** -math.floor(math.log10(default))
 # Settings whose change changes the vertex count (rebuild, not rewrite).
 _GEOMETRY = {"method", "levels", "width", "height"}
 SNAPSHOT = Path(__file__).resolve().parent / "params.json"
@@ -132,6 +150,7 @@ class Param:
     unit: str = "NONE"  # Blender unit: 'LENGTH', 'ROTATION'
     step: int = None
     precision: int = None
+    display_scale: float = None  # Blender shows value x this (a power of ten); None: as is
     methods: frozenset = dc_field(default=None)  # methods that use it; None: all
     geometry: bool = False  # changing it changes the vertex count (rebuild, not rewrite)
 
@@ -210,7 +229,8 @@ def _param_from_row(row, kind_name, method_items):
                  min=lo if numeric else None, max=hi if numeric else None,
                  soft_min=soft_lo if numeric else None, soft_max=soft_hi if numeric else None,
                  items=items, field=name, subtype=look.get("subtype", "NONE"), unit=look.get("unit", "NONE"),
-                 precision=_PRECISION.get(name), methods=methods, geometry=name in _GEOMETRY)
+                 precision=_PRECISION.get(name), display_scale=display_scale_of(row), methods=methods,
+                 geometry=name in _GEOMETRY)
 
 
 def library_params(kind_name):

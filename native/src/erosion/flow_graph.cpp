@@ -25,8 +25,9 @@ inline float diagonal_weight(float r) { return 1.0f / (2.0f - r); }
 
 // Steepest descent on cells x0 .. x1 - 1 of an interior row (all eight
 // neighbours at the offsets `off`): selects instead of branches, restrict
-// parameters of a function that is not inlined, so the loop vectorises.
-// Ties go to the first direction (strict >), as in the general path. A
+// parameters of a function that is not inlined. (GCC 12 keeps the loop
+// scalar, maxss and cmov, without -march: no vector blend of an int by a
+// float compare in SSE2.) Ties go to the first direction (strict >), as in the general path. A
 // diagonal drop is over a run of sqrt 2 (D8) or 2 - r (Rho8, r = `random`,
 // indexed like z).
 template <bool kRho8>
@@ -34,24 +35,31 @@ template <bool kRho8>
                                             int32_t* __restrict receiver, float* __restrict length, int64_t row,
                                             int32_t x0, int32_t x1, const int32_t* off, float straight, float diag) {
   const int32_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
+  // Index 8: no lower neighbour (a pit: its own receiver, run 0).
+  const int32_t o9[9] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7], 0};
+  const float run[9] = {straight, diag, straight, diag, straight, diag, straight, diag, 0.0f};
   const float inv_diag = float(1.0 / M_SQRT2);
   int64_t pits = 0;
   for (int32_t x = x0; x < x1; ++x) {
     const int32_t i = int32_t(row + x);
     const float w = kRho8 ? diagonal_weight(random[i]) : inv_diag;
-    float best_slope = 0.0f, best_length = 0.0f;
-    int32_t best_off = 0;
+    // Only the slope and the direction are selected in the loop (the
+    // offset and run from tables after it): one float and one integer
+    // select per direction, which GCC makes branch-free; three selects
+    // became branches, mispredicted about half the time under Rho8's
+    // random choices.
+    float best_slope = 0.0f;
+    int32_t best_k = 8;
 #pragma GCC unroll 8
     for (int k = 0; k < 8; ++k) {
       const float drop = (z[i] - z[i + o[k]]) * ((k & 1) ? w : 1.0f);
       const bool steeper = drop > best_slope;
-      best_slope = steeper ? drop : best_slope;
-      best_off = steeper ? o[k] : best_off;
-      best_length = steeper ? ((k & 1) ? diag : straight) : best_length;
+      best_slope = std::max(drop, best_slope);
+      best_k = steeper ? k : best_k;
     }
-    receiver[i] = i + best_off;
-    length[i] = best_length;
-    pits += best_off == 0;
+    receiver[i] = i + o9[best_k];
+    length[i] = run[best_k];
+    pits += best_k == 8;
   }
   return pits;
 }

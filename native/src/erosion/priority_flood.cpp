@@ -119,6 +119,9 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
   for (size_t i = 0; i < n; ++i)
     if (graph.receiver[i] == int32_t(i) && !is_outlet(int32_t(i))) pits.push_back(int32_t(i));
   OpenHeap open;
+  // Step 2 visits heights upwards from the spill: a radix heap (raised cells
+  // go through it too when graded by random steps).
+  RadixHeap flood;
   std::deque<int32_t> pit_queue;
   graph.changed.clear();
   for (const int32_t p : pits) {
@@ -166,18 +169,18 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
     // 2. Priority-Flood+epsilon from the spill cell over the depression only
     //    (and the cells of a flat at the spill level next to it).
     const float spill_level = z[spill];
-    open.clear();
-    open.push({z[spill], spill});
+    flood.restart();
+    flood.push(z[spill], spill);
     graph.closed[spill] = stamp;
     for (const int32_t c : graph.region) graph.closed[c] = stamp - 1;  // in the region, not yet closed
     const float* random = graph.random.empty() ? nullptr : graph.random.data();
-    while (!open.empty() || !pit_queue.empty()) {
+    while (!flood.empty() || !pit_queue.empty()) {
       int32_t c;
       if (!pit_queue.empty()) {
         c = pit_queue.front();
         pit_queue.pop_front();
       } else {
-        c = open.pop();
+        c = flood.pop();
       }
       const int32_t cx = c % g.width, cy = c / g.width;
       for (int k = 0; k < 8; ++k) {
@@ -190,11 +193,11 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
         graph.closed[j] = stamp;
         if (z[j] <= z[c]) {
           z[j] = raised(z[c], random, int32_t(j));
-          if (random) open.push({z[j], int32_t(j)});
+          if (random) flood.push(z[j], int32_t(j));
           else pit_queue.push_back(int32_t(j));
           graph.changed.push_back(int32_t(j));
         } else {
-          open.push({z[j], int32_t(j)});
+          flood.push(z[j], int32_t(j));
         }
       }
     }

@@ -19,6 +19,13 @@ class RadixHeap {
  public:
   bool empty() const { return size_ == 0; }
 
+  // Starts a new search (keeps the storage): any height may come next.
+  void restart() {
+    for (auto& b : buckets_) b.clear();
+    last_ = 0;
+    size_ = 0;
+  }
+
   // `z` must not be below the height last popped.
   void push(float z, int32_t i) {
     const uint32_t k = key(z);
