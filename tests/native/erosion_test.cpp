@@ -58,6 +58,37 @@ std::vector<double> areas_of(const Heightfield& hf, FlowGraph& graph) {
   return area;
 }
 
+TEST(FlowGraph, DonorsListedInIndexOrderOnAnyThreadCount) {
+  // build_stack gathers each cell's donors from its neighbours in parallel;
+  // the lists must be what one pass over the donors in index order makes
+  // (the stack, and so the fluvial result, follow from them), bounded and
+  // on a torus (where neighbours wrap and index order is not direction
+  // order).
+  for (bool periodic : {false, true}) {
+    const Heightfield hf = fbm_terrain(67, 4, periodic);
+    const D8Grid g = grid_of(hf, periodic);
+    std::vector<float> z(hf.data(), hf.data() + hf.size());
+    const int32_t sink = periodic ? periodic_sink(g, z.data()) : -1;
+    const int saved = omp_get_max_threads();
+    for (int threads : {1, 2, 3}) {
+      omp_set_num_threads(threads);
+      FlowGraph graph;
+      draw_rho8(g, sink, 3, graph);
+      std::vector<float> filled = z;
+      route_filled(g, filled.data(), sink, graph);
+      std::vector<std::vector<int32_t>> expected(g.size());
+      for (size_t i = 0; i < g.size(); ++i)
+        if (graph.receiver[i] != int32_t(i)) expected[size_t(graph.receiver[i])].push_back(int32_t(i));
+      for (size_t r = 0; r < g.size(); ++r) {
+        const std::vector<int32_t> got(graph.donors.begin() + graph.donor_start[r],
+                                       graph.donors.begin() + graph.donor_start[r + 1]);
+        ASSERT_EQ(got, expected[r]) << "cell " << r << ", " << threads << " threads, periodic " << periodic;
+      }
+    }
+    omp_set_num_threads(saved);
+  }
+}
+
 TEST(FlowAccumulation, ExactOnAnInclinedPlane) {
   // z = x: every interior cell drains west; the cell in column x collects the
   // cells x .. W-2 of its row (column W-1 is an outlet).
