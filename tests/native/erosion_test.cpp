@@ -41,6 +41,20 @@ Heightfield fbm_terrain(int32_t size, uint64_t seed, bool periodic = false) {
   return hf;
 }
 
+// An fBm terrain as the routing sees it: its grid, its heights (a copy to
+// fill or route) and its outlet on a torus (-1 bounded).
+struct Routed {
+  D8Grid g;
+  std::vector<float> z;
+  int32_t sink;
+};
+Routed routed_fbm(int32_t size, uint64_t seed, bool periodic) {
+  const Heightfield hf = fbm_terrain(size, seed, periodic);
+  Routed r{grid_of(hf, periodic), std::vector<float>(hf.data(), hf.data() + hf.size()), -1};
+  if (periodic) r.sink = periodic_sink(r.g, r.z.data());
+  return r;
+}
+
 Heightfield from_function(int32_t w, int32_t h, double (*f)(double, double)) {
   Heightfield hf(w, h);
   for (int32_t y = 0; y < h; ++y)
@@ -65,10 +79,7 @@ TEST(FlowGraph, DonorsListedInIndexOrderOnAnyThreadCount) {
   // on a torus (where neighbours wrap and index order is not direction
   // order).
   for (bool periodic : {false, true}) {
-    const Heightfield hf = fbm_terrain(67, 4, periodic);
-    const D8Grid g = grid_of(hf, periodic);
-    std::vector<float> z(hf.data(), hf.data() + hf.size());
-    const int32_t sink = periodic ? periodic_sink(g, z.data()) : -1;
+    auto [g, z, sink] = routed_fbm(67, 4, periodic);
     const int saved = omp_get_max_threads();
     for (int threads : {1, 2, 3}) {
       omp_set_num_threads(threads);
@@ -206,10 +217,7 @@ TEST(MultipleFlow, SpreadsEvenlyOnAConeWhereD8MakesStreaks) {
 
 TEST(MultipleFlow, ConservesAreaAndDrainsEveryCellOnFractalTerrains) {
   for (bool periodic : {false, true}) {
-    const Heightfield hf = fbm_terrain(97, 5, periodic);
-    const D8Grid g = grid_of(hf, periodic);
-    std::vector<float> z(hf.data(), hf.data() + hf.size());
-    const int32_t sink = periodic ? periodic_sink(g, z.data()) : -1;
+    auto [g, z, sink] = routed_fbm(97, 5, periodic);
     fill_depressions(g, z.data(), sink);
     std::vector<double> area;
     multiple_flow_area(g, z.data(), sink, area);
@@ -230,10 +238,7 @@ TEST(MultipleFlow, SameAreasOnAnyThreadCount) {
   // (atomic counts, inboxes): the areas must not depend on how many bands,
   // to the bit, bounded and on a torus (whose first and last rows meet).
   for (bool periodic : {false, true}) {
-    const Heightfield hf = fbm_terrain(131, 9, periodic);
-    const D8Grid g = grid_of(hf, periodic);
-    std::vector<float> z(hf.data(), hf.data() + hf.size());
-    const int32_t sink = periodic ? periodic_sink(g, z.data()) : -1;
+    auto [g, z, sink] = routed_fbm(131, 9, periodic);
     fill_depressions(g, z.data(), sink);
     const int saved = omp_get_max_threads();
     std::vector<double> one, other;
@@ -274,10 +279,8 @@ void expect_every_cell_drains(const D8Grid& g, const FlowGraph& graph, int32_t s
 
 TEST(FlowRouting, EveryCellDrainsOnFractalTerrains) {
   for (bool periodic : {false, true}) {
-    const Heightfield hf = fbm_terrain(129, 11, periodic);
-    const D8Grid g = grid_of(hf, periodic);
-    std::vector<float> z(hf.data(), hf.data() + hf.size());
-    const int32_t sink = periodic ? periodic_sink(g, z.data()) : -1;
+    auto [g, z, sink] = routed_fbm(129, 11, periodic);
+    const std::vector<float> before = z;
     FlowGraph graph;
     route_steepest(g, z.data(), sink, graph);
     EXPECT_GT(graph.pits, 10) << "a raw fractal terrain has pits: the test must exercise the fill";
@@ -285,7 +288,7 @@ TEST(FlowRouting, EveryCellDrainsOnFractalTerrains) {
     EXPECT_EQ(graph.pits, 0);
     expect_every_cell_drains(g, graph, sink);
     // Filling only raises.
-    for (size_t i = 0; i < z.size(); ++i) ASSERT_GE(z[i], hf.data()[i]);
+    for (size_t i = 0; i < z.size(); ++i) ASSERT_GE(z[i], before[i]);
   }
 }
 

@@ -15,21 +15,14 @@
 // outputs are put in index order with unpacks on a permuted counter order.
 #include <immintrin.h>
 
-// gcc 12 warns inside its own AVX-512 headers (their _mm512_undefined_*
-// placeholders, an unmasked intrinsic's ignored source) once inlined here.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-
 #include <algorithm>
 #include <cstring>
 
+#include "core/avx512.hpp"
 #include "core/rng_paths.hpp"
 
 namespace ft::detail {
 namespace {
-
-#define FT_AVX512 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq"), always_inline)) inline
 
 // The lane -> block order of a batch of 16 blocks: lane 4 j + r holds block
 // 4 r + j. After the unpacks in store_interleaved, output vector r then holds

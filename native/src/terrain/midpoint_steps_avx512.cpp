@@ -9,18 +9,11 @@
 // compare the two.
 #include <immintrin.h>
 
+#include "core/avx512.hpp"
 #include "terrain/midpoint_steps.hpp"
-
-// gcc 12 warns inside its own AVX-512 headers (the _mm512_undefined_*
-// placeholders of unmasked intrinsics) once they are inlined here.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
 
 namespace ft::detail {
 namespace {
-
-#define FT_AVX512 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq"), always_inline)) inline
 
 // Lanes 0, S, 2 S, ...: the first `points` (<= 16 / S) points of a group.
 template <int S>
