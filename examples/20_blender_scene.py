@@ -25,10 +25,29 @@ from mathutils import Vector
 ROOT = Path(__file__).resolve().parent.parent
 
 
-def parse_args():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    p = argparse.ArgumentParser(prog="20_blender_scene.py", description=__doc__.split("\n\n")[0])
+def example_parser(prog, doc, resolution, what="render size"):
+    """The arguments every Blender example takes (--out, --resolution,
+    --samples, --library); the example adds its own and calls parse_example."""
+    p = argparse.ArgumentParser(prog=prog, description=doc.split("\n\n")[0])
     p.add_argument("--out", required=True, help="output folder (created)")
+    p.add_argument("--resolution", default=resolution, help=f"{what} WxH (default {resolution})")
+    p.add_argument("--samples", type=int, default=16, help="Cycles samples (default 16)")
+    p.add_argument("--library", help="libfracterra.so to use when the add-on is run from the source tree")
+    return p
+
+
+def parse_example(p):
+    """Parses what follows Blender's `--`; --resolution becomes args.width and args.height."""
+    args = p.parse_args(sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else [])
+    try:
+        args.width, args.height = (int(v) for v in args.resolution.lower().split("x"))
+    except ValueError:
+        p.error(f"--resolution must be WIDTHxHEIGHT, e.g. {p.get_default('resolution')}; got {args.resolution!r}")
+    return args
+
+
+def parse_args():
+    p = example_parser("20_blender_scene.py", __doc__, "480x270", "preview size, also for --pov-render,")
     p.add_argument("--method", default="MIDPOINT", choices=["MIDPOINT", "ADDITIONS", "FBM", "SPECTRAL", "INTERPOLATED"],
                    help="terrain method (default MIDPOINT)")
     p.add_argument("--levels", type=int, default=8, help="grid is 2^levels + 1 per side, 1..13 (default 8)")
@@ -38,16 +57,13 @@ def parse_args():
     p.add_argument("--size", type=float, default=20.0, help="terrain extent in metres (default 20)")
     p.add_argument("--sea-level", type=float, default=0.3,
                    help="flatten below this height and add water (default 0.3: the plain is under the sea)")
-    p.add_argument("--resolution", default="480x270", help="preview size WxH, also for --pov-render (default 480x270)")
-    p.add_argument("--samples", type=int, default=16, help="Cycles samples (default 16)")
     p.add_argument("--engine", default="CYCLES", choices=["CYCLES", "BLENDER_EEVEE"],
                    help="renderer (default CYCLES: works without a GPU)")
     p.add_argument("--no-polylines", action="store_true", help="terrain only")
     p.add_argument("--no-render", action="store_true", help="do not render the Blender preview")
     p.add_argument("--no-pov", action="store_true", help="do not export the POV-Ray scene")
     p.add_argument("--pov-render", action="store_true", help="also render scene.pov with povray (pov.png)")
-    p.add_argument("--library", help="libfracterra.so to use when the add-on is run from the source tree")
-    args = p.parse_args(argv)
+    args = parse_example(p)
     # Blender clamps operator properties silently; a script should refuse instead.
     if not 1 <= args.levels <= 13:
         p.error(f"--levels must be in 1..13, got {args.levels}")
@@ -57,10 +73,6 @@ def parse_args():
         p.error(f"--sigma must be > 0, got {args.sigma}")
     if not args.size > 0:
         p.error(f"--size must be > 0, got {args.size}")
-    try:
-        args.width, args.height = (int(v) for v in args.resolution.lower().split("x"))
-    except ValueError:
-        p.error(f"--resolution must be WIDTHxHEIGHT, e.g. 480x270; got {args.resolution!r}")
     return args
 
 

@@ -10,7 +10,6 @@ gives; saves scene.blend and renders preview.png with Cycles. Exits non-zero
 with a message on any error.
 """
 
-import argparse
 import importlib.util
 import math
 import sys
@@ -27,24 +26,18 @@ _spec.loader.exec_module(scene20)
 
 
 def parse_args():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    p = argparse.ArgumentParser(prog="21_blender_mandelbrot.py", description=__doc__.split("\n\n")[0])
-    p.add_argument("--out", required=True, help="output folder (created)")
+    p = scene20.example_parser("21_blender_mandelbrot.py", __doc__, "640x480")
     p.add_argument("--samples-x", type=int, default=513, help="vertices along x, 2..8193 (default 513)")
     p.add_argument("--center", default="-0.65,0", help="centre of the view, X,Y (default -0.65,0)")
     p.add_argument("--zoom", type=float, default=0.85, help="the width spans 4 / zoom (default 0.85)")
     p.add_argument("--iterations", type=int, default=40, help="maximum iterations (default 40)")
     p.add_argument("--curves", default="2,2.5,3,4,5,6,8", help="escape times of the level curves")
-    p.add_argument("--resolution", default="640x480", help="render size WxH (default 640x480)")
-    p.add_argument("--samples", type=int, default=16, help="Cycles samples (default 16)")
-    p.add_argument("--library", help="libfracterra.so to use when the add-on is run from the source tree")
-    args = p.parse_args(argv)
+    args = scene20.parse_example(p)
     try:
         args.cx, args.cy = (float(v) for v in args.center.split(","))
         args.levels = [float(v) for v in args.curves.split(",")]
-        args.width, args.height = (int(v) for v in args.resolution.lower().split("x"))
     except ValueError:
-        p.error("--center X,Y, --curves A,B,... and --resolution WxH take numbers")
+        p.error("--center X,Y and --curves A,B,... take numbers")
     if not 2 <= args.samples_x <= 8193:
         p.error(f"--samples-x must be in 2..8193, got {args.samples_x}")
     return args

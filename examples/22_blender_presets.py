@@ -14,7 +14,6 @@ falloff width of 0.25); mask-image.png, a generated image of two soft blobs
 (two islands in a sea at 0.3). Exits non-zero on any error.
 """
 
-import argparse
 import importlib.util
 import math
 import sys
@@ -32,18 +31,11 @@ PRESETS = HERE.parent / "blender_addon" / "fracterra" / "presets" / "operator" /
 
 
 def parse_args():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    p = argparse.ArgumentParser(prog="22_blender_presets.py", description=__doc__.split("\n\n")[0])
-    p.add_argument("--out", required=True, help="output folder (created)")
-    p.add_argument("--resolution", default="480x300", help="render size WxH (default 480x300)")
-    p.add_argument("--samples", type=int, default=16, help="Cycles samples (default 16)")
+    p = scene20.example_parser("22_blender_presets.py", __doc__, "480x300")
     p.add_argument("--max-levels", type=int, default=9, help="cap on a preset's levels, and on its samples at 2^cap + 1 (smaller: faster)")
     p.add_argument("--only", default="", help="comma-separated names to render (default: all)")
     p.add_argument("--no-ant", action="store_true", help="skip A.N.T. Landscape's default")
-    p.add_argument("--library", help="libfracterra.so to use when the add-on is run from the source tree")
-    args = p.parse_args(argv)
-    args.width, args.height = (int(v) for v in args.resolution.lower().split("x"))
-    return args
+    return scene20.parse_example(p)
 
 
 def preset_values(path):

@@ -11,7 +11,6 @@ material without channels. Renders before-after.png with Cycles and saves
 erosion.blend. Exits non-zero with a message on any error.
 """
 
-import argparse
 import importlib.util
 import math
 import sys
@@ -27,16 +26,9 @@ _spec.loader.exec_module(scene20)
 
 
 def parse_args():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    p = argparse.ArgumentParser(prog="23_blender_erosion.py", description=__doc__.split("\n\n")[0])
-    p.add_argument("--out", required=True, help="output folder (created)")
+    p = scene20.example_parser("23_blender_erosion.py", __doc__, "960x400")
     p.add_argument("--size", type=int, default=257, help="vertices per side (default 257)")
-    p.add_argument("--resolution", default="960x400", help="render size WxH (default 960x400)")
-    p.add_argument("--samples", type=int, default=16, help="Cycles samples (default 16)")
-    p.add_argument("--library", help="libfracterra.so to use when the add-on is run from the source tree")
-    args = p.parse_args(argv)
-    args.width, args.height = (int(v) for v in args.resolution.lower().split("x"))
-    return args
+    return scene20.parse_example(p)
 
 
 def terrain(args, x, erode):

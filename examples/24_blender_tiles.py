@@ -12,7 +12,6 @@ four renders into tiles-blender.png (top: one mesh; bottom: one object per
 tile; left lod 0, right lod 2). docs/scale.md shows it.
 """
 
-import argparse
 import importlib.util
 import math
 import sys
@@ -30,15 +29,8 @@ _spec.loader.exec_module(scene20)
 
 
 def parse_args():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    p = argparse.ArgumentParser(prog="24_blender_tiles.py", description=__doc__.split("\n\n")[0])
-    p.add_argument("--out", required=True, help="output folder (created)")
-    p.add_argument("--resolution", default="480x320", help="each render's size WxH (default 480x320)")
-    p.add_argument("--samples", type=int, default=16, help="Cycles samples (default 16)")
-    p.add_argument("--library", help="libfracterra.so when the add-on is run from the source tree")
-    args = p.parse_args(argv)
-    args.width, args.height = (int(v) for v in args.resolution.lower().split("x"))
-    return args
+    p = scene20.example_parser("24_blender_tiles.py", __doc__, "480x320", "each render's size")
+    return scene20.parse_example(p)
 
 
 def write_tileset(folder):

@@ -84,9 +84,9 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
 
   // Kahn's order, pulled: a cell is ready when its last higher giver is
   // done; it then takes from each higher giver, in neighbour order, the
-  // giver's area over its total shares times the share toward it. Each sum is made in a
-  // fixed order from final values, so the areas do not depend on which
-  // thread does a cell or when. Each thread owns a band of rows and keeps
+  // giver's area over its total shares times the share toward it. Each sum
+  // is made in a fixed order from final values, so the areas do not depend
+  // on which thread does a cell or when. Each thread owns a band of rows and keeps
   // its ready cells on a stack (the cell taken next is usually one just
   // made ready beside the last: still in the cache). Only cells in the
   // first and last row of a band have higher givers in another band: their
