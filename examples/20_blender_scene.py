@@ -76,6 +76,22 @@ def parse_args():
     return args
 
 
+def render_still(scene, args, path, engine="CYCLES"):
+    """Renders the scene to `path` at --resolution (Cycles: --samples on the
+    CPU, no denoising: Debian's Blender is built without OpenImageDenoise)."""
+    scene.render.engine = engine
+    scene.render.resolution_x, scene.render.resolution_y = args.width, args.height
+    scene.render.resolution_percentage = 100
+    if engine == "CYCLES":
+        scene.cycles.samples = args.samples
+        scene.cycles.device = "CPU"
+        scene.cycles.use_denoising = False
+    scene.render.filepath = str(path)
+    bpy.ops.render.render(write_still=True)
+    if not Path(path).is_file():
+        raise RuntimeError(f"the render did not write {path}")
+
+
 def enable_addon(library):
     """The installed add-on if there is one, else the source tree's copy."""
     import addon_utils
@@ -236,19 +252,9 @@ def main():
     print(f"20_blender_scene: wrote {blend}")
     w, h = args.width, args.height
     if not args.no_render:
-        scene.render.engine = args.engine
-        scene.render.resolution_x, scene.render.resolution_y = w, h
-        scene.render.resolution_percentage = 100
-        if args.engine == "CYCLES":
-            scene.cycles.samples = args.samples
-            scene.cycles.device = "CPU"
-            scene.cycles.use_denoising = False
-        scene.render.filepath = str(out / "preview.png")
         t0 = time.perf_counter()
-        bpy.ops.render.render(write_still=True)
-        if not Path(scene.render.filepath).is_file():
-            raise RuntimeError(f"the render did not write {scene.render.filepath}")
-        print(f"20_blender_scene: rendered {scene.render.filepath} in {time.perf_counter() - t0:.1f} s")
+        render_still(scene, args, out / "preview.png", args.engine)
+        print(f"20_blender_scene: rendered {out / 'preview.png'} in {time.perf_counter() - t0:.1f} s")
     if not args.no_pov:
         bpy.context.view_layer.objects.active = terrain
         pov = out / "scene.pov"

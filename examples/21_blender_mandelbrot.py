@@ -103,17 +103,8 @@ def main():
 
     blend = out / "scene.blend"
     bpy.ops.wm.save_as_mainfile(filepath=str(blend), check_existing=False)
-    scene.render.engine = "CYCLES"
-    scene.render.resolution_x, scene.render.resolution_y = args.width, args.height
-    scene.render.resolution_percentage = 100
-    scene.cycles.samples = args.samples
-    scene.cycles.device = "CPU"
-    scene.cycles.use_denoising = False
-    scene.render.filepath = str(out / "preview.png")
     t0 = time.perf_counter()
-    bpy.ops.render.render(write_still=True)
-    if not Path(scene.render.filepath).is_file():
-        raise RuntimeError(f"the render did not write {scene.render.filepath}")
+    scene20.render_still(scene, args, out / "preview.png")
     print(f"21_blender_mandelbrot: wrote {blend} and rendered {scene.render.filepath} in "
           f"{time.perf_counter() - t0:.1f} s")
 

@@ -73,16 +73,7 @@ def frame_and_render(obj, size, sea, args, path, material):
     scene.camera = camera
     scene.world = scene.world or bpy.data.worlds.new("World")
     scene20.sky(scene.world)
-    scene.render.engine = "CYCLES"
-    scene.cycles.samples = args.samples
-    scene.cycles.device = "CPU"
-    scene.cycles.use_denoising = False
-    scene.render.resolution_x, scene.render.resolution_y = args.width, args.height
-    scene.render.resolution_percentage = 100
-    scene.render.filepath = str(path)
-    bpy.ops.render.render(write_still=True)
-    if not path.is_file():
-        raise RuntimeError(f"the render did not write {path}")
+    scene20.render_still(scene, args, path)
     return min(zs), max(zs)
 
 

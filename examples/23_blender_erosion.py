@@ -64,14 +64,7 @@ def main():
     scene.world = world
     world.use_nodes = True
     world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.45, 0.6, 0.85, 1)
-    scene.render.engine = "CYCLES"
-    scene.cycles.samples = args.samples
-    scene.cycles.device = "CPU"
-    scene.cycles.use_denoising = False  # Debian's Blender is built without OpenImageDenoise
-    scene.render.resolution_x, scene.render.resolution_y = args.width, args.height
-    scene.render.resolution_percentage = 100
-    scene.render.filepath = str(out / "before-after.png")
-    bpy.ops.render.render(write_still=True)
+    scene20.render_still(scene, args, out / "before-after.png")
     bpy.ops.wm.save_as_mainfile(filepath=str(out / "erosion.blend"))
     print(f"wrote {out / 'before-after.png'} and {out / 'erosion.blend'}")
 

@@ -64,14 +64,8 @@ def grey_material():
     return mat
 
 
-def stage(args):
+def stage():
     scene = bpy.context.scene
-    scene.render.engine = "CYCLES"
-    scene.cycles.samples = args.samples
-    scene.cycles.device = "CPU"
-    scene.cycles.use_denoising = False
-    scene.render.resolution_x, scene.render.resolution_y = args.width, args.height
-    scene.render.resolution_percentage = 100
     scene.render.film_transparent = False
     world = bpy.data.worlds.get("World") or bpy.data.worlds.new("World")
     scene.world = world
@@ -96,7 +90,7 @@ def stage(args):
 
 def render(folder, mode, lod, path, args):
     clear_scene()
-    stage(args)
+    stage()
     result = bpy.ops.import_scene.fracterra_tiles(filepath=str(Path(folder) / "manifest.json"), lod=lod, mode=mode,
                                                   size=10.0)
     if result != {"FINISHED"}:
@@ -105,8 +99,7 @@ def render(folder, mode, lod, path, args):
     for obj in bpy.context.scene.objects:
         if obj.type == "MESH":
             obj.data.materials.append(mat)
-    bpy.context.scene.render.filepath = str(path)
-    bpy.ops.render.render(write_still=True)
+    scene20.render_still(bpy.context.scene, args, path)
 
 
 def montage(paths, out, w, h):
