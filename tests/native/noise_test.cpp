@@ -155,8 +155,10 @@ TEST(SpectralSynthesis, RowSpectraSlopeIsMinusTwoHPlusOne) {
 
 TEST(SpectralSynthesis, HasZeroMeanAndTheRequestedStd) {
   // No DC term: the mean is 0 up to float rounding. The std is sigma in
-  // expectation; one 256^2 field's variance is dominated by its ~10 lowest
-  // modes (H = 0.8), so it scatters by tens of percent: a factor-2 window.
+  // expectation (the waves up to 256 cycles; a 256^2 field lacks those above
+  // 128, under 1% of the variance at H 0.8); one field's variance is
+  // dominated by its ~10 lowest modes, so it scatters by tens of percent: a
+  // factor-2 window.
   ft_terrain_params p = params(FT_TERRAIN_SPECTRAL, 256);
   p.sigma = 3.0;
   const HeightStats s = generate_terrain(p).stats();

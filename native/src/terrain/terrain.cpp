@@ -71,8 +71,9 @@ static_assert(int(kFbmStandard) == FT_FBM_STANDARD && int(kFbmRidged) == FT_FBM_
 //  - the Voss profile: one per level: S = 6 (1 + levels);
 //  - interpolated: the corners plus one per cycle, each <= sigma;
 //  - spectral: |sum c_k| <= sqrt(N) (sum |c_k|^2)^(1/2) over the N = W H
-//    coefficients (Cauchy-Schwarz), whose power is scaled to sigma^2 with
-//    |g| <= 6 on both parts: S = 6 sqrt(2 W H);
+//    coefficients (Cauchy-Schwarz), whose power is sigma^2 times at most
+//    spectral_power_ratio_bound (the waves finer than sigma's reference
+//    band add to it) with |g| <= 6 on both parts: S = 6 sqrt(2 W H ratio);
 //  - fbm: fbm_height_bound, the octave recurrences at the noise's bound.
 // B must stay below FLT_MAX / 8: the generators add four neighbours before
 // averaging and every consumer takes max - min.
@@ -115,7 +116,9 @@ void check_terrain_heights(const ft_terrain_params& p) {
     case FT_TERRAIN_MANDELBROT:  // h = sigma (1 - (1 + s)^(-1/2)) lies in [0, sigma)
       return check_height_bound("sigma", p.sigma, 1.0);
     case FT_TERRAIN_SPECTRAL:
-      return check_height_bound("sigma", p.sigma, kMaxGaussian * std::sqrt(2.0 * p.width * p.height));
+      return check_height_bound("sigma", p.sigma,
+                                kMaxGaussian * std::sqrt(2.0 * p.width * p.height *
+                                                         spectral_power_ratio_bound(p.width, p.height, p.hurst)));
     case FT_TERRAIN_INTERPOLATED: {
       const double d0 = std::max(p.width, p.height);
       return check_height_bound("sigma", p.sigma, kMaxGaussian * (2 + std::ceil(std::log(d0) / std::log(p.lacunarity))));
