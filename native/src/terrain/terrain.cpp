@@ -51,11 +51,11 @@ void check_reference(const float* ref, int32_t size, int levels, bool periodic) 
 }
 
 // The noise layer's enums carry the ABI's values, so basis and variant pass through.
-static_assert(int(kBasisValue) == FT_BASIS_VALUE && int(kBasisGradient) == FT_BASIS_GRADIENT &&
-              int(kBasisSimplex) == FT_BASIS_SIMPLEX && int(kBasisCellularF1) == FT_BASIS_CELLULAR_F1 &&
-              int(kBasisCellularF2F1) == FT_BASIS_CELLULAR_F2F1);
-static_assert(int(kFbmStandard) == FT_FBM_STANDARD && int(kFbmRidged) == FT_FBM_RIDGED &&
-              int(kFbmHybrid) == FT_FBM_HYBRID && int(kFbmHetero) == FT_FBM_HETERO);
+static_assert(int(noise::kBasisValue) == FT_BASIS_VALUE && int(noise::kBasisGradient) == FT_BASIS_GRADIENT &&
+              int(noise::kBasisSimplex) == FT_BASIS_SIMPLEX && int(noise::kBasisCellularF1) == FT_BASIS_CELLULAR_F1 &&
+              int(noise::kBasisCellularF2F1) == FT_BASIS_CELLULAR_F2F1);
+static_assert(int(noise::kFbmStandard) == FT_FBM_STANDARD && int(noise::kFbmRidged) == FT_FBM_RIDGED &&
+              int(noise::kFbmHybrid) == FT_FBM_HYBRID && int(noise::kFbmHetero) == FT_FBM_HETERO);
 
 // Float range. Heights are float32: a sigma large enough to overflow them
 // (`--sigma 1e300`) used to be noticed only when the file was written, after
@@ -87,8 +87,8 @@ void check_height_bound(const std::string& what, double sigma, double per_sigma,
           "be at most " + format_number((kHeightLimit - base) / per_sigma));
 }
 
-FbmConfig fbm_config(const ft_terrain_params& p) {
-  FbmConfig c;
+noise::FbmConfig fbm_config(const ft_terrain_params& p) {
+  noise::FbmConfig c;
   c.width = p.width, c.height = p.height, c.octaves = p.octaves, c.lacunarity = p.lacunarity;
   c.gain = p.gain, c.hurst = p.hurst, c.basis = p.basis, c.variant = p.variant;
   c.frequency = p.frequency, c.offset = p.offset, c.rotation = p.octave_rotation, c.warp = p.warp;
@@ -122,7 +122,7 @@ void check_terrain_heights(const ft_terrain_params& p) {
     }
     default: {
       double unscaled = 0;
-      const double per_sigma = fbm_height_bound(fbm_config(p), &unscaled);
+      const double per_sigma = noise::fbm_height_bound(fbm_config(p), &unscaled);
       if (!(unscaled <= kHeightLimit))
         invalid("the fbm octave sum could reach " + format_number(unscaled) + " with offset " +
                 format_number(p.offset) + " and " + std::to_string(p.octaves) +
@@ -188,7 +188,7 @@ void validate_terrain(const ft_terrain_params& p, bool whole) {
       check_allocation(checked_bytes(uint64_t(p.width), uint64_t(p.height), sizeof(float)),
                        "a " + std::to_string(p.width) + " x " + std::to_string(p.height) + " terrain");
     if (p.reference) invalid("reference points are supported by the midpoint and additions methods only");
-    if (p.method == FT_TERRAIN_FBM) validate_fbm(fbm_config(p), max_side);
+    if (p.method == FT_TERRAIN_FBM) noise::validate_fbm(fbm_config(p), max_side);
     if (p.method == FT_TERRAIN_INTERPOLATED) check_interpolated_lacunarity(p.lacunarity);
     if (p.method == FT_TERRAIN_MANDELBROT) validate_mandelbrot(mandelbrot_config(p), max_side);
   }
@@ -228,7 +228,7 @@ Heightfield generate_terrain_samples(const ft_terrain_params& p) {
     case FT_TERRAIN_ADDITIONS:
       return diamond_square(diamond_square_config(p));
     case FT_TERRAIN_FBM:
-      return fbm(fbm_config(p));
+      return noise::fbm(fbm_config(p));
     case FT_TERRAIN_SPECTRAL:
       return spectral_synthesis({p.width, p.height, p.hurst, p.sigma, p.seed, p.threads,
                                  Progress(p.progress, p.progress_user)});
@@ -320,7 +320,7 @@ Heightfield generate_terrain_window(const ft_terrain_params& p, int lod, int64_t
       hf = diamond_square_window(diamond_square_config(p), Window{x0, y0, w, h}, lod);
       break;
     case FT_TERRAIN_FBM:
-      hf = fbm_window(fbm_config(p), x0, y0, w, h);
+      hf = noise::fbm_window(fbm_config(p), x0, y0, w, h);
       break;
     case FT_TERRAIN_MANDELBROT:
       hf = mandelbrot_window(mandelbrot_config(p), x0, y0, w, h);
