@@ -73,10 +73,10 @@ int run(const CoastlineCli& c) {
     write_polylines(set, c.out);
   }
   if (!c.preview.empty()) {
-    ReliefOptions ro;
+    preview::ReliefOptions ro;
     const HeightStats s = hf.stats();
     ro.sea_fraction = s.max > s.min ? std::clamp((level - s.min) / (s.max - s.min), 0.0, 1.0) : 0.0;
-    std::vector<uint8_t> rgb = shaded_relief(hf, ro);
+    std::vector<uint8_t> rgb = preview::shaded_relief(hf, ro);
     draw_chains(rgb, hf.width(), hf.height(), set);
     write_png_rgb(c.preview, hf.width(), hf.height(), rgb.data());
   }

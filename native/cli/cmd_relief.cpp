@@ -12,7 +12,7 @@ namespace {
 
 struct ReliefCli {
   std::string in, out;
-  ReliefOptions o;
+  preview::ReliefOptions o;
 };
 
 Registration reg({"relief", "Draw a shaded-relief preview PNG of a heightfield",
@@ -30,7 +30,7 @@ Registration reg({"relief", "Draw a shaded-relief preview PNG of a heightfield",
                         ->capture_default_str();
                     return [c] {
                       const Heightfield hf = read_heightfield(c->in);
-                      const auto rgb = shaded_relief(hf, c->o);
+                      const auto rgb = preview::shaded_relief(hf, c->o);
                       write_png_rgb(c->out, hf.width(), hf.height(), rgb.data());
                       return 0;
                     };
