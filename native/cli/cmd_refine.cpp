@@ -20,7 +20,7 @@ struct RefineCli {
   std::string nodata = "avoid";
   // seed, method and threads are flags from the table; the other fields have
   // their own forms here (+K, auto, X,Y[,SIDE]).
-  ft_dem_refine_params p = defaults_of<ft_dem_refine_params>(dem_refine_param_table());
+  ft_dem_refine_params p = defaults_of<ft_dem_refine_params>(refine::dem_refine_param_table());
 };
 
 // "auto" -> `fallback` (the "measure it" value); otherwise a number.
@@ -63,9 +63,9 @@ int run(RefineCli& o) {
   const NodataPolicy policy = o.nodata == "fill" ? NodataPolicy::fill
                               : o.nodata == "refuse" ? NodataPolicy::refuse
                                                      : NodataPolicy::keep;
-  const DemRefineConfig c = dem_refine_config(o.p);  // the ranges, before the DEM is read
+  const refine::DemRefineConfig c = refine::dem_refine_config(o.p);  // the ranges, before the DEM is read
   const Heightfield dem = read_heightfield(o.in, policy);
-  const DemRefineResult r = refine_dem(dem, c);
+  const refine::DemRefineResult r = refine::refine_dem(dem, c);
   write_heightfield(r.terrain, o.out);
   nlohmann::json j = {{"dem", {dem.width(), dem.height()}},
                       {"window", {{"x", r.window_x}, {"y", r.window_y}, {"side", r.window_side}}},
@@ -103,7 +103,7 @@ Registration reg({"refine", "Refine a real DEM: its samples kept, finer levels a
                     app.add_option("--sigma", o->sigma,
                                    "auto (from the DEM's increments at one pixel) or the vertical scale > 0")
                         ->capture_default_str();
-                    add_param_flags(app, dem_refine_param_table(), &o->p,
+                    add_param_flags(app, refine::dem_refine_param_table(), &o->p,
                                     {"levels_added", "hurst", "sigma", "window_x", "window_y", "window_side"});
                     app.add_option("--window", o->window,
                                    "X,Y[,SIDE]: the window's top-left sample (and side 2^m + 1); default: the "

@@ -60,9 +60,9 @@ TEST(RealDem, ReadsWithItsGeoreferenceAndCountsItsNodata) {
 
 TEST(RealDem, RefinementKeepsTheDemAtItsNodes) {
   const Heightfield dem = read_heightfield(dem_path(), NodataPolicy::keep);
-  DemRefineConfig c;
+  refine::DemRefineConfig c;
   c.levels_added = 3;
-  const DemRefineResult r = refine_dem(dem, c);
+  const refine::DemRefineResult r = refine::refine_dem(dem, c);
   ASSERT_EQ(r.window_side, 33);  // the largest 2^m + 1 square inside Luxembourg
   ASSERT_EQ(r.terrain.width(), 257);
   for (int y = 0; y < 33; ++y)
@@ -96,12 +96,12 @@ TEST(RealDem, RefinedScalingContinuesTheDemsLineAcrossTheJunction) {
   constexpr int K = 3;
   const std::vector<uint64_t> seeds = {1, 2, 3, 4};
   std::vector<double> mean(K + 4, 0.0);  // log2 variance at fine lags 2^0 .. 2^(K + 3)
-  DemRefineResult r;
+  refine::DemRefineResult r;
   for (uint64_t seed : seeds) {
-    DemRefineConfig c;
+    refine::DemRefineConfig c;
     c.levels_added = K;
     c.seed = seed;
-    r = refine_dem(dem, c);
+    r = refine::refine_dem(dem, c);
     for (int k = 0; k < K + 4; ++k) mean[k] += std::log2(increment_variance(r.terrain, 1 << k)) / double(seeds.size());
   }
   ASSERT_TRUE(r.hurst_measured && r.sigma_measured);

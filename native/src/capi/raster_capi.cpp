@@ -9,7 +9,7 @@
 
 using ft::capi::guarded;
 
-static_assert(ft::kRefineMidpoint == FT_TERRAIN_MIDPOINT && ft::kRefineAdditions == FT_TERRAIN_ADDITIONS,
+static_assert(ft::refine::kRefineMidpoint == FT_TERRAIN_MIDPOINT && ft::refine::kRefineAdditions == FT_TERRAIN_ADDITIONS,
               "ft_dem_refine_params.method takes the terrain's method values");
 
 extern "C" {
@@ -37,7 +37,7 @@ FT_API ft_status ft_heightfield_write(const ft_heightfield* hf, const char* path
 }
 
 FT_API void ft_dem_refine_params_init(ft_dem_refine_params* p) {
-  if (p) *p = ft::defaults_of<ft_dem_refine_params>(ft::dem_refine_param_table());
+  if (p) *p = ft::defaults_of<ft_dem_refine_params>(ft::refine::dem_refine_param_table());
 }
 
 FT_API ft_status ft_dem_refine(const ft_heightfield* dem, const ft_dem_refine_params* p, ft_heightfield** out,
@@ -47,8 +47,8 @@ FT_API ft_status ft_dem_refine(const ft_heightfield* dem, const ft_dem_refine_pa
     ft::check_not_null("dem", dem);
     ft::check_not_null("params", p);
     if (report) ft::check_struct_size(report->struct_size, sizeof(ft_dem_refine_report), "ft_dem_refine_report");
-    const ft::DemRefineConfig c = ft::dem_refine_config(ft::upgraded(ft::dem_refine_param_table(), *p));
-    ft::DemRefineResult r = ft::refine_dem(dem->hf, c);
+    const ft::refine::DemRefineConfig c = ft::refine::dem_refine_config(ft::upgraded(ft::refine::dem_refine_param_table(), *p));
+    ft::refine::DemRefineResult r = ft::refine::refine_dem(dem->hf, c);
     if (report) {
       report->window_x = r.window_x;
       report->window_y = r.window_y;

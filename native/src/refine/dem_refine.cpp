@@ -9,7 +9,7 @@
 #include "core/memory.hpp"
 #include "terrain/terrain.hpp"
 
-namespace ft {
+namespace ft::refine {
 namespace {
 
 // Counts of nodata samples in every rectangle, by a summed-area table.
@@ -180,4 +180,4 @@ DemRefineResult refine_dem(const Heightfield& dem, const DemRefineConfig& c) {
   return r;
 }
 
-}  // namespace ft
+}  // namespace ft::refine

@@ -36,7 +36,7 @@
 #include "core/heightfield.hpp"
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::refine {
 
 // The most levels one refinement adds (the result is also held to the memory cap).
 constexpr int kMaxRefineLevels = 12;
@@ -71,4 +71,4 @@ double centre_kriging_factor(double hurst);
 // `dem` may hold NaN (nodata); the window never does.
 DemRefineResult refine_dem(const Heightfield& dem, const DemRefineConfig& config);
 
-}  // namespace ft
+}  // namespace ft::refine

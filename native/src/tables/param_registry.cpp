@@ -23,7 +23,7 @@ const ParamTable& param_table(int32_t kind) {
     case FT_PARAMS_POV_SWEEP: return pov::sweep_param_table();
     case FT_PARAMS_HURST: return hurst_param_table();
     case FT_PARAMS_CLOUDS: return clouds_param_table();
-    case FT_PARAMS_DEM_REFINE: return dem_refine_param_table();
+    case FT_PARAMS_DEM_REFINE: return refine::dem_refine_param_table();
     case FT_PARAMS_EROSION: return erosion_param_table();
     default:
       invalid("params kind must be in 0.." + std::to_string(FT_PARAMS_KIND_COUNT - 1) + ", got " +
