@@ -83,14 +83,14 @@ void BM_PlainOpenSubdiv(benchmark::State& state) {
 void BM_Fractalize(benchmark::State& state) {
   const Case& c = kCases[state.range(0)];
   const ft::Mesh m = ft::read_obj(kMeshes + c.file);
-  ft_fractalize_params p = ft::default_fractalize_params();
+  ft_fractalize_params p = ft::subdiv::default_fractalize_params();
   p.scheme = c.scheme;
   p.levels = c.levels;
   p.threads = int(state.range(1));
   p.sigma = state.range(2) ? 0.1 : 0.0;
   size_t faces = 0;
   for (auto _ : state) {
-    const ft::Mesh out = ft::fractalize(m, p);
+    const ft::Mesh out = ft::subdiv::fractalize(m, p);
     faces = out.face_count();
     benchmark::DoNotOptimize(out.positions.data());
   }

@@ -18,7 +18,7 @@ const ParamTable& param_table(int32_t kind) {
     case FT_PARAMS_TERRAIN: return terrain_param_table();
     case FT_PARAMS_PROFILE: return profile_param_table();
     case FT_PARAMS_POLYLINE: return polyline_param_table();
-    case FT_PARAMS_FRACTALIZE: return fractalize_param_table();
+    case FT_PARAMS_FRACTALIZE: return subdiv::fractalize_param_table();
     case FT_PARAMS_POV_SCENE: return pov::scene_param_table();
     case FT_PARAMS_POV_SWEEP: return pov::sweep_param_table();
     case FT_PARAMS_HURST: return hurst_param_table();
