@@ -227,7 +227,7 @@ TEST_F(Cli, CommandsWithATableOfferEveryOneOfItsSettings) {
   for (const Case& c : cases) {
     const std::string help = run(std::string(c.command) + " --help").out;
     int flags = 0;
-    for (const ft_param_info& r : param_table(c.kind).rows) {
+    for (const ft_param_info& r : tables::param_table(c.kind).rows) {
       const ft_param_info* row = &r;
       if (row->flags & (FT_PARAM_FLAG_STRUCT_SIZE | FT_PARAM_FLAG_DATA) || row->count != 1 ||
           c.own_form.count(row->name))

@@ -11,7 +11,7 @@
 #include "subdiv/fractalize_params.hpp"
 #include "terrain/terrain_params.hpp"
 
-namespace ft {
+namespace ft::tables {
 
 const ParamTable& param_table(int32_t kind) {
   switch (kind) {
@@ -31,4 +31,4 @@ const ParamTable& param_table(int32_t kind) {
   }
 }
 
-}  // namespace ft
+}  // namespace ft::tables
