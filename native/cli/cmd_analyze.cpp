@@ -141,21 +141,21 @@ json coastline_report(const Heightfield& hf, BoxCountResult* out) {
 }
 
 // A log-log panel: the measured points and the fitted power law over them.
-SvgPanel fit_panel(const std::string& title, const std::string& xl, const std::string& yl,
+io::SvgPanel fit_panel(const std::string& title, const std::string& xl, const std::string& yl,
                    const std::vector<double>& x, const std::vector<double>& y, double slope, double intercept,
                    const std::string& fit_label) {
-  SvgPanel p;
+  io::SvgPanel p;
   p.title = title, p.x_label = xl, p.y_label = yl, p.log_x = p.log_y = true;
-  SvgSeries data;
+  io::SvgSeries data;
   data.label = "measured", data.x = x, data.y = y, data.line = false, data.points = true;
-  SvgSeries fit;
+  io::SvgSeries fit;
   fit.label = fit_label, fit.dashed = true;
   for (double v : x) fit.x.push_back(v), fit.y.push_back(std::exp(intercept) * std::pow(v, slope));
   p.series = {data, fit};
   return p;
 }
 
-SvgPanel estimate_panel(const Named& n) {
+io::SvgPanel estimate_panel(const Named& n) {
   const HurstEstimate& e = n.e;
   char label[96];
   std::snprintf(label, sizeof label, "H = %.3f +- %.3f, D = %.3f", e.hurst, e.std_error, e.dimension);
@@ -167,7 +167,7 @@ SvgPanel estimate_panel(const Named& n) {
                    lags ? (mad ? "E|dX|" : "0.5 E[dX^2]") : "power", e.x, e.y, e.fit.slope, e.fit.intercept, label);
 }
 
-SvgPanel box_panel(const std::string& title, const std::vector<double>& sizes, const std::vector<int64_t>& counts,
+io::SvgPanel box_panel(const std::string& title, const std::vector<double>& sizes, const std::vector<int64_t>& counts,
                    double dimension, double std_error) {
   std::vector<double> x(sizes), y(counts.begin(), counts.end());
   // Fit line through the centroid of the logs with slope -D.
@@ -179,21 +179,21 @@ SvgPanel box_panel(const std::string& title, const std::vector<double>& sizes, c
 }
 
 int run(const AnalyzeCli& c) {
-  const std::string ext = extension_of(c.file);
+  const std::string ext = io::extension_of(c.file);
   json report = {{"file", c.file}};
   std::vector<Named> fits;
-  SvgFigure fig;
+  io::SvgFigure fig;
   fig.title = c.file;
   if (ext == ".npy" || ext == ".png" || ext == ".pgm") {
     Heightfield hf;
     std::vector<float> profile;
     if (ext == ".npy") {
-      NpyArray a = read_npy(c.file);
+      io::NpyArray a = io::read_npy(c.file);
       const bool one_d = a.shape.size() == 1 || (a.shape.size() == 2 && (a.shape[0] == 1 || a.shape[1] == 1));
       if (one_d) profile = std::move(a.values);
-      else hf = read_heightfield(c.file);
+      else hf = io::read_heightfield(c.file);
     } else {
-      hf = read_heightfield(c.file);
+      hf = io::read_heightfield(c.file);
       if (hf.height() == 1 || hf.width() == 1) profile.assign(hf.data(), hf.data() + hf.size());
     }
     if (!profile.empty()) {
@@ -214,13 +214,13 @@ int run(const AnalyzeCli& c) {
         fig.panels.push_back(box_panel("median coastline: box counting", coast.sizes, coast.counts, coast.dimension,
                                        coast.std_error));
     }
-    std::vector<SvgPanel> panels;
+    std::vector<io::SvgPanel> panels;
     for (const Named& n : fits) panels.push_back(estimate_panel(n));
     fig.panels.insert(fig.panels.begin(), panels.begin(), panels.end());
   } else if (ext == ".csv" || ext == ".json") {
     // Curves have a dimension, not a Hurst exponent of their own; for a
     // coastline-like curve (a level set of an fBm surface) H = 2 - D.
-    const PolylineSet set = read_polylines(c.file);
+    const PolylineSet set = io::read_polylines(c.file);
     report["kind"] = "polylines";
     report.update(polyline_report(set));
     const json& b = report["box_counting"];

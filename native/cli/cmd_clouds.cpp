@@ -21,7 +21,7 @@ Registration reg({"clouds",
                   "Clouds from a heightfield (Feder): black below the threshold, above it grey ~ log(elevation)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<CloudsCli>();
-                    app.add_option("--in", c->in, kHeightfieldReadHelp)->required();
+                    app.add_option("--in", c->in, io::kHeightfieldReadHelp)->required();
                     // threshold and threshold_is_quantile as one flag: a height, or qF.
                     app.add_option("--threshold", c->threshold,
                                    "height below which the sky is black, or a quantile qF with F in [0, 1]")
@@ -31,11 +31,11 @@ Registration reg({"clouds",
                     app.add_option("--out", c->out, "output grey .png (an image map for POV-Ray or Blender)")
                         ->required();
                     return [c] {
-                      const Heightfield hf = read_heightfield(c->in);
+                      const Heightfield hf = io::read_heightfield(c->in);
                       const LevelSpec level = parse_level(c->threshold, "--threshold");
                       c->p.threshold = level.value;
                       c->p.threshold_is_quantile = level.quantile;
-                      write_png(c->out, clouds_image(hf, cloud_options(c->p)));
+                      io::write_png(c->out, clouds_image(hf, cloud_options(c->p)));
                       return 0;
                     };
                   },

@@ -45,7 +45,7 @@ void draw_chains(std::vector<uint8_t>& rgb, int32_t w, int32_t h, const Polyline
 }
 
 int run(const CoastlineCli& c) {
-  const Heightfield hf = read_heightfield(c.in);
+  const Heightfield hf = io::read_heightfield(c.in);
   const double level = resolve_level(hf, parse_level(c.level, "--level"));
   const PolylineSet set = marching_squares(hf, level);
   if (set.line_count() == 0) {
@@ -68,9 +68,9 @@ int run(const CoastlineCli& c) {
     const double k = hf.world_size() / double(hf.width() - 1);
     PolylineSet scaled = set;
     for (Vec3& p : scaled.points) p[0] *= k, p[1] *= k;
-    write_polylines(scaled, c.out);
+    io::write_polylines(scaled, c.out);
   } else if (!c.out.empty()) {
-    write_polylines(set, c.out);
+    io::write_polylines(set, c.out);
   }
   if (!c.preview.empty()) {
     preview::ReliefOptions ro;
@@ -78,7 +78,7 @@ int run(const CoastlineCli& c) {
     ro.sea_fraction = s.max > s.min ? std::clamp((level - s.min) / (s.max - s.min), 0.0, 1.0) : 0.0;
     std::vector<uint8_t> rgb = preview::shaded_relief(hf, ro);
     draw_chains(rgb, hf.width(), hf.height(), set);
-    write_png_rgb(c.preview, hf.width(), hf.height(), rgb.data());
+    io::write_png_rgb(c.preview, hf.width(), hf.height(), rgb.data());
   }
   int64_t islands = 0, lakes = 0, open = 0;
   for (int64_t i = 0; i < set.line_count(); ++i) {
@@ -95,7 +95,7 @@ Registration reg({"coastline",
                   "Level set (coastline) of a heightfield as polylines: marching squares, land on the left",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<CoastlineCli>();
-                    app.add_option("--in", c->in, kHeightfieldReadHelp)->required();
+                    app.add_option("--in", c->in, io::kHeightfieldReadHelp)->required();
                     app.add_option("--level", c->level,
                                    "height of the level set, or a quantile of the samples as qF with F in [0, 1] "
                                    "(q0.5 = the median)")

@@ -25,7 +25,7 @@ struct FractalizeOptions {
 };
 
 int run(const FractalizeOptions& o) {
-  const Mesh base = read_obj(o.in);
+  const Mesh base = io::read_obj(o.in);
   Stopwatch clock;
   Mesh mesh;
   try {
@@ -40,7 +40,7 @@ int run(const FractalizeOptions& o) {
   char comment[256];
   std::snprintf(comment, sizeof comment, "fractalize levels=%d hurst=%g sigma=%g seed=%llu scheme=%d mode=%d",
                 o.p.levels, o.p.hurst, o.p.sigma, (unsigned long long)o.p.seed, o.p.scheme, o.p.mode);
-  if (!o.out.empty()) write_obj(mesh, o.out, std::string(comment) + " from " + o.in);
+  if (!o.out.empty()) io::write_obj(mesh, o.out, std::string(comment) + " from " + o.in);
   if (!o.pov.empty()) pov::write_mesh2(mesh, o.pov, o.pov_name);
   if (o.stats) {
     nlohmann::json j = {{"seconds", seconds},

@@ -70,7 +70,7 @@ int run(bool json, const std::string& out) {
   }
   if (!json) return 0;
   if (out.empty()) std::printf("%s\n", all.dump(1).c_str());
-  else write_file_atomically(out, all.dump(1) + "\n");
+  else io::write_file_atomically(out, all.dump(1) + "\n");
   return 0;
 }
 

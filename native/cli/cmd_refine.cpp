@@ -60,13 +60,13 @@ int run(RefineCli& o) {
   }
   // Nodata: by default the window avoids it; "fill" fills it first (then any
   // window will do), "refuse" refuses a DEM that has any.
-  const NodataPolicy policy = o.nodata == "fill" ? NodataPolicy::fill
-                              : o.nodata == "refuse" ? NodataPolicy::refuse
-                                                     : NodataPolicy::keep;
+  const io::NodataPolicy policy = o.nodata == "fill" ? io::NodataPolicy::fill
+                              : o.nodata == "refuse" ? io::NodataPolicy::refuse
+                                                     : io::NodataPolicy::keep;
   const refine::DemRefineConfig c = refine::dem_refine_config(o.p);  // the ranges, before the DEM is read
-  const Heightfield dem = read_heightfield(o.in, policy);
+  const Heightfield dem = io::read_heightfield(o.in, policy);
   const refine::DemRefineResult r = refine::refine_dem(dem, c);
-  write_heightfield(r.terrain, o.out);
+  io::write_heightfield(r.terrain, o.out);
   nlohmann::json j = {{"dem", {dem.width(), dem.height()}},
                       {"window", {{"x", r.window_x}, {"y", r.window_y}, {"side", r.window_side}}},
                       {"levels_added", c.levels_added},
@@ -93,7 +93,7 @@ Registration reg({"refine", "Refine a real DEM: its samples kept, finer levels a
                     app.add_option("--in", o->in, "the DEM: any raster GDAL reads (GeoTIFF, .hgt, .asc, ...)")
                         ->required()
                         ->check(CLI::ExistingFile);
-                    app.add_option("--out", o->out, std::string("the refined terrain: ") + kHeightfieldWriteFormats +
+                    app.add_option("--out", o->out, std::string("the refined terrain: ") + io::kHeightfieldWriteFormats +
                                                         " (.tif keeps the georeference)")
                         ->required();
                     app.add_option("--levels", o->levels, "+K: levels added (1..12); the side grows 2^K times")

@@ -18,7 +18,7 @@ struct ReliefCli {
 Registration reg({"relief", "Draw a shaded-relief preview PNG of a heightfield",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<ReliefCli>();
-                    app.add_option("--in", c->in, kHeightfieldReadHelp)->required()->check(CLI::ExistingFile);
+                    app.add_option("--in", c->in, io::kHeightfieldReadHelp)->required()->check(CLI::ExistingFile);
                     app.add_option("--out", c->out, "output RGB .png")->required();
                     app.add_option("--sea-fraction", c->o.sea_fraction, "fraction of the height range under water, 0..1")
                         ->capture_default_str();
@@ -29,9 +29,9 @@ Registration reg({"relief", "Draw a shaded-relief preview PNG of a heightfield",
                     app.add_option("--sun-elevation", c->o.sun_elevation, "degrees above the horizon, 0..90")
                         ->capture_default_str();
                     return [c] {
-                      const Heightfield hf = read_heightfield(c->in);
+                      const Heightfield hf = io::read_heightfield(c->in);
                       const auto rgb = preview::shaded_relief(hf, c->o);
-                      write_png_rgb(c->out, hf.width(), hf.height(), rgb.data());
+                      io::write_png_rgb(c->out, hf.width(), hf.height(), rgb.data());
                       return 0;
                     };
                   },

@@ -77,7 +77,7 @@ int run(SceneOptions& o) {
     if (!std::isnan(o.water)) p.has_sea = true, p.sea_level = o.water;
     p.tiles = &tiled;
   } else if (!o.terrain.empty()) {
-    hf = read_heightfield(o.terrain);
+    hf = io::read_heightfield(o.terrain);
     if (!std::isnan(o.sea_fraction) && !std::isnan(o.water)) invalid("give --sea-fraction or --water, not both");
     // The terrain's own world size (recorded by fracterra) unless --size says otherwise.
     const double size = o.size > 0 ? o.size : hf.world_size() > 0 ? hf.world_size() : 1.0;
@@ -90,7 +90,7 @@ int run(SceneOptions& o) {
   if (o.radii.size() > o.polylines.size()) invalid("more --radius options than --polyline files");
   if (o.radius_scales.size() > o.polylines.size()) invalid("more --radius-scale options than --polyline files");
   for (size_t i = 0; i < o.polylines.size(); ++i) {
-    sets[i] = read_polylines(o.polylines[i]);
+    sets[i] = io::read_polylines(o.polylines[i]);
     pov::SceneLines l;
     l.set = &sets[i];
     l.kind = pov::LineKind(i < o.kinds.size() ? o.kinds[i] : int(pov::LineKind::kGeneric));
@@ -115,7 +115,7 @@ int run(SceneOptions& o) {
 Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (and render it)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<SceneOptions>();
-                    app.add_option("--terrain", o->terrain, kHeightfieldReadHelp)->check(CLI::ExistingFile);
+                    app.add_option("--terrain", o->terrain, io::kHeightfieldReadHelp)->check(CLI::ExistingFile);
                     app.add_option("--tiles", o->tiles,
                                    "a finished 16-bit tile set folder (fracterra tiles --format png16): its tiles "
                                    "as height_fields edge to edge, in the set's world size")

@@ -30,7 +30,7 @@ int run(const TilesOptions& o) {
   ft_terrain_params p = o.p;
   Heightfield reference;
   if (!o.reference.empty()) {
-    reference = read_heightfield(o.reference);
+    reference = io::read_heightfield(o.reference);
     if (reference.width() != reference.height())
       invalid("the reference grid '" + o.reference + "' must be square, 2^m + 1 per side");
     p.reference = reference.data();
@@ -76,7 +76,7 @@ Registration reg({"tiles", "Write a terrain larger than memory as a tile set (ti
                         ->capture_default_str();
                     app.add_option("--reference", o->reference,
                                    "reference grid (2^m + 1)^2 for midpoint/additions: " +
-                                       std::string(kHeightfieldReadHelp))
+                                       std::string(io::kHeightfieldReadHelp))
                         ->check(CLI::ExistingFile);
                     app.add_option("--out", o->out,
                                    "the tile set's folder (created; a folder holding another tile set is refused; "

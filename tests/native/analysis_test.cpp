@@ -314,7 +314,7 @@ class AnalysisCli : public ::testing::Test {
 };
 
 TEST_F(AnalysisCli, AnalyzeReportsRecommendedEstimateOfHeightfieldsAndProfiles) {
-  write_heightfield(terrain(FT_TERRAIN_MIDPOINT, 9, 0.7, 2), path("t.npy"));
+  io::write_heightfield(terrain(FT_TERRAIN_MIDPOINT, 9, 0.7, 2), path("t.npy"));
   CliResult r = run_cli("analyze " + path("t.npy"));
   ASSERT_EQ(r.status, 0) << r.out;
   nlohmann::json j = nlohmann::json::parse(r.out);
@@ -326,7 +326,7 @@ TEST_F(AnalysisCli, AnalyzeReportsRecommendedEstimateOfHeightfieldsAndProfiles) 
     EXPECT_TRUE(j["methods"][m].contains("std_error")) << m;
 
   const auto v = midpoint_profile(12, 0.4, 3);
-  write_npy(path("p.npy"), {int64_t(v.size())}, v.data());
+  io::write_npy(path("p.npy"), {int64_t(v.size())}, v.data());
   r = run_cli("analyze " + path("p.npy") + " --method madogram");
   ASSERT_EQ(r.status, 0) << r.out;
   j = nlohmann::json::parse(r.out);
@@ -343,7 +343,7 @@ TEST_F(AnalysisCli, AnalyzeReportsTheLibrarysAutoChoice) {
     ft_terrain_params p = default_terrain_params();
     p.method = FT_TERRAIN_FBM, p.width = w, p.height = h, p.seed = 4;
     const Heightfield hf = generate_terrain(p);
-    write_heightfield(hf, path("f.npy"));
+    io::write_heightfield(hf, path("f.npy"));
     const CliResult r = run_cli("analyze " + path("f.npy"));
     ASSERT_EQ(r.status, 0) << r.out;
     const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -367,7 +367,7 @@ TEST_F(AnalysisCli, AnalyzeRecommendsTheSpectralSlopeOffDyadicGrids) {
   // Measured 0.46-0.49 for H = 0.5 over seeds 1-3; the bound is the 0.1.
   ft_terrain_params p = default_terrain_params();
   p.method = FT_TERRAIN_SPECTRAL, p.width = 512, p.height = 512, p.hurst = 0.5, p.seed = 1;
-  write_heightfield(generate_terrain(p), path("s.npy"));
+  io::write_heightfield(generate_terrain(p), path("s.npy"));
   const CliResult r = run_cli("analyze " + path("s.npy") + " --plot " + path("fits.svg"));
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -381,7 +381,7 @@ TEST_F(AnalysisCli, AnalyzeRefusesUnreadableFilesWithAMessage) {
   CliResult r = run_cli("analyze " + path("missing.npy"));
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("fracterra: error:"), std::string::npos) << r.out;
-  write_file_atomically(path("junk.png"), "not a png at all");
+  io::write_file_atomically(path("junk.png"), "not a png at all");
   r = run_cli("analyze " + path("junk.png"));
   EXPECT_EQ(r.status, 1) << r.out;
   r = run_cli("analyze " + path("data.txt"));
@@ -389,10 +389,10 @@ TEST_F(AnalysisCli, AnalyzeRefusesUnreadableFilesWithAMessage) {
 }
 
 TEST_F(AnalysisCli, CloudsWritesAGreyPngOfTheChosenDepth) {
-  write_heightfield(terrain(FT_TERRAIN_ADDITIONS, 7, 0.8, 4), path("t.png"));
+  io::write_heightfield(terrain(FT_TERRAIN_ADDITIONS, 7, 0.8, 4), path("t.png"));
   CliResult r = run_cli("clouds --in " + path("t.png") + " --threshold q0.5 --bits 16 --out " + path("c.png"));
   ASSERT_EQ(r.status, 0) << r.out;
-  GrayImage img = read_png(path("c.png"));
+  GrayImage img = io::read_png(path("c.png"));
   EXPECT_EQ(img.width, 129);
   EXPECT_EQ(img.bit_depth, 16);
   // Half the samples are at or below the median: black.

@@ -261,11 +261,11 @@ TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
   const auto dir = std::filesystem::temp_directory_path() / ("ft_coastline_cli_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string t = (dir / "t.npy").string(), csv = (dir / "c.csv").string(), png = (dir / "p.png").string();
-  write_heightfield(terrain(8, 0.7, 4), t);
+  io::write_heightfield(terrain(8, 0.7, 4), t);
   std::string out;
   ASSERT_EQ(run_cli("coastline --in " + t + " --level q0.5 --out " + csv + " --preview " + png, &out), 0) << out;
   const nlohmann::json j = nlohmann::json::parse(out);
-  const PolylineSet s = read_polylines(csv);
+  const PolylineSet s = io::read_polylines(csv);
   EXPECT_EQ(j["chains"].get<int64_t>(), s.line_count());
   EXPECT_EQ(j["islands"].get<int>() + j["lakes"].get<int>() + j["open_chains"].get<int>(), s.line_count());
   EXPECT_EQ(j["islands"].get<int>(), count_kind(s, ChainKind::kIsland));
@@ -284,11 +284,11 @@ TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
   Heightfield sized = terrain(8, 0.7, 4);
   sized.set_world_size(10);
   const std::string wpng = (dir / "w.png").string();  // .png records the world size, .npy cannot
-  write_heightfield(sized, wpng);
+  io::write_heightfield(sized, wpng);
   ASSERT_EQ(run_cli("coastline --in " + wpng + " --level q0.5 --out " + csv, &out), 0) << out;
-  const PolylineSet g = read_polylines(csv);
+  const PolylineSet g = io::read_polylines(csv);
   ASSERT_EQ(run_cli("coastline --in " + wpng + " --level q0.5 --world --out " + csv, &out), 0) << out;
-  const PolylineSet w = read_polylines(csv);
+  const PolylineSet w = io::read_polylines(csv);
   ASSERT_EQ(w.vertex_count(), g.vertex_count());
   for (size_t i = 0; i < w.points.size(); ++i) {
     EXPECT_DOUBLE_EQ(w.points[i][0], g.points[i][0] * (10.0 / 256));
@@ -305,7 +305,7 @@ TEST(CoastlineCli, ALevelOutsideTheHeightsIsAClearErrorAndWritesNothing) {
   std::filesystem::create_directories(dir);
   const std::string t = (dir / "t.npy").string(), csv = (dir / "c.csv").string();
   const Heightfield hf = terrain(6, 0.7, 4);
-  write_heightfield(hf, t);
+  io::write_heightfield(hf, t);
   const HeightStats s = hf.stats();
   std::string out;
   for (double level : {s.max + 1, s.min - 1, 1e6}) {
@@ -332,7 +332,7 @@ TEST(CoastlineCli, WorldUnitsFromTerrainsOfEveryMethod) {
     ASSERT_EQ(run_cli(std::string("terrain --method ") + method + size + " --world-size 40 --out " + t, &out), 0)
         << out;
     ASSERT_EQ(run_cli("coastline --in " + t + " --world --out " + csv, &out), 0) << method << ": " << out;
-    const PolylineSet w = read_polylines(csv);
+    const PolylineSet w = io::read_polylines(csv);
     ASSERT_GT(w.vertex_count(), 0) << method;
     double hi = 0;
     for (const Vec3& p : w.points) hi = std::max({hi, p[0], p[1]});

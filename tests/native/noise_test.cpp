@@ -493,7 +493,7 @@ TEST(NoiseCli, WritesAnyWidthByHeightAndRejectsBadSizes) {
                             " --size 96x40 --octaves 5 --lacunarity 2.01 --hurst 0.7 --basis simplex "
                             "--variant hybrid --out " + out;
     ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-    const Heightfield hf = read_heightfield(out);
+    const Heightfield hf = io::read_heightfield(out);
     EXPECT_EQ(hf.width(), 96);
     EXPECT_EQ(hf.height(), 40);
   }

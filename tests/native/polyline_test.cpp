@@ -482,16 +482,16 @@ TEST(PolylineCli, WritesCsvThatReadsBackAndStudyWritesCsvAndSvg) {
   std::filesystem::create_directories(dir);
   const std::string csv = (dir / "l.csv").string();
   ASSERT_EQ(run_cli("polyline --method fpl --base \"0,0;1,0;1,1\" --spread 0.2 --depth 6 --seed 3 --out " + csv), 0);
-  const PolylineSet s = read_polylines(csv);
+  const PolylineSet s = io::read_polylines(csv);
   EXPECT_EQ(s.vertex_count(), 129);
   EXPECT_EQ(s.points[64], (Vec3{1, 0, 0}));
   EXPECT_NE(run_cli("polyline --base \"0,0\" --out " + csv), 0);
   EXPECT_NE(run_cli("polyline --spread -1 --out " + csv), 0);
   const std::string table = (dir / "s.csv").string(), svg = (dir / "s.svg").string();
   ASSERT_EQ(run_cli("study fpl --spread 0.1,0.2 --depth 4,6 --count 10 --no-box --out-csv " + table + " --plot " + svg), 0);
-  const std::string text = read_file(table);
+  const std::string text = io::read_file(table);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 5);  // header + 4 rows
-  EXPECT_NE(read_file(svg).find("</svg>"), std::string::npos);
+  EXPECT_NE(io::read_file(svg).find("</svg>"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
 

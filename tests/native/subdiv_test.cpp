@@ -34,9 +34,9 @@ namespace fs = std::filesystem;
 // The shipped example meshes (compilers get absolute source paths from CMake).
 const std::string kMeshes = (fs::path(__FILE__).parent_path() / "../../examples/meshes/").lexically_normal().string();
 
-Mesh cube() { return read_obj(kMeshes + "cube.obj"); }
-Mesh icosahedron() { return read_obj(kMeshes + "icosahedron.obj"); }
-Mesh mountain() { return read_obj(kMeshes + "mountain.obj"); }
+Mesh cube() { return io::read_obj(kMeshes + "cube.obj"); }
+Mesh icosahedron() { return io::read_obj(kMeshes + "icosahedron.obj"); }
+Mesh mountain() { return io::read_obj(kMeshes + "mountain.obj"); }
 
 ft_fractalize_params params(int levels, double sigma, int scheme = FT_SCHEME_CATMARK) {
   ft_fractalize_params p = subdiv::default_fractalize_params();
@@ -424,8 +424,8 @@ TEST(ObjIo, RoundTripIsExact) {
   const fs::path dir = fs::temp_directory_path() / ("ft_subdiv_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string path = (dir / "rock.obj").string();
-  write_obj(m, path, "a comment\nwith a newline");
-  const Mesh back = read_obj(path);
+  io::write_obj(m, path, "a comment\nwith a newline");
+  const Mesh back = io::read_obj(path);
   EXPECT_EQ(back.positions, m.positions);
   EXPECT_EQ(back.face_sizes, m.face_sizes);
   EXPECT_EQ(back.face_indices, m.face_indices);
@@ -439,15 +439,15 @@ TEST(ObjIo, RoundTripIsExact) {
 }
 
 TEST(ObjIo, ReadsPolygonsFromAllShapes) {
-  const Mesh m = decode_obj("o a\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3 4\no b\nf 2 5 3\n");
+  const Mesh m = io::decode_obj("o a\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3 4\no b\nf 2 5 3\n");
   EXPECT_EQ(m.vertex_count(), 5u);
   EXPECT_EQ(m.face_sizes, (std::vector<int32_t>{4, 3}));
   EXPECT_EQ(m.face_indices, (std::vector<int32_t>{0, 1, 2, 3, 1, 4, 2}));
 }
 
 TEST(ObjIo, ReportsMissingAndFacelessFiles) {
-  expect_error([] { read_obj("/nonexistent/mesh.obj"); }, FT_ERR_IO, "/nonexistent/mesh.obj");
-  expect_error([] { decode_obj("v 0 0 0\nv 1 0 0\n", "points.obj"); }, FT_ERR_FORMAT, "points.obj' has no faces");
+  expect_error([] { io::read_obj("/nonexistent/mesh.obj"); }, FT_ERR_IO, "/nonexistent/mesh.obj");
+  expect_error([] { io::decode_obj("v 0 0 0\nv 1 0 0\n", "points.obj"); }, FT_ERR_FORMAT, "points.obj' has no faces");
 }
 
 // Lines tinyobjloader used to take on trust (see obj_io.cpp): each now a
@@ -455,24 +455,24 @@ TEST(ObjIo, ReportsMissingAndFacelessFiles) {
 // infinite vertex or a silently wrong face.
 TEST(ObjIo, RefusesNumbersAndFacesTheReaderCannotHold) {
   const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
-  expect_error([&] { decode_obj("v 0 0 1e39\n" + quad + "f 2 3 4\n", "big.obj"); }, FT_ERR_FORMAT,
+  expect_error([&] { io::decode_obj("v 0 0 1e39\n" + quad + "f 2 3 4\n", "big.obj"); }, FT_ERR_FORMAT,
                "'big.obj': line 1: '1e39' is beyond the float range");
-  expect_error([&] { decode_obj(quad + "f 1 2 99999999999\n", "idx.obj"); }, FT_ERR_FORMAT,
+  expect_error([&] { io::decode_obj(quad + "f 1 2 99999999999\n", "idx.obj"); }, FT_ERR_FORMAT,
                "line 5: '99999999999' is not an integer in the 32-bit range");
-  expect_error([&] { decode_obj(quad + "f 1 0 2\n", "zero.obj"); }, FT_ERR_FORMAT, "line 5: vertex index 0");
-  expect_error([&] { decode_obj("v 0 nan 0\n" + quad + "f 2 3 4\n"); }, FT_ERR_FORMAT, "'nan' is not a finite number");
-  expect_error([&] { decode_obj(quad + "f 1 2 3\nt crease 2/1/0 0 1\n"); }, FT_ERR_FORMAT, "line 6: the tag's counts");
+  expect_error([&] { io::decode_obj(quad + "f 1 0 2\n", "zero.obj"); }, FT_ERR_FORMAT, "line 5: vertex index 0");
+  expect_error([&] { io::decode_obj("v 0 nan 0\n" + quad + "f 2 3 4\n"); }, FT_ERR_FORMAT, "'nan' is not a finite number");
+  expect_error([&] { io::decode_obj(quad + "f 1 2 3\nt crease 2/1/0 0 1\n"); }, FT_ERR_FORMAT, "line 6: the tag's counts");
   std::string ring;
   for (int i = 0; i < 300; ++i) ring += "v " + std::to_string(std::cos(i * 0.0209)) + " " + std::to_string(std::sin(i * 0.0209)) + " 0\n";
   ring += "f";
   for (int i = 1; i <= 300; ++i) ring += " " + std::to_string(i);
-  expect_error([&] { decode_obj(ring + "\n"); }, FT_ERR_FORMAT, "a face of 300 vertices; at most 255");
+  expect_error([&] { io::decode_obj(ring + "\n"); }, FT_ERR_FORMAT, "a face of 300 vertices; at most 255");
 }
 
 TEST(ObjIo, IgnoresWhatItDoesNotUseAndKeepsWhatItDoes) {
   // Normals, texture coordinates, weights (the fuzzer's `vw` of 1e300),
   // groups, materials; v/vt/vn faces; comments; CRLF; a '+' sign; w.
-  const Mesh m = decode_obj(
+  const Mesh m = io::decode_obj(
       "# a comment\r\nmtllib x.mtl\r\no a\r\nv 0 0 0 1\r\nv +1 0 0\r\nv 1 1 0 # corner\r\nvn 0 0 1\r\n"
       "vt 0.5 0.5\r\nvw 1 0333333333333333333333333333333333333333333333 00\r\nusemtl m\r\ns 1\r\n"
       "f 1/1/1 2/1/1 -1/1/1\r\nl 1 2\r\nt crease 2/1/0 0 1 2.5\r\nt corner 1/1/0 2 4\r\nt interpolateboundary 1/0/0 1\r\n"
@@ -513,17 +513,17 @@ TEST(FractalizeCli, WritesObjAndAPovMeshThatPovRayRenders) {
                           "cube.obj --levels 3 --hurst 0.7 --sigma 0.3 --scheme catmark --seed 5 --out " + obj +
                           " --pov " + pov + " --pov-name Rock";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  const Mesh m = read_obj(obj);
+  const Mesh m = io::read_obj(obj);
   EXPECT_EQ(m.face_count(), 6u * 64u);
   expect_closed(m);
   const std::string bad = std::string(FT_CLI_PATH) + " fractalize --in " + kMeshes +
                           "cube.obj --scheme loop --out " + obj + " 2>" + (dir / "err.txt").string();
   EXPECT_NE(std::system(bad.c_str()), 0);
-  EXPECT_NE(read_file((dir / "err.txt").string()).find("face 0 has 4 vertices; Loop"), std::string::npos);
+  EXPECT_NE(io::read_file((dir / "err.txt").string()).find("face 0 has 4 vertices; Loop"), std::string::npos);
 
   if (std::system("povray --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "povray not installed";
   const std::string scene = (dir / "scene.pov").string(), png = (dir / "rock.png").string();
-  write_file_atomically(scene, "#version 3.7;\n#include \"" + pov +
+  io::write_file_atomically(scene, "#version 3.7;\n#include \"" + pov +
                                    "\"\ncamera { location <3, 2, -4> look_at 0 }\n"
                                    "light_source { <5, 8, -6> color rgb 1 }\n"
                                    "object { Rock pigment { color rgb 0.6 } }\n");

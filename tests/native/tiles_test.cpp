@@ -94,7 +94,7 @@ TEST(Tiles, Png16TilesAreTheQuantisedWholeAndEdgesAgree) {
   std::vector<GrayImage> tiles;
   for (int32_t row = 0; row < 4; ++row)
     for (int32_t col = 0; col < 4; ++col) {
-      tiles.push_back(read_png((dir / tile_file_name(set.spec(), col, row)).string()));
+      tiles.push_back(io::read_png((dir / tile_file_name(set.spec(), col, row)).string()));
       const GrayImage& t = tiles.back();
       ASSERT_EQ(t.width, 129);
       int64_t off = 0;
@@ -128,7 +128,7 @@ TEST(Tiles, TiffTilesHoldTheExactWindow) {
   const Heightfield whole = generate_terrain(p);
   EXPECT_EQ(set.spec().height_min, whole.stats().min);
   EXPECT_EQ(set.spec().height_max, whole.stats().max);
-  const Heightfield t = read_heightfield((dir / tile_file_name(set.spec(), 2, 1)).string());
+  const Heightfield t = io::read_heightfield((dir / tile_file_name(set.spec(), 2, 1)).string());
   ASSERT_EQ(t.width(), 57);
   ASSERT_EQ(t.height(), 101);
   int64_t off = 0;
@@ -317,8 +317,8 @@ TEST(Tiles, CliWritesAMosaicThatGdalinfoOpens) {
   EXPECT_TRUE(m["complete"].get<bool>());
   // The mosaic's pixels are the tiles' pixels (GDAL reads the raw 16-bit
   // values: the band's offset and scale give heights).
-  const Heightfield whole = read_heightfield((dir / "mosaic.vrt").string());
-  const GrayImage tile = read_png((dir / "tile_r001_c002.png").string());
+  const Heightfield whole = io::read_heightfield((dir / "mosaic.vrt").string());
+  const GrayImage tile = io::read_png((dir / "tile_r001_c002.png").string());
   ASSERT_EQ(whole.width(), 1025);
   for (int k = 0; k < 257; k += 16) {
     EXPECT_EQ(whole.at(512 + k, 256 + 9), float(tile.pixels[size_t(9) * 257 + size_t(k)]));

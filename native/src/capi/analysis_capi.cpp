@@ -197,7 +197,7 @@ FT_API ft_status ft_clouds_write_png(const ft_heightfield* hf, const ft_clouds_p
   return guarded([&] {
     ft::check_not_null("heightfield", hf);
     ft::check_not_null("path", path);
-    ft::write_png(path, ft::clouds_image(hf->hf, to_cloud_options(params)));
+    ft::io::write_png(path, ft::clouds_image(hf->hf, to_cloud_options(params)));
   });
 }
 

@@ -19,11 +19,11 @@ FT_API ft_status ft_heightfield_read(const char* path, int32_t nodata, ft_height
     ft::capi::reset_out(out);
     ft::check_not_null("path", path);
     ft::check_int_range("nodata", nodata, FT_NODATA_REFUSE, FT_NODATA_KEEP);
-    const ft::NodataPolicy policy = nodata == FT_NODATA_FILL   ? ft::NodataPolicy::fill
-                                    : nodata == FT_NODATA_KEEP ? ft::NodataPolicy::keep
-                                                               : ft::NodataPolicy::refuse;
+    const ft::io::NodataPolicy policy = nodata == FT_NODATA_FILL   ? ft::io::NodataPolicy::fill
+                                    : nodata == FT_NODATA_KEEP ? ft::io::NodataPolicy::keep
+                                                               : ft::io::NodataPolicy::refuse;
     auto h = std::make_unique<ft_heightfield>();
-    h->hf = ft::read_heightfield(path, policy);
+    h->hf = ft::io::read_heightfield(path, policy);
     *out = h.release();
   });
 }
@@ -32,7 +32,7 @@ FT_API ft_status ft_heightfield_write(const ft_heightfield* hf, const char* path
   return guarded([&] {
     ft::check_not_null("heightfield", hf);
     ft::check_not_null("path", path);
-    ft::write_heightfield(hf->hf, path);
+    ft::io::write_heightfield(hf->hf, path);
   });
 }
 
