@@ -43,7 +43,7 @@ struct SceneOptions {
 // A finished 16-bit tile set as height_fields edge to edge, framed on a
 // coarse preview of the whole read through its VRT overviews.
 pov::TiledTerrain load_tiles(const std::string& dir) {
-  const std::optional<nlohmann::json> m = read_manifest(dir);
+  const std::optional<nlohmann::json> m = tiles::read_manifest(dir);
   if (!m) invalid("'" + dir + "' holds no tile set (no manifest.json); write one with fracterra tiles");
   if (!m->value("complete", false)) invalid("the tile set in '" + dir + "' is not finished; rerun fracterra tiles to resume it");
   if (m->value("tile_format", "") != "png16")
@@ -71,7 +71,7 @@ int run(SceneOptions& o) {
     if (!o.terrain.empty()) invalid("give --terrain or --tiles, not both");
     if (!std::isnan(o.sea_fraction) && !std::isnan(o.water)) invalid("give --sea-fraction or --water, not both");
     tiled = load_tiles(o.tiles);
-    hf = read_mosaic_preview(o.tiles, 257);
+    hf = tiles::read_mosaic_preview(o.tiles, 257);
     // Heights in the set's own units unless --vertical-scale says otherwise.
     pov::set_scene_terrain(p, hf, hf.world_size(), o.vertical_scale > 0 ? o.vertical_scale : 1.0, o.sea_fraction);
     if (!std::isnan(o.water)) p.has_sea = true, p.sea_level = o.water;

@@ -37,8 +37,8 @@ int run(const TilesOptions& o) {
     p.reference_size = reference.width();
   }
   Stopwatch clock;
-  TileSet set(p, o.tile, parse_tile_format(o.format), o.out);
-  const TileGrid& g = set.spec().grid;
+  tiles::TileSet set(p, o.tile, tiles::parse_tile_format(o.format), o.out);
+  const tiles::TileGrid& g = set.spec().grid;
   int64_t written = 0, skipped = 0;
   for (int32_t row = 0; row < g.rows(); ++row)
     for (int32_t col = 0; col < g.columns(); ++col) {
@@ -46,7 +46,7 @@ int run(const TilesOptions& o) {
         ++skipped;
         continue;
       }
-      set.record(col, row, write_tile(p, set.spec(), set.dir(), col, row));
+      set.record(col, row, tiles::write_tile(p, set.spec(), set.dir(), col, row));
       ++written;
       if (!o.quiet)
         std::fprintf(stderr, "\rtile %lld of %lld", (long long)(written + skipped), (long long)g.count());

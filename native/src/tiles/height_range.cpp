@@ -6,7 +6,7 @@
 #include "terrain/landform.hpp"
 #include "terrain/terrain.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 constexpr int kCoarseLevels = 12;     // the bound's coarse pass: at most 4097^2 samples
@@ -66,4 +66,4 @@ HeightRange tile_height_range(const ft_terrain_params& p, const TileGrid& grid, 
   return {s.min, s.max, "exact"};
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -12,7 +12,7 @@
 #include "io/atomic_file.hpp"
 #include "terrain/terrain_params.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 nlohmann::json value_of(const ft_param_info& row, const void* p) {
@@ -141,4 +141,4 @@ std::string identity_difference(const nlohmann::json& wanted, const nlohmann::js
   return "";
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -14,7 +14,7 @@
 #include "core/error.hpp"
 #include "io/gdal_session.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 struct StringList {
@@ -103,4 +103,4 @@ Heightfield read_mosaic_preview(const std::string& dir, int32_t max_side) {
   return hf;
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -11,7 +11,7 @@
 #include "io/png_image.hpp"
 #include "terrain/terrain.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 std::string path_in(const std::string& dir, const std::string& name) {
@@ -133,4 +133,4 @@ uint32_t write_tile(const ft_terrain_params& p, const TileSpec& spec, const std:
   return file_crc32(path);
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -10,7 +10,7 @@
 #include "tiles/manifest.hpp"
 #include "tiles/tile_writer.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 nlohmann::json finished_manifest(const std::string& dir) {
@@ -73,4 +73,4 @@ Heightfield read_tileset_window(const std::string& dir, int lod, int64_t x0, int
   return out;
 }
 
-}  // namespace ft
+}  // namespace ft::tiles
