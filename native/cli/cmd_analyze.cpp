@@ -128,7 +128,7 @@ json box_json(const BoxCountResult& b) {
 json coastline_report(const Heightfield& hf, BoxCountResult* out) {
   try {
     const double level = heightfield_quantile(hf, 0.5);
-    const PolylineSet set = marching_squares(hf, level);
+    const PolylineSet set = contour::marching_squares(hf, level);
     BoxCountOptions o;
     o.min_size = 4;
     const BoxCountResult b = box_counting_dimension(set, o);

@@ -28,7 +28,7 @@ struct CoastlineCli {
 // lakes blue, chains ending on the border yellow (1-pixel lines, DDA).
 void draw_chains(std::vector<uint8_t>& rgb, int32_t w, int32_t h, const PolylineSet& set) {
   for (int64_t i = 0; i < set.line_count(); ++i) {
-    const ChainKind kind = chain_kind(set, i);
+    const contour::ChainKind kind = contour::chain_kind(set, i);
     const uint8_t colour[3][3] = {{255, 220, 0}, {220, 20, 20}, {20, 60, 230}};
     const uint8_t* c = colour[int(kind)];
     for (int64_t k = set.line_begin(i); k + 1 < set.line_end(i); ++k) {
@@ -47,7 +47,7 @@ void draw_chains(std::vector<uint8_t>& rgb, int32_t w, int32_t h, const Polyline
 int run(const CoastlineCli& c) {
   const Heightfield hf = io::read_heightfield(c.in);
   const double level = resolve_level(hf, parse_level(c.level, "--level"));
-  const PolylineSet set = marching_squares(hf, level);
+  const PolylineSet set = contour::marching_squares(hf, level);
   if (set.line_count() == 0) {
     // An empty file would look like a success (it used to be written
     // without a word): say why there is no coastline, write nothing.
@@ -82,8 +82,8 @@ int run(const CoastlineCli& c) {
   }
   int64_t islands = 0, lakes = 0, open = 0;
   for (int64_t i = 0; i < set.line_count(); ++i) {
-    const ChainKind k = chain_kind(set, i);
-    (k == ChainKind::kIsland ? islands : k == ChainKind::kLake ? lakes : open) += 1;
+    const contour::ChainKind k = contour::chain_kind(set, i);
+    (k == contour::ChainKind::kIsland ? islands : k == contour::ChainKind::kLake ? lakes : open) += 1;
   }
   const nlohmann::json j = {{"level", level},       {"chains", set.line_count()}, {"vertices", set.vertex_count()},
                             {"islands", islands},   {"lakes", lakes},             {"open_chains", open}};

@@ -55,7 +55,7 @@ struct TerrainOptions {
 void write_escape_curves(const TerrainOptions& o, const ft_terrain_params& p, const Heightfield& hf) {
   std::vector<double> levels;
   for (double nu : o.curves) levels.push_back(mandelbrot_height(nu, p.sigma));
-  PolylineSet set = marching_squares(hf, levels);
+  PolylineSet set = contour::marching_squares(hf, levels);
   if (o.curves_world) {
     const double k = hf.world_size() / double(hf.width() - 1);
     for (Vec3& v : set.points) v[0] *= k, v[1] *= k;

@@ -153,7 +153,7 @@ FT_API ft_status ft_coastline(const ft_heightfield* hf, double level, int32_t le
     ft::LevelSpec spec{level, level_is_quantile != 0};
     if (spec.quantile) ft::check_range("level (a quantile)", level, 0.0, 1.0);
     auto p = std::make_unique<ft_polylines>();
-    p->set = ft::marching_squares(hf->hf, ft::resolve_level(hf->hf, spec));
+    p->set = ft::contour::marching_squares(hf->hf, ft::resolve_level(hf->hf, spec));
     *out = p.release();
   });
 }
@@ -169,7 +169,7 @@ FT_API ft_status ft_level_curves(const ft_heightfield* hf, const double* levels,
     for (size_t i = 0; i < count; ++i)
       if (!std::isfinite(v[i])) ft::invalid("levels[" + std::to_string(i) + "] must be finite, got " + ft::format_number(v[i]));
     auto p = std::make_unique<ft_polylines>();
-    p->set = ft::marching_squares(hf->hf, v);
+    p->set = ft::contour::marching_squares(hf->hf, v);
     *out = p.release();
   });
 }
