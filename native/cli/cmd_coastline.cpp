@@ -46,7 +46,7 @@ void draw_chains(std::vector<uint8_t>& rgb, int32_t w, int32_t h, const Polyline
 
 int run(const CoastlineCli& c) {
   const Heightfield hf = io::read_heightfield(c.in);
-  const double level = resolve_level(hf, parse_level(c.level, "--level"));
+  const double level = analysis::resolve_level(hf, analysis::parse_level(c.level, "--level"));
   const PolylineSet set = contour::marching_squares(hf, level);
   if (set.line_count() == 0) {
     // An empty file would look like a success (it used to be written

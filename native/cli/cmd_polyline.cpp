@@ -125,7 +125,7 @@ int run(const PolylineOptions& o) {
     }
   }
   if (o.stats) {
-    nlohmann::json j = polyline_report(set);
+    nlohmann::json j = analysis::polyline_report(set);
     j["seconds"] = seconds;
     std::printf("%s\n", j.dump().c_str());
   }

@@ -79,7 +79,7 @@ int run(RefineCli& o) {
                       {"world_size", r.terrain.world_size()},
                       {"georeferenced", !r.terrain.georef().empty()}};
   if (r.hurst_measured)
-    j["hurst_estimate"] = {{"method", hurst_method_name(r.estimate.method)},
+    j["hurst_estimate"] = {{"method", analysis::hurst_method_name(r.estimate.method)},
                            {"hurst", r.estimate.hurst},
                            {"std_error", r.estimate.std_error},
                            {"lags", {r.estimate.band_lo, r.estimate.band_hi}}};

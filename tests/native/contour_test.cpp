@@ -63,7 +63,7 @@ TEST(MarchingSquares, EveryVertexLiesOnTheLevelByInterpolation) {
   // floats and t is computed in double, so the residual is rounding of
   // a + t (b - a): a few ulps of the heights, far below 1e-6 of the range.
   const Heightfield hf = terrain(8, 0.6, 5);
-  const double level = heightfield_quantile(hf, 0.4);
+  const double level = analysis::heightfield_quantile(hf, 0.4);
   const PolylineSet s = contour::marching_squares(hf, level);
   ASSERT_GT(s.vertex_count(), 1000);
   const HeightStats st = hf.stats();
@@ -129,7 +129,7 @@ TEST(MarchingSquares, SaddlesFollowTheCellMean) {
 
 TEST(MarchingSquares, ChainsCloseInsideAndEndOnTheBorder) {
   const Heightfield hf = terrain(8, 0.5, 9);
-  const PolylineSet s = contour::marching_squares(hf, heightfield_quantile(hf, 0.5));
+  const PolylineSet s = contour::marching_squares(hf, analysis::heightfield_quantile(hf, 0.5));
   const double w = hf.width() - 1, h = hf.height() - 1;
   auto on_border = [&](const Vec3& p) { return p[0] == 0 || p[1] == 0 || p[0] == w || p[1] == h; };
   int open = 0, closed = 0;
@@ -195,8 +195,8 @@ TEST(MarchingSquares, LevelOutsideTheDataOrConstantFieldIsEmptyNaNIsAnError) {
 // Box sizes for coastlines of sampled terrains: from 4 cells (below that the
 // marching-squares chords straighten the curve and N(eps) tends to 1/eps) up
 // to the box counter's default E / 4.
-BoxCountOptions coastline_boxes() {
-  BoxCountOptions o;
+analysis::BoxCountOptions coastline_boxes() {
+  analysis::BoxCountOptions o;
   o.min_size = 4;
   return o;
 }
@@ -216,8 +216,8 @@ TEST(CoastlineDimension, MedianLevelSetOfMidpointTerrainsHasDimensionTwoMinusH) 
       ft_terrain_params p = default_terrain_params();
       p.levels = 10, p.hurst = h, p.seed = uint64_t(k + 1), p.threads = 1;
       const Heightfield hf = generate_terrain(p);
-      const PolylineSet s = contour::marching_squares(hf, heightfield_quantile(hf, 0.5));
-      d[size_t(k)] = box_counting_dimension(s, coastline_boxes()).dimension;
+      const PolylineSet s = contour::marching_squares(hf, analysis::heightfield_quantile(hf, 0.5));
+      d[size_t(k)] = analysis::box_counting_dimension(s, coastline_boxes()).dimension;
     }
     double mean = 0;
     for (double v : d) mean += v / 10;
@@ -231,18 +231,18 @@ TEST(CoastlineDimension, ContourOfAConeIsACircleAndOfARampALineOfDimensionOne) {
   // D = 1. A smooth curve covers N = L / eps + O(1) boxes, so the slope
   // tends to 1 only for boxes well below its size: boxes 1..25 cells (1.016
   // measured for the circle; 1.04 at 1..100, 1.07 at 4..100).
-  BoxCountOptions small;
+  analysis::BoxCountOptions small;
   small.min_size = 1, small.max_size = 25;
   const Heightfield cone = field(513, 513, [](double x, double y) { return std::hypot(x - 256.3, y - 255.8); });
   const PolylineSet circle = contour::marching_squares(cone, 200);
   ASSERT_EQ(circle.line_count(), 1);
   EXPECT_EQ(contour::chain_kind(circle, 0), contour::ChainKind::kLake);  // land (higher) outside
-  EXPECT_NEAR(box_counting_dimension(circle, small).dimension, 1.0, 0.03);
+  EXPECT_NEAR(analysis::box_counting_dimension(circle, small).dimension, 1.0, 0.03);
   const Heightfield ramp = field(513, 513, [](double x, double y) { return 0.3 * x + 0.7 * y; });
   const PolylineSet line = contour::marching_squares(ramp, 180);
   ASSERT_EQ(line.line_count(), 1);
   EXPECT_EQ(contour::chain_kind(line, 0), contour::ChainKind::kOpen);
-  EXPECT_NEAR(box_counting_dimension(line, small).dimension, 1.0, 0.03);
+  EXPECT_NEAR(analysis::box_counting_dimension(line, small).dimension, 1.0, 0.03);
 }
 
 // ---------------------------------------------------------------------- CLI

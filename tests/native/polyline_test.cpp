@@ -276,14 +276,14 @@ TEST(ClassicCurves, KochAndArrowheadHaveTheirCountsLengthsAndEnds) {
   p.method = FT_POLYLINE_KOCH;
   PolylineSet k = generate_polylines(p);
   EXPECT_EQ(k.vertex_count(), 1025);
-  EXPECT_NEAR(line_stats(k, 0).gamma, std::pow(4.0 / 3.0, 5), 1e-9);
+  EXPECT_NEAR(analysis::line_stats(k, 0).gamma, std::pow(4.0 / 3.0, 5), 1e-9);
   EXPECT_EQ(k.points.back(), (Vec3{1, 0, 0}));
   p.method = FT_POLYLINE_SIERPINSKI;
   for (int d : {4, 5}) {
     p.depth = d;
     PolylineSet a = generate_polylines(p);
     EXPECT_EQ(a.vertex_count(), int64_t(std::pow(3, d)) + 1);
-    EXPECT_NEAR(line_stats(a, 0).gamma, std::pow(1.5, d), 1e-9);
+    EXPECT_NEAR(analysis::line_stats(a, 0).gamma, std::pow(1.5, d), 1e-9);
     EXPECT_EQ(a.points.back(), (Vec3{1, 0, 0}));
   }
 }
@@ -342,10 +342,10 @@ TEST(Ifs, SierpinskiGasketHasBoxDimensionLog3OverLog2) {
     ASSERT_GE(q[1], -1e-12);
     ASSERT_LE(q[1], h * (1 - std::fabs(2 * q[0] - 1)) + 1e-12) << q[0] << " " << q[1];
   }
-  BoxCountOptions o;
+  analysis::BoxCountOptions o;
   o.max_size = 0.25;
   o.min_size = 1.0 / 128;
-  const BoxCountResult r = box_counting_dimension(s, o);
+  const analysis::BoxCountResult r = analysis::box_counting_dimension(s, o);
   EXPECT_NEAR(r.dimension, std::log(3.0) / std::log(2.0), 0.05) << "stderr " << r.std_error;
 }
 
@@ -386,21 +386,21 @@ TEST(PolylineStats, MatchEquationOneOnAKnownLine) {
   PolylineSet s;
   for (Vec3 v : {Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0}, Vec3{1, 0, 0}}) s.add(v);
   s.end_line();
-  const LineStats st = line_stats(s, 0);
+  const analysis::LineStats st = analysis::line_stats(s, 0);
   EXPECT_DOUBLE_EQ(st.eta, 0.5);
   EXPECT_DOUBLE_EQ(st.chi, 0.5 / 3);
   EXPECT_DOUBLE_EQ(st.gamma, std::sqrt(2.0));
   // M_r / M_{r-1} = sqrt 2: D = 1 / (1 - 1/2) = 2, the dragon's value.
-  EXPECT_DOUBLE_EQ(mass_dimension(s, 0), 2.0);
+  EXPECT_DOUBLE_EQ(analysis::mass_dimension(s, 0), 2.0);
   // Scale-free: the same shape on a chord of 10 gives the same numbers.
   PolylineSet big;
   for (Vec3 v : {Vec3{0, 0, 0}, Vec3{5, 5, 0}, Vec3{10, 0, 0}}) big.add(v);
   big.end_line();
-  EXPECT_DOUBLE_EQ(line_stats(big, 0).eta, 0.5);
+  EXPECT_DOUBLE_EQ(analysis::line_stats(big, 0).eta, 0.5);
 }
 
 TEST(PolylineStats, ReportHasEveryMeasure) {
-  const nlohmann::json j = polyline_report(generate_polylines(fpl(0.2, 10)));
+  const nlohmann::json j = analysis::polyline_report(generate_polylines(fpl(0.2, 10)));
   for (const char* k : {"lines", "vertices", "length", "eta", "chi", "gamma", "mass_dimension", "box_counting"})
     EXPECT_TRUE(j.contains(k)) << k;
   EXPECT_GT(j["box_counting"]["dimension"].get<double>(), 1.0);
@@ -410,7 +410,7 @@ TEST(PolylineStats, ReportHasEveryMeasure) {
   two.add({0, 0, 0});
   two.add({1, 0, 0});
   two.end_line();
-  EXPECT_TRUE(polyline_report(two)["box_counting"].contains("error"));
+  EXPECT_TRUE(analysis::polyline_report(two)["box_counting"].contains("error"));
 }
 
 // ----------------------------------------------------------------- validation

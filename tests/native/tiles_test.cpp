@@ -344,11 +344,11 @@ TEST(Tiles, SpectralIsRefused) {
 TEST(Tiles, HurstFromTileSumsEqualsTheWhole) {
   const ft_terrain_params p = midpoint(10, 21);  // 1025^2; default lags 1..64
   const Heightfield whole = generate_terrain(p);
-  for (HurstMethod m : {HurstMethod::kVariogramAligned, HurstMethod::kMadogramAligned}) {
-    HurstOptions o;
+  for (analysis::HurstMethod m : {analysis::HurstMethod::kVariogramAligned, analysis::HurstMethod::kMadogramAligned}) {
+    analysis::HurstOptions o;
     o.method = m;
-    const HurstEstimate direct = estimate_hurst_surface(whole, o);
-    const std::vector<int64_t> lags = surface_lags(o, 1025, 1025);
+    const analysis::HurstEstimate direct = analysis::estimate_hurst_surface(whole, o);
+    const std::vector<int64_t> lags = analysis::surface_lags(o, 1025, 1025);
     ASSERT_EQ(lags.back(), 64);
     const tiles::TileGrid g = tiles::make_tile_grid(1025, 1025, 128);
     std::vector<double> sum(lags.size(), 0.0), count(lags.size(), 0.0);
@@ -356,22 +356,22 @@ TEST(Tiles, HurstFromTileSumsEqualsTheWhole) {
       for (int32_t col = 0; col < g.columns(); ++col) {
         const Window w = g.window(col, row);
         const Heightfield t = generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height);
-        add_window_increments(t, m, w.x0, w.y0, 1025, 1025, lags, sum.data(), count.data());
+        analysis::add_window_increments(t, m, w.x0, w.y0, 1025, 1025, lags, sum.data(), count.data());
       }
     // Pairs at lag 1: 2 x 1025 x 1024 (rows and columns), each once.
     EXPECT_EQ(count[0], 2.0 * 1025 * 1024);
-    const HurstEstimate tiled = estimate_from_increments(m, lags, sum.data(), count.data());
+    const analysis::HurstEstimate tiled = analysis::estimate_from_increments(m, lags, sum.data(), count.data());
     EXPECT_NEAR(tiled.hurst, direct.hurst, 1e-12);
     EXPECT_NEAR(tiled.dimension, 3.0 - direct.hurst, 1e-12);
     EXPECT_NEAR(tiled.hurst, 0.7, 0.05);  // and it is the terrain's H (a sanity bound, not the test)
   }
-  HurstOptions plain;
-  plain.method = HurstMethod::kVariogram;
-  EXPECT_THROW(surface_lags(plain, 1025, 1025), Error);
+  analysis::HurstOptions plain;
+  plain.method = analysis::HurstMethod::kVariogram;
+  EXPECT_THROW(analysis::surface_lags(plain, 1025, 1025), Error);
   // A lag longer than the tile leaves it: refused.
   Heightfield t = generate_terrain_window(p, 0, 0, 0, 33, 33);
   std::vector<double> s(8, 0.0), c(8, 0.0);
-  EXPECT_THROW(add_window_increments(t, HurstMethod::kVariogramAligned, 0, 0, 1025, 1025, {64}, s.data(), c.data()),
+  EXPECT_THROW(analysis::add_window_increments(t, analysis::HurstMethod::kVariogramAligned, 0, 0, 1025, 1025, {64}, s.data(), c.data()),
                Error);
 }
 

@@ -61,7 +61,7 @@ struct DemRefineResult {
   int window_x = 0, window_y = 0, window_side = 0;
   double hurst = 0, sigma = 0;
   bool hurst_measured = false, sigma_measured = false;
-  HurstEstimate estimate;  // when hurst_measured
+  analysis::HurstEstimate estimate;  // when hurst_measured
   double v1 = 0;           // the DEM's mean squared increment at one pixel
 };
 

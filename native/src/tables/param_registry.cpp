@@ -21,8 +21,8 @@ const ParamTable& param_table(int32_t kind) {
     case FT_PARAMS_FRACTALIZE: return subdiv::fractalize_param_table();
     case FT_PARAMS_POV_SCENE: return pov::scene_param_table();
     case FT_PARAMS_POV_SWEEP: return pov::sweep_param_table();
-    case FT_PARAMS_HURST: return hurst_param_table();
-    case FT_PARAMS_CLOUDS: return clouds_param_table();
+    case FT_PARAMS_HURST: return analysis::hurst_param_table();
+    case FT_PARAMS_CLOUDS: return analysis::clouds_param_table();
     case FT_PARAMS_DEM_REFINE: return refine::dem_refine_param_table();
     case FT_PARAMS_EROSION: return erosion_param_table();
     default:
