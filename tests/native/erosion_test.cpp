@@ -26,6 +26,7 @@
 #include "erosion/flow_graph.hpp"
 #include "erosion/multiple_flow.hpp"
 #include "erosion/presets.hpp"
+#include "io/heightfield_io.hpp"
 #include "terrain/terrain.hpp"
 
 namespace ft::erosion {
@@ -681,6 +682,29 @@ TEST(ErodeCli, WritesTheTerrainAndSixMapsWithTheirRanges) {
   // The table's words, as the C ABI and Python say them (the CLI's flags come from the table).
   EXPECT_NE(message.find("evaporation must be in [0, 1], got 2"), std::string::npos) << message;
   EXPECT_FALSE(fs::exists(dir / "x.png"));
+  fs::remove_all(dir);
+}
+
+// Issue 25's input through the CLI: a clear refusal naming the limit, exit
+// code 1, no output file (it ran forever before).
+TEST(ErodeCli, RefusesHeightsThatWouldOverflowNamingTheLimit) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("ft_erode_big_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  Heightfield hf(65, 65);
+  std::fill(hf.data(), hf.data() + hf.size(), 0.0f);
+  hf.at(20, 20) = 1e38f;
+  hf.at(40, 40) = -1e38f;
+  write_heightfield(hf, (dir / "t.npy").string());
+  const std::string cli = FT_CLI_PATH, d = dir.string();
+  const std::string run = cli + " erode --in " + d + "/t.npy --fluvial 60 --out " + d + "/o.npy 2>" + d + "/err.txt";
+  EXPECT_EQ(1, WEXITSTATUS(std::system(run.c_str())));
+  std::ifstream err(dir / "err.txt");
+  const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(message.find("sample 20, 20 is 1e+38: erosion needs finite heights within +-1e+15 world units"),
+            std::string::npos)
+      << message;
+  EXPECT_FALSE(fs::exists(dir / "o.npy"));
   fs::remove_all(dir);
 }
 
