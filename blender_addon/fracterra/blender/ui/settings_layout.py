@@ -4,8 +4,8 @@ core.params, so panels and operators both import it without a circle)."""
 
 import bpy
 
-from ..core import params
-from . import erosion_ui
+from ...core import params
+from ..build import erosion as erosion_ui
 
 
 def _prop(layout, data, name):

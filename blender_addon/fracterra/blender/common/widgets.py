@@ -2,8 +2,8 @@
 
 import textwrap
 
-from .. import core
-from ..core import mesh_limits
+from ... import core
+from ...core import mesh_limits
 
 
 def draw_wrapped(layout, text, icon="NONE", width=60, alert=False):

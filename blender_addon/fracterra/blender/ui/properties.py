@@ -7,10 +7,10 @@ import bpy
 from bpy.props import (BoolProperty, EnumProperty, FloatProperty, FloatVectorProperty, IntProperty,
                        StringProperty)
 
-from ..core import params
-from . import erosion_ui
-from .polyline_build import regenerate_polyline
-from .terrain_build import regenerate_object
+from ...core import params
+from ..build import erosion as erosion_ui
+from ..build.polyline import regenerate_polyline
+from ..build.terrain import regenerate_object
 
 
 def bpy_property(p, update=None):

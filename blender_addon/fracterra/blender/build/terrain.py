@@ -9,15 +9,17 @@ import bpy
 import numpy as np
 from mathutils import Matrix
 
-from .. import core
-from ..core import params, raster
-from ..core.grid import NO_FLOOR, GridArrays, grid_arrays, grid_size, vertices
-from ..core.mesh_limits import check_grid, grid_shape
-from . import erosion_ui, falloff_mask, mesh_build
-from .images import image_luminance
-from .prefs import library_threads
-from .progress import Job, run_job
-from .reporting import SettingsError
+from ... import core
+from ...core import params, raster
+from ...core.grid import NO_FLOOR, GridArrays, grid_arrays, grid_size, vertices
+from ...core.mesh_limits import check_grid, grid_shape
+from . import erosion as erosion_ui
+from . import falloff_mask
+from . import mesh as mesh_build
+from ..common.images import image_luminance
+from ..common.preferences import library_threads
+from ..common.jobs import Job, run_job
+from ..common.reporting import SettingsError
 
 
 def _dyadic_levels(size):

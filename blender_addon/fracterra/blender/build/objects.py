@@ -7,10 +7,10 @@ import zlib
 
 import numpy as np
 
-from .. import core
-from ..core import params
-from ..core.mesh_limits import grid_shape
-from .curve_build import spline_nodes
+from ... import core
+from ...core import params
+from ...core.mesh_limits import grid_shape
+from .curve import spline_nodes
 from .reporting import SettingsError
 
 

@@ -10,9 +10,9 @@ import bpy
 import numpy as np
 from bpy.props import EnumProperty
 
-from .. import core
-from ..core import erosion, params
-from .mesh_build import SLOPE_ATTRIBUTE
+from ... import core
+from ...core import erosion, params
+from .mesh import SLOPE_ATTRIBUTE
 
 # Point attributes (0..1) beside fracterra_height and fracterra_slope.
 FLOW_ATTRIBUTE = "fracterra_flow"  # log drainage area: 0 on ridges, 1 at the main outlet

@@ -5,10 +5,10 @@ import math
 
 import bpy
 
-from .settings_ui import draw_polyline_settings, draw_settings
-from .terrain_objects import geometry_fingerprint, is_measurable, is_polyline
-from ..core import params
-from .widgets import draw_library_problem, draw_size, draw_wrapped
+from .settings_layout import draw_polyline_settings, draw_settings
+from ..build.objects import geometry_fingerprint, is_measurable, is_polyline
+from ...core import params
+from ..common.widgets import draw_library_problem, draw_size, draw_wrapped
 
 # Operators the panels show (bl_idname of each).
 TERRAIN_ADD = "mesh.fracterra_terrain_add"
