@@ -128,7 +128,7 @@ def test_the_rank_check_sees_an_upward_import():
     assert imported == {"ops.terrain"} and rank("ops.terrain") > rank("build.terrain")
 
 
-@pytest.mark.parametrize("root", [BLENDER_DIR], ids=["blender"])
+@pytest.mark.parametrize("root", [BLENDER_DIR, CORE_DIR], ids=["blender", "core"])
 def test_no_import_cycle(root):
     assert find_cycle(graph(root)) is None
 
@@ -138,7 +138,7 @@ def test_the_cycle_finder_finds_a_cycle():
         ["panels", "props", "terrain_build", "panels"]
 
 
-@pytest.mark.parametrize("root,name", [(r, n) for r in (BLENDER_DIR,) for n in sorted(modules(r))],
+@pytest.mark.parametrize("root,name", [(r, n) for r in (BLENDER_DIR, CORE_DIR) for n in sorted(modules(r))],
                          ids=lambda v: v.name if isinstance(v, Path) else v)
 def test_imports_of_the_add_on_are_at_module_level(root, name):
     tree = modules(root)[name]

@@ -12,7 +12,7 @@ import bpy
 import numpy as np
 
 from ...core.grid import grid_size
-from ...core.mesh_limits import grid_shape
+from ...core.params import grid_shape
 from ..common.images import image_luminance
 from ..common.reporting import SettingsError
 

@@ -9,7 +9,7 @@ import numpy as np
 
 from ... import core
 from ...core import params
-from ...core.mesh_limits import grid_shape
+from ...core.params import grid_shape
 from .curve import spline_nodes
 from .reporting import SettingsError
 

@@ -114,7 +114,7 @@ def falloff_mask_image_picker(update=None):
 def terrain_annotations(update=None, param_list=None):
     """{name: property} for every setting (terrain unless another list is given)."""
     out = {}
-    for p in param_list or params.TERRAIN_PARAMS:
+    for p in param_list or params.TERRAIN_OBJECT_PARAMS:
         out[p.name] = bpy_property(p, update)
         if p.display_scale is not None:
             out[params.shown_name(p.name)] = display_property(p)
@@ -155,7 +155,7 @@ FRACTERRA_PG_terrain.__annotations__ = {
 
 def copy_settings(src, dst, param_list=None):
     """Copies every setting (terrain unless another list is given) between operators and PropertyGroups."""
-    for p in param_list or params.TERRAIN_PARAMS:
+    for p in param_list or params.TERRAIN_OBJECT_PARAMS:
         setattr(dst, p.name, getattr(src, p.name))
 
 
