@@ -147,6 +147,37 @@ def test_imports_of_the_add_on_are_at_module_level(root, name):
     assert not late, f"{root.name}/{name} imports {sorted(late)} inside a function (a late import hides a cycle)"
 
 
+def unresolved_imports(name, tree, root):
+    """Relative imports of module `name` naming a module or package the add-on lacks."""
+    out = []
+    base = package_of(name, root).split(".") if package_of(name, root) else []
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.ImportFrom) or node.level == 0:
+            continue
+        up = node.level - 1
+        if up > len(base):  # the add-on package itself (core from blender/) or above
+            if up == len(base) + 1 and node.module is None and [a.name for a in node.names] == ["core"]:
+                continue
+            if up == len(base) + 1 and node.module and node.module.split(".")[0] == "core":
+                target = ADDON_DIR.joinpath(*node.module.split("."))
+                if not (target.with_suffix(".py").is_file() or (target / "__init__.py").is_file()):
+                    out.append(node.module)
+                continue
+            out.append("." * node.level + (node.module or ""))
+            continue
+        parts = base[:len(base) - up] + (node.module.split(".") if node.module else [])
+        target = root.joinpath(*parts)
+        if node.module and not (target.with_suffix(".py").is_file() or (target / "__init__.py").is_file()):
+            out.append("." * node.level + node.module)
+    return out
+
+
+@pytest.mark.parametrize("root,name", [(r, n) for r in (BLENDER_DIR, CORE_DIR) for n in sorted(modules(r))],
+                         ids=lambda v: v.name if isinstance(v, Path) else v)
+def test_every_relative_import_names_a_module_that_exists(root, name):
+    assert not unresolved_imports(name, modules(root)[name], root)
+
+
 def test_a_late_import_is_seen():
     tree = ast.parse("def f():\n    from .binding import library\n")
     assert add_on_imports("params", tree, CORE_DIR, top_level_only=False) == {"binding"}

@@ -11,7 +11,7 @@ from ... import core
 from ...core import params
 from ...core.params import grid_shape
 from .curve import spline_nodes
-from .reporting import SettingsError
+from ..common.reporting import SettingsError
 
 
 def is_terrain(obj):
