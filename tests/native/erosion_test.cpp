@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -290,6 +291,33 @@ TEST(FlowRouting, EveryCellDrainsOnFractalTerrains) {
     // Filling only raises.
     for (size_t i = 0; i < z.size(); ++i) ASSERT_GE(z[i], before[i]);
   }
+}
+
+// Issue 24's hang, at its smallest: erosion wears a plain towards a base
+// level of 0 into subnormal heights, and a cell 2^-149 (the smallest
+// subnormal) above its diagonal neighbours, higher than its straight ones,
+// drew a Rho8 number below 2^-24, which made the diagonal weight exactly
+// 1/2: the weighted drop rounded to 0, routing called the cell a pit, the
+// fills (comparing heights) saw it drain, and route_and_fill looped
+// forever (seed 5 of the add-on's default terrain at levels 10, Valleys).
+TEST(FlowRouting, ACellASubnormalStepAboveItsDiagonalsDrainsUnderRho8) {
+  const float tiny = std::numeric_limits<float>::denorm_min();
+  const D8Grid g{5, 5, false, 1.0};
+  std::vector<float> z(g.size(), 0.0f);  // the edges: the base level
+  auto at = [&](int x, int y) -> float& { return z[size_t(y) * 5 + x]; };
+  for (int y = 1; y <= 3; ++y)
+    for (int x = 1; x <= 3; ++x) at(x, y) = (x + y) % 2 ? 1.0f : tiny;  // straight neighbours high
+  at(2, 2) = 2 * tiny;
+  FlowGraph graph;
+  graph.random.assign(g.size(), 1e-9f);  // r < 2^-24 everywhere
+  route_steepest(g, z.data(), -1, graph);
+  EXPECT_EQ(graph.pits, 0);
+  const int32_t r = graph.receiver[2 * 5 + 2];
+  EXPECT_TRUE(at(r % 5, r / 5) == tiny) << "receiver " << r;
+  const std::vector<float> before = z;
+  route_and_fill(g, z.data(), -1, graph);  // hung here
+  EXPECT_EQ(graph.pits, 0);
+  EXPECT_EQ(z, before) << "nothing to fill";
 }
 
 TEST(FlowRouting, LocalFillsDrainThePitsDiffusionLeaves) {
