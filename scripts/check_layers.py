@@ -63,9 +63,8 @@ RANK = {
     "terrain": 2,
     "polyline": 3,
     "subdiv": 4, "povray": 4,
-    # Ranked ahead for layers being added on other branches (DEM refinement uses
-    # terrain/; erosion uses analysis/); add them to the README's picture on landing.
-    "refine": 3, "erosion": 4,
+    "refine": 3,  # a real DEM refined by terrain/'s midpoint method
+    "erosion": 4,  # fluvial, hydraulic, thermal; uses analysis/
     "tiles": 3,  # tile sets: windows of terrain/ written through io/
     "tables": 5,  # every capability's parameter table, by kind
     "capi": 6, "cli": 6,

@@ -46,13 +46,13 @@ for line in out.splitlines():
         continue
     if kind == "enumerator":
         enum = scope.rsplit("::", 1)
-        if len(enum) == 2 and enum[0] in ("ft", "ft::detail") and not any(
+        if len(enum) == 2 and enum[0] in ("ft", "ft::detail", f"ft::{X}", f"ft::{X}::detail") and not any(
                 re.search(r"enum\s+(class|struct)\s+%s\b" % enum[1], h.read_text()) for h in layer_dir.glob("*.hpp")):
-            (top if enum[0] == "ft" else det).add(name)
+            (top if enum[0] in ("ft", f"ft::{X}") else det).add(name)
         continue
-    if scope == "ft":
+    if scope in ("ft", f"ft::{X}"):  # (ft::X: run again after a merge brought new callers)
         top.add(name)
-    elif scope == "ft::detail":
+    elif scope in ("ft::detail", f"ft::{X}::detail"):
         det.add(name)
 extra = set(sys.argv[2:])
 top |= extra

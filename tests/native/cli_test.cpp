@@ -113,10 +113,16 @@ TEST_F(Cli, AFailedRunNeverClobbersAGoodFile) {
 }
 
 TEST_F(Cli, OutOfRangeParametersAreRejectedWithTheAllowedRange) {
-  for (const char* args : {"--hurst 1.5", "--hurst nan", "--levels 0", "--levels 16", "--sigma 0", "--sigma -2"}) {
+  // The message names the field, states the allowed range (as the table
+  // gives it: hurst [0, 1], levels 1..15, sigma > 0) and echoes the value.
+  const std::pair<const char*, std::vector<std::string>> cases[] = {
+      {"--hurst 1.5", {"hurst", "[0, 1]", "1.5"}},  {"--hurst nan", {"hurst", "[0, 1]", "NaN"}},
+      {"--levels 0", {"levels", "1..15", "got 0"}}, {"--levels 16", {"levels", "1..15", "16"}},
+      {"--sigma 0", {"sigma", "> 0", "got 0"}},     {"--sigma -2", {"sigma", "> 0", "-2"}}};
+  for (const auto& [args, words] : cases) {
     const CliRun r = run(std::string("terrain --stats ") + args);
     EXPECT_NE(r.code, 0) << args;
-    EXPECT_FALSE(r.err.empty()) << args;
+    for (const std::string& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << args << ": " << r.err;
   }
 }
 

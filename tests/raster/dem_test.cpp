@@ -34,8 +34,16 @@ double increment_variance(const Heightfield& hf, int lag) {
   return sum / double(n);
 }
 
-TEST(RealDem, ReadsWithItsGeoreferenceAndCountsItsNodata) {
-  ASSERT_FALSE(dem_path().empty()) << "FT_REAL_DEM is not set (run through ctest: the fixture fetches the DEM)";
+// Every test reads the DEM: each fails with the reason when it is not there
+// (a fatal failure in SetUp skips the body, which would read "").
+class RealDem : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_FALSE(dem_path().empty()) << "FT_REAL_DEM is not set (run through ctest: the fixture fetches the DEM)";
+  }
+};
+
+TEST_F(RealDem, ReadsWithItsGeoreferenceAndCountsItsNodata) {
   try {
     io::read_heightfield(dem_path());
     FAIL() << "the DEM's nodata was accepted";
@@ -58,7 +66,7 @@ TEST(RealDem, ReadsWithItsGeoreferenceAndCountsItsNodata) {
   EXPECT_EQ(s.max, 547.0);
 }
 
-TEST(RealDem, RefinementKeepsTheDemAtItsNodes) {
+TEST_F(RealDem, RefinementKeepsTheDemAtItsNodes) {
   const Heightfield dem = io::read_heightfield(dem_path(), io::NodataPolicy::keep);
   refine::DemRefineConfig c;
   c.levels_added = 3;
@@ -91,7 +99,7 @@ TEST(RealDem, RefinementKeepsTheDemAtItsNodes) {
 //    r = 2^-k its height is uncertain by 2 sigma_H k; two of those.
 // Above one pixel the refined terrain must keep the DEM's own (measured)
 // variances, not the line's: the DEM is not exactly a power law there.
-TEST(RealDem, RefinedScalingContinuesTheDemsLineAcrossTheJunction) {
+TEST_F(RealDem, RefinedScalingContinuesTheDemsLineAcrossTheJunction) {
   const Heightfield dem = io::read_heightfield(dem_path(), io::NodataPolicy::keep);
   constexpr int K = 3;
   const std::vector<uint64_t> seeds = {1, 2, 3, 4};
