@@ -14,9 +14,13 @@ a layer of lower rank, never one of the same rank (sideways) or higher
                                                the FPL study uses analysis/)
        tiles/                                  tile sets of terrains larger than memory
                                                (windows of terrain/, files through io/)
+    3  refine/                                 DEM refinement (uses terrain/)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
-    5  tables/                                 the parameter tables of every layer, by kind
-    6  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
+       erosion/                                fluvial, hydraulic, thermal erosion and maps
+    5  pipeline/                               generate -> landform -> erode -> maps in one call
+                                               (uses terrain/ and erosion/)
+    6  tables/                                 the parameter tables of every layer, by kind
+    7  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
                                                by side: both link the static core, neither
                                                includes the other
 
@@ -46,12 +50,12 @@ RANK = {
     "terrain": 2,
     "polyline": 3,
     "subdiv": 4, "povray": 4,
-    # Ranked ahead for layers being added on other branches (DEM refinement uses
-    # terrain/; erosion uses analysis/); add them to the README's picture on landing.
-    "refine": 3, "erosion": 4,
+    "refine": 3,  # DEM refinement uses terrain/
+    "erosion": 4,  # erosion uses analysis/
     "tiles": 3,  # tile sets: windows of terrain/ written through io/
-    "tables": 5,  # every capability's parameter table, by kind
-    "capi": 6, "cli": 6,
+    "pipeline": 5,  # the terrain pipeline: terrain/ then erosion/
+    "tables": 6,  # every capability's parameter table, by kind
+    "capi": 7, "cli": 7,
 }
 TOP = {"capi", "cli"}  # may include any public header
 # Third-party include prefixes and the only layers that may include them.
