@@ -14,6 +14,8 @@ if(FT_BLENDER)
   endforeach()
   # The installed add-on must use its bundled library, except in the test of a missing one.
   set_tests_properties(blender_addon blender_params blender_dem blender_tiles blender_erosion PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
+  # The Erode step is checked against the CLI, another front end of the library's pipeline.
+  set_tests_properties(blender_erosion PROPERTIES ENVIRONMENT "FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>")
   set_tests_properties(blender_missing_library PROPERTIES
     ENVIRONMENT "FRACTERRA_LIBRARY=${CMAKE_CURRENT_BINARY_DIR}/no-such-dir/libfracterra.so")
   add_test(NAME blender_scratch_clean

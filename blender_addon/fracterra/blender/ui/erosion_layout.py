@@ -4,7 +4,6 @@ preset menu whose choice fills the passes (build/erosion.py runs them)."""
 from bpy.props import EnumProperty
 
 from ...core import erosion, params
-from ..build.erosion import effective
 
 # What the panels show of each process: its pass count, then its main rates.
 _GROUPS = (
@@ -22,13 +21,9 @@ def apply_preset(data):
     preset = data.erode_preset
     if preset == "CUSTOM":
         return
-    if preset == "NONE":
-        for name in erosion.COUNTS:
-            setattr(data, name, 0)
-        return
-    counts = effective({"erode_preset": preset})
+    counts = erosion.preset_values(preset.lower()) if preset != "NONE" else {}
     for name in erosion.COUNTS:
-        setattr(data, name, counts[name])
+        setattr(data, name, counts.get(name, 0))
 
 
 def preset_property(then=None):
