@@ -10,6 +10,7 @@ constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbove = FT_PARAM_FLAG_MIN_EXCLUSIVE;  // > hard_min
 constexpr double kInf = DBL_MAX;
 constexpr uint32_t kAbi211 = 0x2000B;  // camera_margin, camera_center_v; elevation 0 = auto
+constexpr uint32_t kAbi217 = 0x20011;  // a given camera, terrain colours, scene light
 
 #define ROW(field, type) FT_PARAM_ROW(ft_pov_scene_params, field, type)
 FT_PARAM_TABLE_BEGIN
@@ -79,6 +80,46 @@ constexpr ft_param_info kSceneRows[] = {
      .doc = "Image row (0 top .. 1 bottom) where the middle of the framed content lands; above 0.5 leaves more "
             "sky",
      .methods = kAll},
+    {ROW(camera_given, FT_PARAM_BOOL), .since = kAbi217, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Given Camera",
+     .doc = "Use camera_location, camera_direction, camera_right and camera_up as given (e.g. Blender's scene "
+            "camera) instead of framing the content",
+     .methods = kAll},
+    {ROW(camera_location, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 0,
+     .hard_min = -kInf, .hard_max = kInf, .soft_min = -100, .soft_max = 100, .unit = "scene units",
+     .label = "Camera Location", .doc = "World point of the given camera's eye", .methods = kAll},
+    {ROW(camera_direction, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 0,
+     .hard_min = -kInf, .hard_max = kInf, .soft_min = -1, .soft_max = 1, .unit = "", .label = "Camera Direction",
+     .doc = "The given camera's direction (POV-Ray's perspective camera, world axes): from the eye to the image "
+            "centre; with right and up it sets the angle and any lens shift",
+     .methods = kAll},
+    {ROW(camera_right, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 0,
+     .hard_min = -kInf, .hard_max = kInf, .soft_min = -1, .soft_max = 1, .unit = "", .label = "Camera Right",
+     .doc = "The given camera's image width as a world vector to the right (|right| / |direction| = 2 tan(angle "
+            "/ 2))",
+     .methods = kAll},
+    {ROW(camera_up, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 0,
+     .hard_min = -kInf, .hard_max = kInf, .soft_min = -1, .soft_max = 1, .unit = "", .label = "Camera Up",
+     .doc = "The given camera's image height as a world vector upwards (|right| / |up| = the image aspect)",
+     .methods = kAll},
+    {ROW(terrain_colors, FT_PARAM_POINTER), .flags = kData, .since = kAbi217, .element_type = FT_PARAM_FLOAT,
+     .element_kind = -1, .unit = "", .label = "Terrain Colours",
+     .doc = "Linear RGB of each terrain sample (3 floats per sample, the heightfield's rows), painted on the "
+            "terrain; NULL: sand, grass, rock and snow by altitude and slope",
+     .methods = kAll},
+    {ROW(has_scene_light, FT_PARAM_BOOL), .since = kAbi217, .element_kind = -1, .default_value = 0,
+     .hard_min = 0, .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Scene Light",
+     .doc = "A background and even ambient light of sky_color and a sun of sun_color, without fill light "
+            "(another program's lighting); 0: fracterra's sky, sun and fill",
+     .methods = kAll},
+    {ROW(sky_color, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 1000, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Sky Colour",
+     .doc = "Linear RGB of the background and the ambient light (with has_scene_light)", .methods = kAll},
+    {ROW(sun_color, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 1, .hard_min = 0,
+     .hard_max = 1000, .soft_min = 0, .soft_max = 10, .unit = "", .label = "Sun Colour",
+     .doc = "Linear RGB of the sun times its strength (with has_scene_light): 1 lights a white surface facing "
+            "it to 1",
+     .methods = kAll},
 };
 #undef ROW
 
@@ -142,6 +183,15 @@ void apply_scene_settings(const ft_pov_scene_params& c, SceneParams& s) {
   s.camera.center_v = c.camera_center_v;
   s.sun_azimuth_deg = c.sun_azimuth_deg;
   s.sun_elevation_deg = c.sun_elevation_deg;
+  s.camera_given = c.camera_given != 0;
+  for (int k = 0; k < 3; ++k) {
+    s.camera_pose.location[size_t(k)] = c.camera_location[k];
+    s.camera_pose.direction[size_t(k)] = c.camera_direction[k];
+    s.camera_pose.right[size_t(k)] = c.camera_right[k];
+    s.camera_pose.up[size_t(k)] = c.camera_up[k];
+  }
+  s.scene_light = c.has_scene_light != 0;
+  for (int k = 0; k < 3; ++k) s.sky_color[size_t(k)] = c.sky_color[k], s.sun_color[size_t(k)] = c.sun_color[k];
 }
 
 SweepOptions sweep_options(const ft_pov_sweep_params& c) {

@@ -14,8 +14,9 @@ const ParamTable& scene_param_table();
 const ParamTable& sweep_param_table();
 
 // Checks `c`'s settings against the table and copies them into `s`: world
-// sizes, vertical scale, sea, camera and sun. The terrain, the line sets and
-// the image path are data the caller hands over in its own types.
+// sizes, vertical scale, sea, camera (framed or given), sun and scene light.
+// The terrain, its colours, the line sets and the image path are data the
+// caller hands over in its own types.
 void apply_scene_settings(const ft_pov_scene_params& c, SceneParams& s);
 // Checks `c` against the table and returns it as SweepOptions.
 SweepOptions sweep_options(const ft_pov_sweep_params& c);
