@@ -166,42 +166,59 @@ const ParamTable& sweep_param_table() {
   return table;
 }
 
+namespace {
+
+// Each settings row of the tables into the exporter's own types; the tests
+// ask unbound_rows() that none is left out.
+#define BIND(row, member) FT_PARAM_BIND(SceneParams, row, member)
+const ParamBinding<SceneParams> kSceneBindings[] = {
+    BIND(world_size_x, world_size_x),
+    BIND(world_size_y, world_size_y),
+    BIND(vertical_scale, vertical_scale),
+    BIND(has_sea, has_sea),
+    BIND(sea_level, sea_level),
+    BIND(camera_azimuth_deg, camera.azimuth_deg),
+    BIND(camera_elevation_deg, camera.elevation_deg),
+    BIND(camera_fov_deg, camera.fov_deg),
+    BIND(camera_aspect, camera.aspect),
+    BIND(camera_distance_scale, camera.distance_scale),
+    BIND(sun_azimuth_deg, sun_azimuth_deg),
+    BIND(sun_elevation_deg, sun_elevation_deg),
+    BIND(camera_margin, camera.margin),
+    BIND(camera_center_v, camera.center_v),
+    BIND(camera_given, camera_given),
+    BIND(camera_location, camera_pose.location),
+    BIND(camera_direction, camera_pose.direction),
+    BIND(camera_right, camera_pose.right),
+    BIND(camera_up, camera_pose.up),
+    BIND(has_scene_light, scene_light),
+    BIND(sky_color, sky_color),
+    BIND(sun_color, sun_color),
+};
+#undef BIND
+#define BIND(row, member) FT_PARAM_BIND(SweepOptions, row, member)
+const ParamBinding<SweepOptions> kSweepBindings[] = {
+    BIND(spline, spline),
+    BIND(segments_per_sweep, segments_per_sweep),
+    BIND(default_radius, default_radius),
+    BIND(radius_scale, radius_scale),
+    BIND(tolerance, tolerance),
+};
+#undef BIND
+
+}  // namespace
+
+std::span<const ParamBinding<SceneParams>> scene_bindings() { return kSceneBindings; }
+std::span<const ParamBinding<SweepOptions>> sweep_bindings() { return kSweepBindings; }
+
 void apply_scene_settings(const ft_pov_scene_params& c, SceneParams& s) {
   // The camera's ranges are checked here only: frame_points trusts them.
-  check_ranges(scene_param_table(), &c);
-  s.world_size_x = c.world_size_x;
-  s.world_size_y = c.world_size_y;
-  s.vertical_scale = c.vertical_scale;
-  s.has_sea = c.has_sea != 0;
-  s.sea_level = c.sea_level;
-  s.camera.azimuth_deg = c.camera_azimuth_deg;
-  s.camera.elevation_deg = c.camera_elevation_deg;
-  s.camera.fov_deg = c.camera_fov_deg;
-  s.camera.aspect = c.camera_aspect;
-  s.camera.distance_scale = c.camera_distance_scale;
-  s.camera.margin = c.camera_margin;
-  s.camera.center_v = c.camera_center_v;
-  s.sun_azimuth_deg = c.sun_azimuth_deg;
-  s.sun_elevation_deg = c.sun_elevation_deg;
-  s.camera_given = c.camera_given != 0;
-  for (int k = 0; k < 3; ++k) {
-    s.camera_pose.location[size_t(k)] = c.camera_location[k];
-    s.camera_pose.direction[size_t(k)] = c.camera_direction[k];
-    s.camera_pose.right[size_t(k)] = c.camera_right[k];
-    s.camera_pose.up[size_t(k)] = c.camera_up[k];
-  }
-  s.scene_light = c.has_scene_light != 0;
-  for (int k = 0; k < 3; ++k) s.sky_color[size_t(k)] = c.sky_color[k], s.sun_color[size_t(k)] = c.sun_color[k];
+  apply_bindings(scene_param_table(), &c, scene_bindings(), s);
 }
 
 SweepOptions sweep_options(const ft_pov_sweep_params& c) {
-  check_ranges(sweep_param_table(), &c);
   SweepOptions o;
-  o.spline = SweepSpline(c.spline);
-  o.segments_per_sweep = c.segments_per_sweep;
-  o.default_radius = c.default_radius;
-  o.radius_scale = c.radius_scale;
-  o.tolerance = c.tolerance;
+  apply_bindings(sweep_param_table(), &c, sweep_bindings(), o);
   return o;
 }
 
