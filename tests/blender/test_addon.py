@@ -20,11 +20,7 @@ def core():
     return addon_harness.submodule("core")
 
 
-def clear_scene():
-    for obj in list(bpy.data.objects):
-        bpy.data.objects.remove(obj)
-    for mesh in list(bpy.data.meshes):
-        bpy.data.meshes.remove(mesh)
+clear_scene = addon_harness.clear_scene
 
 
 def coords(mesh):

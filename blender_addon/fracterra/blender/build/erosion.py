@@ -17,6 +17,10 @@ DEPOSIT_ATTRIBUTE = "fracterra_deposit"  # sediment laid down
 WATER_ATTRIBUTE = "fracterra_water"  # water left by the rain
 ATTRIBUTES = (FLOW_ATTRIBUTE, DEPOSIT_ATTRIBUTE, WATER_ATTRIBUTE)
 MATERIAL_NAME = "Fracterra Eroded Terrain"
+# The eroded material's rule (eroded_material's nodes, eroded_colors per sample
+# for the POV-Ray export): linear RGB, and the attribute ranges each ramp rises over.
+GRASS, SEDIMENT, ROCK = (0.16, 0.26, 0.07), (0.55, 0.47, 0.33), (0.33, 0.31, 0.29)
+CHANNELS, DEPOSITS, STEEP = (0.45, 0.7), (0.05, 0.4), (0.3, 0.45)
 
 
 # --- in the job's worker thread (no bpy here)
@@ -124,16 +128,31 @@ def eroded_material():
                 links.new(value, socket)
         return node.outputs["Color"]
 
-    grass, sediment, rock = (0.16, 0.26, 0.07, 1.0), (0.55, 0.47, 0.33, 1.0), (0.33, 0.31, 0.29, 1.0)
-    channels = ramp(attribute(FLOW_ATTRIBUTE, 200), 0.45, 0.7, 200)
-    deposits = ramp(attribute(DEPOSIT_ATTRIBUTE, 0), 0.05, 0.4, 0)
+    grass, sediment, rock = (*GRASS, 1.0), (*SEDIMENT, 1.0), (*ROCK, 1.0)
+    channels = ramp(attribute(FLOW_ATTRIBUTE, 200), *CHANNELS, 200)
+    deposits = ramp(attribute(DEPOSIT_ATTRIBUTE, 0), *DEPOSITS, 0)
     math_max = nodes.new("ShaderNodeMath")
     math_max.operation = "MAXIMUM"
     math_max.location = (-650, 100)
     links.new(channels, math_max.inputs[0])
     links.new(deposits, math_max.inputs[1])
-    steep = ramp(attribute(SLOPE_ATTRIBUTE, -200), 0.3, 0.45, -200)
+    steep = ramp(attribute(SLOPE_ATTRIBUTE, -200), *STEEP, -200)
     ground = mix(math_max.outputs["Value"], grass, sediment, 100)
     colour = mix(steep, ground, rock, -100)
     links.new(colour, bsdf.inputs["Base Color"])
     return mat
+
+
+def eroded_colors(slope, flow, deposit):
+    """eroded_material's base colour at each sample of the attribute arrays
+    (0..1 each): an (n, 3) float32 array of linear RGB, node for node."""
+
+    def ramp(x, lo, hi):  # Map Range, smoothstep, clamped
+        t = np.clip((np.asarray(x, dtype=np.float64) - lo) / (hi - lo), 0.0, 1.0)
+        return (t * t * (3.0 - 2.0 * t))[:, None]
+
+    def mix(fac, a, b):  # MixRGB, Mix
+        return (1.0 - fac) * np.asarray(a) + fac * np.asarray(b)
+
+    ground = mix(np.maximum(ramp(flow, *CHANNELS), ramp(deposit, *DEPOSITS)), GRASS, SEDIMENT)
+    return mix(ramp(slope, *STEEP), ground, ROCK).astype(np.float32)
