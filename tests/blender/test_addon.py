@@ -215,6 +215,9 @@ class TerrainAddTest(unittest.TestCase):
         self.assertIn("archipelago.py", left)
         self.assertIn("my_mountains.py", left)
         self.assertIn("Archipelago.py", left)  # the capitalised ones are there (installed again if missing)
+        # Feder Landscape, as the add-on shipped it, became Lake Country (named for what it makes).
+        self.assertNotIn("Feder Landscape.py", left)
+        self.assertIn("Lake Country.py", left)
         self.assertEqual(len([n for n in left if n[0].isupper()]), 7, left)
 
     def test_reference_grid_object_heights_survive_at_the_nodes(self):
