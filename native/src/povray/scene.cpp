@@ -66,7 +66,7 @@ void write_colors_png(const std::string& path, const Heightfield& hf, const floa
     const double e = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
     bytes[i] = uint8_t(std::lround(255 * e));
   }
-  write_png_rgb(path, hf.width(), hf.height(), bytes.data());
+  io::write_png_rgb(path, hf.width(), hf.height(), bytes.data());
 }
 
 // The texture painting `place`'s terrain with the colours PNG `ref`: the
