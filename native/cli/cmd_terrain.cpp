@@ -1,5 +1,6 @@
 // fracterra terrain: generate a heightfield and write it as PNG/PGM/NPY.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "contour/marching_squares.hpp"
 #include "core/error.hpp"
 #include "erosion/erosion.hpp"
+#include "cli/erosion_map_flags.hpp"
 #include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
@@ -48,6 +50,8 @@ struct TerrainOptions {
   std::string reference, falloff_mask, out, size, pov, center, curves_out, erode;
   std::vector<double> curves;
   bool stats = false, curves_world = false;
+  double erosion_strength = NAN;  // NaN: the preset's
+  ErosionMapFlags erosion_maps;
 };
 
 // The Mandelbrot terrain's curves of equal escape time: the contours at the
@@ -63,7 +67,7 @@ void write_escape_curves(const TerrainOptions& o, const ft_terrain_params& p, co
   write_polylines(set, o.curves_out);
 }
 
-int run(const TerrainOptions& o) {
+int run(TerrainOptions& o) {
   ft_terrain_params p = o.p;
   if (!o.size.empty()) parse_size(o.size, p);
   if (!o.center.empty()) parse_center(o.center, p);
@@ -97,7 +101,9 @@ int run(const TerrainOptions& o) {
   Stopwatch clock;
   Heightfield hf = generate_terrain(p);
   if (!o.erode.empty()) {
-    erosion::ErosionConfig e = erosion::erosion_preset(o.erode, hf);  // uplift fitted to its relief
+    erosion::ErosionConfig e = erosion::erosion_preset(o.erode, hf);
+    if (!std::isnan(o.erosion_strength)) e.model.strength = o.erosion_strength;
+    o.erosion_maps.apply(e);
     // Spectral terrains tile with period W x H (the FFT grid); the others'
     // periodic grids repeat their first row and column, which a torus of
     // W x H would not keep equal, so they erode bounded.
@@ -156,8 +162,12 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                                        "image row 0 (the top) at terrain row 0")
                         ->check(CLI::ExistingFile);
                     app.add_option("--erode", o->erode,
-                                   "then erode it with a preset: valleys (fluvial), rain (hydraulic), scree "
-                                   "(thermal) or land (all three); see fracterra erode");
+                                   "then erode it with a preset: gentle_valleys, rugged_mountains, badlands, "
+                                   "alluvial_fans or scree_slopes (old names valleys, land, rain, scree); see "
+                                   "fracterra erode --help");
+                    app.add_option("--strength", o->erosion_strength,
+                                   "with --erode: how far the erosion goes, 0..1 [default: the preset's, 0.5]");
+                    o->erosion_maps.add_to(app);
                     app.add_option("--out", o->out,
                                    "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), "
                                    ".exr (float) or .raw/.r16 (RAW16 + sidecar .json)");

@@ -84,6 +84,11 @@ const std::vector<Field> kErosionFields = {
     FT_FIELD(ft_erosion_params, thermal_rate), FT_FIELD(ft_erosion_params, periodic),
     FT_FIELD(ft_erosion_params, threads), FT_FIELD(ft_erosion_params, progress),
     FT_FIELD(ft_erosion_params, progress_user), FT_FIELD(ft_erosion_params, uplift_follows_terrain),
+    FT_FIELD(ft_erosion_params, strength), FT_FIELD(ft_erosion_params, duration),
+    FT_FIELD(ft_erosion_params, deposition), FT_FIELD(ft_erosion_params, rainfall),
+    FT_FIELD(ft_erosion_params, erosion_mask), FT_FIELD(ft_erosion_params, erosion_mask_width),
+    FT_FIELD(ft_erosion_params, erosion_mask_height), FT_FIELD(ft_erosion_params, rain_map),
+    FT_FIELD(ft_erosion_params, rain_map_width), FT_FIELD(ft_erosion_params, rain_map_height),
 };
 
 const std::vector<Field> kPovSceneFields = {

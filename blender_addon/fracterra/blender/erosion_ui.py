@@ -34,18 +34,17 @@ _GROUPS = (
 
 
 def effective(values):
-    """The erosion settings a run uses: a preset picks which processes run and
-    how many passes (as `fracterra erode --preset` does), the rates are the
-    settings' own; None runs nothing; Custom takes the passes as set too.
-    (A preset with rivers also sets the uplift, fitted to the generated
-    terrain's relief: generate_and_erode, as `fracterra erode --preset`.)"""
+    """The erosion settings a run uses: a preset sets its run and the landscape
+    model's rates (erosion.PRESET_FIELDS, as `fracterra erode --preset` does);
+    Strength and the rest are the settings' own; None runs nothing; Custom takes
+    everything as set."""
     preset = values.get("erode_preset", "NONE")
     if preset == "CUSTOM":
         return values
     if preset == "NONE":
-        return {**values, **{name: 0 for name in erosion.COUNTS}}
+        return {**values, "duration": 0.0, **{name: 0 for name in erosion.COUNTS}}
     counts = erosion.preset_values(preset.lower())
-    return {**values, **{name: counts[name] for name in erosion.COUNTS}}
+    return {**values, **{name: counts[name] for name in erosion.PRESET_FIELDS}}
 
 
 def apply_preset(data):
@@ -58,10 +57,13 @@ def apply_preset(data):
     if preset == "NONE":
         for name in erosion.COUNTS:
             setattr(data, name, 0)
+        if hasattr(data, "duration"):
+            data.duration = 0.0
         return
     counts = effective({"erode_preset": preset})
-    for name in erosion.COUNTS:
-        setattr(data, name, counts[name])
+    for name in erosion.PRESET_FIELDS:
+        if hasattr(data, name):
+            setattr(data, name, counts[name])
 
 
 def preset_property(then=None):

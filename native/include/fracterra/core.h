@@ -46,7 +46,11 @@ extern "C" {
 /// (FT_PARAM_FLAG_ZERO_IS_AUTO in params.h); 0 is ft_pov_scene_params_init's default.
 /// 2.12: ft_erosion_preset_fitted (erosion.h); uplift_follows_terrain at the end of
 ///      ft_erosion_params.
-#define FT_ABI_VERSION_MINOR 12
+/// 2.14: the erosion landscape model in world units and years: strength, duration,
+///      deposition, rainfall, erosion_mask (+ width, height) and rain_map (+ width,
+///      height) at the end of ft_erosion_params; presets named for what they make
+///      (the old ids stay as aliases); ft_erosion_preset_fitted no longer fits an uplift.
+#define FT_ABI_VERSION_MINOR 14
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.
