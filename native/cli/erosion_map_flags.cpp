@@ -5,7 +5,7 @@
 namespace ft::cli {
 
 void ErosionMapFlags::add_to(CLI::App& app) {
-  const std::string raster = std::string(kHeightfieldReadHelp) +
+  const std::string raster = std::string(io::kHeightfieldReadHelp) +
                              "; 8/16-bit images read as 0..1, other rasters must hold 0..1; spans the terrain "
                              "corner to corner, resampled bilinearly, image row 0 (the top) at terrain row 0";
   app.add_option("--erosion-mask", erosion_mask,
@@ -18,11 +18,11 @@ void ErosionMapFlags::add_to(CLI::App& app) {
 
 void ErosionMapFlags::apply(erosion::ErosionConfig& c) {
   if (!erosion_mask.empty()) {
-    mask_grid = read_heightfield(erosion_mask);
+    mask_grid = io::read_heightfield(erosion_mask);
     c.erosion_mask = {mask_grid.data(), mask_grid.width(), mask_grid.height()};
   }
   if (!rain_map.empty()) {
-    rain_grid = read_heightfield(rain_map);
+    rain_grid = io::read_heightfield(rain_map);
     c.rain_map = {rain_grid.data(), rain_grid.width(), rain_grid.height()};
   }
 }

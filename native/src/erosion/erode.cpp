@@ -2,6 +2,7 @@
 // scale to small), and the maps.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <omp.h>
 #include <vector>
 
@@ -34,6 +35,14 @@ void check_map(const std::string& name, const MapInput& m) {
               " (normalise an image to 0..1)");
 }
 
+// 6 significant digits: a float sample and the limit as people write them
+// (1e+38, not 9.9999996802856925e+37).
+std::string short_number(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%g", v);
+  return s;
+}
+
 Heightfield like(const Heightfield& hf) {
   Heightfield out(hf.width(), hf.height());
   out.set_world_size(hf.world_size());
@@ -56,15 +65,21 @@ void validate(const ErosionConfig& c, const Heightfield& hf) {
     invalid("erosion needs a terrain of at least 3 x 3 samples, got " + std::to_string(hf.width()) + " x " +
             std::to_string(hf.height()));
   for (size_t i = 0; i < hf.size(); ++i)
-    if (!std::isfinite(hf.data()[i]))
+    if (!(std::fabs(hf.data()[i]) <= kMaxErosionHeight))  // NaN too
       invalid("terrain height at sample " + std::to_string(i % hf.width()) + ", " + std::to_string(i / hf.width()) +
-              " is " + format_number(hf.data()[i]) + ": erosion needs finite heights");
+              " is " + short_number(hf.data()[i]) + ": erosion needs finite heights within +-" +
+              short_number(kMaxErosionHeight) + " world units (a relief up to " + short_number(2 * kMaxErosionHeight) +
+              "; beyond, its float arithmetic overflows)");
   // Every range is the table's (erosion_params.cpp); only the settings the
-  // C struct does not carry are checked here.
+  // C struct does not carry, and the cross-field limits, are checked here.
   const ft_erosion_params p = to_c(c);
   check_ranges(erosion_param_table(), &p);
   check_range("hydraulic.min_tilt", c.hydraulic.min_tilt, 0.0, 1.0);
   check_rate("hydraulic.max_erosion", c.hydraulic.max_erosion);
+  const auto& f = c.fluvial;
+  if (f.uplift * f.dt * f.steps > kMaxErosionHeight)
+    invalid("uplift x fluvial_dt x fluvial_steps (the total uplift) must be <= " +
+            short_number(kMaxErosionHeight) + " world units, got " + format_number(f.uplift * f.dt * f.steps));
   check_map("erosion_mask", c.erosion_mask);
   check_map("rain_map", c.rain_map);
   resolve_threads(c.threads);
