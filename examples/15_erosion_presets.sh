@@ -13,10 +13,10 @@ mountain=(--method midpoint --sigma 2 --levelling 1 --height-offset 1.5 --fallof
           --world-size 10)
 for seed in 1 2 3; do
   "$ft" terrain "${mountain[@]}" --levels "$levels" --seed "$seed" --out "$out/uneroded-seed$seed.npy"
-  "$ft" relief --in "$out/uneroded-seed$seed.npy" --out "$out/uneroded-seed$seed.png"
+  "$ft" relief --in "$out/uneroded-seed$seed.npy" --out "$out/uneroded-seed$seed.png" --sea-fraction 0
   for preset in gentle_valleys rugged_mountains badlands alluvial_fans scree_slopes; do
     "$ft" terrain "${mountain[@]}" --levels "$levels" --seed "$seed" --erode "$preset" --out "$out/$preset-seed$seed.npy"
-    "$ft" relief --in "$out/$preset-seed$seed.npy" --out "$out/$preset-seed$seed.png"
+    "$ft" relief --in "$out/$preset-seed$seed.npy" --out "$out/$preset-seed$seed.png" --sea-fraction 0
   done
 done
 rm -f "$out"/*.npy
