@@ -27,4 +27,14 @@ void ErosionMapFlags::apply(erosion::ErosionConfig& c) {
   }
 }
 
+void ErosionMapFlags::apply(ft_erosion_params& p) {
+  erosion::ErosionConfig c;
+  apply(c);
+  if (!erosion_mask.empty())
+    p.erosion_mask = c.erosion_mask.values, p.erosion_mask_width = c.erosion_mask.width,
+    p.erosion_mask_height = c.erosion_mask.height;
+  if (!rain_map.empty())
+    p.rain_map = c.rain_map.values, p.rain_map_width = c.rain_map.width, p.rain_map_height = c.rain_map.height;
+}
+
 }  // namespace ft::cli

@@ -7,6 +7,7 @@
 #include "cli/cli_util.hpp"
 #include "core/heightfield.hpp"
 #include "erosion/erosion.hpp"
+#include "fracterra/erosion.h"
 
 namespace ft::cli {
 
@@ -17,6 +18,8 @@ struct ErosionMapFlags {
   void add_to(CLI::App& app);
   // Reads the files and points `c`'s maps at them (checked by erode()).
   void apply(erosion::ErosionConfig& c);
+  // The same for the C settings the pipeline takes (terrain --erode).
+  void apply(ft_erosion_params& p);
 };
 
 }  // namespace ft::cli

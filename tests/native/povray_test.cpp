@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "povray/camera.hpp"
+#include "povray/pov_params.hpp"
 #include "povray/scene.hpp"
 #include "povray/sdl_writer.hpp"
 #include "povray/sphere_sweep_export.hpp"
@@ -154,6 +155,32 @@ TEST(PovCamera, FramedPointsAllLandInsideTheImage) {
       // Tight: some point touches the margin (2% of the frame) on some side.
       EXPECT_LT(std::min({umin, 1 - umax, vmin, 1 - vmax}), 0.03) << az << " " << el;
     }
+}
+
+// Every settings row of the scene and sweep tables reaches the exporter's
+// types, converted: a row added to a table without its binding fails here.
+TEST(PovParams, EverySettingsRowIsBoundAndCarriedOver) {
+  EXPECT_EQ(unbound_rows(scene_param_table(), scene_bindings()), std::vector<std::string>{});
+  EXPECT_EQ(unbound_rows(sweep_param_table(), sweep_bindings()), std::vector<std::string>{});
+  ft_pov_scene_params c = defaults_of<ft_pov_scene_params>(scene_param_table());
+  c.has_sea = 1, c.sea_level = -0.25, c.camera_azimuth_deg = 33, c.camera_center_v = 0.6, c.camera_given = 1;
+  c.camera_up[2] = 0.75, c.sun_color[1] = 2.5;
+  SceneParams s;
+  apply_scene_settings(c, s);
+  EXPECT_TRUE(s.has_sea);
+  EXPECT_EQ(s.sea_level, -0.25);
+  EXPECT_EQ(s.camera.azimuth_deg, 33);
+  EXPECT_EQ(s.camera.center_v, 0.6);
+  EXPECT_TRUE(s.camera_given);
+  EXPECT_EQ(s.camera_pose.up, (Vec3{0, 0, 0.75}));
+  EXPECT_EQ(s.sun_color, (Vec3{1, 2.5, 1}));
+  ft_pov_sweep_params w = defaults_of<ft_pov_sweep_params>(sweep_param_table());
+  w.spline = FT_POV_SWEEP_CUBIC, w.segments_per_sweep = 17;
+  const SweepOptions o = sweep_options(w);
+  EXPECT_EQ(o.spline, SweepSpline::kCubic);
+  EXPECT_EQ(o.segments_per_sweep, 17);
+  c.camera_center_v = 0.9;  // the table's range is checked first
+  EXPECT_THROW(apply_scene_settings(c, s), Error);
 }
 
 TEST(PovScene, RejectsBadParametersBeforeWritingAnything) {

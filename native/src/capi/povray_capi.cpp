@@ -46,6 +46,7 @@ FT_API ft_status ft_pov_write_scene(const ft_pov_scene_params* given, const char
     ft::pov::SceneParams s;
     ft::pov::apply_scene_settings(*p, s);
     if (p->terrain) s.terrain = &p->terrain->hf;
+    s.terrain_colors = p->terrain_colors;
     for (int32_t i = 0; i < p->line_set_count; ++i) {
       ft::check_not_null("lines[i].lines", p->lines[i].lines);
       s.lines.push_back({&p->lines[i].lines->set, ft::pov::LineKind(p->lines[i].kind), p->lines[i].radius});
