@@ -43,7 +43,7 @@ step "the Mandelbrot set as a terrain (seed 002) and its curves of equal escape 
   --out "$out/mandelbrot.png" --curves 2,3,4,6,8 --curves-out "$out/mandelbrot-curves.csv" --stats
 "$ft" relief --in "$out/mandelbrot.png" --out "$out/mandelbrot-relief.png"
 
-step "erosion: an fBm terrain (513^2) eroded by the land preset (rivers, rain, scree), with its maps"
+step "erosion: an fBm terrain (513^2) eroded by the land preset (Rugged Mountains), with its maps"
 "$ft" terrain --method fbm --size 513 --hurst 0.8 --seed 7 --world-size 10 --out "$out/uneroded.png"
 # Without the preset's uplift: the eroded/deposited maps are height differences,
 # so uplift would show as deposit everywhere (docs/erosion.md).

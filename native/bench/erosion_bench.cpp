@@ -6,6 +6,9 @@
 //                 times A.N.T.'s eroder on them): FT_ANT_DIR=DIR/ant_N.npy.
 //                 Without them an fBm terrain of the same size stands in.
 //   Fluvial/N     stream power + diffusion, 10 time steps (FT_STEPS=100 for the issue's 100).
+//   LandPreset/N  issue 24: the "land" preset (Rugged Mountains, the
+//                 landscape model at its default strength) on an fBm terrain
+//                 10 world units across, no maps: `erode --preset land`.
 // Run: FT_ANT_DIR=/tmp/ant build/native/erosion_bench --benchmark_repetitions=3
 #include <benchmark/benchmark.h>
 
@@ -16,6 +19,7 @@
 #include <vector>
 
 #include "erosion/erosion.hpp"
+#include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
 #include "terrain/terrain.hpp"
 
@@ -97,6 +101,20 @@ void Fluvial(benchmark::State& state) {
   state.counters["steps"] = c.fluvial.steps;
 }
 BENCHMARK(Fluvial)->Arg(513)->Arg(1025)->Arg(2049)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+void LandPreset(benchmark::State& state) {
+  ft_terrain_params p = ft::default_terrain_params();
+  p.method = FT_TERRAIN_FBM;
+  p.width = p.height = int32_t(state.range(0));
+  p.hurst = 0.8;
+  p.seed = 1;
+  ft::Heightfield src = ft::generate_terrain(p);
+  src.set_world_size(10.0);
+  ErosionConfig c = erosion_preset("land", src);
+  c.threads = bench_threads();
+  for (auto _ : state) benchmark::DoNotOptimize(erode(src, c, nullptr).data());
+}
+BENCHMARK(LandPreset)->Arg(513)->Arg(1025)->Arg(2049)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

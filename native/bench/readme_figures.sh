@@ -8,14 +8,14 @@
 #   native/bench/readme_figures.sh [BUILD_DIR] [OUT_DIR] [SECTION ...]
 #
 # SECTIONS: terrain window noise polyline povray subdiv blender erosion
-# fluvial (default: all). Each writes OUT_DIR/SECTION.txt.
+# fluvial land (default: all). Each writes OUT_DIR/SECTION.txt.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=$(realpath "${1:-build}")
 out=$(realpath -m "${2:-/tmp/fracterra-figures}")
 shift $(( $# > 2 ? 2 : $# ))
 sections=("$@")
-[ ${#sections[@]} -gt 0 ] || sections=(terrain window noise polyline povray subdiv blender erosion fluvial)
+[ ${#sections[@]} -gt 0 ] || sections=(terrain window noise polyline povray subdiv blender erosion fluvial land)
 mkdir -p "$out" "$out/ant"
 gb=(--benchmark_repetitions=3 --benchmark_report_aggregates_only=true)
 
@@ -51,6 +51,18 @@ for s in "${sections[@]}"; do
           --benchmark_filter=AntPasses
       done ;;
     fluvial) FT_STEPS=100 run fluvial "$build/native/erosion_bench" "${gb[@]}" --benchmark_filter=Fluvial/2049 ;;
+    land)
+      # Issue 24's targets: `erode --preset land` (the landscape model, all
+      # maps off) on 2 threads at 513^2, 1025^2 and 2049^2, three runs each
+      # (the erosion's own seconds from --stats), against one A.N.T.
+      # mesh.eroder(Iterations=1) on 1025^2 in the same run.
+      run land blender -b --factory-startup --python native/bench/ant_eroder_anchor.py -- "$out/ant" 1025
+      for n in 513 1025 2049; do
+        "$build/native/fracterra" terrain --method fbm --size "$n" --seed 1 --hurst 0.8 --out "$out/fbm_$n.npy"
+        for rep in 1 2 3; do
+          run land "$build/native/fracterra" erode --in "$out/fbm_$n.npy" --preset land --threads 2 --stats
+        done
+      done ;;
     *) echo "unknown section: $s" >&2; exit 2 ;;
   esac
 done

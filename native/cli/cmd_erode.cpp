@@ -7,6 +7,7 @@
 
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/erosion_map_flags.hpp"
 #include "cli/param_flags.hpp"
 #include "core/error.hpp"
 #include "erosion/erosion.hpp"
@@ -21,6 +22,7 @@ struct ErodeCli {
   std::string in, out, maps, preset;
   double world_size = 0;
   bool stats = false;
+  ErosionMapFlags map_files;
   // The settings from ft_erosion_params' table (erosion_params.cpp): what
   // the flags wrote over the table's defaults.
   ft_erosion_params flags = defaults_of<ft_erosion_params>(erosion_param_table());
@@ -34,27 +36,36 @@ const std::map<std::string, std::string> kAliases = {{"fluvial_steps", "--fluvia
                                                      {"talus_degrees", "--talus"}};
 
 // The settings to erode `hf` with: the flags over the table's defaults, or
-// over the preset fitted to the terrain when one is named (a flag given on
-// the command line wins over the preset's value).
-erosion::ErosionConfig settings(const ErodeCli& o, const CLI::App& app, const Heightfield& hf) {
-  if (o.preset.empty()) return erosion::from_c(o.flags);
-  ft_erosion_params p = erosion::to_c(erosion::erosion_preset(o.preset, hf));
-  overlay_given_flags(app, erosion_param_table(), &o.flags, &p);
-  return erosion::from_c(p);
+// over the preset when one is named (a flag given on the command line wins
+// over the preset's value), and the map files.
+erosion::ErosionConfig settings(ErodeCli& o, const CLI::App& app, const Heightfield& hf) {
+  ft_erosion_params p = o.flags;
+  if (!o.preset.empty()) {
+    p = erosion::to_c(erosion::erosion_preset(o.preset, hf));
+    overlay_given_flags(app, erosion_param_table(), &o.flags, &p);
+  }
+  erosion::ErosionConfig c = erosion::from_c(p);
+  o.map_files.apply(c);
+  return c;
 }
 
-Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) and write its maps",
+std::string preset_help() {
+  std::string h = "start from a preset (flags given override its values):";
+  for (const auto& p : erosion::erosion_presets())
+    h += " " + p.id + (p.alias.empty() ? "" : " (old name " + p.alias + ")") + ": " + p.description + ";";
+  h.back() = '.';
+  return h + " Labels (\"Gentle Valleys\") work too";
+}
+
+Registration reg({"erode", "Erode a heightfield (channels, scree and fans over years; expert passes) and write its maps",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<ErodeCli>();
                     app.add_option("--in", o->in, "heightfield .png, .pgm or .npy")->required()->check(CLI::ExistingFile);
                     app.add_option("--out", o->out, "eroded heightfield .png, .pgm or .npy");
                     app.add_option("--maps", o->maps,
                                    "folder for the maps as 16-bit PNGs with their ranges (and maps.json)");
-                    app.add_option("--preset", o->preset,
-                                   "start from a preset: valleys (fluvial with uplift), rain (hydraulic), scree "
-                                   "(thermal) or land (all three); flags given override its values. Its uplift "
-                                   "rate would raise the land by the terrain's relief over the preset's steps, so "
-                                   "incision keeps about the relief the terrain had");
+                    app.add_option("--preset", o->preset, preset_help());
+                    o->map_files.add_to(app);
                     app.add_option("--world-size", o->world_size,
                                    "extent along x in world units when the file does not record it [default: 10]");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, the height range before and after, what left at the edges");
@@ -79,7 +90,7 @@ Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) an
                         nlohmann::json j = {{"seconds", seconds},       {"carried_out", budget.carried_out},
                                             {"min", after.min},         {"max", after.max},
                                             {"input_min", before.min},  {"input_max", before.max},
-                                            {"uplift", c.fluvial.uplift},
+                                            {"detached", budget.detached}, {"deposited", budget.deposited},
                                             {"world_size", eroded.world_size()}};
                         std::printf("%s\n", j.dump().c_str());
                       }

@@ -1,5 +1,6 @@
 // fracterra terrain: generate a heightfield and write it as PNG/PGM/NPY.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "cli/param_flags.hpp"
 #include "contour/marching_squares.hpp"
 #include "core/error.hpp"
+#include "cli/erosion_map_flags.hpp"
 #include "erosion/erosion_params.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
@@ -54,6 +56,7 @@ struct TerrainOptions {
   std::string reference, falloff_mask, out, size, pov, center, curves_out;
   std::vector<double> curves;
   bool stats = false, curves_world = false;
+  ErosionMapFlags erosion_maps;
 };
 
 // The Mandelbrot terrain's curves of equal escape time: the contours at the
@@ -69,7 +72,7 @@ void write_escape_curves(const TerrainOptions& o, const ft_terrain_params& p, co
   io::write_polylines(set, o.curves_out);
 }
 
-int run(const TerrainOptions& o) {
+int run(TerrainOptions& o) {
   ft_terrain_params p = o.p;
   if (!o.size.empty()) parse_size(o.size, p);
   if (!o.center.empty()) parse_center(o.center, p);
@@ -102,6 +105,7 @@ int run(const TerrainOptions& o) {
   }
   Stopwatch clock;
   // Generate -> landform -> erode, the library's pipeline (as the add-on's).
+  o.erosion_maps.apply(o.erosion);  // --erosion-mask, --rain-map
   ft_build_params b = o.build;
   b.terrain = &p;
   b.erosion = o.erosion_given ? &o.erosion : nullptr;
@@ -163,6 +167,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     add_param_flags(app, build_param_table(), &o->build, {"threads"},
                                     {{"erosion_preset", "--erode"}});
                     add_param_flags(app, erosion_param_table(), &o->erosion, {"periodic", "threads"});
+                    o->erosion_maps.add_to(app);
                     app.add_option("--out", o->out,
                                    "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), "
                                    ".exr (float) or .raw/.r16 (RAW16 + sidecar .json)");

@@ -180,8 +180,8 @@ class ErodeTest(unittest.TestCase):
     def test_regenerate_reruns_generation_then_erosion(self):
         obj = self.add(erode_preset="SCREE")
         settings = obj.fracterra_terrain
-        settings.erode_preset = "CUSTOM"  # keeps the preset's passes, now editable
-        self.assertGreater(settings.thermal_iterations, 0)
+        settings.erode_preset = "CUSTOM"  # keeps the preset's run and rates, now editable
+        self.assertGreater(settings.duration, 0)
         settings.talus_degrees = 20.0
         settings.seed = 9
         before = heights(obj.data).tobytes()
@@ -190,7 +190,7 @@ class ErodeTest(unittest.TestCase):
         self.assertEqual(heights(obj.data).tobytes(), cli_result(settings).tobytes())
         # None: the fractal terrain as generated, and no stale maps.
         settings.erode_preset = "NONE"
-        self.assertEqual(settings.thermal_iterations, 0)
+        self.assertEqual(settings.duration, 0)
         self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
         with core().generate_terrain(core().params.values_of(settings)) as hf:
             self.assertEqual(heights(obj.data).tobytes(), hf.to_array().tobytes())

@@ -258,16 +258,15 @@ TEST_F(Cli, CommandsWithATableOfferEveryOneOfItsSettings) {
   EXPECT_NE(io::read_file(path("m.obj")), io::read_file(path("a.obj"))) << "--mode reaches the library";
 }
 
-TEST_F(Cli, ErodePresetsKeepTheirUpliftAndFlagsOverrideThem) {
-  // `erode --preset` is the library's preset fitted to the terrain, uplift
-  // included (it once dropped the uplift), and a flag given beside it wins,
-  // under its table name or its old short name alike.
+TEST_F(Cli, ErodePresetsAreTheLibrarysAndFlagsOverrideThem) {
+  // `erode --preset` is the library's preset (by id, label or old id), and a
+  // flag given beside it wins, under its table name or its old short name
+  // alike; the map files reach the library.
   const std::string in = path("t.npy");
   ASSERT_EQ(run("terrain --method fbm --size 65 --seed 2 --out " + in).code, 0);
   Heightfield hf = io::read_heightfield(in);
   hf.set_world_size(10);  // erode's default for a file that records none (.npy)
-  erosion::ErosionConfig preset = erosion::erosion_preset("valleys", hf);
-  ASSERT_GT(preset.fluvial.uplift, 0.0);
+  const erosion::ErosionConfig preset = erosion::erosion_preset("gentle_valleys", hf);
   const auto same = [&](const std::string& args, const erosion::ErosionConfig& c) {
     const CliRun r = run("erode --in " + in + " " + args + " --out " + path("e.npy"));
     ASSERT_EQ(r.code, 0) << args << ": " << r.err;
@@ -276,11 +275,12 @@ TEST_F(Cli, ErodePresetsKeepTheirUpliftAndFlagsOverrideThem) {
     EXPECT_TRUE(std::equal(got.data(), got.data() + got.size(), want.data())) << args;
   };
   same("--preset valleys", preset);
-  erosion::ErosionConfig no_uplift = preset;
-  no_uplift.fluvial.uplift = 0;
-  const Heightfield a = erosion::erode(hf, preset, nullptr), b = erosion::erode(hf, no_uplift, nullptr);
-  EXPECT_FALSE(std::equal(a.data(), a.data() + a.size(), b.data())) << "the uplift must change the terrain";
-  same("--preset valleys --uplift 0", no_uplift);
+  same("--preset 'Gentle Valleys'", preset);
+  erosion::ErosionConfig weaker = preset;
+  weaker.model.strength = 0.2;
+  const Heightfield a = erosion::erode(hf, preset, nullptr), b = erosion::erode(hf, weaker, nullptr);
+  EXPECT_FALSE(std::equal(a.data(), a.data() + a.size(), b.data())) << "the strength must change the terrain";
+  same("--preset valleys --strength 0.2", weaker);
   erosion::ErosionConfig custom = preset;
   custom.fluvial.steps = 5, custom.thermal.iterations = 3, custom.thermal.talus_degrees = 40;
   same("--preset valleys --fluvial 5 --thermal-iterations 3 --talus 40", custom);
@@ -291,6 +291,25 @@ TEST_F(Cli, ErodePresetsKeepTheirUpliftAndFlagsOverrideThem) {
   const CliRun bad = run("erode --in " + in + " --preset valleys --thermal-rate 0 --stats");
   EXPECT_NE(bad.code, 0);
   EXPECT_NE(bad.err.find("thermal_rate must be in (0, 1], got 0"), std::string::npos) << bad.err;
+  const CliRun strong = run("erode --in " + in + " --preset valleys --strength 1.5 --stats");
+  EXPECT_NE(strong.code, 0);
+  EXPECT_NE(strong.err.find("strength must be in [0, 1], got 1.5"), std::string::npos) << strong.err;
+  // A mask file: white erodes, black keeps (a 2 x 2 image, black on the right).
+  Heightfield mask(2, 2);
+  mask.at(0, 0) = mask.at(0, 1) = 1.0f;
+  mask.at(1, 0) = mask.at(1, 1) = 0.0f;
+  io::write_heightfield(mask, path("mask.npy"));
+  erosion::ErosionConfig masked = preset;
+  masked.erosion_mask = {mask.data(), 2, 2};
+  same("--preset valleys --erosion-mask " + path("mask.npy"), masked);
+  erosion::ErosionConfig rained = preset;
+  rained.rain_map = {mask.data(), 2, 2};
+  same("--preset valleys --rain-map " + path("mask.npy"), rained);
+  mask.at(1, 1) = NAN;
+  io::write_heightfield(mask, path("nan.npy"));
+  const CliRun nan = run("erode --in " + in + " --preset valleys --erosion-mask " + path("nan.npy") + " --stats");
+  EXPECT_NE(nan.code, 0);
+  EXPECT_NE(nan.err.find("erosion_mask's values must be in [0, 1]; sample 1, 1"), std::string::npos) << nan.err;
 }
 
 TEST_F(Cli, SceneHelpSaysWhatTheAutoCameraElevationPicks) {

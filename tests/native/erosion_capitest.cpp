@@ -27,8 +27,9 @@ TEST(ErosionCapi, PresetErodesAndReturnsEveryMap) {
   ft_erosion_params p;
   ASSERT_EQ(ft_erosion_params_init(&p), FT_OK);
   EXPECT_EQ(p.fluvial_steps + p.hydraulic_iterations + p.thermal_iterations, 0) << "init: every process off";
+  EXPECT_EQ(p.duration, 0.0) << "init: no run";
   ASSERT_EQ(ft_erosion_preset("land", &p), FT_OK);
-  EXPECT_GT(p.fluvial_steps, 0);
+  EXPECT_GT(p.duration, 0);
   ft_heightfield* out = nullptr;
   ft_heightfield* maps[FT_MAP_COUNT];
   ASSERT_EQ(ft_erode(hf, &p, &out, maps), FT_OK) << ft_last_error();
@@ -111,8 +112,9 @@ TEST(ErosionCapi, TheFittedPresetAndItsUpliftFlagAreValidated) {
   ft_heightfield* hf = terrain(33);
   ft_erosion_params p;
   ASSERT_EQ(ft_erosion_preset_fitted("valleys", hf, &p), FT_OK) << ft_last_error();
-  EXPECT_GT(p.uplift, 0.0);
-  EXPECT_EQ(p.uplift_follows_terrain, 1);
+  EXPECT_EQ(p.uplift, 0.0) << "ABI 2.14: presets are in world units and years, nothing is fitted";
+  EXPECT_EQ(p.uplift_follows_terrain, 0);
+  EXPECT_GT(p.duration, 0.0);
   EXPECT_EQ(ft_erosion_preset_fitted("volcano", hf, &p), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("valleys"), std::string::npos) << ft_last_error();
   EXPECT_EQ(ft_erosion_preset_fitted("valleys", nullptr, &p), FT_ERR_INVALID_ARGUMENT);
@@ -129,6 +131,41 @@ TEST(ErosionCapi, TheFittedPresetAndItsUpliftFlagAreValidated) {
   p.uplift = 1e-5;
   EXPECT_EQ(ft_erode(hf, &p, &out, nullptr), FT_OK) << ft_last_error();
   ft_heightfield_free(out);
+  // A caller from ABI 2.12 (before the maps) gets no mask, whatever lies beyond its struct.
+  ft_erosion_preset("badlands", &p);
+  p.struct_size = uint32_t(offsetof(ft_erosion_params, strength));
+  p.strength = 7;
+  p.erosion_mask = reinterpret_cast<const float*>(1);
+  EXPECT_EQ(ft_erode(hf, &p, &out, nullptr), FT_OK) << ft_last_error();
+  ft_heightfield_free(out);
+  ft_heightfield_free(hf);
+}
+
+TEST(ErosionCapi, MapsOfTheWrongSizeOrWithNaNAreRefused) {
+  ft_heightfield* hf = terrain(33);
+  ft_erosion_params p;
+  ft_erosion_preset("badlands", &p);
+  const float mask[] = {1, 0.5f, NAN, 1};
+  p.erosion_mask = mask;
+  p.erosion_mask_width = 2;
+  p.erosion_mask_height = 2;
+  ft_heightfield* out = nullptr;
+  EXPECT_EQ(ft_erode(hf, &p, &out, nullptr), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("erosion_mask's values must be in [0, 1]; sample 0, 1"),
+            std::string::npos) << ft_last_error();
+  p.erosion_mask = nullptr;
+  p.rain_map = mask;
+  p.rain_map_width = 70000;
+  p.rain_map_height = 1;
+  EXPECT_EQ(ft_erode(hf, &p, &out, nullptr), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("rain_map_width must be in 0..65536"), std::string::npos)
+      << ft_last_error();
+  p.rain_map = nullptr;
+  p.rain_map_width = p.rain_map_height = 0;
+  p.strength = 1.5;
+  EXPECT_EQ(ft_erode(hf, &p, &out, nullptr), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("strength must be in [0, 1], got 1.5"), std::string::npos)
+      << ft_last_error();
   ft_heightfield_free(hf);
 }
 

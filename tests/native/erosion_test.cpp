@@ -328,7 +328,7 @@ TEST(FlowRouting, LocalFillsDrainThePitsDiffusionLeaves) {
   const D8Grid g = grid_of(hf, false);
   FluvialConfig c;
   c.steps = 3;
-  c.k = 5e-5;
+  c.erodibility = 5e-5;
   fluvial(g, hf.data(), c, Progress());
   hillslope_diffusion(g, hf.data(), 1e-4);
   FlowGraph graph;
@@ -459,8 +459,8 @@ TEST(Erosion, RejectsBadInputNamingTheParameter) {
     }
   };
   ErosionConfig c;
-  c.fluvial.k = -1;
-  rejects(c, "fluvial.k");
+  c.fluvial.erodibility = -1;
+  rejects(c, "erodibility");
   c = {};
   c.fluvial.dt = NAN;
   rejects(c, "fluvial.dt");
@@ -534,6 +534,15 @@ TEST(Erosion, MapsAreInWorldUnits) {
   EXPECT_GT(m.water_depth.stats().max, 0.0);
 }
 
+// The expert river steps as the old "valleys" preset ran them: 60 steps
+// of stream power with uplift balanced by incision (graded channels).
+ErosionConfig river_steps(double uplift = 1e-4) {
+  ErosionConfig c;
+  c.fluvial.steps = 60;
+  c.fluvial.uplift = uplift;
+  return c;
+}
+
 TEST(Erosion, UpliftNeverShowsAsDeposit) {
   // Rivers only cut: with uplift and no hydraulic pass, a cell ends at most
   // at its input height plus what it was lifted, so the deposited map is 0
@@ -542,9 +551,8 @@ TEST(Erosion, UpliftNeverShowsAsDeposit) {
   // uplift left where rivers did not cut it away would show as deposit on
   // most cells (measured 88%).
   const Heightfield hf = fbm_terrain(65, 3);
-  ErosionConfig c = erosion_preset("valleys", hf);
-  c.fluvial.uplift_follows_terrain = false;  // uniform, and faster than the rivers cut
-  c.fluvial.uplift *= 5;
+  const double relief = hf.stats().max - hf.stats().min;
+  ErosionConfig c = river_steps(5 * relief / (60 * 1000.0));  // uniform, and faster than the rivers cut
   ErosionMaps m;
   const Heightfield out = erode(hf, c, &m);
   int64_t deposited = 0, above_input = 0;
@@ -559,7 +567,7 @@ TEST(Erosion, UpliftNeverShowsAsDeposit) {
 TEST(DrainageStatistics, FluvialErosionMakesRealLandscapes) {
   // Real landscapes: Hack's h about 0.5-0.6, concavity theta about 0.35-0.7.
   // Ensemble: 4 fBm terrains (H = 0.8, 129^2, seeds 1-4) eroded by the
-  // "valleys" preset (stream power with uplift, 60 steps: close to steady
+  // expert river steps (stream power with uplift, 60 steps: close to steady
   // state, where theta = m / n = 0.5). Tolerance: the ensemble mean must lie
   // in the ranges themselves; each member may leave them by at most 3 of its
   // own fit standard errors (those are 0.006-0.013 for h and 0.003-0.005 for
@@ -573,7 +581,7 @@ TEST(DrainageStatistics, FluvialErosionMakesRealLandscapes) {
   for (int seed = 1; seed <= members; ++seed) {
     const Heightfield hf = fbm_terrain(129, uint64_t(seed));
     raw_theta_sum += drainage_stats(hf, false).theta;
-    ErosionConfig c = erosion_preset("valleys");
+    const ErosionConfig c = river_steps();
     const DrainageStats s = drainage_stats(erode(hf, c, nullptr), false);
     EXPECT_GE(s.hack_h, 0.5 - 3 * s.hack_h_stderr) << seed;
     EXPECT_LE(s.hack_h, 0.6 + 3 * s.hack_h_stderr) << seed;
@@ -586,75 +594,6 @@ TEST(DrainageStatistics, FluvialErosionMakesRealLandscapes) {
   EXPECT_GE(theta_sum / members, 0.35);
   EXPECT_LE(theta_sum / members, 0.7);
   EXPECT_LT(raw_theta_sum / members, 0.35) << "control: uneroded terrains must fail the theta range";
-}
-
-TEST(ErosionPreset, FittedUpliftKeepsTheTerrainsReliefAndGradesItsChannels) {
-  // The CLI's presets fit their uplift to the terrain (presets.hpp): over the
-  // preset's run it would lift the land by its relief, and incision balances
-  // it. On an fBm terrain 10 units across (relief about 1) the eroded relief
-  // stays within [0.4, 1.5] of the input's (measured 0.52 at 129^2: the
-  // uplift follows the input heights, so the low ground rises little and
-  // wears down; a uniform uplift kept 1.1; without uplift 60 steps flatten it
-  // to 0.25, with the fixed 1e-4 it grows to 5.4),
-  // and the channels are graded: theta within 3 fit standard errors of the
-  // real range 0.35-0.7 (see FluvialErosionMakesRealLandscapes).
-  const Heightfield hf = fbm_terrain(129, 5);
-  const double relief = hf.stats().max - hf.stats().min;
-  const ErosionConfig fitted = erosion_preset("valleys", hf);
-  EXPECT_DOUBLE_EQ(fitted.fluvial.uplift * fitted.fluvial.steps * fitted.fluvial.dt, relief);
-  const HeightStats after = erode(hf, fitted, nullptr).stats();
-  EXPECT_GE(after.max - after.min, 0.4 * relief);
-  EXPECT_LE(after.max - after.min, 1.5 * relief);
-  const DrainageStats s = drainage_stats(erode(hf, fitted, nullptr), false);
-  EXPECT_GE(s.theta, 0.35 - 3 * s.theta_stderr);
-  EXPECT_LE(s.theta, 0.7 + 3 * s.theta_stderr);
-  // Control: the fixed rate is what makes spikes at this scale.
-  const HeightStats fixed = erode(hf, erosion_preset("valleys"), nullptr).stats();
-  EXPECT_GT(fixed.max - fixed.min, 3 * relief);
-  // Presets without uplift are the same fitted or not.
-  EXPECT_EQ(erosion_preset("rain", hf).fluvial.uplift, 0.0);
-}
-
-TEST(ErosionPreset, FittedUpliftKeepsALandformsPlain) {
-  // A mountain on a plain (radial falloff to the edge level): the fitted
-  // uplift follows the input heights, so the plain, at the lowest height,
-  // hardly rises, while the mountain keeps rising where it stands. Plain
-  // cells: within 2% of the relief above the lowest input height. Bound: their
-  // mean rise under 5% of the relief (its own uplift is at most 2% of it,
-  // and the preset's rivers only cut into it). Control: uniform uplift at the
-  // same rate adds the whole relief to the plain over the run, of which the
-  // rivers draining it to the edges wear most away: measured 17% of the
-  // relief left; bound 10%.
-  ft_terrain_params p = default_terrain_params();
-  p.method = FT_TERRAIN_FBM;
-  p.width = p.height = 129;
-  p.seed = 5;
-  p.hurst = 0.8;
-  // The add-on's default landform (core/params.py): levelled, raised so
-  // the falloff shapes a mountain, a radial falloff to the edge level.
-  p.sigma = 2.0;
-  p.levelling = 1.0;
-  p.height_offset = 1.5;
-  p.falloff = FT_FALLOFF_RADIAL;
-  p.falloff_width = 0.9;
-  Heightfield hf = generate_terrain(p);
-  hf.set_world_size(10.0);
-  const HeightStats in = hf.stats();
-  const double relief = in.max - in.min;
-  auto plain_rise = [&](const ErosionConfig& c) {
-    const Heightfield out = erode(hf, c, nullptr);
-    double rise = 0;
-    int64_t cells = 0;
-    for (size_t i = 0; i < hf.size(); ++i)
-      if (hf.data()[i] - in.min < 0.02 * relief) rise += out.data()[i] - hf.data()[i], ++cells;
-    EXPECT_GT(cells, int64_t(hf.size() / 10)) << "the terrain has a plain";
-    return rise / double(cells);
-  };
-  ErosionConfig fitted = erosion_preset("valleys", hf);
-  ASSERT_TRUE(fitted.fluvial.uplift_follows_terrain);
-  EXPECT_LT(std::fabs(plain_rise(fitted)), 0.05 * relief);  // measured -0.2%
-  fitted.fluvial.uplift_follows_terrain = false;
-  EXPECT_GT(plain_rise(fitted), 0.1 * relief);
 }
 
 TEST(ErodeCli, WritesTheTerrainAndSixMapsWithTheirRanges) {

@@ -17,27 +17,39 @@ def _terrain(core, levels=6):
 
 
 def test_presets_are_the_librarys(erosion):
-    valleys = erosion.preset_values("valleys")
-    assert valleys["fluvial_steps"] > 0 and valleys["uplift"] > 0
-    assert valleys["hydraulic_iterations"] == 0 and valleys["thermal_iterations"] == 0
-    land = erosion.preset_values("land")
-    assert all(land[name] > 0 for name in erosion.COUNTS)
-    assert not erosion.requested(erosion.preset_values("land") | {name: 0 for name in erosion.COUNTS})
-    assert erosion.requested(land)
+    # Every preset is a run of the landscape model (years), no expert pass;
+    # the old ids are aliases of the new presets.
+    for preset in erosion.PRESETS:
+        values = erosion.preset_values(preset)
+        assert values["duration"] > 0 and values["strength"] == 0.5, preset
+        assert all(values[name] == 0 for name in erosion.COUNTS), preset
+        assert erosion.requested(values)
+        assert not erosion.requested(values | {"strength": 0.0})
+    assert erosion.preset_values("valleys") == erosion.preset_values("gentle_valleys")
+    assert erosion.preset_values("land") == erosion.preset_values("Rugged Mountains")
 
 
-def test_a_presets_uplift_is_fitted_to_the_terrain(core, erosion):
-    # The rate that raises the terrain by its relief over the preset's run.
-    valleys = erosion.preset_values("valleys")
+def test_presets_fit_no_uplift_any_more(core, erosion):
     with _terrain(core) as hf:
-        heights = hf.to_array()
-        relief = max(heights) - min(heights)
-        fitted = erosion.fitted_uplift("valleys", hf)
-        assert fitted["uplift"] == pytest.approx(relief / (valleys["fluvial_steps"] * valleys["fluvial_dt"]), rel=1e-9)
-        assert fitted["uplift_follows_terrain"] is True
-        assert erosion.fitted_uplift("rain", hf)["uplift"] == 0.0
+        assert erosion.fitted_uplift("valleys", hf) == {"uplift": 0.0, "uplift_follows_terrain": False}
         with pytest.raises(core.InvalidArgumentError, match="preset"):
             erosion.fitted_uplift("glaciers", hf)
+
+
+def test_an_erosion_mask_keeps_its_outside(core, erosion):
+    # Mask 0 on the right third (a 4 x 2 map ramps over the middle third):
+    # nothing there is lowered.
+    with _terrain(core) as hf:
+        before = hf.to_array()
+        eroded, _ = erosion.erode_arrays(hf, preset="badlands", maps=False,
+                                         erosion_mask=(4, 2, [1, 1, 0, 0, 1, 1, 0, 0]))
+    with eroded:
+        after = eroded.to_array()
+    right = [i for i in range(65 * 65) if 3 * (i % 65) > 2 * 64]
+    assert all(after[i] >= before[i] for i in right)
+    assert any(after[i] < before[i] - 1e-4 for i in range(65 * 65) if i % 65 < 16)
+    with _terrain(core) as hf, pytest.raises(core.InvalidArgumentError, match=r"rain_map's values must be in \[0, 1\]"):
+        erosion.erode(hf, preset="badlands", rain_map=(2, 2, [0.0, 2.0, 1.0, 1.0]))
 
 
 def test_land_preset_erodes_and_returns_every_map(core, erosion):
@@ -57,19 +69,19 @@ def test_land_preset_erodes_and_returns_every_map(core, erosion):
     assert max(maps["drainage_area"]) > 50 * cell_area
     assert min(maps["drainage_area"]) == pytest.approx(cell_area, rel=1e-5)
     assert max(maps["eroded"]) > 0
-    # Deposits are measured against the input plus the fluvial uplift (so the
-    # uplift never shows as deposit); the rain alone lays sediment down.
+    # The fans preset lays sediment down; water is left only by the expert
+    # rain passes, which the presets do not run.
     with _terrain(core) as hf:
-        rained, rain_maps = erosion.erode_arrays(hf, preset="rain")
-        rained.close()
-    assert max(rain_maps["deposited"]) > 0
-    assert max(maps["water_depth"]) > 0
+        fans, fan_maps = erosion.erode_arrays(hf, preset="alluvial_fans")
+        fans.close()
+    assert max(fan_maps["deposited"]) > 0
+    assert max(maps["water_depth"]) == 0
 
 
 def test_settings_override_the_preset(core, erosion):
     with _terrain(core, 5) as hf:
         a, _ = erosion.erode_arrays(hf, preset="scree", maps=False)
-        b, _ = erosion.erode_arrays(hf, preset="scree", values={"talus_degrees": 60.0}, maps=False)
+        b, _ = erosion.erode_arrays(hf, preset="scree", values={"talus_degrees": 20.0}, maps=False)
         with a, b:
             assert a.to_array() != b.to_array()
 
@@ -78,7 +90,7 @@ def test_bad_settings_are_refused_naming_the_field(core, erosion):
     with _terrain(core, 4) as hf:
         with pytest.raises(core.InvalidArgumentError, match="rain"):
             erosion.erode(hf, values={"hydraulic_iterations": 2, "rain": -1.0})
-        with pytest.raises(core.InvalidArgumentError, match="valleys"):
+        with pytest.raises(core.InvalidArgumentError, match="gentle_valleys"):
             erosion.erode(hf, preset="volcano")
 
 

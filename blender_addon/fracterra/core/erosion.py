@@ -10,12 +10,17 @@ from ctypes import byref, c_void_p
 
 from . import params as params_mod
 from .binding import library
-from .terrain import Heightfield, _ProgressBridge
+from .terrain import Heightfield, _ProgressBridge, attach_map
 
 # ft_erosion_map order (FT_MAP_DRAINAGE_AREA .. FT_MAP_DEPOSITED).
 MAPS = ("drainage_area", "slope", "curvature", "water_depth", "eroded", "deposited")
-PRESETS = ("valleys", "rain", "scree", "land")
+# The library's presets (presets.cpp), by id; the old ids "valleys", "land",
+# "rain" and "scree" are aliases the library still takes.
+PRESETS = ("gentle_valleys", "rugged_mountains", "badlands", "alluvial_fans", "scree_slopes")
 COUNTS = ("fluvial_steps", "hydraulic_iterations", "thermal_iterations")
+# What a preset sets (ABI 2.14): the run (its duration; None: 0), the landscape
+# model's rates, and the expert pass counts (0 in every preset).
+PRESET_FIELDS = ("duration", "erodibility", "area_exponent", "diffusion", "deposition", "talus_degrees") + COUNTS
 
 
 def _fill(p, values):
@@ -42,7 +47,7 @@ def erosion_struct(values=None, preset=None, terrain=None, **overrides):
 
 
 def preset_values(preset):
-    """{setting: value} of a preset ("valleys", "rain", "scree", "land"), as the library defines it."""
+    """{setting: value} of a preset (an id of PRESETS, its label, or an old id), as the library defines it."""
     p = erosion_struct(preset=preset)
     return {param.name: _from_c(param, getattr(p, param.name)) for param in params_mod.EROSION_PARAMS}
 
@@ -51,11 +56,9 @@ FITTED = ("uplift", "uplift_follows_terrain")
 
 
 def fitted_uplift(preset, terrain):
-    """{"uplift": ..., "uplift_follows_terrain": ...} of `preset` fitted to
-    Heightfield `terrain`: each cell rises by its height above the lowest over the
-    preset's fluvial run, so incision balances it and the landform keeps its shape
-    (uplift 0 for presets without rivers). The library's rule
-    (ft_erosion_preset_fitted), as `fracterra erode --preset` uses it."""
+    """{"uplift": ..., "uplift_follows_terrain": ...} of `preset` for Heightfield
+    `terrain` (ft_erosion_preset_fitted). Since ABI 2.14 the presets are in world
+    units and years and fit nothing: uplift 0, kept for callers of the old API."""
     p = erosion_struct(preset=preset, terrain=terrain)
     return {param.name: _from_c(param, getattr(p, param.name))
             for param in params_mod.EROSION_PARAMS if param.name in FITTED}
@@ -70,16 +73,22 @@ def _from_c(param, value):
 
 
 def requested(values):
-    """True when the settings ask for any erosion pass."""
-    return any(int(values.get(name, 0)) > 0 for name in COUNTS)
+    """True when the settings ask for any erosion: a run (strength x duration > 0)
+    or an expert pass."""
+    run = float(values.get("strength", 0.5)) * float(values.get("duration", 0.0))
+    return run > 0 or any(int(values.get(name, 0)) > 0 for name in COUNTS)
 
 
-def erode(hf, values=None, preset=None, periodic=False, threads=0, progress=None, maps=True):
+def erode(hf, values=None, preset=None, periodic=False, threads=0, progress=None, maps=True,
+          erosion_mask=None, rain_map=None):
     """Erodes Heightfield `hf`: (eroded Heightfield, {map name: Heightfield}) (close them,
-    or use erode_arrays). progress: None or callable(fraction) -> True to cancel
-    (raises CancelledError)."""
+    or use erode_arrays). erosion_mask, rain_map: None or (width, height, values in
+    [0, 1]) spanning the terrain (see terrain.attach_map). progress: None or
+    callable(fraction) -> True to cancel (raises CancelledError)."""
     lib = library()
-    p = erosion_struct(values, preset, terrain=hf)  # a preset fitted to hf, as `fracterra erode --preset`
+    p = erosion_struct(values, preset, terrain=hf)  # as `fracterra erode --preset`
+    _keep = (attach_map(p, "erosion_mask", erosion_mask, "the erosion mask"),
+             attach_map(p, "rain_map", rain_map, "the rain map"))
     p.periodic = 1 if periodic else 0
     p.threads = threads
     bridge = _ProgressBridge(progress)
@@ -104,4 +113,4 @@ def erode_arrays(hf, **kw):
     return eroded, arrays
 
 
-__all__ = ["MAPS", "PRESETS", "FITTED", "erosion_struct", "fitted_uplift", "preset_values", "requested", "erode", "erode_arrays"]
+__all__ = ["MAPS", "PRESETS", "PRESET_FIELDS", "FITTED", "erosion_struct", "fitted_uplift", "preset_values", "requested", "erode", "erode_arrays"]

@@ -134,12 +134,13 @@ def attach_reference(p, reference):
     return buf
 
 
-def attach_falloff_mask(p, mask):
-    """Points ft_terrain_params `p` at the custom falloff's mask (width, height,
-    values): width x height floats in [0, 1], row-major, row 0 at the terrain's
-    row 0 (an array.array('f') or anything with tobytes() giving float32 is taken
-    as is, other sequences are converted). None leaves the struct as it is.
-    Returns the buffer the struct points into: keep it alive while `p` is used."""
+def attach_map(p, field, mask, what):
+    """Points the map field `field` of params struct `p` (with `field`_width and
+    `field`_height beside it) at `mask` = (width, height, values): width x height
+    floats in [0, 1], row-major, row 0 at the terrain's row 0 (an array.array('f')
+    or anything with tobytes() giving float32 is taken as is, other sequences are
+    converted). None leaves the struct as it is. Returns the buffer the struct
+    points into: keep it alive while `p` is used."""
     if mask is None:
         return None
     width, height, values = mask
@@ -151,11 +152,16 @@ def attach_falloff_mask(p, mask):
     else:
         buf = array.array("f", values)
     if len(buf) != width * height:
-        raise InvalidArgumentError(f"the falloff mask has {len(buf)} values; {width} x {height} needs "
-                                   f"{width * height}")
-    p.falloff_mask = ctypes.cast(as_pointer(buf, c_float), POINTER(c_float))
-    p.falloff_mask_width, p.falloff_mask_height = width, height
+        raise InvalidArgumentError(f"{what} has {len(buf)} values; {width} x {height} needs {width * height}")
+    setattr(p, field, ctypes.cast(as_pointer(buf, c_float), POINTER(c_float)))
+    setattr(p, field + "_width", width)
+    setattr(p, field + "_height", height)
     return buf
+
+
+def attach_falloff_mask(p, mask):
+    """The custom falloff's mask (see attach_map)."""
+    return attach_map(p, "falloff_mask", mask, "the falloff mask")
 
 
 def generate_terrain(values=None, reference=None, progress=None, threads=0, falloff_mask=None, **overrides):

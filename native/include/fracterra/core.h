@@ -49,6 +49,10 @@ extern "C" {
 /// 2.13: pipeline.h: ft_terrain_build (generate -> landform -> erode -> maps in one call, one
 ///      progress callback; a tiling terrain erodes as a torus of its true period),
 ///      ft_build_params (described: FT_PARAMS_BUILD), FT_EROSION_PRESET_*.
+/// 2.14: the erosion landscape model in world units and years: strength, duration,
+///      deposition, rainfall, erosion_mask (+ width, height) and rain_map (+ width,
+///      height) at the end of ft_erosion_params; presets named for what they make
+///      (the old ids stay as aliases); ft_erosion_preset_fitted no longer fits an uplift.
 /// 2.17: a given camera, terrain colours and scene light at the end of ft_pov_scene_params
 ///      (camera_given, camera_location/direction/right/up, terrain_colors, has_scene_light,
 ///      sky_color, sun_color): the add-on's export shows Blender's view and material.

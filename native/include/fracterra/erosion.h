@@ -48,16 +48,32 @@ typedef struct ft_erosion_params {
   void* progress_user;
   int32_t uplift_follows_terrain;  ///< non-zero: each cell's uplift is `uplift` x its input height above the
                                    ///< lowest over the input's relief (the landform keeps its shape; ABI 2.12)
+  /* ABI 2.14: the landscape model, in world units and years (docs/erosion.md). */
+  double strength;               ///< 0..1: how far the run goes (the run is strength x duration); default 0.5
+  double duration;               ///< years of landscape evolution (channels, talus, fans); 0: off; presets set it
+  double deposition;             ///< 0..1: share of the carried sediment a channel lays down per upstream area
+                                 ///< (G of Yuan et al. 2019): 0 carves only, 1 builds wide fans; default 0.5
+  double rainfall;               ///< world units of water per year on every cell (x rain_map); default 1
+  const float* erosion_mask;     ///< erosion_mask_width x erosion_mask_height values in [0, 1], row-major, corner
+                                 ///< to corner, resampled bilinearly: where erosion acts (material still flows
+                                 ///< out of it); NULL: everywhere
+  int32_t erosion_mask_width;    ///< 2..65536 with a mask
+  int32_t erosion_mask_height;   ///< 2..65536 with a mask
+  const float* rain_map;         ///< as erosion_mask: where rain falls (x rainfall); NULL: everywhere
+  int32_t rain_map_width;        ///< 2..65536 with a map
+  int32_t rain_map_height;       ///< 2..65536 with a map
 } ft_erosion_params;
 
 FT_API ft_status ft_erosion_params_init(ft_erosion_params* p);
-/// "valleys" (fluvial with uplift), "rain" (hydraulic), "scree" (thermal) or
-/// "land" (all three) over the defaults.
+/// A preset by its id or label ("gentle_valleys" / "Gentle Valleys",
+/// "rugged_mountains", "badlands", "alluvial_fans", "scree_slopes"; the old ids
+/// "valleys", "land", "rain" and "scree" are aliases of the first, second,
+/// fourth and fifth) over the defaults.
 FT_API ft_status ft_erosion_preset(const char* name, ft_erosion_params* p);
-/// The preset fitted to `terrain` (what `fracterra erode --preset` and the
-/// add-on's Erode step use): the uplift of "valleys" and "land" becomes the
-/// rate that raises the land by the terrain's relief over the preset's
-/// fluvial run, so the eroded land keeps about its relief. (ABI 2.12)
+/// The preset for `terrain` (what `fracterra erode --preset` and the add-on's
+/// Erode step use). Since ABI 2.14 the presets are in world units and years
+/// and need no fitting: this is ft_erosion_preset after checking `terrain`.
+/// (ABI 2.12)
 FT_API ft_status ft_erosion_preset_fitted(const char* name, const ft_heightfield* terrain, ft_erosion_params* p);
 
 /// Erodes `in` (grid spacing world_size / (width - 1); 1 when the world size is unknown). On

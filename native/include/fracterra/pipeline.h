@@ -14,14 +14,15 @@
 extern "C" {
 #endif
 
-/// Erosion presets (ft_build_params.erosion_preset): ft_erosion_preset's
-/// names ("valleys", ...) as values.
+/// Erosion presets (ft_build_params.erosion_preset), named for what they make;
+/// the value names are ft_erosion_preset's names or their aliases ("valleys", ...).
 enum {
   FT_EROSION_PRESET_NONE = 0,     ///< none: the erosion params as given
-  FT_EROSION_PRESET_VALLEYS = 1,  ///< fluvial with uplift
-  FT_EROSION_PRESET_RAIN = 2,     ///< hydraulic
-  FT_EROSION_PRESET_SCREE = 3,    ///< thermal
-  FT_EROSION_PRESET_LAND = 4      ///< all three
+  FT_EROSION_PRESET_VALLEYS = 1,  ///< Gentle Valleys: soft rock, long river valleys
+  FT_EROSION_PRESET_RAIN = 2,     ///< Alluvial Fans: sediment spread where valleys open out
+  FT_EROSION_PRESET_SCREE = 3,    ///< Scree Slopes: steep slopes shed to their talus angle
+  FT_EROSION_PRESET_LAND = 4,     ///< Rugged Mountains: incised valleys, sharp ridges, scree
+  FT_EROSION_PRESET_BADLANDS = 5  ///< Badlands: dense gullies in soft rock
 };
 
 /// Parameters of ft_terrain_build. Fill with ft_build_params_init, then set

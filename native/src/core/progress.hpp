@@ -22,4 +22,27 @@ class Progress {
   void* user_ = nullptr;
 };
 
+// The part [start, start + span] of an outer progress, as a Progress of its
+// own (0..1): a stage of a longer computation. Outlives what it is given to.
+class ProgressPart {
+ public:
+  ProgressPart(const Progress& outer, double start, double span) : outer_(outer), start_(start), span_(span) {}
+  ProgressPart(const ProgressPart&) = delete;
+  ProgressPart& operator=(const ProgressPart&) = delete;
+  Progress progress() const { return Progress(&call, const_cast<ProgressPart*>(this)); }
+
+ private:
+  static int call(void* self, double f) {
+    auto* s = static_cast<ProgressPart*>(self);
+    try {
+      s->outer_.report(s->start_ + s->span_ * f);
+    } catch (const Error&) {
+      return 1;
+    }
+    return 0;
+  }
+  const Progress& outer_;
+  double start_, span_;
+};
+
 }  // namespace ft

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "erosion/erosion.hpp"
+#include "erosion/erosion_params.hpp"
 #include "erosion/flow_graph.hpp"
 #include "erosion/multiple_flow.hpp"
 
@@ -18,6 +19,20 @@ namespace {
 
 void check_rate(const char* name, double v) {
   if (!(v >= 0.0) || !std::isfinite(v)) invalid(std::string(name) + " must be a finite number >= 0, got " + format_number(v));
+}
+
+void check_map(const std::string& name, const MapInput& m) {
+  if (!m.values) return;
+  for (const auto& [side, n] : {std::pair{"_width", m.width}, std::pair{"_height", m.height}})
+    if (n < 2 || n > kMaxMapSide)
+      invalid(name + side + " must be in 2.." + std::to_string(kMaxMapSide) +
+              " (bilinear resampling needs two samples a side), got " + std::to_string(n));
+  const size_t n = size_t(m.width) * size_t(m.height);
+  for (size_t i = 0; i < n; ++i)
+    if (!(m.values[i] >= 0.0f && m.values[i] <= 1.0f))  // NaN fails both
+      invalid(name + "'s values must be in [0, 1]; sample " + std::to_string(i % size_t(m.width)) + ", " +
+              std::to_string(i / size_t(m.width)) + " is " + format_number(m.values[i]) +
+              " (normalise an image to 0..1)");
 }
 
 // 6 significant digits: a float sample and the limit as people write them
@@ -55,30 +70,18 @@ void validate(const ErosionConfig& c, const Heightfield& hf) {
               " is " + short_number(hf.data()[i]) + ": erosion needs finite heights within +-" +
               short_number(kMaxErosionHeight) + " world units (a relief up to " + short_number(2 * kMaxErosionHeight) +
               "; beyond, its float arithmetic overflows)");
+  // Every range is the table's (erosion_params.cpp); only the settings the
+  // C struct does not carry, and the cross-field limits, are checked here.
+  const ft_erosion_params p = to_c(c);
+  check_ranges(erosion_param_table(), &p);
+  check_range("hydraulic.min_tilt", c.hydraulic.min_tilt, 0.0, 1.0);
+  check_rate("hydraulic.max_erosion", c.hydraulic.max_erosion);
   const auto& f = c.fluvial;
-  check_int_range("fluvial.steps", f.steps, 0, kMaxErosionSteps);
-  check_positive("fluvial.dt", f.dt);
-  check_rate("fluvial.k", f.k);
-  check_range("fluvial.m", f.m, 0.0, 2.0);
-  check_rate("fluvial.diffusion", f.diffusion);
-  check_rate("fluvial.uplift", f.uplift);
   if (f.uplift * f.dt * f.steps > kMaxErosionHeight)
-    invalid("fluvial.uplift x fluvial.dt x fluvial.steps (the total uplift) must be <= " +
+    invalid("uplift x fluvial_dt x fluvial_steps (the total uplift) must be <= " +
             short_number(kMaxErosionHeight) + " world units, got " + format_number(f.uplift * f.dt * f.steps));
-  const auto& h = c.hydraulic;
-  check_int_range("hydraulic.iterations", h.iterations, 0, kMaxErosionSteps);
-  check_range("hydraulic.dt", h.dt, 1e-6, 1.0);
-  check_rate("hydraulic.rain", h.rain);
-  check_range("hydraulic.evaporation", h.evaporation, 0.0, 1.0);
-  check_rate("hydraulic.capacity", h.capacity);
-  check_range("hydraulic.dissolve", h.dissolve, 0.0, 1.0);
-  check_range("hydraulic.deposit", h.deposit, 0.0, 1.0);
-  check_range("hydraulic.min_tilt", h.min_tilt, 0.0, 1.0);
-  check_rate("hydraulic.max_erosion", h.max_erosion);
-  const auto& t = c.thermal;
-  check_int_range("thermal.iterations", t.iterations, 0, kMaxErosionSteps);
-  check_range("thermal.talus_degrees", t.talus_degrees, 0.0, 89.0);
-  if (!(t.rate > 0.0 && t.rate <= 1.0)) invalid("thermal.rate must be in (0, 1], got " + format_number(t.rate));
+  check_map("erosion_mask", c.erosion_mask);
+  check_map("rain_map", c.rain_map);
   resolve_threads(c.threads);
 }
 
@@ -99,25 +102,14 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
   Heightfield out = like(in);
 #pragma omp parallel for schedule(static)
   for (int64_t i = 0; i < cells; ++i) out.data()[i] = in.data()[i];
-  // Progress: the three processes share the bar by their pass counts.
-  const double total = double(c.fluvial.steps) * 20 + c.hydraulic.iterations + c.thermal.iterations + 1;
+  // Progress: the processes share the bar by their cost, in grid passes
+  // (a fluvial step or a model step costs about 20 hydraulic passes).
+  const double model = c.model.strength * c.model.duration > 0 ? 20.0 * 24 : 0.0;
+  const double total = model + double(c.fluvial.steps) * 20 + c.hydraulic.iterations + c.thermal.iterations + 1;
   double done = 0;
-  struct Scaled {
-    const Progress& outer;
-    double start, span;
-    static int call(void* self, double f) {
-      auto* s = static_cast<Scaled*>(self);
-      try {
-        s->outer.report(s->start + s->span * f);
-      } catch (const Error&) {
-        return 1;
-      }
-      return 0;
-    }
-  };
   auto run = [&](double weight, auto&& body) {
-    Scaled scaled{c.progress, done / total, weight / total};
-    body(Progress(&Scaled::call, &scaled));
+    const ProgressPart part(c.progress, done / total, weight / total);
+    body(part.progress());
     done += weight;
   };
   if (maps) {
@@ -137,6 +129,7 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     lifted = uplift_per_step(g, in.data(), c.fluvial);
     for (float& v : lifted) v *= float(c.fluvial.steps);
   }
+  if (model > 0) run(model, [&](const Progress& p) { landscape(g, out.data(), c, budget, p); });
   if (c.fluvial.steps > 0)
     run(c.fluvial.steps * 20.0, [&](const Progress& p) { fluvial(g, out.data(), c.fluvial, p); });
   if (c.hydraulic.iterations > 0)

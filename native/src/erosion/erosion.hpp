@@ -1,5 +1,8 @@
-// Erosion: fractal terrains become land. Three processes at three scales,
-// run in this order by erode():
+// Erosion: fractal terrains become land. The landscape model (landscape.cpp)
+// runs first: channels, talus and fans in world units and years, solved at a
+// fixed cell size of the terrain's width / kModelCells and refined to the
+// terrain's own grid, so every resolution gets the same landform. Then the
+// expert passes, whose counts are in grid steps, in this order:
 //   fluvial    stream-power incision + hillslope diffusion, implicit and O(n)
 //              per time step (Braun & Willett 2013, "FastScape");
 //   hydraulic  water, suspended sediment, erosion, deposition and
@@ -40,8 +43,8 @@ inline constexpr float kMaxSolveFactor = 1e20f;
 struct FluvialConfig {
   int32_t steps = 0;          // time steps; 0 = off
   double dt = 1000.0;         // years per step
-  double k = 2e-4;            // stream-power erodibility K (1/yr for m = 0.5, areas in world units^2)
-  double m = 0.5;             // area exponent (slope exponent n = 1: the implicit solve is exact)
+  double erodibility = 2e-4;  // stream-power K (1/yr for m = 0.5, areas in world units^2)
+  double area_exponent = 0.5; // m (slope exponent n = 1: the implicit solve is exact)
   double diffusion = 1e-7;    // hillslope diffusivity (world units^2 / yr); 0 = none (1e-7 km^2/yr = 0.1 m^2/yr)
   double uplift = 0.0;        // uplift rate (world units / yr) of every cell (not a periodic grid's sink)
   bool uplift_follows_terrain = false;  // each cell's rate x its input height above the lowest / the relief
@@ -65,7 +68,30 @@ struct ThermalConfig {
   double rate = 0.5;          // fraction of the excess moved per pass, (0, 1]
 };
 
+// A map over the whole terrain, corner to corner (erosion_mask, rain_map).
+struct MapInput {
+  const float* values = nullptr;  // null: 1 everywhere
+  int32_t width = 0, height = 0;
+};
+
+// The landscape model (landscape.cpp); its erodibility, area exponent,
+// diffusion and talus angle are the fluvial and thermal ones.
+struct ModelConfig {
+  double strength = 0.5;     // 0..1, the run is strength x duration
+  double duration = 0.0;     // years; 0: off
+  double deposition = 0.5;   // G: share of the carried sediment laid down per upstream area
+  double rainfall = 1.0;     // world units / yr on every cell (x the rain map)
+};
+
+// The model's working grid: terrains wider than this many cells are eroded
+// at this cell size first, then refined.
+inline constexpr int32_t kModelCells = 256;
+// Largest side of an erosion mask or rain map.
+inline constexpr int32_t kMaxMapSide = 65536;
+
 struct ErosionConfig {
+  ModelConfig model;
+  MapInput erosion_mask, rain_map;
   FluvialConfig fluvial;
   HydraulicConfig hydraulic;
   ThermalConfig thermal;
@@ -87,17 +113,26 @@ struct ErosionMaps {
 // Bookkeeping of the material-moving passes, for the conservation checks.
 struct MassBudget {
   double carried_out = 0.0;   // volume (world units^3) that left at the edges
+  double detached = 0.0;      // volume the landscape model took from the bed (its model grid)
+  double deposited = 0.0;     // volume it laid down again
 };
 
 // Grid of a heightfield: spacing = world_size / (width - 1), or 1 when the
 // world size is unknown.
 D8Grid grid_of(const Heightfield& hf, bool periodic);
 
-// Throws FT_ERR_INVALID_ARGUMENT naming the parameter: negative or NaN
-// rates, counts beyond kMaxErosionSteps, fractions outside their range, a
-// grid smaller than 3 x 3, heights that are not finite or beyond
-// +-kMaxErosionHeight, a total uplift (rate x dt x steps) beyond it.
+// Throws FT_ERR_INVALID_ARGUMENT naming the parameter and its range (from
+// the table, erosion_params.cpp), a map of the wrong size or with values
+// outside [0, 1], a grid smaller than 3 x 3, heights that are not finite or
+// beyond +-kMaxErosionHeight, a total uplift (rate x dt x steps) beyond it.
 void validate(const ErosionConfig& c, const Heightfield& hf);
+
+// A map resampled bilinearly to the grid (empty for a null map).
+std::vector<float> resample_map(const MapInput& m, int32_t width, int32_t height);
+
+// The landscape model on the terrain's grid `z` (in place): coarse to fine
+// (see landscape.cpp). `budget` may be null.
+void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* budget, const Progress& progress);
 
 // The processes one by one, in place. `budget` may be null.
 void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& progress);

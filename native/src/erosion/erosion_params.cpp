@@ -9,6 +9,8 @@ constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr double kMaxSteps = erosion::kMaxErosionSteps;
 constexpr uint32_t kAbi212 = 0x2000C;  // uplift_follows_terrain
+constexpr uint32_t kAbi214 = 0x2000E;  // the landscape model and its maps
+constexpr double kMaxMapSide = erosion::kMaxMapSide;
 // The defaults are ErosionConfig's (erosion.hpp); the test
 // ErosionParams.TableDefaultsAreTheConfigDefaults holds them together.
 
@@ -19,59 +21,66 @@ constexpr ft_param_info kRows[] = {
      .default_value = sizeof(ft_erosion_params), .hard_min = 0, .hard_max = 4294967295.0, .unit = "bytes",
      .label = "Struct Size", .doc = "sizeof(ft_erosion_params), set by ft_erosion_params_init", .methods = kAll},
     {ROW(fluvial_steps, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = kMaxSteps,
-     .soft_min = 0, .soft_max = 200, .unit = "steps", .label = "River Steps",
-     .doc = "Fluvial time steps: stream-power incision with hillslope diffusion, solved implicitly "
-            "(Braun & Willett 2013); 0: off",
+     .soft_min = 0, .soft_max = 200, .unit = "steps", .label = "Extra River Steps",
+     .doc = "Expert: extra time steps of river incision after the run, in grid steps (so a finer grid "
+            "changes more): stream power dz/dt = U - K A^m S with hillslope diffusion, solved implicitly "
+            "(Braun & Willett 2013); 0: off (the presets use Duration instead)",
      .methods = kAll},
     {ROW(fluvial_dt, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MIN_EXCLUSIVE, .element_kind = -1,
      .default_value = 1000, .hard_min = 0, .hard_max = DBL_MAX, .soft_min = 100, .soft_max = 10000, .unit = "years",
-     .label = "Step Length", .doc = "Years per fluvial time step", .methods = kAll},
+     .label = "Extra Step Length", .doc = "Years per extra river step", .methods = kAll},
     {ROW(erodibility, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 2e-4, .hard_min = 0, .hard_max = DBL_MAX,
-     .soft_min = 0, .soft_max = 2e-3, .unit = "1/yr", .label = "Erodibility",
-     .doc = "Stream-power erodibility K in dz/dt = U - K A^m S (areas in world units^2)", .methods = kAll},
+     .soft_min = 0, .soft_max = 2e-3, .unit = "1/yr", .label = "Rock Softness",
+     .doc = "How fast running water cuts rock: the erodibility K of the stream-power law "
+            "dz/dt = -K Q^m S (Q: water from upstream, world units^3/yr; S: slope)", .methods = kAll},
     {ROW(area_exponent, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.5, .hard_min = 0, .hard_max = 2,
-     .soft_min = 0.3, .soft_max = 0.7, .unit = "", .label = "Area Exponent",
-     .doc = "m in K A^m S (slope exponent n = 1); the concavity of graded rivers is m / n", .methods = kAll},
+     .soft_min = 0.3, .soft_max = 0.7, .unit = "", .label = "River Concavity",
+     .doc = "How much more a big river cuts than a small one: m in K Q^m S (slope exponent n = 1); "
+            "the concavity of graded river profiles is m / n", .methods = kAll},
     // Label "Diffusion", not "Hillslope Diffusion": Blender's narrow sidebar cut the longer one.
     {ROW(diffusion, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 1e-7, .hard_min = 0, .hard_max = DBL_MAX,
-     .soft_min = 0, .soft_max = 1e-5, .unit = "world units^2/yr", .label = "Diffusion",
-     .doc = "Hillslope diffusivity D in dz/dt = D laplacian(z), implicit; 0: none", .methods = kAll},
+     .soft_min = 0, .soft_max = 1e-5, .unit = "world units^2/yr", .label = "Slope Softening",
+     .doc = "Soil creep that rounds ridges and hillslopes: diffusivity D in dz/dt = D laplacian(z), implicit; "
+            "0: none", .methods = kAll},
     {ROW(uplift, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = DBL_MAX,
-     .soft_min = 0, .soft_max = 1e-3, .unit = "world units/yr", .label = "Uplift",
-     .doc = "Uplift rate U of every cell; bounded edges erode towards the lowest input height", .methods = kAll},
+     .soft_min = 0, .soft_max = 1e-3, .unit = "world units/yr", .label = "Extra Uplift",
+     .doc = "Expert, extra river steps only: uplift rate U of every cell; bounded edges erode towards the "
+            "lowest input height", .methods = kAll},
     {ROW(hydraulic_iterations, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0,
-     .hard_max = kMaxSteps, .soft_min = 0, .soft_max = 300, .unit = "passes", .label = "Rain Passes",
-     .doc = "Hydraulic passes: water, sediment capacity, erosion, deposition, evaporation on the grid "
-            "(virtual pipes, Mei, Decaudin & Hu 2007); 0: off",
+     .hard_max = kMaxSteps, .soft_min = 0, .soft_max = 300, .unit = "passes", .label = "Extra Rain Passes",
+     .doc = "Expert: water-flow passes after the run, in grid steps (so a finer grid changes less): water, "
+            "sediment capacity, erosion, deposition, evaporation on the grid (virtual pipes, Mei, Decaudin & "
+            "Hu 2007); 0: off",
      .methods = kAll},
     {ROW(hydraulic_dt, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.02, .hard_min = 1e-6, .hard_max = 1,
-     .soft_min = 0.005, .soft_max = 0.05, .unit = "seconds", .label = "Pass Length",
-     .doc = "Seconds per hydraulic pass", .methods = kAll},
+     .soft_min = 0.005, .soft_max = 0.05, .unit = "seconds", .label = "Rain Pass Length",
+     .doc = "Seconds per extra rain pass", .methods = kAll},
     {ROW(rain, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.01, .hard_min = 0, .hard_max = DBL_MAX,
-     .soft_min = 0, .soft_max = 0.05, .unit = "world units", .label = "Rain",
-     .doc = "Water depth added to every cell per hydraulic pass", .methods = kAll},
+     .soft_min = 0, .soft_max = 0.05, .unit = "world units", .label = "Rain per Pass",
+     .doc = "Water depth added to every cell per extra rain pass", .methods = kAll},
     {ROW(evaporation, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.02, .hard_min = 0, .hard_max = 1,
      .soft_min = 0, .soft_max = 0.2, .unit = "", .label = "Evaporation",
-     .doc = "Fraction of the water evaporated per hydraulic pass", .methods = kAll},
+     .doc = "Fraction of the water evaporated per extra rain pass", .methods = kAll},
     {ROW(capacity, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 1, .hard_min = 0, .hard_max = DBL_MAX,
-     .soft_min = 0, .soft_max = 5, .unit = "", .label = "Capacity",
-     .doc = "Sediment capacity constant Kc in C = Kc sin(tilt) |v|", .methods = kAll},
+     .soft_min = 0, .soft_max = 5, .unit = "", .label = "Water Load",
+     .doc = "How much sediment the rain passes' water carries: capacity constant Kc in C = Kc sin(tilt) |v|", .methods = kAll},
     {ROW(dissolve, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.3, .hard_min = 0, .hard_max = 1,
-     .soft_min = 0, .soft_max = 1, .unit = "", .label = "Dissolving",
-     .doc = "Fraction of the capacity deficit taken from the bed per pass", .methods = kAll},
+     .soft_min = 0, .soft_max = 1, .unit = "", .label = "Pickup",
+     .doc = "Fraction of the capacity deficit taken from the bed per extra rain pass", .methods = kAll},
     {ROW(deposit, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.3, .hard_min = 0, .hard_max = 1,
-     .soft_min = 0, .soft_max = 1, .unit = "", .label = "Deposition",
-     .doc = "Fraction of the sediment above capacity laid down per pass", .methods = kAll},
+     .soft_min = 0, .soft_max = 1, .unit = "", .label = "Drop",
+     .doc = "Fraction of the sediment above capacity laid down per extra rain pass", .methods = kAll},
     {ROW(thermal_iterations, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0,
-     .hard_max = kMaxSteps, .soft_min = 0, .soft_max = 100, .unit = "passes", .label = "Scree Passes",
-     .doc = "Thermal passes: material above the talus angle slides down (Musgrave, Kolb & Mace 1989); 0: off",
+     .hard_max = kMaxSteps, .soft_min = 0, .soft_max = 100, .unit = "passes", .label = "Extra Scree",
+     .doc = "Expert: scree passes after the run, in grid steps: material above the talus angle slides down "
+            "(thermal erosion, Musgrave, Kolb & Mace 1989); 0: off",
      .methods = kAll},
     {ROW(talus_degrees, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 33, .hard_min = 0, .hard_max = 89,
-     .soft_min = 20, .soft_max = 45, .unit = "degrees", .label = "Talus Angle",
-     .doc = "Angle of repose: steeper slopes shed material", .methods = kAll},
+     .soft_min = 20, .soft_max = 45, .unit = "degrees", .label = "Scree Angle",
+     .doc = "Angle of repose (talus): steeper slopes shed material, which runs down as scree", .methods = kAll},
     {ROW(thermal_rate, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MIN_EXCLUSIVE, .element_kind = -1,
      .default_value = 0.5, .hard_min = 0, .hard_max = 1, .soft_min = 0.1, .soft_max = 1, .unit = "",
-     .label = "Scree Rate", .doc = "Fraction of the excess over the talus slope moved per pass", .methods = kAll},
+     .label = "Scree Rate", .doc = "Fraction of the excess over the talus slope moved per extra scree pass", .methods = kAll},
     {ROW(periodic, FT_PARAM_BOOL), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = 1,
      .soft_min = 0, .soft_max = 1, .unit = "", .label = "Tiles",
      .doc = "The terrain tiles: eroded as a torus, it stays seamless", .methods = kAll},
@@ -83,10 +92,51 @@ constexpr ft_param_info kRows[] = {
     {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
      .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback", .methods = kAll},
     {ROW(uplift_follows_terrain, FT_PARAM_BOOL), .since = kAbi212, .element_kind = -1, .default_value = 0, .hard_min = 0,
-     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Uplift Follows Terrain",
+     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Uplift Follows Land",
      .doc = "Each cell rises at Uplift x its input height above the lowest over the input's relief, so a "
             "landform keeps its shape (a plain at the lowest height stays); off: every cell at the Uplift rate",
      .methods = kAll},
+    {ROW(strength, FT_PARAM_DOUBLE), .since = kAbi214, .element_kind = -1, .default_value = 0.5, .hard_min = 0,
+     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Strength",
+     .doc = "How far the erosion goes: the run lasts Strength x Duration. 0.5 keeps the landform's shape and "
+            "height; 1 wears it further",
+     .methods = kAll},
+    {ROW(duration, FT_PARAM_DOUBLE), .since = kAbi214, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 1e9, .soft_min = 0, .soft_max = 1e6, .unit = "years", .label = "Duration",
+     .doc = "Years of weathering at Strength 1: rivers cut channels (stream power, Braun & Willett 2013), "
+            "steep slopes shed scree, the sediment settles in fans and valley floors (Yuan et al. 2019), soil "
+            "creeps. The same terrain at any resolution erodes alike. 0: off",
+     .methods = kAll},
+    {ROW(deposition, FT_PARAM_DOUBLE), .since = kAbi214, .element_kind = -1, .default_value = 0.5, .hard_min = 0,
+     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Fan Building",
+     .doc = "How readily rivers drop what they carry: 0 carves and carries everything away, 1 fills valleys "
+            "and builds wide fans (G in dz/dt = -K Q^m S + G Qs / Q, Yuan et al. 2019)",
+     .methods = kAll},
+    {ROW(rainfall, FT_PARAM_DOUBLE), .since = kAbi214, .element_kind = -1, .default_value = 1, .hard_min = 0,
+     .hard_max = 1e6, .soft_min = 0, .soft_max = 4, .unit = "world units/yr", .label = "Rainfall",
+     .doc = "Water falling on every cell per year (x the rain map); more water cuts faster", .methods = kAll},
+    {ROW(erosion_mask, FT_PARAM_POINTER), .flags = kData, .since = kAbi214, .element_type = FT_PARAM_FLOAT,
+     .element_kind = -1, .unit = "", .label = "Erosion Mask",
+     .doc = "Where erosion acts: width x height values in [0, 1], row-major, corner to corner, resampled "
+            "bilinearly (0: untouched, though sediment may settle there); NULL: everywhere",
+     .methods = kAll},
+    {ROW(erosion_mask_width, FT_PARAM_INT32), .flags = kData, .since = kAbi214, .element_kind = -1,
+     .default_value = 0, .hard_min = 0, .hard_max = kMaxMapSide, .unit = "samples", .label = "Erosion Mask Width",
+     .doc = "Columns of the erosion mask, 2..65536 with a mask", .methods = kAll},
+    {ROW(erosion_mask_height, FT_PARAM_INT32), .flags = kData, .since = kAbi214, .element_kind = -1,
+     .default_value = 0, .hard_min = 0, .hard_max = kMaxMapSide, .unit = "samples", .label = "Erosion Mask Height",
+     .doc = "Rows of the erosion mask, 2..65536 with a mask", .methods = kAll},
+    {ROW(rain_map, FT_PARAM_POINTER), .flags = kData, .since = kAbi214, .element_type = FT_PARAM_FLOAT,
+     .element_kind = -1, .unit = "", .label = "Rain Map",
+     .doc = "Where rain falls: width x height values in [0, 1] (x Rainfall), row-major, corner to corner, "
+            "resampled bilinearly; NULL: everywhere",
+     .methods = kAll},
+    {ROW(rain_map_width, FT_PARAM_INT32), .flags = kData, .since = kAbi214, .element_kind = -1, .default_value = 0,
+     .hard_min = 0, .hard_max = kMaxMapSide, .unit = "samples", .label = "Rain Map Width",
+     .doc = "Columns of the rain map, 2..65536 with a map", .methods = kAll},
+    {ROW(rain_map_height, FT_PARAM_INT32), .flags = kData, .since = kAbi214, .element_kind = -1, .default_value = 0,
+     .hard_min = 0, .hard_max = kMaxMapSide, .unit = "samples", .label = "Rain Map Height",
+     .doc = "Rows of the rain map, 2..65536 with a map", .methods = kAll},
 };
 FT_PARAM_TABLE_END
 #undef ROW
@@ -102,10 +152,20 @@ namespace erosion {
 
 ft_erosion_params to_c(const ErosionConfig& c) {
   ft_erosion_params p = defaults_of<ft_erosion_params>(erosion_param_table());
+  p.strength = c.model.strength;
+  p.duration = c.model.duration;
+  p.deposition = c.model.deposition;
+  p.rainfall = c.model.rainfall;
+  p.erosion_mask = c.erosion_mask.values;
+  p.erosion_mask_width = c.erosion_mask.width;
+  p.erosion_mask_height = c.erosion_mask.height;
+  p.rain_map = c.rain_map.values;
+  p.rain_map_width = c.rain_map.width;
+  p.rain_map_height = c.rain_map.height;
   p.fluvial_steps = c.fluvial.steps;
   p.fluvial_dt = c.fluvial.dt;
-  p.erodibility = c.fluvial.k;
-  p.area_exponent = c.fluvial.m;
+  p.erodibility = c.fluvial.erodibility;
+  p.area_exponent = c.fluvial.area_exponent;
   p.diffusion = c.fluvial.diffusion;
   p.uplift = c.fluvial.uplift;
   p.uplift_follows_terrain = c.fluvial.uplift_follows_terrain;
@@ -128,15 +188,12 @@ ErosionConfig from_c(const ft_erosion_params& given) {
   const ft_erosion_params p = upgraded(erosion_param_table(), given);
   check_ranges(erosion_param_table(), &p);
   ErosionConfig c;
+  c.model = {p.strength, p.duration, p.deposition, p.rainfall};
+  c.erosion_mask = {p.erosion_mask, p.erosion_mask_width, p.erosion_mask_height};
+  c.rain_map = {p.rain_map, p.rain_map_width, p.rain_map_height};
   c.fluvial = {p.fluvial_steps, p.fluvial_dt, p.erodibility, p.area_exponent, p.diffusion, p.uplift,
                p.uplift_follows_terrain != 0};
-  c.hydraulic.iterations = p.hydraulic_iterations;
-  c.hydraulic.dt = p.hydraulic_dt;
-  c.hydraulic.rain = p.rain;
-  c.hydraulic.evaporation = p.evaporation;
-  c.hydraulic.capacity = p.capacity;
-  c.hydraulic.dissolve = p.dissolve;
-  c.hydraulic.deposit = p.deposit;
+  c.hydraulic = {p.hydraulic_iterations, p.hydraulic_dt, p.rain, p.evaporation, p.capacity, p.dissolve, p.deposit};
   c.thermal = {p.thermal_iterations, p.talus_degrees, p.thermal_rate};
   c.periodic = p.periodic != 0;
   c.threads = p.threads;

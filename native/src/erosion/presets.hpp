@@ -9,18 +9,21 @@
 
 namespace ft::erosion {
 
-// "valleys": fluvial only; "rain": hydraulic only; "scree": thermal only;
-// "land": all three. Throws naming the known presets. The uplift of
-// "valleys" and "land" here is a fixed 1e-4 world units/yr (what
-// ft_erosion_preset gives): right for a terrain about 6 units high only.
+// A preset: its id, the label an artist reads, the id it had before the
+// landscape model (an alias that keeps old scripts running; empty if none),
+// and what it makes.
+struct ErosionPreset {
+  std::string id, label, alias, description;
+};
+std::vector<ErosionPreset> erosion_presets();
+
+// The preset by id, label or old id (case, spaces and hyphens ignored):
+// a run of the landscape model in world units and years. Throws naming the
+// known presets.
 ErosionConfig erosion_preset(const std::string& name);
-// The same preset fitted to `terrain` (the CLI's erode --preset and
-// terrain --erode): the uplift of "valleys" and "land" becomes the rate that
-// would raise the land by `terrain`'s relief (max - min) over the preset's
-// fluvial run (steps x dt years). Incision balances it, so the eroded land
-// keeps about the input's relief, with graded channels. The fixed 1e-4
-// units/yr lifts 6 units over that run, which on a default terrain (10
-// units across, relief about 1) leaves ridges 5 units high.
+// The one entry the terrain pipeline and the CLI call. The presets need no
+// fitting any more (world units and years), so this is erosion_preset(name);
+// `terrain` stays for the callers and for fits to come.
 ErosionConfig erosion_preset(const std::string& name, const Heightfield& terrain);
 
 // The six maps as 16-bit PNGs in `dir` (drainage_area.png, slope.png, ...),

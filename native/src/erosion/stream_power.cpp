@@ -47,7 +47,7 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
   const size_t n = g.size();
   FlowGraph graph;
   std::vector<double> area;
-  std::vector<float> erodibility(n);  // K dt A^m, per cell
+  std::vector<float> incision(n);  // K dt A^m, per cell
   std::vector<float> saved(c.diffusion > 0.0 ? n : 0);  // lake floors across diffusion (NaN: not one)
   const int32_t sink = g.periodic ? periodic_sink(g, z) : -1;
   // Base level of a bounded grid: the lowest input height (the sea).
@@ -65,11 +65,11 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
     draw_rho8(g, g.periodic ? sink : -1, uint32_t(step), graph);
     route_filled(g, z, sink, graph);
     accumulate_area(g, graph, area);
-    const double kdt = c.k * c.dt;
+    const double kdt = c.erodibility * c.dt, m = c.area_exponent;
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n); ++i)
-      erodibility[i] = float(kdt * (c.m == 0.5 ? std::sqrt(area[i]) : std::pow(area[i], c.m)));
-    auto edge_f = [&](int32_t i) { return std::min(erodibility[i] * inv_spacing, kMaxSolveFactor); };
+      incision[i] = float(kdt * (m == 0.5 ? std::sqrt(area[i]) : std::pow(area[i], m)));
+    auto edge_f = [&](int32_t i) { return std::min(incision[i] * inv_spacing, kMaxSolveFactor); };
     // Runs of whole trees are independent; each is solved in stack order.
     const int32_t chunks = int32_t(graph.chunk_start.size()) - 1;
 #pragma omp parallel for schedule(dynamic, 1)
@@ -85,7 +85,7 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
           continue;
         }
         if (lake_floor(z[i], z[r])) continue;
-        const float f = std::min(erodibility[i] / graph.length[i], kMaxSolveFactor);
+        const float f = std::min(incision[i] / graph.length[i], kMaxSolveFactor);
         z[i] = (z[i] + f * z[r]) / (1.0f + f);
       }
     if (c.diffusion > 0.0) {

@@ -13,11 +13,11 @@ constexpr uint32_t kAbi213 = 0x2000D;
 // against erosion_preset_names().
 constexpr ft_param_enum_item kPresets[] = {
     {FT_EROSION_PRESET_NONE, "NONE", "None", "No preset: the erosion settings as given (none: no erosion)"},
-    {FT_EROSION_PRESET_VALLEYS, "VALLEYS", "Valleys",
-     "Fluvial: stream power with uplift carves dendritic valley networks"},
-    {FT_EROSION_PRESET_RAIN, "RAIN", "Rain", "Hydraulic: water, sediment, erosion and deposition on the grid"},
-    {FT_EROSION_PRESET_SCREE, "SCREE", "Scree", "Thermal: slopes above the talus angle shed material"},
-    {FT_EROSION_PRESET_LAND, "LAND", "Land", "All three: valleys, then rain, then scree"},
+    {FT_EROSION_PRESET_VALLEYS, "VALLEYS", "Gentle Valleys", "Soft, long river valleys under rounded hills"},
+    {FT_EROSION_PRESET_RAIN, "RAIN", "Alluvial Fans", "Valleys whose sediment spreads in fans where they open out"},
+    {FT_EROSION_PRESET_SCREE, "SCREE", "Scree Slopes", "Steep slopes shed to their talus angle; little river work"},
+    {FT_EROSION_PRESET_LAND, "LAND", "Rugged Mountains", "Incised valleys, sharp ridges and scree"},
+    {FT_EROSION_PRESET_BADLANDS, "BADLANDS", "Badlands", "Dense gullies cut into soft rock"},
 };
 
 #define ROW(field, type) FT_PARAM_ROW(ft_build_params, field, type)
@@ -37,12 +37,12 @@ constexpr ft_param_info kRows[] = {
      .doc = "The erosion settings (ft_erosion_params); NULL: no erosion unless a preset is named", .methods = kAll},
     {ROW(erosion_preset, FT_PARAM_ENUM), .since = kAbi213, .element_kind = -1,
      .default_value = FT_EROSION_PRESET_NONE, .hard_min = FT_EROSION_PRESET_NONE,
-     .hard_max = FT_EROSION_PRESET_LAND, .soft_min = FT_EROSION_PRESET_NONE, .soft_max = FT_EROSION_PRESET_LAND,
+     .hard_max = FT_EROSION_PRESET_BADLANDS, .soft_min = FT_EROSION_PRESET_NONE,
+     .soft_max = FT_EROSION_PRESET_BADLANDS,
      .unit = "", .label = "Erosion Preset",
-     .doc = "Erode the generated terrain with a preset fitted to it: it sets the pass counts and what it changes "
-            "from the defaults (the uplift fitted to the terrain's relief); the other erosion settings stay as "
-            "given",
-     .methods = kAll, .enum_count = 5, .enum_items = kPresets},
+     .doc = "Erode the generated terrain with a preset: it sets what it changes from the defaults (the "
+            "landscape model's duration and rates); Strength and the other erosion settings stay as given",
+     .methods = kAll, .enum_count = 6, .enum_items = kPresets},
     {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .since = kAbi213, .element_kind = -1, .unit = "",
      .label = "Progress", .doc = "Progress of all the stages together, 0..1; may cancel; NULL: none",
      .methods = kAll},

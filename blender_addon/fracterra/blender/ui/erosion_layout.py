@@ -22,9 +22,16 @@ def apply_preset(data):
     preset = data.erode_preset
     if preset == "CUSTOM":
         return
-    counts = erosion.preset_values(preset.lower()) if preset != "NONE" else {}
-    for name in erosion.COUNTS:
-        setattr(data, name, counts.get(name, 0))
+    if preset == "NONE":
+        for name in erosion.COUNTS:
+            setattr(data, name, 0)
+        if hasattr(data, "duration"):
+            data.duration = 0.0
+        return
+    values = erosion.preset_values(preset.lower())
+    for name in erosion.PRESET_FIELDS:
+        if hasattr(data, name):
+            setattr(data, name, values[name])
 
 
 def preset_property(then=None, options=None):

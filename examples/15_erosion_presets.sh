@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Every erosion preset on the add-on's default mountain (midpoint, sigma 2,
+# levelling 1, height offset 1.5, radial falloff 0.9; 10 world units) on
+# three seeds, as shaded reliefs, beside the uneroded terrain, at the default
+# strength; and one terrain as a preview (levels 8) and a final (levels 10):
+#   bash examples/15_erosion_presets.sh OUT_DIR [LEVELS]
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+out="$(mkdir -p "${1:-erosion-presets}" && cd "${1:-erosion-presets}" && pwd)"
+ft="${FRACTERRA:-$root/build/native/fracterra}"
+levels="${2:-8}"
+mountain=(--method midpoint --sigma 2 --levelling 1 --height-offset 1.5 --falloff radial --falloff-width 0.9
+          --world-size 10)
+for seed in 1 2 3; do
+  "$ft" terrain "${mountain[@]}" --levels "$levels" --seed "$seed" --out "$out/uneroded-seed$seed.npy"
+  "$ft" relief --in "$out/uneroded-seed$seed.npy" --out "$out/uneroded-seed$seed.png" --sea-fraction 0
+  for preset in gentle_valleys rugged_mountains badlands alluvial_fans scree_slopes; do
+    "$ft" terrain "${mountain[@]}" --levels "$levels" --seed "$seed" --erode "$preset" --out "$out/$preset-seed$seed.npy"
+    "$ft" relief --in "$out/$preset-seed$seed.npy" --out "$out/$preset-seed$seed.png" --sea-fraction 0
+  done
+done
+rm -f "$out"/*.npy

@@ -1,0 +1,257 @@
+// The landscape model: channels, talus and fans in world units and years.
+//
+// Each implicit time step, on a flow graph routed over the surface with its
+// lakes filled (a copy: the lakes themselves stay, to be filled by sediment):
+//   detachment  the stream-power law dz/dt = -K Q^m S (n = 1), Q = rainfall x
+//               rain map x upstream area, solved implicitly along the stack
+//               (Braun & Willett 2013): unconditionally stable;
+//   talus       no cell stands steeper than the talus angle above its
+//               receiver (one pass along the stack, receivers first);
+//   deposition  what was detached and shed flows down the stack, donors
+//               first; each cell lays down G x its own rain area / Q of what
+//               passes (the deposition term G Qs / Q of Yuan et al. 2019,
+//               "A new efficient method to solve the stream power law model
+//               taking into account sediment deposition", as fastscapelib's
+//               erosion-deposition law), a lake takes everything up to its
+//               spill level, and a deposit never rises above the cell it came
+//               from (less a fan slope): fans and valley fills, never a
+//               spike; what reaches a base level (a bounded grid's edge, a
+//               periodic grid's sink) is carried out;
+//   diffusion   hillslope creep D laplacian(z), implicit.
+// The erosion mask scales detachment, talus and diffusion's lowering; the
+// deposit goes wherever the sediment flows.
+//
+// Resolution: D8 channels are one cell wide, so the incision of a grid of any
+// size depends on its cell size. The model therefore runs at one cell size,
+// width / kModelCells, for the whole duration; a finer terrain gets that
+// run's change resampled bilinearly onto its own detail, then a short run on
+// its own grid (for the same share of the duration as its cell is of the
+// model's) that wears channels into the detail. A preview and a
+// final then share their landform and erosion, and the cost of the long run
+// does not grow with the terrain.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/error.hpp"
+#include "erosion/erosion.hpp"
+#include "erosion/flow_graph.hpp"
+
+namespace ft::erosion {
+namespace {
+
+// A deposit stays this slope (rise over run) below the cell its sediment
+// came from, so a fan slopes away from its apex.
+constexpr double kFanSlope = 0.01;
+// Scree: the excess of a slope over the talus angle sheds with this e-folding
+// time (years), so a run wears cliffs back in proportion to its length
+// instead of cutting every steep slope at once.
+constexpr double kScreeYears = 1e5;
+// Steps: the knickpoint of a channel draining a sixteenth of the map moves
+// at most this many cells per step; between kMinSteps and kMaxSteps.
+constexpr double kCellsPerStep = 4.0;
+constexpr int32_t kMinSteps = 2, kMaxSteps = 32, kMaxDetailSteps = 3;
+
+int32_t steps_for(const D8Grid& g, const ErosionConfig& c, double years, int32_t most) {
+  const double map_area = double(g.width - 1) * (g.height - 1) * g.spacing * g.spacing;
+  const double celerity = c.fluvial.erodibility * std::pow(c.model.rainfall * map_area / 16, c.fluvial.area_exponent);
+  const double cells = celerity * years / g.spacing;
+  return int32_t(std::clamp(std::ceil(cells / kCellsPerStep), double(kMinSteps), double(most)));
+}
+
+// Bilinear sample of a w x h grid at fractional (fx, fy), clamped or wrapped.
+float sample(const float* v, int32_t w, int32_t h, double fx, double fy, bool wrap) {
+  auto split = [wrap](double f, int32_t n, int32_t& i0, int32_t& i1, double& t) {
+    if (wrap) {
+      f -= std::floor(f / n) * n;
+      i0 = std::min(int32_t(f), n - 1);
+      i1 = (i0 + 1) % n;
+    } else {
+      f = std::clamp(f, 0.0, double(n - 1));
+      i0 = std::min(int32_t(f), n - 2);
+      i1 = i0 + 1;
+    }
+    t = f - i0;
+  };
+  int32_t x0, x1, y0, y1;
+  double tx, ty;
+  split(fx, w, x0, x1, tx);
+  split(fy, h, y0, y1, ty);
+  const double top = (1 - tx) * v[size_t(y0) * w + x0] + tx * v[size_t(y0) * w + x1];
+  const double bottom = (1 - tx) * v[size_t(y1) * w + x0] + tx * v[size_t(y1) * w + x1];
+  return float((1 - ty) * top + ty * bottom);
+}
+
+// `from` (grid a) sampled at every node of grid b: both span the same
+// terrain, corner to corner (bounded) or over one period (periodic).
+std::vector<float> resample(const float* from, const D8Grid& a, const D8Grid& b) {
+  const int32_t ea = a.periodic ? 0 : 1;
+  const double sx = double(a.width - ea) / (b.width - ea), sy = double(a.height - ea) / (b.height - ea);
+  std::vector<float> out(b.size());
+#pragma omp parallel for schedule(static)
+  for (int32_t y = 0; y < b.height; ++y)
+    for (int32_t x = 0; x < b.width; ++x)
+      out[size_t(y) * b.width + x] = sample(from, a.width, a.height, x * sx, y * sy, a.periodic);
+  return out;
+}
+
+struct Run {
+  const D8Grid& g;
+  const ErosionConfig& c;
+  const float* mask;  // null: 1
+  const float* rain;  // null: 1
+  MassBudget* budget;
+  bool talus;         // limit slopes to the talus angle
+};
+
+// Evolves z for `years` in `steps` implicit steps (see the file comment).
+void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t level, const Progress& progress) {
+  const D8Grid& g = run.g;
+  const ErosionConfig& c = run.c;
+  const size_t n = g.size();
+  const double cell = g.spacing * g.spacing, dt = years / steps;
+  const double k_dt = c.fluvial.erodibility * dt, m = c.fluvial.area_exponent, G = c.model.deposition;
+  const double tan_talus =
+      run.talus ? std::tan(c.thermal.talus_degrees * M_PI / 180.0) : std::numeric_limits<double>::infinity();
+  const double own_rain = c.model.rainfall * cell;  // water a cell gathers itself (x the rain map)
+  const double shed = -std::expm1(-dt / kScreeYears);  // share of the excess over the talus shed per step
+  FlowGraph graph;
+  std::vector<float> filled(n), start(n), cap(n), diffused(run.mask && c.fluvial.diffusion > 0 ? n : 0);
+  std::vector<double> discharge(n), sediment(n);
+  const int32_t sink = g.periodic ? periodic_sink(g, z) : -1;
+  auto mask = [&](int32_t i) { return run.mask ? double(run.mask[i]) : 1.0; };
+  double carried = 0, detached = 0, deposited = 0;
+  for (int32_t step = 0; step < steps; ++step) {
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n); ++i) {
+      filled[i] = start[i] = z[i];
+      discharge[i] = own_rain * (run.rain ? run.rain[i] : 1.0f);
+      cap[i] = std::numeric_limits<float>::infinity();
+    }
+    draw_rho8(g, sink, level * uint32_t(kMaxSteps) + uint32_t(step), graph);
+    route_filled(g, filled.data(), sink, graph);
+    // Runs of whole trees are independent: each is walked in stack order
+    // (receivers first) or against it (donors first), so the result does
+    // not depend on the thread count.
+    const int32_t chunks = int32_t(graph.chunk_start.size()) - 1;
+    double carried_step = 0, detached_step = 0, deposited_step = 0;
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : carried_step, detached_step, deposited_step)
+    for (int32_t ch = 0; ch < chunks; ++ch) {
+      const int32_t first = graph.chunk_start[ch], last = graph.chunk_start[ch + 1];
+      for (int32_t k = last - 1; k >= first; --k) {  // discharge, donors first
+        const int32_t i = graph.stack[k], r = graph.receiver[i];
+        if (r != i) discharge[r] += discharge[i];
+      }
+      for (int32_t k = first; k < last; ++k) {  // detachment and talus, receivers first
+        const int32_t i = graph.stack[k], r = graph.receiver[i];
+        if (r == i || !(z[i] > z[r])) continue;  // a base level, or under a lake
+        const double w = mask(i);
+        const double f = w * k_dt * (m == 0.5 ? std::sqrt(discharge[i]) : std::pow(discharge[i], m)) / graph.length[i];
+        double zi = (z[i] + f * z[r]) / (1.0 + f);
+        const double limit = z[r] + tan_talus * graph.length[i];
+        if (zi > limit) zi -= w * shed * (zi - limit);
+        z[i] = float(zi);
+      }
+      for (int32_t k = last - 1; k >= first; --k) {  // deposition, donors first
+        const int32_t i = graph.stack[k], r = graph.receiver[i];
+        const double lost = std::max(0.0, double(start[i]) - z[i]) * cell;
+        detached_step += lost;
+        double load = sediment[i] + lost;
+        sediment[i] = 0;
+        if (r == i) {  // a base level: the load leaves (a bounded edge stays where it is)
+          carried_step += load;
+          continue;
+        }
+        const bool lake = filled[i] > start[i];  // under a lake before this step
+        const double top = lake ? double(filled[i]) : std::isinf(cap[i]) ? double(start[i]) : double(cap[i]);
+        const double share = lake ? 1.0 : std::min(1.0, G * own_rain / std::max(discharge[i], 1e-30));
+        const double laid = std::min(share * load, std::max(0.0, top - z[i]) * cell);
+        z[i] = float(z[i] + laid / cell);
+        deposited_step += laid;
+        sediment[r] += load - laid;
+        cap[r] = std::min(cap[r], float(z[i] - kFanSlope * graph.length[i]));
+      }
+    }
+    carried += carried_step, detached += detached_step, deposited += deposited_step;
+    if (c.fluvial.diffusion > 0) {
+      if (run.mask) {
+        std::copy(z, z + n, diffused.begin());
+        hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt);
+#pragma omp parallel for schedule(static)
+        for (int64_t i = 0; i < int64_t(n); ++i) {
+          const float change = diffused[i] - z[i];
+          z[i] += change < 0 ? float(run.mask[i]) * change : change;
+        }
+      } else {
+        hillslope_diffusion(g, z, c.fluvial.diffusion * dt);
+      }
+    }
+    progress.report(double(step + 1) / steps);
+  }
+  if (run.budget) {
+    run.budget->carried_out += carried;
+    run.budget->detached += detached;
+    run.budget->deposited += deposited;
+  }
+}
+
+}  // namespace
+
+std::vector<float> resample_map(const MapInput& m, int32_t width, int32_t height) {
+  if (!m.values) return {};
+  D8Grid from, to;
+  from.width = m.width, from.height = m.height;
+  to.width = width, to.height = height;
+  std::vector<float> out = resample(m.values, from, to);
+  for (float& v : out) v = std::clamp(v, 0.0f, 1.0f);
+  return out;
+}
+
+void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* budget, const Progress& progress) {
+  const double years = c.model.strength * c.model.duration;
+  if (!(years > 0)) return;
+  const size_t n = g.size();
+  const float top = *std::max_element(z, z + n);
+  const int32_t edge = g.periodic ? 0 : 1;
+  const int32_t side = std::max(g.width, g.height) - edge;
+  const std::vector<float> mask = resample_map(c.erosion_mask, g.width, g.height);
+  const std::vector<float> rain = resample_map(c.rain_map, g.width, g.height);
+  const float* mask_or_null = mask.empty() ? nullptr : mask.data();
+  const float* rain_or_null = rain.empty() ? nullptr : rain.data();
+  if (side <= kModelCells) {
+    evolve({g, c, mask_or_null, rain_or_null, budget, true}, z, years, steps_for(g, c, years, kMaxSteps), 0, progress);
+    return;
+  }
+  // The model's grid: kModelCells across the longer side, the same extent.
+  const double factor = double(side) / kModelCells;
+  D8Grid coarse = g;
+  coarse.width = std::max(3, int32_t(std::lround((g.width - edge) / factor)) + edge);
+  coarse.height = std::max(3, int32_t(std::lround((g.height - edge) / factor)) + edge);
+  coarse.spacing = g.spacing * double(g.width - edge) / (coarse.width - edge);
+  std::vector<float> before = resample(z, g, coarse), after = before;
+  const std::vector<float> coarse_mask = resample_map(c.erosion_mask, coarse.width, coarse.height);
+  const std::vector<float> coarse_rain = resample_map(c.rain_map, coarse.width, coarse.height);
+  // Shares of the bar: the model's run and the detail run cost about alike.
+  const ProgressPart model_part(progress, 0.0, 0.5), detail_part(progress, 0.5, 0.5);
+  evolve({coarse, c, coarse_mask.empty() ? nullptr : coarse_mask.data(),
+          coarse_rain.empty() ? nullptr : coarse_rain.data(), budget, true},
+         after.data(), years, steps_for(coarse, c, years, kMaxSteps), 0, model_part.progress());
+  for (size_t i = 0; i < after.size(); ++i) after[i] -= before[i];
+  const std::vector<float> change = resample(after.data(), coarse, g);
+  // The resampled change lowers only inside the mask (it blurs across the
+  // mask's edge), and never lifts a cell above the input's highest.
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < int64_t(n); ++i) {
+    const float d = change[i] < 0 && mask_or_null ? change[i] * mask_or_null[i] : change[i];
+    z[i] = std::min(top, z[i] + d);
+  }
+  const double detail_years = years * g.spacing / coarse.spacing;
+  // No talus here: a fractal's slopes steepen as its cell shrinks, so the
+  // talus angle at this cell size would wear the whole landform down (the
+  // model's run has set the slopes at its own cell size).
+  evolve({g, c, mask_or_null, rain_or_null, nullptr, false}, z, detail_years,
+         steps_for(g, c, detail_years, kMaxDetailSteps), 1, detail_part.progress());
+}
+
+}  // namespace ft::erosion
