@@ -15,8 +15,11 @@ a layer of lower rank, never one of the same rank (sideways) or higher
        tiles/                                  tile sets of terrains larger than memory
                                                (windows of terrain/, files through io/)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
-    5  tables/                                 the parameter tables of every layer, by kind
-    6  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
+       erosion/                                fluvial, hydraulic, thermal erosion; flow graphs
+    5  hydrology/                              rivers, lakes and the sea (erosion/'s routing,
+                                               polyline/'s FPL, contour/'s shorelines)
+    6  tables/                                 the parameter tables of every layer, by kind
+    7  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
                                                by side: both link the static core, neither
                                                includes the other
 
@@ -49,9 +52,10 @@ RANK = {
     # Ranked ahead for layers being added on other branches (DEM refinement uses
     # terrain/; erosion uses analysis/); add them to the README's picture on landing.
     "refine": 3, "erosion": 4,
+    "hydrology": 5,  # rivers, lakes, the sea: erosion/'s flow graph, polyline/'s FPL, contour/
     "tiles": 3,  # tile sets: windows of terrain/ written through io/
-    "tables": 5,  # every capability's parameter table, by kind
-    "capi": 6, "cli": 6,
+    "tables": 6,  # every capability's parameter table, by kind
+    "capi": 7, "cli": 7,
 }
 TOP = {"capi", "cli"}  # may include any public header
 # Third-party include prefixes and the only layers that may include them.

@@ -18,7 +18,7 @@ namespace ft::cli {
 namespace {
 
 struct ErodeCli {
-  std::string in, out, maps, preset;
+  std::string in, out, maps, preset, maps_float;
   double world_size = 0;
   bool stats = false;
   // The settings from ft_erosion_params' table (erosion_params.cpp): what
@@ -49,7 +49,10 @@ Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) an
                     app.add_option("--in", o->in, "heightfield .png, .pgm or .npy")->required()->check(CLI::ExistingFile);
                     app.add_option("--out", o->out, "eroded heightfield .png, .pgm or .npy");
                     app.add_option("--maps", o->maps,
-                                   "folder for the maps as 16-bit PNGs with their ranges (and maps.json)");
+                                   "folder for the maps as 16-bit PNGs with their ranges (and maps.json; drainage "
+                                   "area on a log10 scale)");
+                    app.add_option("--maps-float", o->maps_float,
+                                   "also write every map as float32 with its linear values: tif or exr");
                     app.add_option("--preset", o->preset,
                                    "start from a preset: valleys (fluvial with uplift), rain (hydraulic), scree "
                                    "(thermal) or land (all three); flags given override its values. Its uplift "
@@ -73,7 +76,8 @@ Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) an
                       const Heightfield eroded = erosion::erode(hf, c, o->maps.empty() ? nullptr : &maps, &budget);
                       const double seconds = clock.seconds();
                       if (!o->out.empty()) write_heightfield(eroded, o->out);
-                      if (!o->maps.empty()) erosion::write_erosion_maps(maps, o->maps);
+                      if (!o->maps.empty())
+                        erosion::write_erosion_maps(maps, o->maps, o->maps_float.empty() ? "" : "." + o->maps_float);
                       if (o->stats) {
                         const HeightStats before = hf.stats(), after = eroded.stats();
                         nlohmann::json j = {{"seconds", seconds},       {"carried_out", budget.carried_out},

@@ -12,6 +12,8 @@
 #include "core/error.hpp"
 #include "erosion/erosion.hpp"
 #include "erosion/presets.hpp"
+#include "hydrology/hydrology.hpp"
+#include "hydrology/river_files.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
 #include "povray/scene.hpp"
@@ -45,7 +47,7 @@ void parse_center(const std::string& text, ft_terrain_params& p) {
 
 struct TerrainOptions {
   ft_terrain_params p = default_terrain_params();
-  std::string reference, falloff_mask, out, size, pov, center, curves_out, erode;
+  std::string reference, falloff_mask, out, size, pov, center, curves_out, erode, rivers;
   std::vector<double> curves;
   bool stats = false, curves_world = false;
 };
@@ -105,6 +107,17 @@ int run(const TerrainOptions& o) {
     e.threads = p.threads;
     hf = erosion::erode(hf, e, nullptr);
   }
+  if (!o.rivers.empty()) {
+    // The rivers of what was made, with the terrain's own sea (the landform's).
+    hydrology::HydrologyConfig c;
+    c.sea = hydrology::Sea(p.sea);
+    c.sea_level = p.sea_level;
+    c.sea_fraction = p.sea_fraction;
+    c.periodic = p.method == FT_TERRAIN_SPECTRAL;
+    c.threads = p.threads;
+    if (hf.world_size() <= 0) hf.set_world_size(10.0);
+    hydrology::write_rivers(hydrology::extract_rivers(hf, c), hf.georef(), o.rivers);
+  }
   const double seconds = clock.seconds();
   if (!o.out.empty()) write_heightfield(hf, o.out);
   if (!o.pov.empty()) pov::write_terrain_scene(hf, o.pov);  // PNG beside it
@@ -158,13 +171,17 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_option("--erode", o->erode,
                                    "then erode it with a preset: valleys (fluvial), rain (hydraulic), scree "
                                    "(thermal) or land (all three); see fracterra erode");
+                    app.add_option("--rivers", o->rivers,
+                                   "also trace its rivers and lakes (after --erode) with fracterra rivers' defaults "
+                                   "and the terrain's own sea: .csv, .json, .geojson or .gpkg");
                     app.add_option("--out", o->out,
                                    "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), "
                                    ".exr (float) or .raw/.r16 (RAW16 + sidecar .json)");
                     app.add_option("--pov", o->pov, "also write a POV-Ray scene (.pov, with its PNG beside it)");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, min, max, mean, std");
                     return [o] {
-                      if (o->out.empty() && o->pov.empty() && !o->stats) invalid("give --out FILE, --pov FILE and/or --stats");
+                      if (o->out.empty() && o->pov.empty() && o->rivers.empty() && !o->stats)
+                        invalid("give --out FILE, --pov FILE, --rivers FILE and/or --stats");
                       return run(*o);
                     };
                   },

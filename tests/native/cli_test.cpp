@@ -223,7 +223,8 @@ TEST_F(Cli, CommandsWithATableOfferEveryOneOfItsSettings) {
   const Case cases[] = {{"terrain", FT_PARAMS_TERRAIN, {"width", "height", "center_x", "center_y"}},
                         {"profile", FT_PARAMS_PROFILE, {}},
                         {"fractalize", FT_PARAMS_FRACTALIZE, {}},
-                        {"erode", FT_PARAMS_EROSION, {}}};
+                        {"erode", FT_PARAMS_EROSION, {}},
+                        {"rivers", FT_PARAMS_HYDROLOGY, {}}};
   for (const Case& c : cases) {
     const std::string help = run(std::string(c.command) + " --help").out;
     int flags = 0;

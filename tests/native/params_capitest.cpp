@@ -85,6 +85,19 @@ const std::vector<Field> kErosionFields = {
     FT_FIELD(ft_erosion_params, threads), FT_FIELD(ft_erosion_params, progress),
     FT_FIELD(ft_erosion_params, progress_user), FT_FIELD(ft_erosion_params, uplift_follows_terrain),
 };
+const std::vector<Field> kHydrologyFields = {
+    FT_FIELD(ft_hydrology_params, struct_size),       FT_FIELD(ft_hydrology_params, min_area),
+    FT_FIELD(ft_hydrology_params, sea),               FT_FIELD(ft_hydrology_params, sea_level),
+    FT_FIELD(ft_hydrology_params, sea_fraction),      FT_FIELD(ft_hydrology_params, min_lake_area),
+    FT_FIELD(ft_hydrology_params, rain),              FT_FIELD(ft_hydrology_params, width_coefficient),
+    FT_FIELD(ft_hydrology_params, width_exponent),    FT_FIELD(ft_hydrology_params, depth_coefficient),
+    FT_FIELD(ft_hydrology_params, depth_exponent),    FT_FIELD(ft_hydrology_params, smoothing),
+    FT_FIELD(ft_hydrology_params, meander_depth),     FT_FIELD(ft_hydrology_params, meander_spread),
+    FT_FIELD(ft_hydrology_params, seed),              FT_FIELD(ft_hydrology_params, tolerance),
+    FT_FIELD(ft_hydrology_params, periodic),          FT_FIELD(ft_hydrology_params, threads),
+    FT_FIELD(ft_hydrology_params, sinks),             FT_FIELD(ft_hydrology_params, sink_count),
+    FT_FIELD(ft_hydrology_params, progress),          FT_FIELD(ft_hydrology_params, progress_user),
+};
 
 const std::vector<Field> kPovSceneFields = {
     FT_FIELD(ft_pov_scene_params, struct_size), FT_FIELD(ft_pov_scene_params, terrain),
@@ -158,6 +171,8 @@ const Kind kKinds[] = {
      init_dem_refine},
     {FT_PARAMS_EROSION, "ft_erosion_params", sizeof(ft_erosion_params), &kErosionFields,
      init_of<ft_erosion_params, ft_erosion_params_init>},
+    {FT_PARAMS_HYDROLOGY, "ft_hydrology_params", sizeof(ft_hydrology_params), &kHydrologyFields,
+     init_of<ft_hydrology_params, ft_hydrology_params_init>},
 };
 
 std::vector<const ft_param_info*> rows_of(int32_t kind) {

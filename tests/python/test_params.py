@@ -151,6 +151,7 @@ CLI_COMMANDS = {
     "dem_refine": ("refine", {"levels_added": "--levels", "hurst": "--hurst", "sigma": "--sigma",
                               "window_x": "--window", "window_y": "--window", "window_side": "--window"}),
     "erosion": ("erode", {}),
+    "hydrology": ("rivers", {}),
 }
 # Flags users relied on before the flags came from the tables: each still works (an alias).
 CLI_ALIASES = {

@@ -46,7 +46,9 @@ extern "C" {
 /// (FT_PARAM_FLAG_ZERO_IS_AUTO in params.h); 0 is ft_pov_scene_params_init's default.
 /// 2.12: ft_erosion_preset_fitted (erosion.h); uplift_follows_terrain at the end of
 ///      ft_erosion_params.
-#define FT_ABI_VERSION_MINOR 12
+/// 2.15: hydrology.h: rivers, lakes and the sea (ft_rivers_extract, the ft_river_network
+///      accessors, ft_rivers_carve; FT_PARAMS_HYDROLOGY describes ft_hydrology_params).
+#define FT_ABI_VERSION_MINOR 15
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.
