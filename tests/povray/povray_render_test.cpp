@@ -477,11 +477,11 @@ global_settings { assumed_gamma 1.0 }
 #include "ft_water.inc"
 camera { location <0.5, 2, -0.3> look_at <0.5, 0, 0.5> }
 light_source { <2, 5, -3> color rgb 1 }
-plane { y, 0 pigment { rgb <0.5, 0.45, 0.3> } }
+plane { y, 0 pigment { rgb <0.95, 0.9, 0.8> } }
 #declare P = array[4] { <0.1, 0.05, 0.1>, <0.3, 0.04, 0.4>, <0.5, 0.03, 0.5>, <0.9, 0.02, 0.9> };
-#declare R = array[4] { 0.02, 0.03, 0.04, 0.05 };
+#declare R = array[4] { 0.04, 0.06, 0.08, 0.1 };
 FT_River(P, R)
-#declare L = array[5] { <0.6, 0.1>, <0.9, 0.1>, <0.9, 0.3>, <0.6, 0.3>, <0.6, 0.1> };
+#declare L = array[5] { <0.5, 0.05>, <0.95, 0.05>, <0.95, 0.45>, <0.5, 0.45>, <0.5, 0.05> };
 FT_Lake(L, 0.01, 0.005)
 )";
   expect_not_blank(render(path("w.pov")), "ft_water.inc");
