@@ -25,6 +25,7 @@
 #include "hydrology/hydrology_params.hpp"
 #include "hydrology/network_measures.hpp"
 #include "hydrology/river_files.hpp"
+#include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
 #include "terrain/terrain.hpp"
 
@@ -505,6 +506,40 @@ TEST(RiversCli, WritesRiversLakesAndStatsAndRefusesAThresholdNoRiverReaches) {
   const CliRun both = run("rivers --in " + d + "/t.tif --out " + d + "/x.json --sea-level 0 --sea-fraction 0.2", dir);
   EXPECT_EQ(both.code, 1);
   EXPECT_NE(both.err.find("not both"), std::string::npos) << both.err;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace ft::hydrology
+
+namespace ft::hydrology {
+namespace {
+
+TEST(DrainageMap, IsWrittenOnALogScaleAndAsFloatWhenAsked) {
+  // A linear 16-bit drainage map's step is max / 65535: 1.2 cells at 513^2,
+  // so hillslope values (1-10 cells) were off by several percent. On a log10
+  // scale the step is (log range) / 65535 in log10, a relative error of at
+  // most ln(10) x step / 2: 7e-5 for 4 decades. Checked against the float map.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("ft_drainage_map_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string d = dir.string();
+  ASSERT_EQ(run("terrain --method fbm --size 129 --seed 2 --out " + d + "/t.png", dir).code, 0);
+  const CliRun r = run("erode --in " + d + "/t.png --preset valleys --maps " + d + "/maps --maps-float tif", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream index(dir / "maps" / "maps.json");
+  const auto j = nlohmann::json::parse(index);
+  ASSERT_EQ(j["drainage_area"]["scale"], "log10");
+  ASSERT_EQ(j["slope"]["scale"], "linear");
+  const Heightfield log_map = read_heightfield((dir / "maps" / "drainage_area.png").string());
+  const Heightfield exact = read_heightfield((dir / "maps" / j["drainage_area"]["float_file"].get<std::string>()).string());
+  ASSERT_EQ(log_map.size(), exact.size());
+  const double decades = j["drainage_area"]["encoded_max"].get<double>() - j["drainage_area"]["encoded_min"].get<double>();
+  const double bound = std::log(10.0) * decades / 65535 / 2 * 1.01 + 1e-6;  // + float32 rounding
+  double worst = 0;
+  for (size_t i = 0; i < exact.size(); ++i)
+    worst = std::max(worst, std::fabs(std::pow(10.0, double(log_map.data()[i])) / exact.data()[i] - 1));
+  EXPECT_LE(worst, bound) << decades << " decades";
   fs::remove_all(dir);
 }
 
