@@ -55,7 +55,7 @@ struct RiversCli {
   std::string in, out, lakes, carve;
   double world_size = 0;
   bool stats = false;
-  ft_hydrology_params flags = defaults_of<ft_hydrology_params>(hydrology_param_table());
+  ft_hydrology_params flags = defaults_of<ft_hydrology_params>(hydrology::hydrology_param_table());
 };
 
 Registration reg({"rivers", "Rivers, lakes and the sea of a heightfield, as polylines and polygons",
@@ -74,13 +74,13 @@ Registration reg({"rivers", "Rivers, lakes and the sea of a heightfield, as poly
                     app.add_flag("--stats", o->stats,
                                  "print a JSON object: segments, lakes, total length, drainage density, Strahler "
                                  "orders, Horton's ratios, Hack's h");
-                    add_param_flags(app, hydrology_param_table(), &o->flags);
+                    add_param_flags(app, hydrology::hydrology_param_table(), &o->flags);
                     return [o, &app] {
                       if (o->out.empty() && o->lakes.empty() && o->carve.empty() && !o->stats)
                         invalid("give --out FILE, --lakes FILE, --carve FILE and/or --stats");
                       ft_hydrology_params p = o->flags;
                       sea_from_flags(app, p);
-                      Heightfield hf = read_heightfield(o->in);
+                      Heightfield hf = io::read_heightfield(o->in);
                       if (o->world_size > 0) hf.set_world_size(o->world_size);
                       else if (hf.world_size() <= 0) hf.set_world_size(10.0);
                       const hydrology::HydrologyConfig c = hydrology::from_c(p);
@@ -89,7 +89,7 @@ Registration reg({"rivers", "Rivers, lakes and the sea of a heightfield, as poly
                       const double seconds = clock.seconds();
                       if (!o->out.empty()) hydrology::write_rivers(net, hf.georef(), o->out);
                       if (!o->lakes.empty()) hydrology::write_lakes(net, hf.georef(), o->lakes);
-                      if (!o->carve.empty()) write_heightfield(hydrology::carve(hf, net), o->carve);
+                      if (!o->carve.empty()) io::write_heightfield(hydrology::carve(hf, net), o->carve);
                       if (o->stats) {
                         nlohmann::json j = network_json(hydrology::measure_network(net));
                         j["seconds"] = seconds;

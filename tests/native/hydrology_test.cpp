@@ -447,7 +447,7 @@ TEST(RiverFiles, GeoPackageAndGeoJsonReadBackThroughOgr) {
   for (const char* name : {"rivers.csv", "rivers.json"}) {
     const std::string path = (dir / name).string();
     write_rivers(net, geo, path);
-    const PolylineSet back = read_polylines(path);
+    const PolylineSet back = io::read_polylines(path);
     EXPECT_EQ(back.line_count(), int64_t(net.segments.size()));
     EXPECT_EQ(back.points, net.lines.points);
     EXPECT_EQ(back.radii, net.lines.radii);
@@ -531,8 +531,8 @@ TEST(DrainageMap, IsWrittenOnALogScaleAndAsFloatWhenAsked) {
   const auto j = nlohmann::json::parse(index);
   ASSERT_EQ(j["drainage_area"]["scale"], "log10");
   ASSERT_EQ(j["slope"]["scale"], "linear");
-  const Heightfield log_map = read_heightfield((dir / "maps" / "drainage_area.png").string());
-  const Heightfield exact = read_heightfield((dir / "maps" / j["drainage_area"]["float_file"].get<std::string>()).string());
+  const Heightfield log_map = io::read_heightfield((dir / "maps" / "drainage_area.png").string());
+  const Heightfield exact = io::read_heightfield((dir / "maps" / j["drainage_area"]["float_file"].get<std::string>()).string());
   ASSERT_EQ(log_map.size(), exact.size());
   const double decades = j["drainage_area"]["encoded_max"].get<double>() - j["drainage_area"]["encoded_min"].get<double>();
   const double bound = std::log(10.0) * decades / 65535 / 2 * 1.01 + 1e-6;  // + float32 rounding

@@ -152,6 +152,8 @@ CLI_COMMANDS = {
                               "window_x": "--window", "window_y": "--window", "window_side": "--window"}),
     "erosion": ("erode", {}),
     "hydrology": ("rivers", {}),
+    # The pipeline's settings go with the terrain's; the terrain's --threads serves every stage.
+    "build": ("terrain", {"threads": "--threads"}),
 }
 # Flags users relied on before the flags came from the tables: each still works (an alias).
 CLI_ALIASES = {
@@ -163,6 +165,7 @@ CLI_ALIASES = {
     # issue 15's short names: `erode --fluvial 60 --hydraulic 100 --thermal 20 --talus 33`
     "erosion": {"fluvial_steps": "--fluvial", "hydraulic_iterations": "--hydraulic",
                 "thermal_iterations": "--thermal", "talus_degrees": "--talus"},
+    "build": {"erosion_preset": "--erode"},  # `terrain --erode valleys` (issue 15)
 }
 
 

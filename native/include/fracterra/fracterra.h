@@ -19,5 +19,6 @@
 #include "hydrology.h"
 #include "raster.h"
 #include "tiles.h"
+#include "pipeline.h"
 
 #endif

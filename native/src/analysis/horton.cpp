@@ -7,7 +7,7 @@
 #include "analysis/loglog_fit.hpp"
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 HortonRatios horton_ratios(const std::vector<NetworkStream>& streams) {
   HortonRatios h;
@@ -41,4 +41,4 @@ HortonRatios horton_ratios(const std::vector<NetworkStream>& streams) {
   return h;
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

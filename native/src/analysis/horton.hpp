@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace ft {
+namespace ft::analysis {
 
 struct NetworkStream {
   int32_t order = 1;
@@ -31,4 +31,4 @@ struct HortonRatios {
 // network has fewer than two orders.
 HortonRatios horton_ratios(const std::vector<NetworkStream>& streams);
 
-}  // namespace ft
+}  // namespace ft::analysis

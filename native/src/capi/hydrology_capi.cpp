@@ -29,7 +29,7 @@ extern "C" {
 FT_API ft_status ft_hydrology_params_init(ft_hydrology_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = ft::defaults_of<ft_hydrology_params>(ft::hydrology_param_table());
+    *p = ft::defaults_of<ft_hydrology_params>(ft::hydrology::hydrology_param_table());
   });
 }
 

@@ -67,24 +67,24 @@ void write_erosion_maps(const ErosionMaps& maps, const std::string& dir, const s
       log_area.set_world_size(hf->world_size());
       log_area.set_georef(hf->georef());
       for (size_t i = 0; i < hf->size(); ++i) log_area.data()[i] = float(std::log10(std::max(hf->data()[i], 1e-30f)));
-      write_heightfield(log_area, dir + "/" + file);
+      io::write_heightfield(log_area, dir + "/" + file);
       const HeightStats l = log_area.stats();
       entry["scale"] = "log10";
       entry["encoded_min"] = l.min;
       entry["encoded_max"] = l.max;
       entry["decode"] = "value = 10^(encoded_min + v / 65535 x (encoded_max - encoded_min)) for a 16-bit sample v";
     } else {
-      write_heightfield(*hf, dir + "/" + file);
+      io::write_heightfield(*hf, dir + "/" + file);
       entry["scale"] = "linear";
     }
     if (!float_format.empty()) {
       const std::string float_file = std::string(name) + float_format;
-      write_heightfield(*hf, dir + "/" + float_file);  // float32, linear, the values themselves
+      io::write_heightfield(*hf, dir + "/" + float_file);  // float32, linear, the values themselves
       entry["float_file"] = float_file;
     }
     index[name] = entry;
   }
-  write_file_atomically(dir + "/maps.json", index.dump(2) + "\n");
+  io::write_file_atomically(dir + "/maps.json", index.dump(2) + "\n");
 }
 
 }  // namespace ft::erosion

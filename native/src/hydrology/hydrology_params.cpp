@@ -2,7 +2,7 @@
 
 #include <cfloat>
 
-namespace ft {
+namespace ft::hydrology {
 namespace {
 
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
@@ -107,8 +107,6 @@ const ParamTable& hydrology_param_table() {
   return table;
 }
 
-namespace hydrology {
-
 ft_hydrology_params to_c(const HydrologyConfig& c) {
   ft_hydrology_params p = defaults_of<ft_hydrology_params>(hydrology_param_table());
   p.min_area = c.min_area;
@@ -160,5 +158,4 @@ HydrologyConfig from_c(const ft_hydrology_params& given) {
   return c;
 }
 
-}  // namespace hydrology
-}  // namespace ft
+}  // namespace ft::hydrology

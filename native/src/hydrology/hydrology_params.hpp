@@ -7,16 +7,13 @@
 #include "fracterra/hydrology.h"
 #include "hydrology/hydrology.hpp"
 
-namespace ft {
+namespace ft::hydrology {
 
 const ParamTable& hydrology_param_table();
-
-namespace hydrology {
 
 // Between the C struct and the configuration; from_c checks the table's
 // ranges (the checks against the terrain are validate()'s).
 ft_hydrology_params to_c(const HydrologyConfig& c);
 HydrologyConfig from_c(const ft_hydrology_params& p);
 
-}  // namespace hydrology
-}  // namespace ft
+}  // namespace ft::hydrology

@@ -44,15 +44,15 @@ PolylineSet lake_rings(const erosion::D8Grid& g, const float* z, Water& water) {
         }
         f.at(x - x0, y - y0) = near ? z[size_t(y) * g.width + x] : dry;
       }
-    const PolylineSet chains = marching_squares(f, double(level));
+    const PolylineSet chains = contour::marching_squares(f, double(level));
     // Closed loops only (a lake across a periodic map's seam is cut open by
     // its box: it has no ring), largest shoreline first, then the islands.
     std::vector<std::tuple<int, double, int64_t>> loops;
     for (int64_t i = 0; i < chains.line_count(); ++i) {
-      const ChainKind kind = chain_kind(chains, i);
-      if (kind == ChainKind::kOpen) continue;
-      const double a = signed_area(chains, i);
-      loops.push_back({kind == ChainKind::kLake ? 0 : 1, -std::fabs(a), i});  // shorelines first, largest first
+      const contour::ChainKind kind = contour::chain_kind(chains, i);
+      if (kind == contour::ChainKind::kOpen) continue;
+      const double a = contour::signed_area(chains, i);
+      loops.push_back({kind == contour::ChainKind::kLake ? 0 : 1, -std::fabs(a), i});  // shorelines first, largest first
     }
     std::sort(loops.begin(), loops.end());
     for (const auto& [group, size, i] : loops) {

@@ -20,19 +20,19 @@ NetworkMeasures measure_network(const RiverNetwork& net) {
   for (const int32_t l : net.water.label) m.land_area += l == kLand ? cell : 0.0;
   m.drainage_density = m.land_area > 0 ? m.total_length / m.land_area : 0.0;
   // Streams: segments grouped by their stream id.
-  std::map<int32_t, NetworkStream> streams;
+  std::map<int32_t, analysis::NetworkStream> streams;
   for (const Segment& s : segs) {
-    NetworkStream& st = streams[s.stream];
+    analysis::NetworkStream& st = streams[s.stream];
     st.order = s.order;
     st.length += s.length;
     ++m.ends[int(s.end)];
   }
-  std::vector<NetworkStream> list;
+  std::vector<analysis::NetworkStream> list;
   for (const auto& [id, st] : streams) list.push_back(st);
   int32_t top = 0;
   for (const auto& st : list) top = std::max(top, st.order);
   if (top >= 2) {
-    m.horton = horton_ratios(list);
+    m.horton = analysis::horton_ratios(list);
     m.has_horton = true;
   }
   // Hack: the longest path from a channel head to each segment's mouth
@@ -52,7 +52,7 @@ NetworkMeasures measure_network(const RiverNetwork& net) {
     l.push_back(end_length[s]);
   }
   if (a.size() >= 3) {
-    const LogLogFit f = fit_loglog(a, l, "Hack's law");
+    const analysis::LogLogFit f = analysis::fit_loglog(a, l, "Hack's law");
     m.hack_h = f.slope, m.hack_h_stderr = f.slope_stderr, m.hack_points = f.points;
   }
   return m;

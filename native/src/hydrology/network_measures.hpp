@@ -9,7 +9,7 @@
 namespace ft::hydrology {
 
 struct NetworkMeasures {
-  HortonRatios horton;            // orders and streams; ratios 0 when fewer than two orders
+  analysis::HortonRatios horton;            // orders and streams; ratios 0 when fewer than two orders
   bool has_horton = false;
   double total_length = 0;        // world units
   double land_area = 0;           // world units^2: cells neither sea nor lake

@@ -88,8 +88,8 @@ std::string rivers_json(const RiverNetwork& net) {
   return doc.dump() + "\n";
 }
 
-VectorLayer river_layer(const RiverNetwork& net) {
-  VectorLayer L;
+io::VectorLayer river_layer(const RiverNetwork& net) {
+  io::VectorLayer L;
   L.name = "rivers";
   L.fields = {"segment", "order", "stream", "downstream", "lake", "from_lake", "length", "discharge", "width",
               "depth", "area"};
@@ -109,8 +109,8 @@ VectorLayer river_layer(const RiverNetwork& net) {
   return L;
 }
 
-VectorLayer lake_layer(const RiverNetwork& net) {
-  VectorLayer L;
+io::VectorLayer lake_layer(const RiverNetwork& net) {
+  io::VectorLayer L;
   L.name = "lakes";
   L.polygons = true;
   L.fields = {"lake", "level", "area", "volume", "cells", "outlet_segment"};
@@ -131,25 +131,25 @@ VectorLayer lake_layer(const RiverNetwork& net) {
 }  // namespace
 
 void write_rivers(const RiverNetwork& net, const GeoReference& geo, const std::string& path) {
-  const std::string ext = extension_of(path);
-  if (ext == ".csv") write_file_atomically(path, rivers_csv(net));
-  else if (ext == ".json") write_file_atomically(path, rivers_json(net));
-  else if (ext == ".geojson") write_vector_layers({river_layer(net)}, geo, net.grid.spacing, path);
-  else if (ext == ".gpkg") write_vector_layers({river_layer(net), lake_layer(net)}, geo, net.grid.spacing, path);
+  const std::string ext = io::extension_of(path);
+  if (ext == ".csv") io::write_file_atomically(path, rivers_csv(net));
+  else if (ext == ".json") io::write_file_atomically(path, rivers_json(net));
+  else if (ext == ".geojson") io::write_vector_layers({river_layer(net)}, geo, net.grid.spacing, path);
+  else if (ext == ".gpkg") io::write_vector_layers({river_layer(net), lake_layer(net)}, geo, net.grid.spacing, path);
   else invalid("'" + path + "': unsupported river format (use .csv, .json, .geojson or .gpkg)");
 }
 
 void write_lakes(const RiverNetwork& net, const GeoReference& geo, const std::string& path) {
-  const std::string ext = extension_of(path);
-  if (ext == ".json") write_file_atomically(path, nlohmann::json{{"lakes", lakes_json(net)}}.dump() + "\n");
-  else if (ext == ".geojson" || ext == ".gpkg") write_vector_layers({lake_layer(net)}, geo, net.grid.spacing, path);
+  const std::string ext = io::extension_of(path);
+  if (ext == ".json") io::write_file_atomically(path, nlohmann::json{{"lakes", lakes_json(net)}}.dump() + "\n");
+  else if (ext == ".geojson" || ext == ".gpkg") io::write_vector_layers({lake_layer(net)}, geo, net.grid.spacing, path);
   else invalid("'" + path + "': unsupported lake format (use .json, .geojson or .gpkg)");
 }
 
 WaterScene read_water_json(const std::string& path) {
   WaterScene w;
-  const std::string text = read_file(path);
-  w.rivers = decode_polylines_json(text, path);
+  const std::string text = io::read_file(path);
+  w.rivers = io::decode_polylines_json(text, path);
   const nlohmann::json doc = nlohmann::json::parse(text);  // valid: decoded above
   if (doc.contains("lakes")) {
     const auto& lakes = doc["lakes"];

@@ -12,7 +12,7 @@
 #include "core/heightfield.hpp"
 #include "core/polyline_set.hpp"
 
-namespace ft {
+namespace ft::io {
 
 struct VectorLayer {
   std::string name;
@@ -30,4 +30,4 @@ struct VectorLayer {
 void write_vector_layers(const std::vector<VectorLayer>& layers, const GeoReference& geo, double spacing,
                          const std::string& path);
 
-}  // namespace ft
+}  // namespace ft::io

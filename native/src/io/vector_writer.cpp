@@ -13,7 +13,7 @@
 #include "io/gdal_session.hpp"
 #include "io/vector_io.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 
 struct Geometry {
@@ -113,4 +113,4 @@ void write_vector_layers(const std::vector<VectorLayer>& layers, const GeoRefere
   write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(bytes), size_t(length)));
 }
 
-}  // namespace ft
+}  // namespace ft::io

@@ -6,17 +6,30 @@ import bpy
 
 from ...core import params
 from . import erosion_layout
+from ..common.widgets import draw_setting
 
 
 def _prop(layout, data, name):
     """layout.prop, except that without the property split (the narrow sidebar)
     an enum gets its label beside it (Blender would drop it)."""
     if layout.use_property_split or data.bl_rna.properties[name].type != "ENUM":
-        layout.prop(data, name)
+        draw_setting(layout, data, name, params.PARAMS_BY_NAME.get(name))
         return
     row = layout.split(factor=0.4, align=True)
     row.label(text=data.bl_rna.properties[name].name)
     row.prop(data, name, text="")
+
+
+# Drawn above for every method that uses them (or by draw_landform and the reference box).
+_SHARED = {"method", "levels", "width", "height", "hurst", "sigma", "seed", "periodic", "world_size",
+           "reference_scale"}
+
+
+def _own_settings(method):
+    """The library's terrain settings that `method` uses and only some methods do,
+    beyond the shared ones drawn above, in the table's order."""
+    return [p.name for p in params.TERRAIN_PARAMS
+            if p.field and p.methods is not None and method in p.methods and p.name not in _SHARED]
 
 
 def draw_settings(layout, data, show_reference_pickers=True, compact=False):
@@ -32,7 +45,8 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
     if method in params.DYADIC_METHODS:
         _prop(sub, data, "levels")
         side = 2 ** data.levels + 1
-        sub.label(text=f"{side} x {side} vertices", icon="MESH_GRID")
+        sub.label(text=f"Final: {side} x {side} vertices", icon="MESH_GRID")
+        _prop(sub, data, "preview_levels")
     else:
         _prop(sub, data, "width")
         _prop(sub, data, "height")
@@ -43,18 +57,14 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
     sub = col.column(align=True)
     _prop(sub, data, "world_size")
     draw_landform(col, data, show_reference_pickers)
-    if method == "FBM":
+    own = _own_settings(method)
+    if own:
+        # The method's own settings, in a box under its name: which they are is the
+        # library's table (each field's methods), so a new method needs no case here.
         box = col.box().column(align=True)
-        box.label(text="Noise")
-        for name in ("basis", "variant", "octaves", "lacunarity", "gain", "frequency", "offset",
-                     "octave_rotation", "warp"):
-            _prop(box, data, name)
-    elif method == "INTERPOLATED":
-        _prop(col, data, "lacunarity")
-    elif method == "MANDELBROT":
-        box = col.box().column(align=True)
-        box.label(text="Mandelbrot Set")
-        for name in ("center_x", "center_y", "zoom", "iterations", "supersample"):
+        box.label(text=next(label for ident, label, _doc, _v in params.PARAMS_BY_NAME["method"].items
+                            if ident == method))
+        for name in own:
             _prop(box, data, name)
     if method in params.DYADIC_METHODS:
         box = col.box().column(align=True)
