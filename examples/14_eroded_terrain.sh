@@ -39,7 +39,7 @@ POV
 }
 scene "$out/terrain.png" "$zmin0" "$zmax0" "FT_Terrain_Texture($zmin0, $zmax0, Sea)" > "$out/before.pov"
 SEA=0.04 scene "$out/eroded.png" "$zmin" "$zmax" "FT_Terrain_Masked(
-  FT_Terrain_Masked(FT_Terrain_Texture($zmin, $zmax, Sea), Wet_Tex, \"$out/maps/drainage_area.png\", <10, 10>, 0.003, 0.02),
+  FT_Terrain_Masked(FT_Terrain_Texture($zmin, $zmax, Sea), Wet_Tex, \"$out/maps/drainage_area.png\", <10, 10>, 0.6, 0.76),
   FT_Sand_Tex, \"$out/maps/deposited.png\", <10, 10>, 0.04, 0.15)" > "$out/after.pov"
 for s in before after; do
   povray +L"$root/povray_macros" +I"$out/$s.pov" +O"$out/$s.png" +W"${WIDTH:-800}" +H"${HEIGHT:-600}" \

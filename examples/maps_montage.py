@@ -9,6 +9,7 @@ binding from this source tree (the library from build/native, or
 FRACTERRA_LIBRARY).
 """
 
+import json
 import math
 import sys
 from pathlib import Path
@@ -21,11 +22,12 @@ from fracterra.core.terrain import Heightfield  # noqa: E402
 PANELS = (("drainage_area", True), ("slope", False), ("eroded", False), ("deposited", False))
 
 
-def panel(path, log):
-    """Rows of the map at half size, scaled to 0..1 over its own range."""
+def panel(path, log, scale):
+    """Rows of the map at half size, scaled to 0..1 over its own range (a log
+    panel of a map already written on a log scale, per maps.json, as it is)."""
     with raster.read_heightfield(path) as hf:
         w, h, values = hf.width, hf.height, hf.to_array()
-    if log:
+    if log and scale != "log10":
         values = [math.log(max(v, 1e-12)) for v in values]
     lo, hi = min(values), max(values)
     span = (hi - lo) or 1.0
@@ -34,7 +36,8 @@ def panel(path, log):
 
 def main():
     maps, out = Path(sys.argv[1]), sys.argv[2]
-    panels = [panel(maps / f"{name}.png", log) for name, log in PANELS]
+    index = json.loads((maps / "maps.json").read_text())
+    panels = [panel(maps / f"{name}.png", log, index[name].get("scale", "linear")) for name, log in PANELS]
     rows = [sum((p[y] for p in panels), []) for y in range(len(panels[0]))]
     with Heightfield.from_values(len(rows[0]), len(rows), [v for row in rows for v in row]) as hf:
         raster.write_heightfield(hf, out)

@@ -19,6 +19,8 @@ a layer of lower rank, never one of the same rank (sideways) or higher
        erosion/                                fluvial, hydraulic, thermal erosion and maps
     5  pipeline/                               generate -> landform -> erode -> maps in one call
                                                (uses terrain/ and erosion/)
+    5  hydrology/                              rivers, lakes and the sea (erosion/'s routing,
+                                               polyline/'s FPL, contour/'s shorelines)
     6  tables/                                 the parameter tables of every layer, by kind
     7  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
                                                by side: both link the static core, neither
@@ -71,6 +73,7 @@ RANK = {
     "erosion": 4,  # fluvial, hydraulic, thermal; uses analysis/
     "tiles": 3,  # tile sets: windows of terrain/ written through io/
     "pipeline": 5,  # the terrain pipeline: terrain/ then erosion/
+    "hydrology": 5,  # rivers, lakes, the sea: erosion/'s flow graph, polyline/'s FPL, contour/
     "tables": 6,  # every capability's parameter table, by kind
     "capi": 7, "cli": 7,
 }

@@ -12,11 +12,13 @@
 #include "analysis/polyline_report.hpp"
 #include "analysis/quantile.hpp"
 #include "cli/cli_util.hpp"
+#include "cli/network_json.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
 #include "cli/plot_writer.hpp"
 #include "core/error.hpp"
 #include "erosion/drainage_stats.hpp"
+#include "hydrology/hydrology_params.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
 #include "contour/marching_squares.hpp"
@@ -35,7 +37,9 @@ struct AnalyzeCli {
   // The band flags come from ft_hurst_params' table; the estimator and the
   // transect median are --method's own form (every estimator runs).
   ft_hurst_params params = defaults_of<ft_hurst_params>(analysis::hurst_param_table());
-  bool drainage = false, periodic = false;
+  bool drainage = false, periodic = false, rivers = false;
+  // --rivers: the network's channel-head area and sea, from ft_hydrology_params' table.
+  ft_hydrology_params network = defaults_of<ft_hydrology_params>(hydrology::hydrology_param_table());
 };
 
 // Hack's law and slope-area concavity of a heightfield (erosion/drainage_stats.hpp).
@@ -210,6 +214,17 @@ int run(const AnalyzeCli& c) {
         if (hf.world_size() <= 0) hf.set_world_size(10.0);
         report["drainage"] = drainage_report(hf, c.periodic);
       }
+      if (c.rivers) {
+        if (hf.world_size() <= 0) hf.set_world_size(10.0);
+        ft_hydrology_params p = c.network;
+        p.periodic = c.periodic;
+        const hydrology::NetworkMeasures m = hydrology::measure_network(hydrology::extract_rivers(hf, hydrology::from_c(p)));
+        json j = network_json(m);
+        j["min_area"] = p.min_area;
+        j["note"] = "real networks: bifurcation ratio R_b about 3-5, length ratio R_l about 1.5-3.5 (Horton 1945, "
+                    "Strahler 1957), Hack h about 0.5-0.6; lengths in world units";
+        report["rivers"] = j;
+      }
       if (!coast.sizes.empty())
         fig.panels.push_back(box_panel("median coastline: box counting", coast.sizes, coast.counts, coast.dimension,
                                        coast.std_error));
@@ -264,7 +279,14 @@ Registration reg({"analyze",
                     app.add_option("--plot", c->plot, "also draw the log-log fits to this .svg (or .png, through rsvg-convert)");
                     app.add_flag("--drainage", c->drainage,
                                  "heightfields: also report drainage statistics (Hack's h, slope-area theta)");
-                    app.add_flag("--periodic", c->periodic, "--drainage: the terrain tiles (route it as a torus)");
+                    app.add_flag("--periodic", c->periodic,
+                                 "--drainage, --rivers: the terrain tiles (route it as a torus)");
+                    app.add_flag("--rivers", c->rivers,
+                                 "heightfields: also report the river network (fracterra rivers): Strahler orders, "
+                                 "Horton's bifurcation and length ratios, total length, drainage density, Hack's h");
+                    app.add_option("--min-area", c->network.min_area,
+                                   "--rivers: drainage area at a channel head, world units^2 (as rivers --min-area)")
+                        ->capture_default_str();
                     return [c] {
                       // Every estimator runs, so every band field is checked (as FT_HURST_AUTO reads them all).
                       c->params.method = FT_HURST_AUTO;

@@ -19,7 +19,7 @@ namespace ft::cli {
 namespace {
 
 struct ErodeCli {
-  std::string in, out, maps, preset;
+  std::string in, out, maps, preset, maps_float;
   double world_size = 0;
   bool stats = false;
   ErosionMapFlags map_files;
@@ -63,7 +63,10 @@ Registration reg({"erode", "Erode a heightfield (channels, scree and fans over y
                     app.add_option("--in", o->in, "heightfield .png, .pgm or .npy")->required()->check(CLI::ExistingFile);
                     app.add_option("--out", o->out, "eroded heightfield .png, .pgm or .npy");
                     app.add_option("--maps", o->maps,
-                                   "folder for the maps as 16-bit PNGs with their ranges (and maps.json)");
+                                   "folder for the maps as 16-bit PNGs with their ranges (and maps.json; drainage "
+                                   "area on a log10 scale)");
+                    app.add_option("--maps-float", o->maps_float,
+                                   "also write every map as float32 with its linear values: tif or exr");
                     app.add_option("--preset", o->preset, preset_help());
                     o->map_files.add_to(app);
                     app.add_option("--world-size", o->world_size,
@@ -84,7 +87,8 @@ Registration reg({"erode", "Erode a heightfield (channels, scree and fans over y
                       const Heightfield eroded = erosion::erode(hf, c, o->maps.empty() ? nullptr : &maps, &budget);
                       const double seconds = clock.seconds();
                       if (!o->out.empty()) io::write_heightfield(eroded, o->out);
-                      if (!o->maps.empty()) erosion::write_erosion_maps(maps, o->maps);
+                      if (!o->maps.empty())
+                        erosion::write_erosion_maps(maps, o->maps, o->maps_float.empty() ? "" : "." + o->maps_float);
                       if (o->stats) {
                         const HeightStats before = hf.stats(), after = eroded.stats();
                         nlohmann::json j = {{"seconds", seconds},       {"carried_out", budget.carried_out},

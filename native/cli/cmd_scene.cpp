@@ -10,6 +10,7 @@
 #include "cli/param_flags.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
+#include "hydrology/river_files.hpp"
 #include "io/polyline_io.hpp"
 #include "povray/pov_params.hpp"
 #include "povray/render.hpp"
@@ -25,7 +26,7 @@ const std::map<std::string, int> kKinds = {{"line", int(pov::LineKind::kGeneric)
                                            {"coastline", int(pov::LineKind::kCoastline)}};
 
 struct SceneOptions {
-  std::string terrain, tiles, pov, render;
+  std::string terrain, tiles, pov, render, rivers;
   std::vector<std::string> polylines;
   std::vector<int> kinds;
   std::vector<double> radii, radius_scales;
@@ -99,6 +100,26 @@ int run(SceneOptions& o) {
     l.radii_in_world_units = o.radius_from_file;
     p.lines.push_back(l);
   }
+  hydrology::WaterScene water;
+  if (!o.rivers.empty()) {
+    if (o.terrain.empty()) invalid("--rivers needs the --terrain they were traced on");
+    water = hydrology::read_water_json(o.rivers);
+    // `fracterra rivers` worked in the terrain's recorded world size (10
+    // when it records none); the scene may place it at another --size and
+    // scales its heights by the vertical scale.
+    const double k = p.world_size_x / (hf.world_size() > 0 ? hf.world_size() : 10.0);
+    for (Vec3& q : water.rivers.points) q = {q[0] * k, q[1] * k, q[2] * p.vertical_scale};
+    for (double& r : water.rivers.radii) r *= k;
+    p.rivers = &water.rivers;
+    for (const auto& lake : water.lakes) {
+      pov::SceneLake l{lake.level * p.vertical_scale, {}};
+      for (const auto& ring : lake.rings) {
+        l.rings.emplace_back();
+        for (const Vec3& q : ring) l.rings.back().push_back({q[0] * k, q[1] * k, l.level});
+      }
+      p.lakes.push_back(std::move(l));
+    }
+  }
   p.image_width = o.r.width;
   p.title = !o.tiles.empty() ? "tile set " + o.tiles : o.terrain.empty() ? "polylines" : "terrain " + o.terrain;
   const auto sum = pov::write_scene(p, o.pov);
@@ -137,6 +158,10 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                     app.add_flag("--radius-from-file", o->radius_from_file,
                                  "take the radii stored in the polyline files as world units (vertices with 0 get "
                                  "--radius or the automatic one)");
+                    app.add_option("--rivers", o->rivers,
+                                   "rivers and lakes (.json of fracterra rivers, on this --terrain): rivers as "
+                                   "water ribbons as wide as the rivers, lakes as water at their levels")
+                        ->check(CLI::ExistingFile);
                     app.add_option("--pov", o->pov, "scene to write (.pov); the terrain PNG goes beside it")->required();
                     app.add_option("--size", o->size,
                                    "terrain width in world units (x); depth follows the grid; default: the world "

@@ -13,6 +13,8 @@
 #include "core/error.hpp"
 #include "cli/erosion_map_flags.hpp"
 #include "erosion/erosion_params.hpp"
+#include "hydrology/hydrology.hpp"
+#include "hydrology/river_files.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
 #include "pipeline/build_params.hpp"
@@ -53,7 +55,7 @@ struct TerrainOptions {
   ft_build_params build = defaults_of<ft_build_params>(build_param_table());
   ft_erosion_params erosion = defaults_of<ft_erosion_params>(erosion_param_table());
   bool erosion_given = false;  // an erosion flag was given: erode with these settings
-  std::string reference, falloff_mask, out, size, pov, center, curves_out;
+  std::string reference, falloff_mask, out, size, pov, center, curves_out, rivers;
   std::vector<double> curves;
   bool stats = false, curves_world = false;
   ErosionMapFlags erosion_maps;
@@ -111,6 +113,17 @@ int run(TerrainOptions& o) {
   b.erosion = o.erosion_given ? &o.erosion : nullptr;
   b.threads = p.threads;
   Heightfield hf = build_terrain(b, nullptr);
+  if (!o.rivers.empty()) {
+    // The rivers of what was made, with the terrain's own sea (the landform's).
+    hydrology::HydrologyConfig c;
+    c.sea = hydrology::Sea(p.sea);
+    c.sea_level = p.sea_level;
+    c.sea_fraction = p.sea_fraction;
+    c.periodic = p.method == FT_TERRAIN_SPECTRAL;
+    c.threads = p.threads;
+    if (hf.world_size() <= 0) hf.set_world_size(10.0);
+    hydrology::write_rivers(hydrology::extract_rivers(hf, c), hf.georef(), o.rivers);
+  }
   const double seconds = clock.seconds();
   if (!o.out.empty()) io::write_heightfield(hf, o.out);
   if (!o.pov.empty()) pov::write_terrain_scene(hf, o.pov);  // PNG beside it
@@ -168,13 +181,17 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                                     {{"erosion_preset", "--erode"}});
                     add_param_flags(app, erosion_param_table(), &o->erosion, {"periodic", "threads"});
                     o->erosion_maps.add_to(app);
+                    app.add_option("--rivers", o->rivers,
+                                   "also trace its rivers and lakes (after --erode) with fracterra rivers' defaults "
+                                   "and the terrain's own sea: .csv, .json, .geojson or .gpkg");
                     app.add_option("--out", o->out,
                                    "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), "
                                    ".exr (float) or .raw/.r16 (RAW16 + sidecar .json)");
                     app.add_option("--pov", o->pov, "also write a POV-Ray scene (.pov, with its PNG beside it)");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, min, max, mean, std");
                     return [o, &app] {
-                      if (o->out.empty() && o->pov.empty() && !o->stats) invalid("give --out FILE, --pov FILE and/or --stats");
+                      if (o->out.empty() && o->pov.empty() && o->rivers.empty() && !o->stats)
+                        invalid("give --out FILE, --pov FILE, --rivers FILE and/or --stats");
                       for (const ft_param_info& row : erosion_param_table().rows)  // --periodic, --threads: the terrain's
                         if (std::string(row.name) != "periodic" && std::string(row.name) != "threads")
                           o->erosion_given = o->erosion_given || flag_given(app, row.name);

@@ -230,6 +230,7 @@ TEST_F(Cli, CommandsWithATableOfferEveryOneOfItsSettings) {
                         {"profile", FT_PARAMS_PROFILE, {}},
                         {"fractalize", FT_PARAMS_FRACTALIZE, {}},
                         {"erode", FT_PARAMS_EROSION, {}},
+                        {"rivers", FT_PARAMS_HYDROLOGY, {}},
                         {"terrain", FT_PARAMS_BUILD, {"threads"}}};
   for (const Case& c : cases) {
     const std::string help = run(std::string(c.command) + " --help").out;

@@ -53,6 +53,19 @@ const std::vector<Field> kFractalizeFields = {
 const std::vector<Field> kErosionFields = {
     FT_FIELDS(ft_erosion_params, struct_size, fluvial_steps, fluvial_dt, erodibility, area_exponent, diffusion, uplift, hydraulic_iterations, hydraulic_dt, rain, evaporation, capacity, dissolve, deposit, thermal_iterations, talus_degrees, thermal_rate, periodic, threads, progress, progress_user, uplift_follows_terrain, strength, duration, deposition, rainfall, erosion_mask, erosion_mask_width, erosion_mask_height, rain_map, rain_map_width, rain_map_height),
 };
+const std::vector<Field> kHydrologyFields = {
+    FT_FIELD(ft_hydrology_params, struct_size),       FT_FIELD(ft_hydrology_params, min_area),
+    FT_FIELD(ft_hydrology_params, sea),               FT_FIELD(ft_hydrology_params, sea_level),
+    FT_FIELD(ft_hydrology_params, sea_fraction),      FT_FIELD(ft_hydrology_params, min_lake_area),
+    FT_FIELD(ft_hydrology_params, rain),              FT_FIELD(ft_hydrology_params, width_coefficient),
+    FT_FIELD(ft_hydrology_params, width_exponent),    FT_FIELD(ft_hydrology_params, depth_coefficient),
+    FT_FIELD(ft_hydrology_params, depth_exponent),    FT_FIELD(ft_hydrology_params, smoothing),
+    FT_FIELD(ft_hydrology_params, meander_depth),     FT_FIELD(ft_hydrology_params, meander_spread),
+    FT_FIELD(ft_hydrology_params, seed),              FT_FIELD(ft_hydrology_params, tolerance),
+    FT_FIELD(ft_hydrology_params, periodic),          FT_FIELD(ft_hydrology_params, threads),
+    FT_FIELD(ft_hydrology_params, sinks),             FT_FIELD(ft_hydrology_params, sink_count),
+    FT_FIELD(ft_hydrology_params, progress),          FT_FIELD(ft_hydrology_params, progress_user),
+};
 
 const std::vector<Field> kPovSceneFields = {
     FT_FIELDS(ft_pov_scene_params, struct_size, terrain, world_size_x, world_size_y, vertical_scale, has_sea,
@@ -114,6 +127,8 @@ const Kind kKinds[] = {
      init_of<ft_erosion_params, ft_erosion_params_init>},
     {FT_PARAMS_BUILD, "ft_build_params", sizeof(ft_build_params), &kBuildFields,
      init_of<ft_build_params, ft_build_params_init>},
+    {FT_PARAMS_HYDROLOGY, "ft_hydrology_params", sizeof(ft_hydrology_params), &kHydrologyFields,
+     init_of<ft_hydrology_params, ft_hydrology_params_init>},
 };
 
 std::vector<const ft_param_info*> rows_of(int32_t kind) {

@@ -434,3 +434,58 @@ TEST_F(PovTest, TiledSceneHasNoCracksAlongTheSeams) {
 
 }  // namespace
 }  // namespace ft
+
+namespace ft {
+namespace {
+
+// `fracterra scene --rivers`: the rivers and lakes of an eroded terrain show
+// (the picture changes where they are) and POV-Ray parses them cleanly.
+TEST_F(PovTest, SceneWithRiversAndLakesShowsThem) {
+  std::string out;
+  ASSERT_EQ(run_cli("terrain --method fbm --size 129 --seed 4 --erode valleys --out '" + path("t.png") + "'", out),
+            0)
+      << out;
+  ASSERT_EQ(run_cli("rivers --in '" + path("t.png") + "' --min-area 0.05 --min-lake-area 0.001 --out '" +
+                        path("r.json") + "'",
+                    out),
+            0)
+      << out;
+  GrayImage img[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::string rivers = k ? " --rivers '" + path("r.json") + "'" : "";
+    ASSERT_EQ(run_cli("scene --terrain '" + path("t.png") + "'" + rivers + " --camera-elevation-deg 60 --pov '" +
+                          path("s" + std::to_string(k) + ".pov") + "'",
+                      out),
+              0)
+        << out;
+    img[k] = render(path("s" + std::to_string(k) + ".pov"));
+  }
+  int64_t changed = 0;
+  for (size_t i = 0; i < img[0].pixels.size(); ++i)
+    changed += std::fabs(double(img[0].pixels[i]) - img[1].pixels[i]) > 0.05 * (img[0].bit_depth == 16 ? 65535 : 255);
+  EXPECT_GT(changed, 100) << "the rivers do not show";
+  std::ifstream scene(path("s1.pov"));
+  const std::string text((std::istreambuf_iterator<char>(scene)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("sphere_sweep"), std::string::npos);
+  EXPECT_NE(text.find("FT_Water_Tex"), std::string::npos);
+}
+
+// povray_macros/ft_water.inc on its own: FT_River and FT_Lake in a user's scene.
+TEST_F(PovTest, WaterMacrosRenderARiverAndALake) {
+  std::ofstream(path("w.pov")) << R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+#include "ft_water.inc"
+camera { location <0.5, 2, -0.3> look_at <0.5, 0, 0.5> }
+light_source { <2, 5, -3> color rgb 1 }
+plane { y, 0 pigment { rgb <0.95, 0.9, 0.8> } }
+#declare P = array[4] { <0.1, 0.05, 0.1>, <0.3, 0.04, 0.4>, <0.5, 0.03, 0.5>, <0.9, 0.02, 0.9> };
+#declare R = array[4] { 0.04, 0.06, 0.08, 0.1 };
+FT_River(P, R)
+#declare L = array[5] { <0.5, 0.05>, <0.95, 0.05>, <0.95, 0.45>, <0.5, 0.45>, <0.5, 0.05> };
+FT_Lake(L, 0.01, 0.005)
+)";
+  expect_not_blank(render(path("w.pov")), "ft_water.inc");
+}
+
+}  // namespace
+}  // namespace ft

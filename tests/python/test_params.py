@@ -151,6 +151,7 @@ CLI_COMMANDS = {
     "dem_refine": ("refine", {"levels_added": "--levels", "hurst": "--hurst", "sigma": "--sigma",
                               "window_x": "--window", "window_y": "--window", "window_side": "--window"}),
     "erosion": ("erode", {}),
+    "hydrology": ("rivers", {}),
     # The pipeline's settings go with the terrain's; the terrain's --threads serves every stage.
     "build": ("terrain", {"threads": "--threads"}),
 }

@@ -52,7 +52,7 @@ class ParamInfo(Structure):
 
 # fracterra/params.h: the described structs and field types.
 PARAMS_KINDS = {"terrain": 0, "profile": 1, "polyline": 2, "fractalize": 3, "pov_scene": 4, "pov_sweep": 5,
-                "hurst": 6, "clouds": 7, "dem_refine": 8, "erosion": 9, "build": 10}
+                "hurst": 6, "clouds": 7, "dem_refine": 8, "erosion": 9, "build": 10, "hydrology": 11}
 FT_PARAM = ("uint32", "int32", "int64", "uint64", "float", "double", "bool", "enum", "pointer", "string",
             "callback", "opaque")
 FLAG_STRUCT_SIZE, FLAG_DATA, FLAG_MIN_EXCLUSIVE, FLAG_MAX_EXCLUSIVE, FLAG_ZERO_IS_AUTO = 1, 2, 4, 8, 16
@@ -244,6 +244,19 @@ SIGNATURES = {
     # pipeline.h (ABI 2.13): the whole terrain in one call; maps NULL or FT_MAP_COUNT handles.
     "ft_build_params_init": (c_int32, [_Described("build")]),
     "ft_terrain_build": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF)]),
+    # hydrology.h (ABI 2.15): rivers, lakes and the sea; the segment and lake structs as raw memory.
+    "ft_hydrology_params_init": (c_int32, [_Described("hydrology")]),
+    "ft_rivers_extract": (c_int32, [_HF, _Described("hydrology"), POINTER(c_void_p)]),
+    "ft_river_network_free": (None, [c_void_p]),
+    "ft_river_network_segment_count": (c_int32, [c_void_p]),
+    "ft_river_network_lake_count": (c_int32, [c_void_p]),
+    "ft_river_network_polylines": (c_int32, [c_void_p, POINTER(c_void_p)]),
+    "ft_river_network_vertex_values": (c_int32, [c_void_p, c_int32, POINTER(c_double), c_int64]),
+    "ft_river_network_segments": (c_int32, [c_void_p, c_void_p, c_int32]),
+    "ft_river_network_lakes": (c_int32, [c_void_p, c_void_p, c_int32]),
+    "ft_river_network_lake_rings": (c_int32, [c_void_p, POINTER(c_void_p)]),
+    "ft_river_network_water_mask": (c_int32, [c_void_p, POINTER(c_int32), c_int64]),
+    "ft_rivers_carve": (c_int32, [_HF, c_void_p, POINTER(_HF)]),
     # raster.h (ABI 1.4); its structs are in core/raster.py.
     "ft_heightfield_read": (c_int32, [c_char_p, c_int32, POINTER(_HF)]),
     "ft_heightfield_write": (c_int32, [_HF, c_char_p]),

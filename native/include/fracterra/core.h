@@ -53,6 +53,8 @@ extern "C" {
 ///      deposition, rainfall, erosion_mask (+ width, height) and rain_map (+ width,
 ///      height) at the end of ft_erosion_params; presets named for what they make
 ///      (the old ids stay as aliases); ft_erosion_preset_fitted no longer fits an uplift.
+/// 2.15: hydrology.h: rivers, lakes and the sea (ft_rivers_extract, the ft_river_network
+///      accessors, ft_rivers_carve; FT_PARAMS_HYDROLOGY describes ft_hydrology_params).
 /// 2.17: a given camera, terrain colours and scene light at the end of ft_pov_scene_params
 ///      (camera_given, camera_location/direction/right/up, terrain_colors, has_scene_light,
 ///      sky_color, sun_color): the add-on's export shows Blender's view and material.

@@ -16,6 +16,7 @@
 #include "povray.h"
 #include "params.h"
 #include "erosion.h"
+#include "hydrology.h"
 #include "raster.h"
 #include "tiles.h"
 #include "pipeline.h"

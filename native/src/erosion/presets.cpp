@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
@@ -83,7 +84,9 @@ ErosionConfig erosion_preset(const std::string& name, const Heightfield& terrain
   return erosion_preset(name);
 }
 
-void write_erosion_maps(const ErosionMaps& maps, const std::string& dir) {
+void write_erosion_maps(const ErosionMaps& maps, const std::string& dir, const std::string& float_format) {
+  if (!float_format.empty() && float_format != ".tif" && float_format != ".exr")
+    invalid("the maps' float format must be .tif or .exr, got '" + float_format + "'");
   const std::pair<const char*, const Heightfield*> all[] = {
       {"drainage_area", &maps.drainage_area}, {"slope", &maps.slope},         {"curvature", &maps.curvature},
       {"water_depth", &maps.water_depth},     {"eroded", &maps.eroded},       {"deposited", &maps.deposited}};
@@ -92,9 +95,32 @@ void write_erosion_maps(const ErosionMaps& maps, const std::string& dir) {
   int k = 0;
   for (const auto& [name, hf] : all) {
     const std::string file = std::string(name) + ".png";
-    io::write_heightfield(*hf, dir + "/" + file);
     const HeightStats s = hf->stats();
-    index[name] = {{"file", file}, {"min", s.min}, {"max", s.max}, {"unit", units[k++]}};
+    nlohmann::json entry = {{"file", file}, {"min", s.min}, {"max", s.max}, {"unit", units[k++]}};
+    if (hf == &maps.drainage_area) {
+      // Drainage area spans cells to the whole map (1 to 10^6 at 1025^2): a
+      // linear 16-bit step is then several cells, and every hillslope value
+      // is blurred. Its log10 keeps the same relative precision everywhere.
+      Heightfield log_area(hf->width(), hf->height());
+      log_area.set_world_size(hf->world_size());
+      log_area.set_georef(hf->georef());
+      for (size_t i = 0; i < hf->size(); ++i) log_area.data()[i] = float(std::log10(std::max(hf->data()[i], 1e-30f)));
+      io::write_heightfield(log_area, dir + "/" + file);
+      const HeightStats l = log_area.stats();
+      entry["scale"] = "log10";
+      entry["encoded_min"] = l.min;
+      entry["encoded_max"] = l.max;
+      entry["decode"] = "value = 10^(encoded_min + v / 65535 x (encoded_max - encoded_min)) for a 16-bit sample v";
+    } else {
+      io::write_heightfield(*hf, dir + "/" + file);
+      entry["scale"] = "linear";
+    }
+    if (!float_format.empty()) {
+      const std::string float_file = std::string(name) + float_format;
+      io::write_heightfield(*hf, dir + "/" + float_file);  // float32, linear, the values themselves
+      entry["float_file"] = float_file;
+    }
+    index[name] = entry;
   }
   io::write_file_atomically(dir + "/maps.json", index.dump(2) + "\n");
 }

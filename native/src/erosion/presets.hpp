@@ -28,7 +28,12 @@ ErosionConfig erosion_preset(const std::string& name, const Heightfield& terrain
 
 // The six maps as 16-bit PNGs in `dir` (drainage_area.png, slope.png, ...),
 // each with its real range recorded in the PNG, and maps.json listing file,
-// min, max and unit of each. Every file is written atomically.
-void write_erosion_maps(const ErosionMaps& maps, const std::string& dir);
+// min, max, unit and scale of each. Drainage area is written as log10(area)
+// (scale "log10", its encoded range in encoded_min / encoded_max): a linear
+// 16-bit step would be several cells on a large terrain. With
+// `float_format` ".tif" or ".exr" every map is also written as float32 with
+// its linear values (float_file in maps.json). Every file is written
+// atomically.
+void write_erosion_maps(const ErosionMaps& maps, const std::string& dir, const std::string& float_format = "");
 
 }  // namespace ft::erosion

@@ -1,5 +1,6 @@
 #include "io/polyline_io.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -51,6 +52,7 @@ PolylineSet decode_polylines_csv(const std::string& text, const std::string& nam
   std::istringstream in(text);
   std::string line;
   long lineno = 0;
+  int extra = 0;  // columns after the radius named by the header
   while (std::getline(in, line)) {
     ++lineno;
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -59,11 +61,17 @@ PolylineSet decode_polylines_csv(const std::string& text, const std::string& nam
       set.end_line();
       continue;
     }
-    if (line[first] == '#') continue;
+    if (line[first] == '#') {
+      // A header naming columns after x,y,z,radius (a river file's discharge,
+      // width, ...): those columns are read past.
+      if (line.compare(first, 15, "# x,y,z,radius,") == 0)
+        extra = int(std::count(line.begin() + std::ptrdiff_t(first), line.end(), ',')) - 3;
+      continue;
+    }
     double v[4] = {0, 0, 0, 0};
     int n = 0;
     const char* s = line.c_str() + first;
-    while (n < 5) {
+    while (n < 5 + extra) {
       char* end = nullptr;
       const double x = std::strtod(s, &end);
       if (end == s) break;
@@ -75,8 +83,9 @@ PolylineSet decode_polylines_csv(const std::string& text, const std::string& nam
     }
     while (*s == ' ' || *s == '\t') ++s;
     const std::string where = "'" + name + "' line " + std::to_string(lineno);
-    if (n < 2 || n > 4 || *s != '\0')
-      fail(FT_ERR_FORMAT, where + ": expected x,y[,z[,radius]]");
+    if (n < 2 || n > 4 + extra || (extra > 0 && n != 4 + extra) || *s != '\0')
+      fail(FT_ERR_FORMAT, where + (extra > 0 ? ": expected " + std::to_string(4 + extra) + " columns as the header names"
+                                             : std::string(": expected x,y[,z[,radius]]")));
     const Vec3 p{v[0], v[1], v[2]};
     check_vertex(p, v[3], where);
     set.add(p, v[3]);

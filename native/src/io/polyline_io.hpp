@@ -1,7 +1,10 @@
 // Polyline sets as text:
 //   .csv   one vertex per line "x,y,z[,radius]" (or "x,y"), a blank line
 //          between polylines, '#' comment lines allowed; written with 17
-//          significant digits so a round trip is exact.
+//          significant digits so a round trip is exact. A header line
+//          "# x,y,z,radius,a,b,..." names further columns (a river file's
+//          discharge, width, ...): each row then has them all, and reading
+//          keeps x, y, z and radius.
 //   .json  {"polylines": [{"points": [[x, y, z], ...], "radii": [...]}, ...]}
 #pragma once
 

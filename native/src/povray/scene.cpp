@@ -146,6 +146,11 @@ void validate_scene_params(const SceneParams& p) {
     check_range("sun_color", p.sun_color[size_t(k)], 0, 1000);
   }
   if (!p.terrain && p.lines.empty()) invalid("a scene needs a terrain or at least one polyline set");
+  for (const SceneLake& l : p.lakes) {
+    check_finite("lake level", l.level);
+    for (const auto& ring : l.rings)
+      if (ring.size() < 4) invalid("a lake's shoreline ring needs at least 4 points (closed), got " + std::to_string(ring.size()));
+  }
 }
 
 double auto_camera_elevation(const SceneParams& p) {
@@ -218,6 +223,11 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   s += "// ---- povray_macros/ft_scene_materials.inc, embedded ----\n";
   s += kFtSceneMaterialsInc;
   s += "// ---- end of ft_scene_materials.inc ----\n";
+  if (p.rivers || !p.lakes.empty()) {
+    s += "#declare FT_Water_Embedded = 1;\n// ---- povray_macros/ft_water.inc, embedded ----\n";
+    s += kFtWaterInc;
+    s += "// ---- end of ft_water.inc ----\n";
+  }
   s += "\n#declare FT_Scene_Min = " + vec(lo) + ";\n#declare FT_Scene_Max = " + vec(hi) + ";\n\n";
 
   s += camera_sdl(cam);
@@ -325,6 +335,37 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
     s += "\n";
   }
 
+  if (p.rivers && p.rivers->vertex_count() > 0) {
+    // Flattened ribbons: the sweep is written FT_River_Flat times as high
+    // and squashed back, so its cross-section is a flat ellipse in the bed.
+    SceneLines l{p.rivers, LineKind::kGeneric};
+    const double floor = automatic_line_radius(l, cam, extent, p.image_width);
+    const double flat = 0.3;
+    PolylineSet ribbon = *p.rivers;
+    for (Vec3& q : ribbon.points) q[2] /= flat;
+    for (double& r : ribbon.radii) r = std::max(r, floor);
+    SweepOptions o = p.sweep;
+    o.default_radius = floor;
+    s += "// rivers: " + std::to_string(p.rivers->line_count()) + " segments, radius half the width, at least " +
+         number(floor) + "\n";
+    s += sweeps_sdl(ribbon, o, "  scale <1, " + number(flat) + ", 1>\n  texture { FT_Water_Tex }\n");
+    s += "\n";
+  }
+  for (size_t k = 0; k < p.lakes.size(); ++k) {
+    const SceneLake& l = p.lakes[k];
+    size_t n = 0;
+    for (const auto& ring : l.rings) n += ring.size();
+    if (n == 0) continue;
+    s += "// lake " + std::to_string(k) + "\n#declare FT_Lake_Points = array[" + std::to_string(n) + "] {";
+    size_t i = 0;
+    for (const auto& ring : l.rings)
+      for (const Vec3& q : ring) {
+        s += i % 4 == 0 ? "\n  " : " ";
+        s += "<" + number(q[0]) + ", " + number(q[1]) + ">";
+        if (++i < n) s += ",";
+      }
+    s += "\n}\nFT_Lake(FT_Lake_Points, " + number(l.level) + ", " + number(0.002 * extent) + ")\n";
+  }
   out.write(s);
   out.commit();
   return sum;

@@ -36,6 +36,13 @@ struct SceneLines {
   double radius_scale = 1;  // multiplies every radius; > 0
 };
 
+// A lake: its water surface's height and its shoreline rings (world units,
+// as the scene places the terrain; the outer ring first, islands after).
+struct SceneLake {
+  double level = 0;
+  std::vector<std::vector<Vec3>> rings;
+};
+
 struct SceneParams {
   const Heightfield* terrain = nullptr;  // may be null (a polyline scene)
   double world_size_x = 1, world_size_y = 1, vertical_scale = 1;
@@ -68,6 +75,12 @@ struct SceneParams {
   // preview of the whole (for framing and the sea level) and the scene draws
   // these tiles' height_fields edge to edge (tiled_terrain.hpp).
   const TiledTerrain* tiles = nullptr;
+  // Rivers (fracterra rivers): vertices on the water surface, radius = half
+  // the width, world units as the scene places the terrain (heights scaled
+  // by vertical_scale). Drawn as flattened water ribbons (ft_water.inc),
+  // never thinner than 0.75 pixel. Not owned; may be null.
+  const PolylineSet* rivers = nullptr;
+  std::vector<SceneLake> lakes;  // water prisms at their levels (ft_water.inc's FT_Lake)
 };
 
 struct SceneSummary {
@@ -129,5 +142,6 @@ double automatic_line_radius(const SceneLines& lines, const Camera& camera, doub
 // a scene needs nothing beside its PNG (generated from the .inc at build).
 extern const char* const kFtTerrainInc;
 extern const char* const kFtSceneMaterialsInc;
+extern const char* const kFtWaterInc;
 
 }  // namespace ft::pov

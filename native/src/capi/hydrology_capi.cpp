@@ -1,0 +1,144 @@
+// The C ABI of the hydrology layer (fracterra/hydrology.h).
+#include <algorithm>
+#include <memory>
+#include <string>
+
+#include "capi/guard.hpp"
+#include "capi/handles.hpp"
+#include "fracterra/fracterra.h"
+#include "hydrology/hydrology.hpp"
+#include "hydrology/hydrology_params.hpp"
+
+using ft::capi::guarded;
+
+struct ft_river_network {
+  ft::hydrology::RiverNetwork net;
+};
+
+namespace {
+
+void check_count(const char* what, int64_t given, int64_t want) {
+  if (given != want)
+    ft::invalid(std::string(what) + ": count must be " + std::to_string(want) + ", got " + std::to_string(given));
+}
+
+}  // namespace
+
+extern "C" {
+
+FT_API ft_status ft_hydrology_params_init(ft_hydrology_params* p) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    *p = ft::defaults_of<ft_hydrology_params>(ft::hydrology::hydrology_param_table());
+  });
+}
+
+FT_API ft_status ft_rivers_extract(const ft_heightfield* terrain, const ft_hydrology_params* p,
+                                   ft_river_network** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("terrain", terrain);
+    ft::check_not_null("params", p);
+    const ft::hydrology::HydrologyConfig c = ft::hydrology::from_c(*p);
+    auto h = std::make_unique<ft_river_network>();
+    h->net = ft::hydrology::extract_rivers(terrain->hf, c);
+    *out = h.release();
+  });
+}
+
+FT_API void ft_river_network_free(ft_river_network* net) { delete net; }
+
+FT_API int32_t ft_river_network_segment_count(const ft_river_network* net) {
+  return net ? int32_t(net->net.segments.size()) : 0;
+}
+
+FT_API int32_t ft_river_network_lake_count(const ft_river_network* net) {
+  return net ? int32_t(net->net.water.lakes.size()) : 0;
+}
+
+FT_API ft_status ft_river_network_polylines(const ft_river_network* net, ft_polylines** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("net", net);
+    auto h = std::make_unique<ft_polylines>();
+    h->set = net->net.lines;
+    *out = h.release();
+  });
+}
+
+FT_API ft_status ft_river_network_vertex_values(const ft_river_network* net, int32_t which, double* out,
+                                                int64_t count) {
+  return guarded([&] {
+    ft::check_not_null("net", net);
+    ft::check_not_null("out", out);
+    ft::check_int_range("which", which, 0, 3);
+    const auto& n = net->net;
+    const std::vector<double>* all[] = {&n.discharge, &n.width, &n.depth, &n.area};
+    const auto& v = *all[which];
+    check_count("ft_river_network_vertex_values", count, int64_t(v.size()));
+    std::copy(v.begin(), v.end(), out);
+  });
+}
+
+FT_API ft_status ft_river_network_segments(const ft_river_network* net, ft_river_segment* out, int32_t count) {
+  return guarded([&] {
+    ft::check_not_null("net", net);
+    ft::check_not_null("out", out);
+    const auto& segs = net->net.segments;
+    check_count("ft_river_network_segments", count, int64_t(segs.size()));
+    for (size_t i = 0; i < segs.size(); ++i) {
+      const auto& s = segs[i];
+      out[i] = {s.first_vertex, s.vertex_count, s.order, s.downstream, int32_t(s.end), s.lake, s.from_lake,
+                s.stream, s.length};
+    }
+  });
+}
+
+FT_API ft_status ft_river_network_lakes(const ft_river_network* net, ft_lake* out, int32_t count) {
+  return guarded([&] {
+    ft::check_not_null("net", net);
+    ft::check_not_null("out", out);
+    const auto& n = net->net;
+    const auto& lakes = n.water.lakes;
+    check_count("ft_river_network_lakes", count, int64_t(lakes.size()));
+    for (size_t i = 0; i < lakes.size(); ++i) {
+      const auto& l = lakes[i];
+      const double ox = l.outlet < 0 ? 0 : (l.outlet % n.grid.width) * n.grid.spacing;
+      const double oy = l.outlet < 0 ? 0 : (l.outlet / n.grid.width) * n.grid.spacing;
+      out[i] = {l.level, l.area, l.volume, ox, oy, l.outlet_segment, l.cells, l.first_ring, l.ring_count};
+    }
+  });
+}
+
+FT_API ft_status ft_river_network_lake_rings(const ft_river_network* net, ft_polylines** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("net", net);
+    auto h = std::make_unique<ft_polylines>();
+    h->set = net->net.lake_rings;
+    *out = h.release();
+  });
+}
+
+FT_API ft_status ft_river_network_water_mask(const ft_river_network* net, int32_t* out, int64_t count) {
+  return guarded([&] {
+    ft::check_not_null("net", net);
+    ft::check_not_null("out", out);
+    const auto& label = net->net.water.label;
+    check_count("ft_river_network_water_mask", count, int64_t(label.size()));
+    std::copy(label.begin(), label.end(), out);
+  });
+}
+
+FT_API ft_status ft_rivers_carve(const ft_heightfield* terrain, const ft_river_network* net, ft_heightfield** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("terrain", terrain);
+    ft::check_not_null("net", net);
+    auto h = std::make_unique<ft_heightfield>();
+    h->hf = ft::hydrology::carve(terrain->hf, net->net);
+    *out = h.release();
+  });
+}
+
+}  // extern "C"

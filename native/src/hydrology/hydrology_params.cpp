@@ -1,0 +1,161 @@
+#include "hydrology/hydrology_params.hpp"
+
+#include <cfloat>
+
+namespace ft::hydrology {
+namespace {
+
+constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
+constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
+constexpr uint32_t kAbi215 = 0x2000F;
+constexpr double kBig = 1e12;  // areas and heights: any sane world
+
+constexpr ft_param_enum_item kSeas[] = {
+    {FT_WATER_SEA_NONE, "NONE", "None", "No sea: rivers end at the map's edge, in lakes or at sinks"},
+    {FT_WATER_SEA_HEIGHT, "HEIGHT", "Height", "The sea is below a height (connected to the map's edge)"},
+    {FT_WATER_SEA_FRACTION, "FRACTION", "Fraction",
+     "The sea is below the height with that fraction of the samples below it (connected to the map's edge)"},
+};
+
+// The defaults are HydrologyConfig's (hydrology.hpp); the test
+// HydrologyParams.TableDefaultsAreTheConfigDefaults holds them together.
+#define ROW(field, type) FT_PARAM_ROW(ft_hydrology_params, field, type)
+FT_PARAM_TABLE_BEGIN
+constexpr ft_param_info kRows[] = {
+    {ROW(struct_size, FT_PARAM_UINT32), .flags = FT_PARAM_FLAG_STRUCT_SIZE, .since = kAbi215, .element_kind = -1,
+     .default_value = sizeof(ft_hydrology_params), .hard_min = 0, .hard_max = 4294967295.0, .unit = "bytes",
+     .label = "Struct Size", .doc = "sizeof(ft_hydrology_params), set by ft_hydrology_params_init", .methods = kAll},
+    {ROW(min_area, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MIN_EXCLUSIVE, .since = kAbi215, .element_kind = -1,
+     .default_value = 0.1, .hard_min = 0, .hard_max = kBig, .soft_min = 0.001, .soft_max = 10,
+     .unit = "world units^2", .label = "Min Area",
+     .doc = "Drainage area at which a river begins (its channel head)", .methods = kAll},
+    {ROW(sea, FT_PARAM_ENUM), .since = kAbi215, .element_kind = -1, .default_value = FT_WATER_SEA_NONE,
+     .hard_min = FT_WATER_SEA_NONE, .hard_max = FT_WATER_SEA_FRACTION, .soft_min = FT_WATER_SEA_NONE,
+     .soft_max = FT_WATER_SEA_FRACTION, .unit = "", .label = "Sea",
+     .doc = "Where the sea is: none, below a height, or below a fraction of the samples", .methods = kAll,
+     .enum_count = 3, .enum_items = kSeas},
+    {ROW(sea_level, FT_PARAM_DOUBLE), .since = kAbi215, .element_kind = -1, .default_value = 0, .hard_min = -kBig,
+     .hard_max = kBig, .soft_min = -100, .soft_max = 100, .unit = "world units", .label = "Sea Level",
+     .doc = "Height of the sea (sea 'height'); must lie within the terrain's heights", .methods = kAll},
+    {ROW(sea_fraction, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MAX_EXCLUSIVE, .since = kAbi215, .element_kind = -1,
+     .default_value = 0.3, .hard_min = 0, .hard_max = 1, .soft_min = 0, .soft_max = 0.95, .unit = "",
+     .label = "Sea Fraction", .doc = "Share of the samples under the sea (sea 'fraction')", .methods = kAll},
+    {ROW(min_lake_area, FT_PARAM_DOUBLE), .since = kAbi215, .element_kind = -1, .default_value = 0.01, .hard_min = 0,
+     .hard_max = kBig, .soft_min = 0, .soft_max = 1, .unit = "world units^2", .label = "Min Lake Area",
+     .doc = "Smaller filled depressions are not lakes: rivers run through them", .methods = kAll},
+    {ROW(rain, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MIN_EXCLUSIVE, .since = kAbi215, .element_kind = -1,
+     .default_value = 1, .hard_min = 0, .hard_max = kBig, .soft_min = 0.1, .soft_max = 10, .unit = "world units/yr",
+     .label = "Rain", .doc = "Runoff per unit of area: discharge Q = drainage area x rain", .methods = kAll},
+    {ROW(width_coefficient, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MIN_EXCLUSIVE, .since = kAbi215,
+     .element_kind = -1, .default_value = 0.03, .hard_min = 0, .hard_max = kBig, .soft_min = 0.001, .soft_max = 0.2,
+     .unit = "world units", .label = "Width Coefficient",
+     .doc = "a in the width w = a Q^b (Leopold & Maddock 1953)", .methods = kAll},
+    {ROW(width_exponent, FT_PARAM_DOUBLE), .since = kAbi215, .element_kind = -1, .default_value = 0.5, .hard_min = 0,
+     .hard_max = 1, .soft_min = 0.3, .soft_max = 0.7, .unit = "", .label = "Width Exponent",
+     .doc = "b in w = a Q^b; about 0.5 for real rivers downstream", .methods = kAll},
+    {ROW(depth_coefficient, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MIN_EXCLUSIVE, .since = kAbi215,
+     .element_kind = -1, .default_value = 0.006, .hard_min = 0, .hard_max = kBig, .soft_min = 0.0001,
+     .soft_max = 0.05, .unit = "world units", .label = "Depth Coefficient", .doc = "c in the depth d = c Q^f",
+     .methods = kAll},
+    {ROW(depth_exponent, FT_PARAM_DOUBLE), .since = kAbi215, .element_kind = -1, .default_value = 0.4, .hard_min = 0,
+     .hard_max = 1, .soft_min = 0.2, .soft_max = 0.6, .unit = "", .label = "Depth Exponent",
+     .doc = "f in d = c Q^f; about 0.4 for real rivers downstream", .methods = kAll},
+    {ROW(smoothing, FT_PARAM_INT32), .since = kAbi215, .element_kind = -1, .default_value = 3, .hard_min = 0,
+     .hard_max = 100, .soft_min = 0, .soft_max = 10, .unit = "passes", .label = "Smoothing",
+     .doc = "Passes of smoothing that take the 8-direction grid steps out of the rivers (never uphill)",
+     .methods = kAll},
+    {ROW(meander_depth, FT_PARAM_INT32), .since = kAbi215, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 8, .soft_min = 0, .soft_max = 4, .unit = "levels", .label = "Meander Depth",
+     .doc = "Levels of Nikulin's fractal polyline between vertices, sideways at most the river's width; 0: none",
+     .methods = kAll},
+    {ROW(meander_spread, FT_PARAM_DOUBLE), .since = kAbi215, .element_kind = -1, .default_value = 0.3,
+     .hard_min = 0, .hard_max = 1, .soft_min = 0, .soft_max = 0.5, .unit = "", .label = "Meander Spread",
+     .doc = "The FPL's spread s (uniform displacement in [-s, s] of each segment's length)", .methods = kAll},
+    {ROW(seed, FT_PARAM_UINT64), .since = kAbi215, .element_kind = -1, .default_value = 1, .hard_min = 0,
+     .hard_max = 18446744073709551615.0, .soft_min = 0, .soft_max = 1000, .unit = "", .label = "Seed",
+     .doc = "Seed of the meanders", .methods = kAll},
+    {ROW(tolerance, FT_PARAM_DOUBLE), .since = kAbi215, .element_kind = -1, .default_value = 1e-4, .hard_min = 0,
+     .hard_max = kBig, .soft_min = 0, .soft_max = 0.01, .unit = "world units", .label = "Tolerance",
+     .doc = "How far a smoothed or meandering vertex may lie above its upstream neighbour", .methods = kAll},
+    {ROW(periodic, FT_PARAM_BOOL), .since = kAbi215, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Tiles",
+     .doc = "The terrain tiles: rivers run across its edges (and drain to its lowest sample without a sea)",
+     .methods = kAll},
+    {ROW(threads, FT_PARAM_INT32), .since = kAbi215, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 1024, .soft_min = 0, .soft_max = 64, .unit = "threads", .label = "Threads",
+     .doc = "Worker threads, 0: all cores; the output never depends on it", .methods = kAll},
+    {ROW(sinks, FT_PARAM_POINTER), .flags = kData, .since = kAbi215, .element_type = FT_PARAM_DOUBLE,
+     .element_kind = -1, .unit = "world units", .label = "Sinks",
+     .doc = "sink_count (x, y) points where water leaves the terrain (a swallow hole, a well); may be NULL",
+     .methods = kAll},
+    {ROW(sink_count, FT_PARAM_INT32), .flags = kData, .since = kAbi215, .element_kind = -1, .default_value = 0,
+     .hard_min = 0, .hard_max = 1000000, .unit = "", .label = "Sink Count", .doc = "Number of sinks",
+     .methods = kAll},
+    {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .since = kAbi215, .element_kind = -1, .unit = "",
+     .label = "Progress", .doc = "Called as the rivers are traced; may cancel; NULL: none", .methods = kAll},
+    {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .since = kAbi215, .element_type = FT_PARAM_OPAQUE,
+     .element_kind = -1, .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback",
+     .methods = kAll},
+};
+FT_PARAM_TABLE_END
+#undef ROW
+
+}  // namespace
+
+const ParamTable& hydrology_param_table() {
+  static const ParamTable table{"ft_hydrology_params", sizeof(ft_hydrology_params), kRows};
+  return table;
+}
+
+ft_hydrology_params to_c(const HydrologyConfig& c) {
+  ft_hydrology_params p = defaults_of<ft_hydrology_params>(hydrology_param_table());
+  p.min_area = c.min_area;
+  p.sea = int32_t(c.sea);
+  p.sea_level = c.sea_level;
+  p.sea_fraction = c.sea_fraction;
+  p.min_lake_area = c.min_lake_area;
+  p.rain = c.rain;
+  p.width_coefficient = c.width_coefficient;
+  p.width_exponent = c.width_exponent;
+  p.depth_coefficient = c.depth_coefficient;
+  p.depth_exponent = c.depth_exponent;
+  p.smoothing = c.smoothing;
+  p.meander_depth = c.meander_depth;
+  p.meander_spread = c.meander_spread;
+  p.seed = c.seed;
+  p.tolerance = c.tolerance;
+  p.periodic = c.periodic;
+  p.threads = c.threads;
+  p.sinks = c.sinks.empty() ? nullptr : c.sinks.data();
+  p.sink_count = int32_t(c.sinks.size() / 2);
+  return p;
+}
+
+HydrologyConfig from_c(const ft_hydrology_params& given) {
+  const ft_hydrology_params p = upgraded(hydrology_param_table(), given);
+  check_ranges(hydrology_param_table(), &p);
+  if (p.sink_count > 0 && !p.sinks) invalid("sinks is NULL but sink_count is " + std::to_string(p.sink_count));
+  HydrologyConfig c;
+  c.min_area = p.min_area;
+  c.sea = Sea(p.sea);
+  c.sea_level = p.sea_level;
+  c.sea_fraction = p.sea_fraction;
+  c.min_lake_area = p.min_lake_area;
+  c.rain = p.rain;
+  c.width_coefficient = p.width_coefficient;
+  c.width_exponent = p.width_exponent;
+  c.depth_coefficient = p.depth_coefficient;
+  c.depth_exponent = p.depth_exponent;
+  c.smoothing = p.smoothing;
+  c.meander_depth = p.meander_depth;
+  c.meander_spread = p.meander_spread;
+  c.seed = p.seed;
+  c.tolerance = p.tolerance;
+  c.periodic = p.periodic != 0;
+  c.threads = p.threads;
+  if (p.sink_count > 0) c.sinks.assign(p.sinks, p.sinks + 2 * size_t(p.sink_count));
+  c.progress = Progress(p.progress, p.progress_user);
+  return c;
+}
+
+}  // namespace ft::hydrology
