@@ -237,7 +237,7 @@ TEST(HurstEstimator, RejectsNanConstantShortInputAndEmptyBands) {
 
 // ------------------------------------------------------------ levels, clouds
 
-TEST(analysis::LevelSpec, QuantilesInterpolateOrderStatistics) {
+TEST(LevelSpec, QuantilesInterpolateOrderStatistics) {
   Heightfield hf(5, 1);
   const float z[5] = {4, 0, 3, 1, 2};
   std::copy(z, z + 5, hf.data());

@@ -83,7 +83,7 @@ TEST(Memory, RefusesAllocationAboveCapWithSizeInMessage) {
   EXPECT_EQ(memory_cap(), kDefaultMemoryCap);
 }
 
-TEST(io::AtomicFile, UncommittedWriteLeavesOldFileIntact) {
+TEST(AtomicFile, UncommittedWriteLeavesOldFileIntact) {
   const auto dir = std::filesystem::temp_directory_path() / ("ft_atomic_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "f.txt").string();
@@ -99,7 +99,7 @@ TEST(io::AtomicFile, UncommittedWriteLeavesOldFileIntact) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(io::AtomicFile, MissingFolderIsAClearIoError) {
+TEST(AtomicFile, MissingFolderIsAClearIoError) {
   try {
     io::write_file_atomically("/nonexistent-folder-ft/x.png", "x");
     FAIL();
