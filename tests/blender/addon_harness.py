@@ -41,7 +41,7 @@ def clear_scene():
 
 
 def submodule(name):
-    """The add-on's module `name` (e.g. "core", "blender.panels"), whatever the package is called."""
+    """The add-on's module `name` (e.g. "core", "blender.ui.panels"), whatever the package is called."""
     return importlib.import_module(f"{PACKAGE}.{name}")
 
 

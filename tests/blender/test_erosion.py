@@ -159,9 +159,9 @@ class ErodeCancelTest(unittest.TestCase):
 
     def test_cancel_while_eroding_keeps_nothing(self):
         clear_scene()
-        progress = addon_harness.submodule("blender.progress")
-        build = addon_harness.submodule("blender.terrain_build")
-        share = addon_harness.submodule("blender.erosion_ui").GENERATION_SHARE
+        progress = addon_harness.submodule("blender.common.jobs")
+        build = addon_harness.submodule("blender.build.terrain")
+        share = addon_harness.submodule("blender.build.erosion").GENERATION_SHARE
         values = core().params.defaults()
         values.update(levels=9, seed=3, erode_preset="LAND")
         runner = progress.Runner(build.new_terrain_job(values, bpy.context))

@@ -66,7 +66,7 @@ void write_colors_png(const std::string& path, const Heightfield& hf, const floa
     const double e = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
     bytes[i] = uint8_t(std::lround(255 * e));
   }
-  write_png_rgb(path, hf.width(), hf.height(), bytes.data());
+  io::write_png_rgb(path, hf.width(), hf.height(), bytes.data());
 }
 
 // The texture painting `place`'s terrain with the colours PNG `ref`: the
@@ -157,7 +157,7 @@ double auto_camera_elevation(const SceneParams& p) {
 
 SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   validate_scene_params(p);
-  AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
+  io::AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
   bool stormy = false;
   for (const auto& l : p.lines) stormy = stormy || l.kind == LineKind::kLightning;
   const std::string folder = folder_of(pov_path);

@@ -6,6 +6,7 @@
 #include "core/heightfield.hpp"
 #include "fracterra/terrain.h"
 #include "terrain/profile.hpp"
+#include "terrain/terrain_method.hpp"  // dyadic_levels
 
 namespace ft {
 
@@ -36,8 +37,5 @@ ft_profile_params default_profile_params();
 void validate_profile_params(const ft_profile_params& p);
 // dst holds `count` floats, at least 2^levels + 1.
 void generate_profile(const ft_profile_params& p, float* dst, size_t count);
-
-// log2(size - 1) when size is 2^m + 1 with m >= 1, else -1.
-int dyadic_levels(int64_t size);
 
 }  // namespace ft

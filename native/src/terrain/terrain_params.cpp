@@ -1,5 +1,6 @@
 #include "terrain/terrain_params.hpp"
 
+#include <array>
 #include <cfloat>
 #include <cmath>
 
@@ -9,34 +10,29 @@
 #include "terrain/landform.hpp"
 #include "terrain/mandelbrot.hpp"
 #include "terrain/terrain.hpp"
+#include "terrain/terrain_methods.hpp"
 
 namespace ft {
 namespace {
 
-constexpr uint64_t kDyadic = method_bit(FT_TERRAIN_MIDPOINT) | method_bit(FT_TERRAIN_ADDITIONS);
-constexpr uint64_t kFree = method_bit(FT_TERRAIN_FBM) | method_bit(FT_TERRAIN_SPECTRAL) |
-                           method_bit(FT_TERRAIN_INTERPOLATED) | method_bit(FT_TERRAIN_MANDELBROT);
-constexpr uint64_t kRandom = FT_PARAM_ALL_METHODS & ~method_bit(FT_TERRAIN_MANDELBROT);
+// The masks of capabilities come from the method table (terrain_methods.hpp);
+// those of one method's own fields name it.
+constexpr uint64_t kDyadic = method_mask([](const TerrainMethod& m) { return m.dyadic; });
+constexpr uint64_t kFree = method_mask([](const TerrainMethod& m) { return !m.dyadic; });
+constexpr uint64_t kRandom = method_mask([](const TerrainMethod& m) { return m.seeded; });
+constexpr uint64_t kReference = method_mask([](const TerrainMethod& m) { return m.reference; });
+// The Tileable setting: spectral synthesis always tiles and the Mandelbrot set never does.
+constexpr uint64_t kCanTile = method_mask([](const TerrainMethod& m) { return m.tiling == Tiling::kOnRequest; });
 constexpr uint64_t kFbm = method_bit(FT_TERRAIN_FBM);
 constexpr uint64_t kMandelbrot = method_bit(FT_TERRAIN_MANDELBROT);
-// Spectral synthesis always tiles and the Mandelbrot set never does.
-constexpr uint64_t kCanTile = kDyadic | kFbm | method_bit(FT_TERRAIN_INTERPOLATED);
 constexpr uint32_t kAbi11 = 0x10001, kAbi12 = 0x10002, kAbi26 = 0x20006, kAbi29 = 0x20009;
 
-constexpr ft_param_enum_item kMethods[] = {
-    {FT_TERRAIN_MIDPOINT, "MIDPOINT", "Midpoint",
-     "Voss midpoint displacement (diamond-square; Voss 1985, seed 000), (2^levels + 1)^2 samples"},
-    {FT_TERRAIN_ADDITIONS, "ADDITIONS", "Additions",
-     "Voss's successive random additions (Feder 1988, 13.4, seed 001), (2^levels + 1)^2 samples"},
-    {FT_TERRAIN_FBM, "FBM", "fBm Noise",
-     "Sum of noise octaves with gain 2^-H (Quilez 2019, seed 004), any width x height"},
-    {FT_TERRAIN_SPECTRAL, "SPECTRAL", "Spectral",
-     "Inverse-FFT spectral synthesis (Saupe 1988), any width x height, always tiles"},
-    {FT_TERRAIN_INTERPOLATED, "INTERPOLATED", "Interpolated",
-     "Saupe's InterpolatedFM (1988): the scale shrinks by 1/lacunarity per cycle (Feder 1988, seed 001)"},
-    {FT_TERRAIN_MANDELBROT, "MANDELBROT", "Mandelbrot",
-     "The Mandelbrot set's smooth escape time of z <- z^2 + c (seed 002); the set is a plateau"},
-};
+// The method enum's items are the table's rows' items.
+constexpr auto kMethods = [] {
+  std::array<ft_param_enum_item, kTerrainMethodCount> items{};
+  for (int32_t i = 0; i < kTerrainMethodCount; ++i) items[size_t(i)] = kTerrainMethods[i].item;
+  return items;
+}();
 constexpr ft_param_enum_item kReferenceScales[] = {
     {FT_REFSCALE_SIGMA, "SIGMA", "Sigma", "Displace the refinement by sigma as given"},
     {FT_REFSCALE_MEAN, "MEAN", "Mean", "Scale the refinement by the mean of |reference values| (Voss 1985, "
@@ -88,9 +84,9 @@ constexpr ft_param_info kTerrainRows[] = {
      .label = "Struct Size", .doc = "sizeof(ft_terrain_params), set by ft_terrain_params_init",
      .methods = FT_PARAM_ALL_METHODS},
     {ROW(method, FT_PARAM_ENUM), .element_kind = -1, .default_value = FT_TERRAIN_MIDPOINT,
-     .hard_min = FT_TERRAIN_MIDPOINT, .hard_max = FT_TERRAIN_MANDELBROT, .soft_min = FT_TERRAIN_MIDPOINT,
-     .soft_max = FT_TERRAIN_MANDELBROT, .unit = "", .label = "Method", .doc = "How the terrain is synthesised",
-     .methods = FT_PARAM_ALL_METHODS, .enum_count = 6, .enum_items = kMethods},
+     .hard_min = 0, .hard_max = kTerrainMethodCount - 1, .soft_min = 0, .soft_max = kTerrainMethodCount - 1,
+     .unit = "", .label = "Method", .doc = "How the terrain is synthesised", .methods = FT_PARAM_ALL_METHODS,
+     .enum_count = kTerrainMethodCount, .enum_items = kMethods.data()},
     {ROW(levels, FT_PARAM_INT32), .element_kind = -1, .default_value = 9, .hard_min = 1, .hard_max = kMaxLevels,
      .soft_min = 1, .soft_max = 12, .unit = "levels", .label = "Detail Levels",
      .doc = "Refinement steps n (Voss 1985): the grid has 2^n + 1 samples per side (9: 513, 10: 1025)",
@@ -125,17 +121,17 @@ constexpr ft_param_info kTerrainRows[] = {
      .unit = "scene units", .label = "Reference Points",
      .doc = "Reference heights (Voss 1985, seed 000): a coarse (2^m + 1)^2 grid, row-major, taken as steps "
             "1..m; NULL: none",
-     .methods = kDyadic},
+     .methods = kReference},
     {ROW(reference_size, FT_PARAM_INT32), .flags = kData, .element_kind = -1, .default_value = 0,
      .hard_min = 0, .hard_max = 65537, .unit = "samples", .label = "Reference Size",
-     .doc = "Side of the reference grid, 2^m + 1 with 1 <= m <= levels", .methods = kDyadic},
+     .doc = "Side of the reference grid, 2^m + 1 with 1 <= m <= levels", .methods = kReference},
     {ROW(reference_scale, FT_PARAM_ENUM), .element_kind = -1, .default_value = FT_REFSCALE_SIGMA,
      .hard_min = FT_REFSCALE_SIGMA, .hard_max = FT_REFSCALE_STD, .soft_min = FT_REFSCALE_SIGMA,
      .soft_max = FT_REFSCALE_STD, .unit = "", .label = "Refinement Scale",
      .doc = "Displacement scale of the steps after the reference grid (Voss 1985, seed 000, fig. 7 a, b)",
-     .methods = kDyadic, .enum_count = 3, .enum_items = kReferenceScales},
+     .methods = kReference, .enum_count = 3, .enum_items = kReferenceScales},
     {ROW(octaves, FT_PARAM_INT32), .element_kind = -1, .default_value = 8, .hard_min = 1,
-     .hard_max = kMaxOctaves, .soft_min = 1, .soft_max = 16, .unit = "octaves", .label = "Octaves",
+     .hard_max = noise::kMaxOctaves, .soft_min = 1, .soft_max = 16, .unit = "octaves", .label = "Octaves",
      .doc = "Noise octaves summed (Quilez 2019, seed 004); the finest must stay within float resolution",
      .methods = kFbm},
     {ROW(lacunarity, FT_PARAM_DOUBLE), .flags = kAbove, .element_kind = -1, .default_value = 2, .hard_min = 1,
@@ -166,7 +162,7 @@ constexpr ft_param_info kTerrainRows[] = {
      .doc = "Domain rotation per octave (Quilez 2019): hides the alignment of the octaves' zeros and peaks; "
             "not with periodic",
      .methods = kFbm},
-    {ROW(warp, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = kMaxWarp,
+    {ROW(warp, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = noise::kMaxWarp,
      .soft_min = 0, .soft_max = 4, .unit = "cells", .label = "Warp",
      .doc = "Domain-warp displacement in base cells (Quilez 2002), 0: off", .methods = kFbm},
     progress_row<ft_terrain_params>(),

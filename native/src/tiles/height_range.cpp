@@ -5,15 +5,18 @@
 
 #include "terrain/landform.hpp"
 #include "terrain/terrain.hpp"
+#include "terrain/terrain_method.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 constexpr int kCoarseLevels = 12;     // the bound's coarse pass: at most 4097^2 samples
 constexpr double kGaussianBound = 5.9;  // |g| <= sqrt(50 ln 2) = 5.888 (see the header)
 
+// Methods whose coarser stages keep their samples (plain midpoint): the
+// coarse pass plus a margin for the finer displacements bounds the heights.
 bool has_midpoint_bound(const ft_terrain_params& p) {
-  if (p.method != FT_TERRAIN_MIDPOINT) return false;
+  if (!terrain_method(p.method).stages_keep_samples) return false;
   // The margin bounds the raw method's finer displacements; the landforms
   // (levelling, falloff, sea) reshape them, so such terrains take the exact pass.
   if (has_landforms(p)) return false;
@@ -32,8 +35,9 @@ double midpoint_bound_margin(int levels, int m, double hurst, double sigma) {
 
 HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& grid) {
   HeightRange r;
-  if (p.method == FT_TERRAIN_MANDELBROT) {
-    r = {0.0, p.sigma, "formula"};
+  if (const auto formula = terrain_method(p.method).height_range) {
+    r.how = "formula";
+    formula(p, &r.min, &r.max);
     return r;
   }
   if (has_midpoint_bound(p)) {
@@ -56,7 +60,7 @@ HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& gri
 }
 
 bool needs_exact_pass(const ft_terrain_params& p) {
-  return p.method != FT_TERRAIN_MANDELBROT && !has_midpoint_bound(p);
+  return !terrain_method(p.method).height_range && !has_midpoint_bound(p);
 }
 
 HeightRange tile_height_range(const ft_terrain_params& p, const TileGrid& grid, int32_t col, int32_t row) {
@@ -66,4 +70,4 @@ HeightRange tile_height_range(const ft_terrain_params& p, const TileGrid& grid, 
   return {s.min, s.max, "exact"};
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

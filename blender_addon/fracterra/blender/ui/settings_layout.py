@@ -4,8 +4,8 @@ core.params, so panels and operators both import it without a circle)."""
 
 import bpy
 
-from ..core import params
-from . import erosion_ui
+from ...core import params
+from . import erosion_layout
 
 
 def _prop(layout, data, name):
@@ -17,6 +17,18 @@ def _prop(layout, data, name):
     row = layout.split(factor=0.4, align=True)
     row.label(text=data.bl_rna.properties[name].name)
     row.prop(data, name, text="")
+
+
+# Drawn above for every method that uses them (or by draw_landform and the reference box).
+_SHARED = {"method", "levels", "width", "height", "hurst", "sigma", "seed", "periodic", "world_size",
+           "reference_scale"}
+
+
+def _own_settings(method):
+    """The library's terrain settings that `method` uses and only some methods do,
+    beyond the shared ones drawn above, in the table's order."""
+    return [p.name for p in params.TERRAIN_PARAMS
+            if p.field and p.methods is not None and method in p.methods and p.name not in _SHARED]
 
 
 def draw_settings(layout, data, show_reference_pickers=True, compact=False):
@@ -43,18 +55,14 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
     sub = col.column(align=True)
     _prop(sub, data, "world_size")
     draw_landform(col, data, show_reference_pickers)
-    if method == "FBM":
+    own = _own_settings(method)
+    if own:
+        # The method's own settings, in a box under its name: which they are is the
+        # library's table (each field's methods), so a new method needs no case here.
         box = col.box().column(align=True)
-        box.label(text="Noise")
-        for name in ("basis", "variant", "octaves", "lacunarity", "gain", "frequency", "offset",
-                     "octave_rotation", "warp"):
-            _prop(box, data, name)
-    elif method == "INTERPOLATED":
-        _prop(col, data, "lacunarity")
-    elif method == "MANDELBROT":
-        box = col.box().column(align=True)
-        box.label(text="Mandelbrot Set")
-        for name in ("center_x", "center_y", "zoom", "iterations", "supersample"):
+        box.label(text=next(label for ident, label, _doc, _v in params.PARAMS_BY_NAME["method"].items
+                            if ident == method))
+        for name in own:
             _prop(box, data, name)
     if method in params.DYADIC_METHODS:
         box = col.box().column(align=True)
@@ -77,7 +85,7 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
             _prop(box, data, "reference_levels")
             box.prop(data, "reference_height", text="Relief if not georeferenced")
             _prop(box, data, "reference_scale")
-    erosion_ui.draw_erosion(col, data)
+    erosion_layout.draw_erosion(col, data)
     sub = col.column(heading="Mesh", align=True)
     _prop(sub, data, "uvs")
     _prop(sub, data, "smooth")

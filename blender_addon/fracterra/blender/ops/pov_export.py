@@ -10,13 +10,13 @@ import numpy as np
 from bpy_extras.io_utils import ExportHelper
 from mathutils import Matrix, Vector
 
-from .. import core
-from ..core import povray
-from .curve_build import curve_polylines
-from .erosion_ui import DEPOSIT_ATTRIBUTE, FLOW_ATTRIBUTE, MATERIAL_NAME, eroded_colors
-from .mesh_build import SLOPE_ATTRIBUTE
-from .reporting import REPORTED, SettingsError
-from .terrain_objects import heightfield_of, is_terrain, sea_height
+from ... import core
+from ...core import povray
+from ..build.curve import curve_polylines
+from ..build.erosion import DEPOSIT_ATTRIBUTE, FLOW_ATTRIBUTE, MATERIAL_NAME, eroded_colors
+from ..build.mesh import SLOPE_ATTRIBUTE
+from ..build.objects import heightfield_of, is_terrain, sea_height
+from ..common.reporting import REPORTED, SettingsError
 
 # Cycles shades a mesh without a material with a grey diffuse of this albedo.
 DEFAULT_GREY = (0.8, 0.8, 0.8)

@@ -1,0 +1,30 @@
+// Spectral synthesis (spectral_synthesis.hpp) as a row of the method table
+// (terrain_methods.hpp). One global FFT: no windows.
+#include <cmath>
+
+#include "terrain/spectral_synthesis.hpp"
+#include "terrain/terrain_methods.hpp"
+
+namespace ft {
+
+std::any spectral_configure(const ft_terrain_params& p) {
+  SpectralConfig c;
+  c.width = p.width, c.height = p.height, c.hurst = p.hurst, c.sigma = p.sigma, c.seed = p.seed;
+  c.threads = p.threads;
+  c.progress = Progress(p.progress, p.progress_user);
+  return c;
+}
+
+// |sum c_k| <= sqrt(N) (sum |c_k|^2)^(1/2) over the N = W H coefficients
+// (Cauchy-Schwarz), whose power is scaled to sigma^2 with |g| <= 6 on both
+// parts: S = 6 sqrt(2 W H).
+void spectral_check_heights(const std::any& config, const ft_terrain_params&) {
+  const SpectralConfig& c = std::any_cast<const SpectralConfig&>(config);
+  check_height_bound("sigma", c.sigma, kMaxGaussian * std::sqrt(2.0 * c.width * c.height));
+}
+
+Heightfield spectral_generate(const std::any& config) {
+  return spectral_synthesis(std::any_cast<const SpectralConfig&>(config));
+}
+
+}  // namespace ft
