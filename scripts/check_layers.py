@@ -14,9 +14,13 @@ a layer of lower rank, never one of the same rank (sideways) or higher
                                                the FPL study uses analysis/)
        tiles/                                  tile sets of terrains larger than memory
                                                (windows of terrain/, files through io/)
+    3  refine/                                 DEM refinement (uses terrain/)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
-    5  tables/                                 the parameter tables of every layer, by kind
-    6  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
+       erosion/                                fluvial, hydraulic, thermal erosion and maps
+    5  pipeline/                               generate -> landform -> erode -> maps in one call
+                                               (uses terrain/ and erosion/)
+    6  tables/                                 the parameter tables of every layer, by kind
+    7  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
                                                by side: both link the static core, neither
                                                includes the other
 
@@ -66,8 +70,9 @@ RANK = {
     "refine": 3,  # a real DEM refined by terrain/'s midpoint method
     "erosion": 4,  # fluvial, hydraulic, thermal; uses analysis/
     "tiles": 3,  # tile sets: windows of terrain/ written through io/
-    "tables": 5,  # every capability's parameter table, by kind
-    "capi": 6, "cli": 6,
+    "pipeline": 5,  # the terrain pipeline: terrain/ then erosion/
+    "tables": 6,  # every capability's parameter table, by kind
+    "capi": 7, "cli": 7,
 }
 TOP = {"capi", "cli"}  # may include any public header
 # The namespace of each layer, where it is not ft::<folder>.

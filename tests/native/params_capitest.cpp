@@ -56,6 +56,11 @@ const std::vector<Field> kErosionFields = {
         thermal_iterations, talus_degrees, thermal_rate, periodic, threads, progress, progress_user,
         uplift_follows_terrain),
 };
+const std::vector<Field> kBuildFields = {
+    FT_FIELD(ft_build_params, struct_size), FT_FIELD(ft_build_params, threads), FT_FIELD(ft_build_params, terrain),
+    FT_FIELD(ft_build_params, erosion), FT_FIELD(ft_build_params, erosion_preset),
+    FT_FIELD(ft_build_params, progress), FT_FIELD(ft_build_params, progress_user),
+};
 
 const std::vector<Field> kPovSceneFields = {
     FT_FIELDS(ft_pov_scene_params, struct_size, terrain, world_size_x, world_size_y, vertical_scale, has_sea,
@@ -115,6 +120,8 @@ const Kind kKinds[] = {
      init_dem_refine},
     {FT_PARAMS_EROSION, "ft_erosion_params", sizeof(ft_erosion_params), &kErosionFields,
      init_of<ft_erosion_params, ft_erosion_params_init>},
+    {FT_PARAMS_BUILD, "ft_build_params", sizeof(ft_build_params), &kBuildFields,
+     init_of<ft_build_params, ft_build_params_init>},
 };
 
 std::vector<const ft_param_info*> rows_of(int32_t kind) {

@@ -5,6 +5,7 @@
 #include "analysis/analysis_params.hpp"
 #include "core/error.hpp"
 #include "erosion/erosion_params.hpp"
+#include "pipeline/build_params.hpp"
 #include "polyline/polyline_params.hpp"
 #include "povray/pov_params.hpp"
 #include "refine/dem_refine_params.hpp"
@@ -25,6 +26,7 @@ const ParamTable& param_table(int32_t kind) {
     case FT_PARAMS_CLOUDS: return analysis::clouds_param_table();
     case FT_PARAMS_DEM_REFINE: return refine::dem_refine_param_table();
     case FT_PARAMS_EROSION: return erosion_param_table();
+    case FT_PARAMS_BUILD: return build_param_table();
     default:
       invalid("params kind must be in 0.." + std::to_string(FT_PARAMS_KIND_COUNT - 1) + ", got " +
               std::to_string(kind));

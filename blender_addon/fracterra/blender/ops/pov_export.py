@@ -15,8 +15,8 @@ from ...core import povray
 from ..build.curve import curve_polylines
 from ..build.erosion import DEPOSIT_ATTRIBUTE, FLOW_ATTRIBUTE, MATERIAL_NAME, eroded_colors
 from ..build.mesh import SLOPE_ATTRIBUTE
-from ..build.objects import heightfield_of, is_terrain, sea_height
 from ..common.reporting import REPORTED, SettingsError
+from ..build.objects import heightfield_of, is_terrain, sea_height
 
 # Cycles shades a mesh without a material with a grey diffuse of this albedo.
 DEFAULT_GREY = (0.8, 0.8, 0.8)
