@@ -31,35 +31,23 @@ if(FT_BLENDER)
   set_tests_properties(blender_scratch_clean PROPERTIES FIXTURES_SETUP blender_scratch LABELS blender)
 endif()
 
-# The headless demo script, run from the source tree with the built library
-# (a tiny render keeps it to a few seconds).
-if(FT_BLENDER)
-  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_example)
-  add_test(NAME blender_example_scene
+# An example script run headless from the source tree with the built library,
+# writing into example_<name>: the test blender_example_<name>.
+function(ft_blender_example name script timeout)
+  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_example_${name})
+  add_test(NAME blender_example_${name}
     COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch} FRACTERRA_LIBRARY=$<TARGET_FILE:fracterra>
-            ${FT_BLENDER} -b --factory-startup --python ${PROJECT_SOURCE_DIR}/examples/20_blender_scene.py
-            -- --out ${CMAKE_CURRENT_BINARY_DIR}/example_scene --levels 6 --resolution 96x54 --samples 2)
-  set_tests_properties(blender_example_scene PROPERTIES LABELS blender TIMEOUT 120)
-endif()
-
-# The Mandelbrot example: terrain, level curves through the coastline operator, a tiny render.
+            ${FT_BLENDER} -b --factory-startup --python ${PROJECT_SOURCE_DIR}/examples/${script}
+            -- --out ${CMAKE_CURRENT_BINARY_DIR}/example_${name} ${ARGN})
+  set_tests_properties(blender_example_${name} PROPERTIES LABELS blender TIMEOUT ${timeout})
+endfunction()
 if(FT_BLENDER)
-  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_example_mandelbrot)
-  add_test(NAME blender_example_mandelbrot
-    COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch} FRACTERRA_LIBRARY=$<TARGET_FILE:fracterra>
-            ${FT_BLENDER} -b --factory-startup --python ${PROJECT_SOURCE_DIR}/examples/21_blender_mandelbrot.py
-            -- --out ${CMAKE_CURRENT_BINARY_DIR}/example_mandelbrot --samples-x 65 --resolution 64x48 --samples 1)
-  set_tests_properties(blender_example_mandelbrot PROPERTIES LABELS blender TIMEOUT 120)
-endif()
-
-# The presets and the default beside A.N.T.'s default: every preset builds and renders (tiny).
-if(FT_BLENDER)
-  set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_example_presets)
-  add_test(NAME blender_example_presets
-    COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch} FRACTERRA_LIBRARY=$<TARGET_FILE:fracterra>
-            ${FT_BLENDER} -b --factory-startup --python ${PROJECT_SOURCE_DIR}/examples/22_blender_presets.py
-            -- --out ${CMAKE_CURRENT_BINARY_DIR}/example_presets --max-levels 5 --resolution 48x30 --samples 1)
-  set_tests_properties(blender_example_presets PROPERTIES LABELS blender TIMEOUT 180)
+  # The demo scene (a tiny render keeps it to a few seconds).
+  ft_blender_example(scene 20_blender_scene.py 120 --levels 6 --resolution 96x54 --samples 2)
+  # The Mandelbrot example: terrain, level curves through the coastline operator, a tiny render.
+  ft_blender_example(mandelbrot 21_blender_mandelbrot.py 120 --samples-x 65 --resolution 64x48 --samples 1)
+  # The presets and the default beside A.N.T.'s default: every preset builds and renders (tiny).
+  ft_blender_example(presets 22_blender_presets.py 180 --max-levels 5 --resolution 48x30 --samples 1)
 endif()
 
 # Undo needs a window (background Blender keeps no undo stack): run it under Xvfb.
