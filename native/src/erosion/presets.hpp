@@ -14,6 +14,8 @@ namespace ft::erosion {
 // "valleys" and "land" here is a fixed 1e-4 world units/yr (what
 // ft_erosion_preset gives): right for a terrain about 6 units high only.
 ErosionConfig erosion_preset(const std::string& name);
+// Every preset's name (tests run each).
+std::vector<std::string> erosion_preset_names();
 // The same preset fitted to `terrain` (the CLI's erode --preset and
 // terrain --erode): the uplift of "valleys" and "land" becomes the rate that
 // would raise the land by `terrain`'s relief (max - min) over the preset's
