@@ -10,10 +10,11 @@
 #include "cli/param_flags.hpp"
 #include "contour/marching_squares.hpp"
 #include "core/error.hpp"
-#include "erosion/erosion.hpp"
-#include "erosion/presets.hpp"
+#include "erosion/erosion_params.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
+#include "pipeline/build_params.hpp"
+#include "pipeline/terrain_build.hpp"
 #include "povray/scene.hpp"
 #include "terrain/mandelbrot.hpp"
 #include "terrain/terrain.hpp"
@@ -45,7 +46,12 @@ void parse_center(const std::string& text, ft_terrain_params& p) {
 
 struct TerrainOptions {
   ft_terrain_params p = default_terrain_params();
-  std::string reference, falloff_mask, out, size, pov, center, curves_out, erode;
+  // The pipeline's settings (a preset: --erosion-preset, or --erode) and the
+  // erosion settings, both from their tables.
+  ft_build_params build = defaults_of<ft_build_params>(build_param_table());
+  ft_erosion_params erosion = defaults_of<ft_erosion_params>(erosion_param_table());
+  bool erosion_given = false;  // an erosion flag was given: erode with these settings
+  std::string reference, falloff_mask, out, size, pov, center, curves_out;
   std::vector<double> curves;
   bool stats = false, curves_world = false;
 };
@@ -55,12 +61,12 @@ struct TerrainOptions {
 void write_escape_curves(const TerrainOptions& o, const ft_terrain_params& p, const Heightfield& hf) {
   std::vector<double> levels;
   for (double nu : o.curves) levels.push_back(mandelbrot_height(nu, p.sigma));
-  PolylineSet set = marching_squares(hf, levels);
+  PolylineSet set = contour::marching_squares(hf, levels);
   if (o.curves_world) {
     const double k = hf.world_size() / double(hf.width() - 1);
     for (Vec3& v : set.points) v[0] *= k, v[1] *= k;
   }
-  write_polylines(set, o.curves_out);
+  io::write_polylines(set, o.curves_out);
 }
 
 int run(const TerrainOptions& o) {
@@ -75,7 +81,7 @@ int run(const TerrainOptions& o) {
   }
   Heightfield reference;
   if (!o.reference.empty()) {
-    reference = read_heightfield(o.reference);
+    reference = io::read_heightfield(o.reference);
     if (reference.width() != reference.height())
       invalid("the reference grid '" + o.reference + "' is " + std::to_string(reference.width()) + " x " +
               std::to_string(reference.height()) + "; it must be square, 2^m + 1 per side");
@@ -85,7 +91,7 @@ int run(const TerrainOptions& o) {
   Heightfield mask;
   if (!o.falloff_mask.empty()) {
     // Any raster the project reads; 8- and 16-bit images read as 0..1 (white 1).
-    mask = read_heightfield(o.falloff_mask);
+    mask = io::read_heightfield(o.falloff_mask);
     if (p.falloff != FT_FALLOFF_NONE && p.falloff != FT_FALLOFF_CUSTOM)
       invalid("--falloff-mask is the custom falloff's mask; it cannot go with --falloff " +
               std::string(p.falloff == FT_FALLOFF_SQUARE ? "square" : "radial"));
@@ -95,18 +101,14 @@ int run(const TerrainOptions& o) {
     p.falloff_mask_height = mask.height();
   }
   Stopwatch clock;
-  Heightfield hf = generate_terrain(p);
-  if (!o.erode.empty()) {
-    erosion::ErosionConfig e = erosion::erosion_preset(o.erode, hf);  // uplift fitted to its relief
-    // Spectral terrains tile with period W x H (the FFT grid); the others'
-    // periodic grids repeat their first row and column, which a torus of
-    // W x H would not keep equal, so they erode bounded.
-    e.periodic = p.method == FT_TERRAIN_SPECTRAL;
-    e.threads = p.threads;
-    hf = erosion::erode(hf, e, nullptr);
-  }
+  // Generate -> landform -> erode, the library's pipeline (as the add-on's).
+  ft_build_params b = o.build;
+  b.terrain = &p;
+  b.erosion = o.erosion_given ? &o.erosion : nullptr;
+  b.threads = p.threads;
+  Heightfield hf = build_terrain(b, nullptr);
   const double seconds = clock.seconds();
-  if (!o.out.empty()) write_heightfield(hf, o.out);
+  if (!o.out.empty()) io::write_heightfield(hf, o.out);
   if (!o.pov.empty()) pov::write_terrain_scene(hf, o.pov);  // PNG beside it
   if (!o.curves_out.empty()) write_escape_curves(o, p, hf);
   if (o.stats) {
@@ -145,26 +147,32 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_flag("--curves-world", o->curves_world,
                                  "mandelbrot: write the curves' x, y in world units (--world-size across x)");
                     app.add_option("--reference", o->reference,
-                                   "reference grid (2^m + 1)^2: " + std::string(kHeightfieldReadHelp) +
+                                   "reference grid (2^m + 1)^2: " + std::string(io::kHeightfieldReadHelp) +
                                        "; its values survive exactly (a DEM: see fracterra refine)")
                         ->check(CLI::ExistingFile);
                     app.add_option("--falloff-mask", o->falloff_mask,
                                    "custom edge falloff (sets --falloff custom): a mask spanning the terrain, " +
-                                       std::string(kHeightfieldReadHelp) +
+                                       std::string(io::kHeightfieldReadHelp) +
                                        "; white (1) keeps the height, black (0) gives --edge-level; 8/16-bit "
                                        "images read as 0..1, other rasters must hold 0..1; resampled bilinearly, "
                                        "image row 0 (the top) at terrain row 0")
                         ->check(CLI::ExistingFile);
-                    app.add_option("--erode", o->erode,
-                                   "then erode it with a preset: valleys (fluvial), rain (hydraulic), scree "
-                                   "(thermal) or land (all three); see fracterra erode");
+                    // The pipeline's and the erosion's settings from their tables; the
+                    // terrain's threads serve every stage, and a terrain that tiles
+                    // erodes as a torus (the library's rule, not a flag).
+                    add_param_flags(app, build_param_table(), &o->build, {"threads"},
+                                    {{"erosion_preset", "--erode"}});
+                    add_param_flags(app, erosion_param_table(), &o->erosion, {"periodic", "threads"});
                     app.add_option("--out", o->out,
                                    "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), "
                                    ".exr (float) or .raw/.r16 (RAW16 + sidecar .json)");
                     app.add_option("--pov", o->pov, "also write a POV-Ray scene (.pov, with its PNG beside it)");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, min, max, mean, std");
-                    return [o] {
+                    return [o, &app] {
                       if (o->out.empty() && o->pov.empty() && !o->stats) invalid("give --out FILE, --pov FILE and/or --stats");
+                      for (const ft_param_info& row : erosion_param_table().rows)  // --periodic, --threads: the terrain's
+                        if (std::string(row.name) != "periodic" && std::string(row.name) != "threads")
+                          o->erosion_given = o->erosion_given || flag_given(app, row.name);
                       return run(*o);
                     };
                   },

@@ -32,6 +32,14 @@ def args():
     return parser.parse_args(argv)
 
 
+def clear_scene():
+    """Removes every object and mesh (the factory scene's cube, camera and light too)."""
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj)
+    for mesh in list(bpy.data.meshes):
+        bpy.data.meshes.remove(mesh)
+
+
 def submodule(name):
     """The add-on's module `name` (e.g. "core", "blender.ui.panels"), whatever the package is called."""
     return importlib.import_module(f"{PACKAGE}.{name}")

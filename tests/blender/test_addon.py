@@ -20,11 +20,7 @@ def core():
     return addon_harness.submodule("core")
 
 
-def clear_scene():
-    for obj in list(bpy.data.objects):
-        bpy.data.objects.remove(obj)
-    for mesh in list(bpy.data.meshes):
-        bpy.data.meshes.remove(mesh)
+clear_scene = addon_harness.clear_scene
 
 
 def coords(mesh):
@@ -215,6 +211,9 @@ class TerrainAddTest(unittest.TestCase):
         self.assertIn("archipelago.py", left)
         self.assertIn("my_mountains.py", left)
         self.assertIn("Archipelago.py", left)  # the capitalised ones are there (installed again if missing)
+        # Feder Landscape, as the add-on shipped it, became Lake Country (named for what it makes).
+        self.assertNotIn("Feder Landscape.py", left)
+        self.assertIn("Lake Country.py", left)
         self.assertEqual(len([n for n in left if n[0].isupper()]), 7, left)
 
     def test_reference_grid_object_heights_survive_at_the_nodes(self):
@@ -343,7 +342,7 @@ def operator_exists(idname):
 
 class DrawTest(unittest.TestCase):
     def test_settings_ui_draws_only_existing_properties_for_every_method(self):
-        panels, settings_ui = (addon_harness.submodule(f"blender.{m}") for m in ("panels", "settings_ui"))
+        panels, settings_ui = (addon_harness.submodule(f"blender.ui.{m}") for m in ("panels", "settings_layout"))
         clear_scene()
         obj = add_terrain(levels=3)
         settings = obj.fracterra_terrain
@@ -370,7 +369,7 @@ class DrawTest(unittest.TestCase):
     def test_panels_and_menus_name_registered_operators(self):
         # Panels and menus refer to operators by id string: a typo would only show as a
         # missing button, so every id they draw must resolve to a registered operator.
-        menus, panels = (addon_harness.submodule(f"blender.{m}") for m in ("menus", "panels"))
+        menus, panels = (addon_harness.submodule(f"blender.ui.{m}") for m in ("menus", "panels"))
         clear_scene()
         operators = []
         fake = type("P", (), {"layout": RecordingLayout([], operators)})()

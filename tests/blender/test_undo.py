@@ -1,52 +1,229 @@
-"""Undo of the add-on's operators. Blender keeps no undo stack in background
-mode, so ctest runs this one in a real window under Xvfb (xvfb-run)."""
+"""Undo, cancel and failure of the add-on's operators, and what a second Add
+starts from: after each, the settings on the object are those of the mesh
+that is there (issue 24). Blender keeps no undo stack in background mode, so
+ctest runs this one in a real window under Xvfb (xvfb-run). The steps run
+from a timer, through Blender's event loop, as a user's clicks do: a
+background job (Regenerate from the sidebar) advances only there, and the
+undo steps of operators run from the start-up script would not be kept apart.
+
+Run as: xvfb-run blender --factory-startup --python test_undo.py -- --zip fracterra.zip
+"""
 
 import array
 import os
 import sys
-import unittest
+import traceback
+import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import addon_harness  # noqa: E402
 
 import bpy  # noqa: E402
 
+FAILURES = []
+STEP = 0.3  # seconds between steps: Blender handles its events in between
 
-def heights(name):
-    mesh = bpy.data.objects[name].data
-    co = array.array("f", [0.0]) * (3 * len(mesh.vertices))
-    mesh.vertices.foreach_get("co", co)
+
+def check(condition, message):
+    print(("ok: " if condition else "UNDO CHECK FAILED: ") + message, flush=True)
+    if not condition:
+        FAILURES.append(message)
+
+
+def heights(obj):
+    co = array.array("f", [0.0]) * (3 * len(obj.data.vertices))
+    obj.data.vertices.foreach_get("co", co)
     return co[2::3]
 
 
-class UndoTest(unittest.TestCase):
-    def test_undo_removes_the_added_terrain_and_its_mesh(self):
-        # Only the add is checked: steps pushed by later operators called from a
-        # start-up script are not kept apart by Blender's memfile undo, so the
-        # regenerate step is not covered here.
-        self.assertFalse(bpy.app.background, "run this test with a window (xvfb-run)")
-        meshes = len(bpy.data.meshes)
-        bpy.ops.ed.undo_push(message="before the terrain")
-        self.assertEqual(bpy.ops.mesh.fracterra_terrain_add(levels=4, seed=1), {"FINISHED"})
-        name = bpy.context.active_object.name
-        self.assertEqual(len(heights(name)), 17 * 17)
-        self.assertEqual(bpy.ops.ed.undo(), {"FINISHED"})
-        self.assertNotIn(name, bpy.data.objects)
-        self.assertEqual(len(bpy.data.meshes), meshes)
-
-    def test_undo_removes_an_eroded_terrain_and_its_maps(self):
-        # Adding with an erosion preset is one undo step like any add: undo takes
-        # the object, its mesh (with the erosion attributes) away.
-        meshes = len(bpy.data.meshes)
-        bpy.ops.ed.undo_push(message="before the eroded terrain")
-        self.assertEqual(bpy.ops.mesh.fracterra_terrain_add(levels=5, seed=2, erode_preset="SCREE"), {"FINISHED"})
-        obj = bpy.context.active_object
-        name = obj.name
-        self.assertIn("fracterra_flow", obj.data.attributes)
-        self.assertEqual(bpy.ops.ed.undo(), {"FINISHED"})
-        self.assertNotIn(name, bpy.data.objects)
-        self.assertEqual(len(bpy.data.meshes), meshes)
+def vertex_hash(obj):
+    return zlib.crc32(heights(obj).tobytes())
 
 
-if __name__ == "__main__":
-    addon_harness.run(globals())
+def in_view3d():
+    window = bpy.context.window_manager.windows[0]
+    area = next(a for a in window.screen.areas if a.type == "VIEW_3D")
+    region = next(r for r in area.regions if r.type == "WINDOW")
+    return bpy.context.temp_override(window=window, area=area, region=region)
+
+
+def jobs():
+    return addon_harness.submodule("blender.common.jobs")
+
+
+def wait_for_jobs(limit=60.0):
+    waited = 0.0
+    while jobs().busy() and waited < limit:
+        yield 0.1
+        waited += 0.1
+    check(not jobs().busy(), f"no background job still runs after {limit} s")
+    yield STEP
+
+
+def add_terrain(**settings):
+    """Add > Mesh > Fractal Terrain as its menu entry runs it (invoke, its own undo step)."""
+    with in_view3d():
+        result = bpy.ops.mesh.fracterra_terrain_add("INVOKE_DEFAULT", True, **settings)
+    yield from wait_for_jobs()
+    return result
+
+
+def regenerate():
+    with in_view3d():
+        bpy.ops.object.fracterra_terrain_regenerate("INVOKE_DEFAULT", True)  # True: its undo step, as a button
+
+
+def undo_removes_the_added_terrain():
+    meshes = len(bpy.data.meshes)
+    bpy.ops.ed.undo_push(message="before the terrain")
+    yield from add_terrain(levels=4, seed=1)
+    name = bpy.context.active_object.name
+    check(len(bpy.data.objects[name].data.vertices) == 17 * 17, "Add made a 17 x 17 terrain")
+    with in_view3d():
+        bpy.ops.ed.undo()
+    yield STEP
+    check(name not in bpy.data.objects and len(bpy.data.meshes) == meshes,
+          "undo removes the added terrain and its mesh")
+
+
+def undo_removes_an_eroded_terrain():
+    # Adding with an erosion preset is one undo step like any add: undo takes
+    # the object, its mesh (with the erosion attributes) away.
+    meshes = len(bpy.data.meshes)
+    bpy.ops.ed.undo_push(message="before the eroded terrain")
+    yield from add_terrain(levels=5, seed=2, erode_preset="SCREE")
+    obj = bpy.context.active_object
+    name = obj.name
+    check("fracterra_flow" in obj.data.attributes, "an eroded terrain has its flow attribute")
+    with in_view3d():
+        bpy.ops.ed.undo()
+    yield STEP
+    check(name not in bpy.data.objects and len(bpy.data.meshes) == meshes,
+          "undo removes an eroded terrain and its mesh")
+
+
+def undo_of_regenerate_brings_back_the_settings_of_the_mesh():
+    """In the sidebar a changed setting is an undo step of its own (pushed here as
+    Blender pushes it for a click), then Regenerate is another: one Ctrl+Z brings
+    the old mesh back, and the settings shown must be the old mesh's too."""
+    yield from add_terrain(levels=4, seed=1)
+    terrain = bpy.context.active_object
+    name = terrain.name
+    before = vertex_hash(terrain)
+    terrain.fracterra_terrain.seed = 7
+    bpy.ops.ed.undo_push(message="Seed")  # what the sidebar's field pushes
+    yield STEP
+    regenerate()
+    yield from wait_for_jobs()
+    check(vertex_hash(bpy.data.objects[name]) != before, "Regenerate with seed 7 changed the heights")
+    with in_view3d():
+        bpy.ops.ed.undo()
+    yield STEP
+    terrain = bpy.data.objects[name]  # undo reloads the data: fetch it again
+    check(vertex_hash(terrain) == before, "undo after Regenerate restores the heights")
+    check(terrain.fracterra_terrain.seed == 1,
+          f"undo after Regenerate shows the seed of the mesh that is there (1), not "
+          f"{terrain.fracterra_terrain.seed}")
+    with in_view3d():
+        bpy.ops.ed.redo()
+    yield STEP
+    terrain = bpy.data.objects[name]
+    check(vertex_hash(terrain) != before and terrain.fracterra_terrain.seed == 7,
+          "redo brings the regenerated mesh back with its seed (7)")
+
+
+def cancelled_regenerate_keeps_the_settings_of_the_mesh():
+    """Levels 11 asked in the sidebar, Regenerate, then Esc: the mesh stays 17 x 17,
+    and so does what the sidebar says."""
+    yield from add_terrain(levels=4, seed=3)
+    terrain = bpy.context.active_object
+    before = vertex_hash(terrain)
+    terrain.fracterra_terrain.levels = 11
+    regenerate()
+    yield 0.05
+    check(jobs().busy(), "the levels 11 Regenerate runs in the background")
+    for runner in list(jobs().ACTIVE):
+        runner.cancel()  # what Esc does (JobOperator.modal)
+    yield from wait_for_jobs()
+    check(len(terrain.data.vertices) == 17 * 17 and vertex_hash(terrain) == before,
+          "a cancelled Regenerate leaves the mesh as it was")
+    check(terrain.fracterra_terrain.levels == 4,
+          f"after a cancel the sidebar shows the mesh's levels (4), not {terrain.fracterra_terrain.levels}")
+
+
+def failed_regenerate_keeps_the_settings_of_the_mesh():
+    """A Regenerate the add-on refuses (a grid larger than a Blender mesh holds):
+    the error is shown, and the settings are those of the mesh that is there."""
+    yield from add_terrain(levels=4, seed=4)
+    terrain = bpy.context.active_object
+    settings = terrain.fracterra_terrain
+    settings.method, settings.width, settings.height = "FBM", 8193, 8193
+    try:
+        regenerate()
+        check(False, "an 8193 x 8193 Regenerate was refused")
+    except RuntimeError:  # a script sees the error report as RuntimeError
+        pass
+    yield STEP
+    check(settings.last_error.startswith("Refused before generating"), f"the error is shown: {settings.last_error!r}")
+    check((settings.method, settings.levels) == ("MIDPOINT", 4) and len(terrain.data.vertices) == 17 * 17,
+          f"after a failure the sidebar shows the mesh's settings, not {settings.method} {settings.width}")
+    # Auto Update: a failing change is put back too.
+    settings.last_error = ""
+    settings.auto_update = True
+    settings.width = settings.height = 8193  # unused by midpoint: regenerates fine
+    settings.method = "FBM"  # an 8193 x 8193 fBm: refused
+    check(settings.method == "MIDPOINT" and settings.last_error.startswith("Refused"),
+          "a refused Auto Update puts the mesh's settings back and shows why")
+    settings.auto_update = False
+
+
+def a_second_add_does_not_inherit_erosion():
+    """Blender remembers an operator's last settings for its next run; erosion is
+    not remembered: a second Add starts without the first one's erosion."""
+    yield from add_terrain(levels=5, seed=5, erode_preset="SCREE")
+    first = bpy.context.active_object
+    check(first.fracterra_terrain.erode_preset == "SCREE", "the first Add is eroded (Scree)")
+    yield from add_terrain()
+    second = bpy.context.active_object
+    check(second != first, "the second Add made a new object")
+    # The check can fail: Blender does carry the last settings over (levels 5, not the default 8).
+    check(second.fracterra_terrain.levels == 5, "the second Add remembers the first one's levels")
+    check(second.fracterra_terrain.erode_preset == "NONE" and "fracterra_flow" not in second.data.attributes,
+          f"the second Add is not eroded (erosion {second.fracterra_terrain.erode_preset})")
+    check(second.fracterra_terrain.thermal_iterations == 0, "the second Add keeps no scree passes")
+
+
+def scenario():
+    check(not bpy.app.background, "this test runs with a window (xvfb-run)")
+    for step in (undo_removes_the_added_terrain, undo_removes_an_eroded_terrain,
+                 undo_of_regenerate_brings_back_the_settings_of_the_mesh,
+                 cancelled_regenerate_keeps_the_settings_of_the_mesh,
+                 failed_regenerate_keeps_the_settings_of_the_mesh,
+                 a_second_add_does_not_inherit_erosion):
+        print(f"--- {step.__name__}", flush=True)
+        for obj in list(bpy.data.objects):
+            bpy.data.objects.remove(obj)
+        yield from step()
+
+
+def main():
+    args = addon_harness.args()
+    module = addon_harness.find_enabled() if args.installed else addon_harness.install_and_enable(args.zip)
+    addon_harness.PACKAGE = module.__name__
+    steps = scenario()
+
+    def tick():
+        try:
+            return next(steps)
+        except StopIteration:
+            outcome = 1 if FAILURES else 0
+        except Exception:
+            traceback.print_exc()
+            outcome = 1
+        print("undo test " + ("FAILED: " + "; ".join(FAILURES) if outcome else "passed"), flush=True)
+        os._exit(outcome)
+
+    bpy.app.timers.register(tick, first_interval=1.0)
+
+
+main()

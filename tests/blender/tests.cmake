@@ -3,7 +3,7 @@
 find_program(FT_BLENDER blender)
 if(FT_BLENDER)
   set(FT_BLENDER_ZIP ${PROJECT_BINARY_DIR}/blender_addon/fracterra.zip)
-  foreach(name addon missing_library params dem tiles erosion)
+  foreach(name addon missing_library params dem tiles erosion pov_export preview)
     set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_${name})
     add_test(NAME blender_${name}
       COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch}
@@ -13,7 +13,10 @@ if(FT_BLENDER)
       FIXTURES_REQUIRED blender_scratch)
   endforeach()
   # The installed add-on must use its bundled library, except in the test of a missing one.
-  set_tests_properties(blender_addon blender_params blender_dem blender_tiles blender_erosion PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
+  set_tests_properties(blender_addon blender_params blender_dem blender_tiles blender_erosion blender_pov_export
+    blender_preview PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
+  # The Erode step is checked against the CLI, another front end of the library's pipeline.
+  set_tests_properties(blender_erosion PROPERTIES ENVIRONMENT "FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>")
   set_tests_properties(blender_missing_library PROPERTIES
     ENVIRONMENT "FRACTERRA_LIBRARY=${CMAKE_CURRENT_BINARY_DIR}/no-such-dir/libfracterra.so")
   add_test(NAME blender_scratch_clean
@@ -22,7 +25,9 @@ if(FT_BLENDER)
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_params
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_dem
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_tiles
-            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_erosion)
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_erosion
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_pov_export
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_preview)
   set_tests_properties(blender_scratch_clean PROPERTIES FIXTURES_SETUP blender_scratch LABELS blender)
 endif()
 

@@ -39,22 +39,22 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const size_t nul = bytes.find('\0');
   const std::string manifest = bytes.substr(0, nul), journal = nul == std::string::npos ? "" : bytes.substr(nul + 1);
   const std::string dir = scratch_folder();
-  put(dir + "/" + ft::kManifestName, manifest);
-  put(dir + "/" + ft::kJournalName, journal);
+  put(dir + "/" + ft::tiles::kManifestName, manifest);
+  put(dir + "/" + ft::tiles::kJournalName, journal);
   ft::fuzz::expect_ok_or_error([&] {
-    std::optional<nlohmann::json> m = ft::read_manifest(dir);
+    std::optional<nlohmann::json> m = ft::tiles::read_manifest(dir);
     if (!m) ft::fuzz::bug("an existing manifest was not read");
     // Resuming: the identity check against a terrain, then the journal.
     const nlohmann::json wanted = {
-        {"terrain", ft::terrain_identity(ft::default_terrain_params())}, {"tile", 64}, {"tile_format", "npy"}};
-    ft::identity_difference(wanted, *m);
-    ft::replay_journal(dir, *m);
+        {"terrain", ft::tiles::terrain_identity(ft::default_terrain_params())}, {"tile", 64}, {"tile_format", "npy"}};
+    ft::tiles::identity_difference(wanted, *m);
+    ft::tiles::replay_journal(dir, *m);
   });
   ft::fuzz::expect_ok_or_error([&] {
     // Reading a finished set back (its tiles are absent: an error, cleanly).
     int64_t w = 0, h = 0;
-    ft::tileset_extent(dir, 0, &w, &h);
-    ft::read_tileset_window(dir, 0, 0, 0, 1, 1);
+    ft::tiles::tileset_extent(dir, 0, &w, &h);
+    ft::tiles::read_tileset_window(dir, 0, 0, 0, 1, 1);
   });
   return 0;
 }

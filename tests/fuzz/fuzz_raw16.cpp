@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string rest = in.rest();
   const std::string raw = rest.substr(0, raw_size), sidecar = rest.substr(std::min(raw_size, rest.size()));
   ft::fuzz::expect_ok_or_error([&] {
-    const ft::Heightfield hf = ft::decode_raw16(raw, sidecar, "fuzz.raw");
+    const ft::Heightfield hf = ft::io::decode_raw16(raw, sidecar, "fuzz.raw");
     if (size_t(hf.width()) * size_t(hf.height()) * 2 != raw.size()) ft::fuzz::bug("size differs from the bytes");
     for (size_t i = 0; i < hf.size(); ++i)
       if (!std::isfinite(hf.data()[i])) ft::fuzz::bug("a height that is not finite");

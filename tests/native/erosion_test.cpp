@@ -695,7 +695,7 @@ TEST(ErodeCli, RefusesHeightsThatWouldOverflowNamingTheLimit) {
   std::fill(hf.data(), hf.data() + hf.size(), 0.0f);
   hf.at(20, 20) = 1e38f;
   hf.at(40, 40) = -1e38f;
-  write_heightfield(hf, (dir / "t.npy").string());
+  io::write_heightfield(hf, (dir / "t.npy").string());
   const std::string cli = FT_CLI_PATH, d = dir.string();
   const std::string run = cli + " erode --in " + d + "/t.npy --fluvial 60 --out " + d + "/o.npy 2>" + d + "/err.txt";
   EXPECT_EQ(1, WEXITSTATUS(std::system(run.c_str())));

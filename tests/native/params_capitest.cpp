@@ -17,108 +17,70 @@ struct Field {
   size_t offset, size;
 };
 #define FT_FIELD(S, f) Field{#f, offsetof(S, f), sizeof(S::f)}
+// FT_FIELDS(S, a, b, ...): FT_FIELD(S, a), FT_FIELD(S, b), ... (a preprocessor
+// loop: each FT_FIELDS_EXPAND pass lets the next name expand, 4^4 = 256 names).
+#define FT_FIELDS(S, ...) __VA_OPT__(FT_FIELDS_EXPAND(FT_FIELDS_NEXT(S, __VA_ARGS__)))
+#define FT_FIELDS_NEXT(S, f, ...) FT_FIELD(S, f) __VA_OPT__(, FT_FIELDS_AGAIN FT_FIELDS_PARENS(S, __VA_ARGS__))
+#define FT_FIELDS_AGAIN() FT_FIELDS_NEXT
+#define FT_FIELDS_PARENS ()
+#define FT_FIELDS_EXPAND(...) FT_FIELDS_EXPAND3(FT_FIELDS_EXPAND3(FT_FIELDS_EXPAND3(FT_FIELDS_EXPAND3(__VA_ARGS__))))
+#define FT_FIELDS_EXPAND3(...) FT_FIELDS_EXPAND2(FT_FIELDS_EXPAND2(FT_FIELDS_EXPAND2(FT_FIELDS_EXPAND2(__VA_ARGS__))))
+#define FT_FIELDS_EXPAND2(...) FT_FIELDS_EXPAND1(FT_FIELDS_EXPAND1(FT_FIELDS_EXPAND1(FT_FIELDS_EXPAND1(__VA_ARGS__))))
+#define FT_FIELDS_EXPAND1(...) __VA_ARGS__
 
 // The header's fields, written out independently of the table.
 const std::vector<Field> kTerrainFields = {
-    FT_FIELD(ft_terrain_params, struct_size), FT_FIELD(ft_terrain_params, method),
-    FT_FIELD(ft_terrain_params, levels), FT_FIELD(ft_terrain_params, width),
-    FT_FIELD(ft_terrain_params, height), FT_FIELD(ft_terrain_params, hurst),
-    FT_FIELD(ft_terrain_params, sigma), FT_FIELD(ft_terrain_params, seed),
-    FT_FIELD(ft_terrain_params, periodic), FT_FIELD(ft_terrain_params, threads),
-    FT_FIELD(ft_terrain_params, reference), FT_FIELD(ft_terrain_params, reference_size),
-    FT_FIELD(ft_terrain_params, reference_scale), FT_FIELD(ft_terrain_params, octaves),
-    FT_FIELD(ft_terrain_params, lacunarity), FT_FIELD(ft_terrain_params, gain),
-    FT_FIELD(ft_terrain_params, basis), FT_FIELD(ft_terrain_params, variant),
-    FT_FIELD(ft_terrain_params, frequency), FT_FIELD(ft_terrain_params, offset),
-    FT_FIELD(ft_terrain_params, octave_rotation), FT_FIELD(ft_terrain_params, warp),
-    FT_FIELD(ft_terrain_params, progress), FT_FIELD(ft_terrain_params, progress_user),
-    FT_FIELD(ft_terrain_params, world_size), FT_FIELD(ft_terrain_params, center_x),
-    FT_FIELD(ft_terrain_params, center_y), FT_FIELD(ft_terrain_params, zoom),
-    FT_FIELD(ft_terrain_params, iterations), FT_FIELD(ft_terrain_params, supersample),
-    FT_FIELD(ft_terrain_params, levelling), FT_FIELD(ft_terrain_params, height_offset),
-    FT_FIELD(ft_terrain_params, falloff), FT_FIELD(ft_terrain_params, falloff_width),
-    FT_FIELD(ft_terrain_params, edge_level), FT_FIELD(ft_terrain_params, sea),
-    FT_FIELD(ft_terrain_params, sea_level), FT_FIELD(ft_terrain_params, sea_fraction),
-    FT_FIELD(ft_terrain_params, falloff_mask), FT_FIELD(ft_terrain_params, falloff_mask_width),
-    FT_FIELD(ft_terrain_params, falloff_mask_height),
+    FT_FIELDS(ft_terrain_params, struct_size, method, levels, width, height, hurst, sigma, seed, periodic, threads,
+        reference, reference_size, reference_scale, octaves, lacunarity, gain, basis, variant, frequency, offset,
+        octave_rotation, warp, progress, progress_user, world_size, center_x, center_y, zoom, iterations,
+        supersample, levelling, height_offset, falloff, falloff_width, edge_level, sea, sea_level, sea_fraction,
+        falloff_mask, falloff_mask_width, falloff_mask_height),
 };
 
 const std::vector<Field> kProfileFields = {
-    FT_FIELD(ft_profile_params, struct_size), FT_FIELD(ft_profile_params, levels),
-    FT_FIELD(ft_profile_params, hurst), FT_FIELD(ft_profile_params, sigma), FT_FIELD(ft_profile_params, seed),
-    FT_FIELD(ft_profile_params, reference), FT_FIELD(ft_profile_params, reference_size),
-    FT_FIELD(ft_profile_params, reference_scale), FT_FIELD(ft_profile_params, progress),
-    FT_FIELD(ft_profile_params, progress_user),
+    FT_FIELDS(ft_profile_params, struct_size, levels, hurst, sigma, seed, reference, reference_size,
+        reference_scale, progress, progress_user),
 };
 const std::vector<Field> kPolylineFields = {
-    FT_FIELD(ft_polyline_params, struct_size), FT_FIELD(ft_polyline_params, method),
-    FT_FIELD(ft_polyline_params, rng), FT_FIELD(ft_polyline_params, depth),
-    FT_FIELD(ft_polyline_params, spread), FT_FIELD(ft_polyline_params, min_length),
-    FT_FIELD(ft_polyline_params, seed), FT_FIELD(ft_polyline_params, base),
-    FT_FIELD(ft_polyline_params, base_count), FT_FIELD(ft_polyline_params, plane_normal),
-    FT_FIELD(ft_polyline_params, branch_prob), FT_FIELD(ft_polyline_params, branch_decay),
-    FT_FIELD(ft_polyline_params, branch_generations), FT_FIELD(ft_polyline_params, ifs_preset),
-    FT_FIELD(ft_polyline_params, radius), FT_FIELD(ft_polyline_params, hurst),
-    FT_FIELD(ft_polyline_params, ifs_table), FT_FIELD(ft_polyline_params, ifs_maps),
-    FT_FIELD(ft_polyline_params, threads), FT_FIELD(ft_polyline_params, ifs_points),
-    FT_FIELD(ft_polyline_params, progress), FT_FIELD(ft_polyline_params, progress_user),
+    FT_FIELDS(ft_polyline_params, struct_size, method, rng, depth, spread, min_length, seed, base, base_count,
+        plane_normal, branch_prob, branch_decay, branch_generations, ifs_preset, radius, hurst, ifs_table, ifs_maps,
+        threads, ifs_points, progress, progress_user),
 };
 const std::vector<Field> kFractalizeFields = {
-    FT_FIELD(ft_fractalize_params, struct_size), FT_FIELD(ft_fractalize_params, levels),
-    FT_FIELD(ft_fractalize_params, hurst), FT_FIELD(ft_fractalize_params, sigma),
-    FT_FIELD(ft_fractalize_params, seed), FT_FIELD(ft_fractalize_params, scheme),
-    FT_FIELD(ft_fractalize_params, mode), FT_FIELD(ft_fractalize_params, fix_boundary),
-    FT_FIELD(ft_fractalize_params, scale_by_edge_length), FT_FIELD(ft_fractalize_params, weights),
-    FT_FIELD(ft_fractalize_params, threads), FT_FIELD(ft_fractalize_params, progress),
-    FT_FIELD(ft_fractalize_params, progress_user),
+    FT_FIELDS(ft_fractalize_params, struct_size, levels, hurst, sigma, seed, scheme, mode, fix_boundary,
+        scale_by_edge_length, weights, threads, progress, progress_user),
 };
 const std::vector<Field> kErosionFields = {
-    FT_FIELD(ft_erosion_params, struct_size), FT_FIELD(ft_erosion_params, fluvial_steps),
-    FT_FIELD(ft_erosion_params, fluvial_dt), FT_FIELD(ft_erosion_params, erodibility),
-    FT_FIELD(ft_erosion_params, area_exponent), FT_FIELD(ft_erosion_params, diffusion),
-    FT_FIELD(ft_erosion_params, uplift), FT_FIELD(ft_erosion_params, hydraulic_iterations),
-    FT_FIELD(ft_erosion_params, hydraulic_dt), FT_FIELD(ft_erosion_params, rain),
-    FT_FIELD(ft_erosion_params, evaporation), FT_FIELD(ft_erosion_params, capacity),
-    FT_FIELD(ft_erosion_params, dissolve), FT_FIELD(ft_erosion_params, deposit),
-    FT_FIELD(ft_erosion_params, thermal_iterations), FT_FIELD(ft_erosion_params, talus_degrees),
-    FT_FIELD(ft_erosion_params, thermal_rate), FT_FIELD(ft_erosion_params, periodic),
-    FT_FIELD(ft_erosion_params, threads), FT_FIELD(ft_erosion_params, progress),
-    FT_FIELD(ft_erosion_params, progress_user), FT_FIELD(ft_erosion_params, uplift_follows_terrain),
+    FT_FIELDS(ft_erosion_params, struct_size, fluvial_steps, fluvial_dt, erodibility, area_exponent, diffusion,
+        uplift, hydraulic_iterations, hydraulic_dt, rain, evaporation, capacity, dissolve, deposit,
+        thermal_iterations, talus_degrees, thermal_rate, periodic, threads, progress, progress_user,
+        uplift_follows_terrain),
+};
+const std::vector<Field> kBuildFields = {
+    FT_FIELD(ft_build_params, struct_size), FT_FIELD(ft_build_params, threads), FT_FIELD(ft_build_params, terrain),
+    FT_FIELD(ft_build_params, erosion), FT_FIELD(ft_build_params, erosion_preset),
+    FT_FIELD(ft_build_params, progress), FT_FIELD(ft_build_params, progress_user),
 };
 
 const std::vector<Field> kPovSceneFields = {
-    FT_FIELD(ft_pov_scene_params, struct_size), FT_FIELD(ft_pov_scene_params, terrain),
-    FT_FIELD(ft_pov_scene_params, world_size_x), FT_FIELD(ft_pov_scene_params, world_size_y),
-    FT_FIELD(ft_pov_scene_params, vertical_scale), FT_FIELD(ft_pov_scene_params, has_sea),
-    FT_FIELD(ft_pov_scene_params, sea_level), FT_FIELD(ft_pov_scene_params, lines),
-    FT_FIELD(ft_pov_scene_params, line_set_count), FT_FIELD(ft_pov_scene_params, camera_azimuth_deg),
-    FT_FIELD(ft_pov_scene_params, camera_elevation_deg), FT_FIELD(ft_pov_scene_params, camera_fov_deg),
-    FT_FIELD(ft_pov_scene_params, camera_aspect), FT_FIELD(ft_pov_scene_params, camera_distance_scale),
-    FT_FIELD(ft_pov_scene_params, sun_azimuth_deg), FT_FIELD(ft_pov_scene_params, sun_elevation_deg),
-    FT_FIELD(ft_pov_scene_params, image_path), FT_FIELD(ft_pov_scene_params, camera_margin),
-    FT_FIELD(ft_pov_scene_params, camera_center_v),
+    FT_FIELDS(ft_pov_scene_params, struct_size, terrain, world_size_x, world_size_y, vertical_scale, has_sea,
+        sea_level, lines, line_set_count, camera_azimuth_deg, camera_elevation_deg, camera_fov_deg, camera_aspect,
+        camera_distance_scale, sun_azimuth_deg, sun_elevation_deg, image_path, camera_margin, camera_center_v,
+        camera_given, camera_location, camera_direction, camera_right, camera_up, terrain_colors, has_scene_light,
+        sky_color, sun_color),
 };
 const std::vector<Field> kPovSweepFields = {
-    FT_FIELD(ft_pov_sweep_params, struct_size), FT_FIELD(ft_pov_sweep_params, spline),
-    FT_FIELD(ft_pov_sweep_params, segments_per_sweep), FT_FIELD(ft_pov_sweep_params, default_radius),
-    FT_FIELD(ft_pov_sweep_params, radius_scale), FT_FIELD(ft_pov_sweep_params, tolerance),
+    FT_FIELDS(ft_pov_sweep_params, struct_size, spline, segments_per_sweep, default_radius, radius_scale, tolerance),
 };
 const std::vector<Field> kHurstFields = {
-    FT_FIELD(ft_hurst_params, struct_size), FT_FIELD(ft_hurst_params, method), FT_FIELD(ft_hurst_params, lag_min),
-    FT_FIELD(ft_hurst_params, lag_max), FT_FIELD(ft_hurst_params, freq_min), FT_FIELD(ft_hurst_params, freq_max),
-    FT_FIELD(ft_hurst_params, transects),
+    FT_FIELDS(ft_hurst_params, struct_size, method, lag_min, lag_max, freq_min, freq_max, transects),
 };
 const std::vector<Field> kCloudsFields = {
-    FT_FIELD(ft_clouds_params, struct_size), FT_FIELD(ft_clouds_params, threshold),
-    FT_FIELD(ft_clouds_params, threshold_is_quantile), FT_FIELD(ft_clouds_params, bit_depth),
+    FT_FIELDS(ft_clouds_params, struct_size, threshold, threshold_is_quantile, bit_depth),
 };
 const std::vector<Field> kDemRefineFields = {
-    FT_FIELD(ft_dem_refine_params, struct_size), FT_FIELD(ft_dem_refine_params, levels_added),
-    FT_FIELD(ft_dem_refine_params, hurst), FT_FIELD(ft_dem_refine_params, sigma),
-    FT_FIELD(ft_dem_refine_params, seed), FT_FIELD(ft_dem_refine_params, method),
-    FT_FIELD(ft_dem_refine_params, window_x), FT_FIELD(ft_dem_refine_params, window_y),
-    FT_FIELD(ft_dem_refine_params, window_side), FT_FIELD(ft_dem_refine_params, threads),
-    FT_FIELD(ft_dem_refine_params, progress), FT_FIELD(ft_dem_refine_params, progress_user),
+    FT_FIELDS(ft_dem_refine_params, struct_size, levels_added, hurst, sigma, seed, method, window_x, window_y,
+        window_side, threads, progress, progress_user),
 };
 
 // Each struct's _init as one signature (ft_dem_refine_params_init returns nothing).
@@ -158,6 +120,8 @@ const Kind kKinds[] = {
      init_dem_refine},
     {FT_PARAMS_EROSION, "ft_erosion_params", sizeof(ft_erosion_params), &kErosionFields,
      init_of<ft_erosion_params, ft_erosion_params_init>},
+    {FT_PARAMS_BUILD, "ft_build_params", sizeof(ft_build_params), &kBuildFields,
+     init_of<ft_build_params, ft_build_params_init>},
 };
 
 std::vector<const ft_param_info*> rows_of(int32_t kind) {

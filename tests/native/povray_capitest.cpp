@@ -142,6 +142,58 @@ TEST(PovCapi, CameraMarginAndCentreAreSettingsOfTheTable) {
   ft_heightfield_free(hf);
 }
 
+TEST(PovCapi, AGivenCameraColoursAndLightAreWrittenAsGiven) {
+  // ABI 2.17: another program's camera, terrain colours and light. The camera
+  // statement holds the vectors in POV axes (world y and z swapped), the
+  // colours become an sRGB PNG beside the scene, the light the background
+  // and ambient; a flat camera, bad colours and a too bright sky are refused.
+  TempDir t;
+  std::vector<float> z(9 * 5, 0.25f);
+  ft_heightfield* hf = nullptr;
+  ASSERT_EQ(ft_heightfield_create(9, 5, z.data(), &hf), FT_OK);
+  std::vector<float> rgb(9 * 5 * 3, 0.5f);
+  ft_pov_scene_params p;
+  ASSERT_EQ(ft_pov_scene_params_init(&p), FT_OK);
+  EXPECT_EQ(p.camera_given, 0);
+  EXPECT_EQ(p.terrain_colors, nullptr);
+  EXPECT_EQ(p.has_scene_light, 0);
+  EXPECT_EQ(p.sun_color[2], 1.0);
+  p.terrain = hf;
+  p.camera_given = 1;
+  const double location[] = {0.5, -2, 1}, direction[] = {0, 1.5, -0.5}, right[] = {1.2, 0, 0}, up[] = {0, 0.2, 0.6};
+  for (int k = 0; k < 3; ++k)
+    p.camera_location[k] = location[k], p.camera_direction[k] = direction[k], p.camera_right[k] = right[k],
+    p.camera_up[k] = up[k];
+  p.terrain_colors = rgb.data();
+  p.has_scene_light = 1;
+  p.sky_color[0] = p.sky_color[1] = p.sky_color[2] = 0.25;
+  ASSERT_EQ(ft_pov_write_scene(&p, (t / "s.pov").c_str()), FT_OK) << ft_last_error();
+  const std::string sdl = slurp(t / "s.pov");
+  EXPECT_NE(sdl.find("location <0.5, 1, -2>\n  right <1.2, 0, 0>\n  up <0, 0.6, 0.2>\n  direction <0, -0.5, 1.5>"),
+            std::string::npos)
+      << sdl;
+  EXPECT_NE(sdl.find("image_map { png \"s.colors.png\" gamma srgb interpolate 2 }"), std::string::npos);
+  EXPECT_NE(sdl.find("ambient_light rgb <0.25, 0.25, 0.25>"), std::string::npos);
+  EXPECT_NE(sdl.find("background { rgb <0.25, 0.25, 0.25> }"), std::string::npos);
+  EXPECT_EQ(sdl.find("sky_sphere"), std::string::npos);
+  EXPECT_TRUE(fs::exists(t / "s.colors.png"));
+
+  p.camera_up[0] = 0.6, p.camera_up[1] = p.camera_up[2] = 0;  // parallel to right
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("must span space"), std::string::npos) << ft_last_error();
+  p.camera_up[0] = 0, p.camera_up[2] = 0.6;
+  rgb[7] = NAN;
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("terrain colours must be finite and >= 0"), std::string::npos)
+      << ft_last_error();
+  rgb[7] = 0.5f;
+  p.sky_color[1] = 2000;
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("sky_color"), std::string::npos) << ft_last_error();
+  EXPECT_FALSE(fs::exists(t / "x.pov"));
+  ft_heightfield_free(hf);
+}
+
 TEST(PovCapi, RejectsBadArgumentsWithMessages) {
   TempDir t;
   ft_pov_scene_params p;

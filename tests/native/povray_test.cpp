@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "povray/camera.hpp"
+#include "povray/pov_params.hpp"
 #include "povray/scene.hpp"
 #include "povray/sdl_writer.hpp"
 #include "povray/sphere_sweep_export.hpp"
@@ -156,6 +157,32 @@ TEST(PovCamera, FramedPointsAllLandInsideTheImage) {
     }
 }
 
+// Every settings row of the scene and sweep tables reaches the exporter's
+// types, converted: a row added to a table without its binding fails here.
+TEST(PovParams, EverySettingsRowIsBoundAndCarriedOver) {
+  EXPECT_EQ(unbound_rows(scene_param_table(), scene_bindings()), std::vector<std::string>{});
+  EXPECT_EQ(unbound_rows(sweep_param_table(), sweep_bindings()), std::vector<std::string>{});
+  ft_pov_scene_params c = defaults_of<ft_pov_scene_params>(scene_param_table());
+  c.has_sea = 1, c.sea_level = -0.25, c.camera_azimuth_deg = 33, c.camera_center_v = 0.6, c.camera_given = 1;
+  c.camera_up[2] = 0.75, c.sun_color[1] = 2.5;
+  SceneParams s;
+  apply_scene_settings(c, s);
+  EXPECT_TRUE(s.has_sea);
+  EXPECT_EQ(s.sea_level, -0.25);
+  EXPECT_EQ(s.camera.azimuth_deg, 33);
+  EXPECT_EQ(s.camera.center_v, 0.6);
+  EXPECT_TRUE(s.camera_given);
+  EXPECT_EQ(s.camera_pose.up, (Vec3{0, 0, 0.75}));
+  EXPECT_EQ(s.sun_color, (Vec3{1, 2.5, 1}));
+  ft_pov_sweep_params w = defaults_of<ft_pov_sweep_params>(sweep_param_table());
+  w.spline = FT_POV_SWEEP_CUBIC, w.segments_per_sweep = 17;
+  const SweepOptions o = sweep_options(w);
+  EXPECT_EQ(o.spline, SweepSpline::kCubic);
+  EXPECT_EQ(o.segments_per_sweep, 17);
+  c.camera_center_v = 0.9;  // the table's range is checked first
+  EXPECT_THROW(apply_scene_settings(c, s), Error);
+}
+
 TEST(PovScene, RejectsBadParametersBeforeWritingAnything) {
   const auto dir = std::filesystem::temp_directory_path() / ("ft_pov_unit_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -228,13 +255,13 @@ TEST(PovScene, AutomaticRadiusIsThreeQuartersOfAPixelOnFineLines) {
   const Vec3& e = sum.camera.location;
   const double d = std::hypot(c[0] - e[0], c[1] - e[1], c[2] - e[2]);
   const double pixel = 2 * d * std::tan(sum.camera.fov_deg * M_PI / 360) / 800;
-  const std::vector<double> r = sweep_radii(read_file(f));
+  const std::vector<double> r = sweep_radii(io::read_file(f));
   ASSERT_EQ(r.size(), line.points.size() + 16384 / 32 - 1);  // pieces of 32 segments share their ends
   for (double x : r) EXPECT_NEAR(x, 0.75 * pixel, 1e-6 * pixel);
   EXPECT_LT(r[0], 0.01 / 5);  // the CSV's 0.01 was a worm 7 pixels wide
   // Twice the width in pixels: half the radius.
   write_polyline_scene(l, f, polyline_camera(), 1600);
-  EXPECT_NEAR(sweep_radii(read_file(f))[0], 0.375 * pixel, 1e-6 * pixel);
+  EXPECT_NEAR(sweep_radii(io::read_file(f))[0], 0.375 * pixel, 1e-6 * pixel);
   std::filesystem::remove_all(dir);
 }
 
@@ -248,14 +275,14 @@ TEST(PovScene, RadiusOverridesScaleAndTaperOrTheFileRadii) {
   SceneLines l{&s, LineKind::kGeneric, 0.004};
   l.radii_in_world_units = false;  // the file's radii as taper
   write_polyline_scene(l, f, polyline_camera());
-  EXPECT_EQ(sweep_radii(read_file(f)), (std::vector<double>{0.004, 0.004, 0.002, 0.002}));
+  EXPECT_EQ(sweep_radii(io::read_file(f)), (std::vector<double>{0.004, 0.004, 0.002, 0.002}));
   l.radius_scale = 2.5;
   write_polyline_scene(l, f, polyline_camera());
-  EXPECT_EQ(sweep_radii(read_file(f)), (std::vector<double>{0.01, 0.01, 0.005, 0.005}));
+  EXPECT_EQ(sweep_radii(io::read_file(f)), (std::vector<double>{0.01, 0.01, 0.005, 0.005}));
   l.radii_in_world_units = true;  // the file's radii as they are (the C ABI's rule)
   l.radius_scale = 1;
   write_polyline_scene(l, f, polyline_camera());
-  EXPECT_EQ(sweep_radii(read_file(f)), (std::vector<double>{0.02, 0.02, 0.01, 0.01}));
+  EXPECT_EQ(sweep_radii(io::read_file(f)), (std::vector<double>{0.02, 0.02, 0.01, 0.01}));
   std::filesystem::remove_all(dir);
 }
 

@@ -151,6 +151,8 @@ CLI_COMMANDS = {
     "dem_refine": ("refine", {"levels_added": "--levels", "hurst": "--hurst", "sigma": "--sigma",
                               "window_x": "--window", "window_y": "--window", "window_side": "--window"}),
     "erosion": ("erode", {}),
+    # The pipeline's settings go with the terrain's; the terrain's --threads serves every stage.
+    "build": ("terrain", {"threads": "--threads"}),
 }
 # Flags users relied on before the flags came from the tables: each still works (an alias).
 CLI_ALIASES = {
@@ -162,6 +164,7 @@ CLI_ALIASES = {
     # issue 15's short names: `erode --fluvial 60 --hydraulic 100 --thermal 20 --talus 33`
     "erosion": {"fluvial_steps": "--fluvial", "hydraulic_iterations": "--hydraulic",
                 "thermal_iterations": "--thermal", "talus_degrees": "--talus"},
+    "build": {"erosion_preset": "--erode"},  # `terrain --erode valleys` (issue 15)
 }
 
 

@@ -21,6 +21,8 @@ from .ui import properties as props
 from .ops import terrain as terrain_ops
 from .ops import tiles_import as tiles_import_op
 from .ui.menus import MENUS
+from .build.objects import restore_after_undo
+from .build.terrain import final_for_render
 
 classes = (
     props.FRACTERRA_PG_terrain,
@@ -45,6 +47,9 @@ classes = (
 )
 
 def on_register():
+    for handlers in (bpy.app.handlers.undo_post, bpy.app.handlers.redo_post):
+        handlers.append(restore_after_undo)
+    bpy.app.handlers.render_pre.append(final_for_render)
     bpy.types.Object.fracterra_terrain = bpy.props.PointerProperty(type=props.FRACTERRA_PG_terrain)
     bpy.types.Object.fracterra_measures = bpy.props.PointerProperty(type=props.FRACTERRA_PG_measures)
     bpy.types.Object.fracterra_polyline = bpy.props.PointerProperty(type=props.FRACTERRA_PG_polyline)
@@ -55,6 +60,11 @@ def on_register():
 
 
 def on_unregister():
+    for handlers in (bpy.app.handlers.undo_post, bpy.app.handlers.redo_post):
+        if restore_after_undo in handlers:
+            handlers.remove(restore_after_undo)
+    if final_for_render in bpy.app.handlers.render_pre:
+        bpy.app.handlers.render_pre.remove(final_for_render)
     del bpy.types.Object.fracterra_polyline
     del bpy.types.Object.fracterra_measures
     del bpy.types.Object.fracterra_terrain

@@ -96,6 +96,7 @@ NOT_PROPERTIES = {
 }
 # How Blender shows a field (subtype, unit, precision): presentation only.
 _BY_UNIT = {"scene units": {"subtype": "DISTANCE", "unit": "LENGTH"},
+            "world units": {"subtype": "DISTANCE", "unit": "LENGTH"},
             "radians": {"subtype": "ANGLE", "unit": "ROTATION"}}
 _PRECISION = {"hurst": 3, "center_x": 6, "center_y": 6,
               "erodibility": 6, "uplift": 6}  # their defaults (2e-4, ~1e-5) are 0.000 at 3 digits
@@ -154,6 +155,7 @@ class Param:
     step: int = None
     precision: int = None
     display_scale: float = None  # Blender shows value x this (a power of ten); None: as is
+    unit_text: str = ""  # a unit Blender cannot show itself ("years", "1/yr"): drawn beside the label
     methods: frozenset = dc_field(default=None)  # methods that use it; None: all
     geometry: bool = False  # changing it changes the vertex count (rebuild, not rewrite)
 
@@ -225,12 +227,16 @@ def _param_from_row(row, kind_name, method_items):
     if kind == "float" and not look and lo == 0 and hi == 1:
         look = {"subtype": "FACTOR"}
     description = row["doc"] + (f" ({row['unit']})" if row["unit"] and not look else "")
+    # Units Blender has no unit for are drawn with the label ("Step Length (years)");
+    # a count's unit is its label already ("River Steps" in steps).
+    unit_text = row["unit"] if row["unit"] and not look and row["unit"] not in row["label"].lower() else ""
     numeric = kind in ("int", "float")
     return Param(name, kind, default, row["label"], description,
                  min=lo if numeric else None, max=hi if numeric else None,
                  soft_min=soft_lo if numeric else None, soft_max=soft_hi if numeric else None,
                  items=items, field=name, subtype=look.get("subtype", "NONE"), unit=look.get("unit", "NONE"),
-                 precision=_PRECISION.get(name), display_scale=display_scale_of(row), methods=methods,
+                 precision=_PRECISION.get(name), display_scale=display_scale_of(row), unit_text=unit_text,
+                 methods=methods,
                  geometry=name in _GEOMETRY)
 
 
@@ -275,6 +281,12 @@ def _blender_terrain_params(dyadic):
         Param("reference_levels", "int", 4, "Reference Levels",
               "The image or DEM is resampled to 2^m + 1 points per side (at most Levels)", min=1, max=12,
               methods=dyadic),
+        # Preview and Final: Auto Update edits at the Preview level, Regenerate builds Levels.
+        Param("preview_levels", "int", 8, "Preview Levels",
+              "Auto Update (and the redo panel, for a larger terrain) builds at this level, (2^n + 1)^2 "
+              "vertices, so editing stays interactive; Regenerate builds the Final level (Levels). The two are "
+              "the same terrain: more levels only add detail",
+              min=1, max=_largest_levels(), methods=dyadic),
         Param("reference_height", "float", 5.0, "Image Height",
               "Height of white in the image; for a DEM without georeferencing, the height of its highest point "
               "above its lowest (scene units)",
@@ -389,6 +401,18 @@ def grid_shape(values):
         side = 2 ** values["levels"] + 1
         return side, side
     return values["width"], values["height"]
+
+
+def preview_values(values):
+    """The settings of the Preview of terrain `values`: Levels lowered to Preview
+    Levels (never below a reference's own levels, which the preview must pass
+    through too). The same settings when the method has no levels or the Final
+    is no larger."""
+    if values["method"] not in _table("DYADIC_METHODS"):
+        return values
+    floor = values["reference_levels"] if values.get("reference_source") in ("IMAGE", "DEM") else 1
+    levels = min(values["levels"], max(values.get("preview_levels", values["levels"]), floor))
+    return {**values, "levels": levels} if levels != values["levels"] else values
 
 
 def fill_struct(struct, values, param_list=None):

@@ -46,7 +46,13 @@ extern "C" {
 /// (FT_PARAM_FLAG_ZERO_IS_AUTO in params.h); 0 is ft_pov_scene_params_init's default.
 /// 2.12: ft_erosion_preset_fitted (erosion.h); uplift_follows_terrain at the end of
 ///      ft_erosion_params.
-#define FT_ABI_VERSION_MINOR 12
+/// 2.13: pipeline.h: ft_terrain_build (generate -> landform -> erode -> maps in one call, one
+///      progress callback; a tiling terrain erodes as a torus of its true period),
+///      ft_build_params (described: FT_PARAMS_BUILD), FT_EROSION_PRESET_*.
+/// 2.17: a given camera, terrain colours and scene light at the end of ft_pov_scene_params
+///      (camera_given, camera_location/direction/right/up, terrain_colors, has_scene_light,
+///      sky_color, sun_color): the add-on's export shows Blender's view and material.
+#define FT_ABI_VERSION_MINOR 17
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -18,5 +18,6 @@
 #include "erosion.h"
 #include "raster.h"
 #include "tiles.h"
+#include "pipeline.h"
 
 #endif

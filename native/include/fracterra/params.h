@@ -29,7 +29,8 @@ enum {
   FT_PARAMS_CLOUDS = 7,          ///< ft_clouds_params (analysis.h; ABI 2.5)
   FT_PARAMS_DEM_REFINE = 8,      ///< ft_dem_refine_params (raster.h; ABI 2.5)
   FT_PARAMS_EROSION = 9,         ///< ft_erosion_params (erosion.h; ABI 2.8)
-  FT_PARAMS_KIND_COUNT = 10      ///< number of kinds; kinds are 0 .. count - 1
+  FT_PARAMS_BUILD = 10,          ///< ft_build_params (pipeline.h; ABI 2.13)
+  FT_PARAMS_KIND_COUNT = 11      ///< number of kinds; kinds are 0 .. count - 1
 };
 
 /// Field types. Integers and doubles are the C types of the same name;

@@ -52,6 +52,24 @@ typedef struct ft_pov_scene_params {
   double camera_margin;             ///< free border, fraction of the half-frame, 0..0.5; default 0.04 (ABI 2.11)
   double camera_center_v;           ///< image row (0 top .. 1 bottom) of the content's middle, 0.2..0.8;
                                     ///< default 0.55 (above 0.5 leaves more sky) (ABI 2.11)
+  /// ABI 2.17: another program's view of the scene (Blender's), so both render it alike.
+  int32_t camera_given;             ///< 1: the camera below, as given; 0 (default): framed on the content
+                                    ///< from the azimuth, elevation, field of view and aspect above
+  double camera_location[3];        ///< world point of the eye (camera_given)
+  /// POV-Ray's perspective camera in world axes (camera_given): the ray of image point (u, v)
+  /// (0..1 each, u right, v down from the top) runs along direction + (u - 0.5) right + (0.5 - v) up,
+  /// so |right| / |direction| = 2 tan(horizontal angle / 2), |right| / |up| is the image aspect and a
+  /// lens shift is a direction not perpendicular to them. Render at that aspect.
+  double camera_direction[3];
+  double camera_right[3];
+  double camera_up[3];
+  /// Linear RGB of each terrain sample (3 floats per sample, rows as in the heightfield), painted
+  /// on the terrain instead of the sand, grass, rock and snow by altitude; NULL (default): those.
+  const float* terrain_colors;
+  int32_t has_scene_light;          ///< 1: a background and even ambient light of sky_color and a sun
+                                    ///< of sun_color, no fill light; 0 (default): fracterra's sky and sun
+  double sky_color[3];              ///< linear RGB, 0..1000 each (has_scene_light); default 0
+  double sun_color[3];              ///< linear RGB times strength, 0..1000 each (has_scene_light); default 1
 } ft_pov_scene_params;
 
 /// Fills `p` with the defaults above (FT_ERR_INVALID_ARGUMENT for NULL).

@@ -45,6 +45,29 @@ constexpr size_t param_element_size(int32_t type) {
 // Bit m of a row's `methods`.
 constexpr uint64_t method_bit(int m) { return uint64_t(1) << m; }
 
+// The rows of the fields every long call's struct shares, the same bytes in
+// each table: `threads`, the `progress` callback (its doc may say when it is
+// called) and `progress_user`.
+FT_PARAM_TABLE_BEGIN
+template <class Struct>
+constexpr ft_param_info threads_row() {
+  return {FT_PARAM_ROW(Struct, threads, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0,
+          .hard_max = 1024, .soft_min = 0, .soft_max = 64, .unit = "threads", .label = "Threads",
+          .doc = "Worker threads, 0: all cores; the output never depends on it", .methods = FT_PARAM_ALL_METHODS};
+}
+template <class Struct>
+constexpr ft_param_info progress_row(const char* doc = "Progress callback; may cancel; NULL: none") {
+  return {FT_PARAM_ROW(Struct, progress, FT_PARAM_CALLBACK), .flags = FT_PARAM_FLAG_DATA, .element_kind = -1,
+          .unit = "", .label = "Progress", .doc = doc, .methods = FT_PARAM_ALL_METHODS};
+}
+template <class Struct>
+constexpr ft_param_info progress_user_row() {
+  return {FT_PARAM_ROW(Struct, progress_user, FT_PARAM_POINTER), .flags = FT_PARAM_FLAG_DATA,
+          .element_type = FT_PARAM_OPAQUE, .element_kind = -1, .unit = "", .label = "Progress Data",
+          .doc = "Passed to the progress callback", .methods = FT_PARAM_ALL_METHODS};
+}
+FT_PARAM_TABLE_END
+
 const ft_param_info* find_row(const ParamTable& t, const char* name);
 
 // Writes every row's default into `p` (and struct_size).

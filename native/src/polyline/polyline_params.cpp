@@ -114,16 +114,12 @@ constexpr ft_param_info kRows[] = {
      .methods = kIfs},
     {ROW(ifs_maps, FT_PARAM_INT32), .flags = kData, .element_kind = -1, .hard_min = 0, .hard_max = 64,
      .unit = "maps", .label = "IFS Maps", .doc = "Rows in ifs_table, 1..64", .methods = kIfs},
-    {ROW(threads, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = 1024,
-     .soft_min = 0, .soft_max = 64, .unit = "threads", .label = "Threads",
-     .doc = "Worker threads, 0: all cores; the output never depends on it", .methods = FT_PARAM_ALL_METHODS},
+    threads_row<ft_polyline_params>(),
     {ROW(ifs_points, FT_PARAM_INT64), .element_kind = -1, .default_value = 100000, .hard_min = 1,
      .hard_max = 268435456.0, .soft_min = 1000, .soft_max = 1000000, .unit = "points", .label = "Points",
      .doc = "IFS attractor points to return", .methods = kIfs},
-    {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .element_kind = -1, .unit = "", .label = "Progress",
-     .doc = "Progress callback; may cancel; NULL: none", .methods = FT_PARAM_ALL_METHODS},
-    {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
-     .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback", .methods = FT_PARAM_ALL_METHODS},
+    progress_row<ft_polyline_params>(),
+    progress_user_row<ft_polyline_params>(),
 };
 FT_PARAM_TABLE_END
 #undef ROW

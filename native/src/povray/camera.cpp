@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "povray/sdl_writer.hpp"
 
 namespace ft::pov {
 namespace {
@@ -17,11 +18,23 @@ Vec3 unit(const Vec3& a) {
   const double n = std::sqrt(dot(a, a));
   return {a[0] / n, a[1] / n, a[2] / n};
 }
+double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+double det(const Vec3& a, const Vec3& b, const Vec3& c) { return dot(a, cross(b, c)); }
 
 }  // namespace
 
 bool Camera::project(const Vec3& p, double& u, double& v) const {
   const Vec3 d{p[0] - location[0], p[1] - location[1], p[2] - location[2]};
+  if (given) {
+    // d = t (direction + a right + b up): Cramer's rule for (t, t a, t b).
+    const double den = det(given_direction, given_right, given_up);
+    const double t = det(d, given_right, given_up) / den;
+    if (t <= 0) return false;
+    u = 0.5 + det(given_direction, d, given_up) / den / t;
+    v = 0.5 - det(given_direction, given_right, d) / den / t;
+    return true;
+  }
   const double depth = dot(d, direction);
   if (depth <= 0) return false;
   // POV-Ray: the image plane spans |right| = aspect across and |up| = 1
@@ -101,6 +114,41 @@ Camera frame_box(const Vec3& lo, const Vec3& hi, const CameraOptions& o) {
   std::vector<Vec3> corners;
   for (int i = 0; i < 8; ++i) corners.push_back({i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]});
   return frame_points(corners, o);
+}
+
+Camera camera_from_pose(const CameraPose& pose) {
+  for (const auto& [name, w] : {std::pair{"camera_location", pose.location}, {"camera_direction", pose.direction},
+                                {"camera_right", pose.right}, {"camera_up", pose.up}})
+    for (double x : w) check_finite(name, x);
+  Camera c;
+  c.given = true;
+  c.location = to_pov(pose.location);
+  c.given_direction = to_pov(pose.direction);
+  c.given_right = to_pov(pose.right);
+  c.given_up = to_pov(pose.up);
+  const double dn = norm(c.given_direction), rn = norm(c.given_right), un = norm(c.given_up);
+  // A flat triple sees the world as a line: refused, with room for the
+  // rounding of nearly perpendicular vectors.
+  if (!(std::abs(det(c.given_direction, c.given_right, c.given_up)) > 1e-9 * dn * rn * un))
+    invalid("the given camera's direction, right and up must span space (none zero, no two parallel)");
+  c.direction = unit(c.given_direction);
+  c.right = unit(c.given_right);
+  c.up = unit(c.given_up);
+  c.fov_deg = 2 * std::atan(0.5 * rn / dn) * 180 / kPi;
+  c.aspect = rn / un;
+  c.look_at = {c.location[0] + c.given_direction[0], c.location[1] + c.given_direction[1],
+               c.location[2] + c.given_direction[2]};
+  return c;
+}
+
+std::string camera_sdl(const Camera& c) {
+  if (c.given)
+    return "camera {\n  perspective\n  location " + vec(c.location) + "\n  right " + vec(c.given_right) +
+           "\n  up " + vec(c.given_up) + "\n  direction " + vec(c.given_direction) +
+           "\n  // render at an aspect of " + number(c.aspect) + ", as this camera was given\n}\n\n";
+  return "camera {\n  perspective\n  location " + vec(c.location) + "\n  sky " + vec(c.up) +
+         "\n  right x*image_width/image_height\n  angle " + number(c.fov_deg) + "\n  look_at " +
+         vec(c.look_at) + "\n}\n\n";
 }
 
 }  // namespace ft::pov

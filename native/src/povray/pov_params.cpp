@@ -10,6 +10,7 @@ constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbove = FT_PARAM_FLAG_MIN_EXCLUSIVE;  // > hard_min
 constexpr double kInf = DBL_MAX;
 constexpr uint32_t kAbi211 = 0x2000B;  // camera_margin, camera_center_v; elevation 0 = auto
+constexpr uint32_t kAbi217 = 0x20011;  // a given camera, terrain colours, scene light
 
 #define ROW(field, type) FT_PARAM_ROW(ft_pov_scene_params, field, type)
 FT_PARAM_TABLE_BEGIN
@@ -79,6 +80,46 @@ constexpr ft_param_info kSceneRows[] = {
      .doc = "Image row (0 top .. 1 bottom) where the middle of the framed content lands; above 0.5 leaves more "
             "sky",
      .methods = kAll},
+    {ROW(camera_given, FT_PARAM_BOOL), .since = kAbi217, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Given Camera",
+     .doc = "Use camera_location, camera_direction, camera_right and camera_up as given (e.g. Blender's scene "
+            "camera) instead of framing the content",
+     .methods = kAll},
+    {ROW(camera_location, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 0,
+     .hard_min = -kInf, .hard_max = kInf, .soft_min = -100, .soft_max = 100, .unit = "scene units",
+     .label = "Camera Location", .doc = "World point of the given camera's eye", .methods = kAll},
+    {ROW(camera_direction, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 0,
+     .hard_min = -kInf, .hard_max = kInf, .soft_min = -1, .soft_max = 1, .unit = "", .label = "Camera Direction",
+     .doc = "The given camera's direction (POV-Ray's perspective camera, world axes): from the eye to the image "
+            "centre; with right and up it sets the angle and any lens shift",
+     .methods = kAll},
+    {ROW(camera_right, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 0,
+     .hard_min = -kInf, .hard_max = kInf, .soft_min = -1, .soft_max = 1, .unit = "", .label = "Camera Right",
+     .doc = "The given camera's image width as a world vector to the right (|right| / |direction| = 2 tan(angle "
+            "/ 2))",
+     .methods = kAll},
+    {ROW(camera_up, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 0,
+     .hard_min = -kInf, .hard_max = kInf, .soft_min = -1, .soft_max = 1, .unit = "", .label = "Camera Up",
+     .doc = "The given camera's image height as a world vector upwards (|right| / |up| = the image aspect)",
+     .methods = kAll},
+    {ROW(terrain_colors, FT_PARAM_POINTER), .flags = kData, .since = kAbi217, .element_type = FT_PARAM_FLOAT,
+     .element_kind = -1, .unit = "", .label = "Terrain Colours",
+     .doc = "Linear RGB of each terrain sample (3 floats per sample, the heightfield's rows), painted on the "
+            "terrain; NULL: sand, grass, rock and snow by altitude and slope",
+     .methods = kAll},
+    {ROW(has_scene_light, FT_PARAM_BOOL), .since = kAbi217, .element_kind = -1, .default_value = 0,
+     .hard_min = 0, .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Scene Light",
+     .doc = "A background and even ambient light of sky_color and a sun of sun_color, without fill light "
+            "(another program's lighting); 0: fracterra's sky, sun and fill",
+     .methods = kAll},
+    {ROW(sky_color, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = 1000, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Sky Colour",
+     .doc = "Linear RGB of the background and the ambient light (with has_scene_light)", .methods = kAll},
+    {ROW(sun_color, FT_PARAM_DOUBLE), .since = kAbi217, .element_kind = -1, .default_value = 1, .hard_min = 0,
+     .hard_max = 1000, .soft_min = 0, .soft_max = 10, .unit = "", .label = "Sun Colour",
+     .doc = "Linear RGB of the sun times its strength (with has_scene_light): 1 lights a white surface facing "
+            "it to 1",
+     .methods = kAll},
 };
 #undef ROW
 
@@ -125,33 +166,59 @@ const ParamTable& sweep_param_table() {
   return table;
 }
 
+namespace {
+
+// Each settings row of the tables into the exporter's own types; the tests
+// ask unbound_rows() that none is left out.
+#define BIND(row, member) FT_PARAM_BIND(SceneParams, row, member)
+const ParamBinding<SceneParams> kSceneBindings[] = {
+    BIND(world_size_x, world_size_x),
+    BIND(world_size_y, world_size_y),
+    BIND(vertical_scale, vertical_scale),
+    BIND(has_sea, has_sea),
+    BIND(sea_level, sea_level),
+    BIND(camera_azimuth_deg, camera.azimuth_deg),
+    BIND(camera_elevation_deg, camera.elevation_deg),
+    BIND(camera_fov_deg, camera.fov_deg),
+    BIND(camera_aspect, camera.aspect),
+    BIND(camera_distance_scale, camera.distance_scale),
+    BIND(sun_azimuth_deg, sun_azimuth_deg),
+    BIND(sun_elevation_deg, sun_elevation_deg),
+    BIND(camera_margin, camera.margin),
+    BIND(camera_center_v, camera.center_v),
+    BIND(camera_given, camera_given),
+    BIND(camera_location, camera_pose.location),
+    BIND(camera_direction, camera_pose.direction),
+    BIND(camera_right, camera_pose.right),
+    BIND(camera_up, camera_pose.up),
+    BIND(has_scene_light, scene_light),
+    BIND(sky_color, sky_color),
+    BIND(sun_color, sun_color),
+};
+#undef BIND
+#define BIND(row, member) FT_PARAM_BIND(SweepOptions, row, member)
+const ParamBinding<SweepOptions> kSweepBindings[] = {
+    BIND(spline, spline),
+    BIND(segments_per_sweep, segments_per_sweep),
+    BIND(default_radius, default_radius),
+    BIND(radius_scale, radius_scale),
+    BIND(tolerance, tolerance),
+};
+#undef BIND
+
+}  // namespace
+
+std::span<const ParamBinding<SceneParams>> scene_bindings() { return kSceneBindings; }
+std::span<const ParamBinding<SweepOptions>> sweep_bindings() { return kSweepBindings; }
+
 void apply_scene_settings(const ft_pov_scene_params& c, SceneParams& s) {
   // The camera's ranges are checked here only: frame_points trusts them.
-  check_ranges(scene_param_table(), &c);
-  s.world_size_x = c.world_size_x;
-  s.world_size_y = c.world_size_y;
-  s.vertical_scale = c.vertical_scale;
-  s.has_sea = c.has_sea != 0;
-  s.sea_level = c.sea_level;
-  s.camera.azimuth_deg = c.camera_azimuth_deg;
-  s.camera.elevation_deg = c.camera_elevation_deg;
-  s.camera.fov_deg = c.camera_fov_deg;
-  s.camera.aspect = c.camera_aspect;
-  s.camera.distance_scale = c.camera_distance_scale;
-  s.camera.margin = c.camera_margin;
-  s.camera.center_v = c.camera_center_v;
-  s.sun_azimuth_deg = c.sun_azimuth_deg;
-  s.sun_elevation_deg = c.sun_elevation_deg;
+  apply_bindings(scene_param_table(), &c, scene_bindings(), s);
 }
 
 SweepOptions sweep_options(const ft_pov_sweep_params& c) {
-  check_ranges(sweep_param_table(), &c);
   SweepOptions o;
-  o.spline = SweepSpline(c.spline);
-  o.segments_per_sweep = c.segments_per_sweep;
-  o.default_radius = c.default_radius;
-  o.radius_scale = c.radius_scale;
-  o.tolerance = c.tolerance;
+  apply_bindings(sweep_param_table(), &c, sweep_bindings(), o);
   return o;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/png_image.hpp"
 #include "povray/sdl_writer.hpp"
 #include "povray/sphere_sweep_export.hpp"
 
@@ -47,6 +48,40 @@ PolylineSet tapered(const PolylineSet& set, double base) {
   for (double r : set.radii) top = std::max(top, r);
   for (double& r : out.radii) r = top > 0 && r > 0 ? base * (r / top) : base;
   return out;
+}
+
+// "x.pov" -> "x.colors.png", or beside a given terrain image: "t.png" -> "t.colors.png".
+std::string colors_image_path(const std::string& pov_path, const std::string& image_path) {
+  std::filesystem::path p(image_path.empty() ? pov_path : image_path);
+  return p.replace_extension(".colors.png").string();
+}
+
+// The terrain colours as an 8-bit sRGB PNG (sRGB spends its 256 steps where
+// the eye tells them apart; POV-Ray decodes it with `gamma srgb`).
+void write_colors_png(const std::string& path, const Heightfield& hf, const float* rgb) {
+  const size_t n = size_t(hf.width()) * size_t(hf.height()) * 3;
+  std::vector<uint8_t> bytes(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double c = std::clamp(double(rgb[i]), 0.0, 1.0);
+    const double e = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+    bytes[i] = uint8_t(std::lround(255 * e));
+  }
+  io::write_png_rgb(path, hf.width(), hf.height(), bytes.data());
+}
+
+// The texture painting `place`'s terrain with the colours PNG `ref`: the
+// image lies on x-y with row 0 on top; it is turned onto x-z with row 0 at
+// z = 0 (as the height_field), projected down y, and stretched half a pixel
+// past each edge so pixel centres land on the samples.
+std::string colors_texture_sdl(const std::string& ref, const TerrainPlacement& place, bool scene_light) {
+  const double w = place.width, h = place.height, sx = place.world_size_x, sy = place.world_size_y;
+  return "  texture {\n    pigment {\n      image_map { png " + quoted(ref) + " gamma srgb interpolate 2 }\n" +
+         "      scale <1, -1, 1> translate y rotate 90*x\n      scale " +
+         vec({w / (w - 1) * sx, 1, h / (h - 1) * sy}) + "\n      translate " +
+         vec({-0.5 * sx / (w - 1), 0, -0.5 * sy / (h - 1)}) + "\n    }\n" +
+         // Under scene light the sky's ambient is the even light of a sky
+         // dome, which a surface returns in full; else POV-Ray's default.
+         (scene_light ? "    finish { ambient 1 diffuse 1 }\n" : "    finish { diffuse 1 }\n") + "  }\n";
 }
 
 }  // namespace
@@ -98,6 +133,18 @@ void validate_scene_params(const SceneParams& p) {
     check_positive("polyline radius_scale", l.radius_scale);
   }
   check_int_range("image_width", p.image_width, 16, 16384);
+  if (p.terrain_colors) {
+    if (!p.terrain || p.tiles) invalid("terrain colours need a terrain of one piece (not tiles)");
+    const size_t n = size_t(p.terrain->width()) * size_t(p.terrain->height()) * 3;
+    for (size_t i = 0; i < n; ++i)
+      if (!(p.terrain_colors[i] >= 0) || !std::isfinite(p.terrain_colors[i]))
+        invalid("terrain colours must be finite and >= 0 (linear RGB, above 1 is clipped), got " +
+                format_number(p.terrain_colors[i]) + " at value " + std::to_string(i));
+  }
+  for (int k = 0; k < 3; ++k) {
+    check_range("sky_color", p.sky_color[size_t(k)], 0, 1000);
+    check_range("sun_color", p.sun_color[size_t(k)], 0, 1000);
+  }
   if (!p.terrain && p.lines.empty()) invalid("a scene needs a terrain or at least one polyline set");
 }
 
@@ -110,7 +157,7 @@ double auto_camera_elevation(const SceneParams& p) {
 
 SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   validate_scene_params(p);
-  AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
+  io::AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
   bool stormy = false;
   for (const auto& l : p.lines) stormy = stormy || l.kind == LineKind::kLightning;
   const std::string folder = folder_of(pov_path);
@@ -147,9 +194,11 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   sum.hi = hi;
   CameraOptions camera = p.camera;
   if (camera.elevation_deg == 0) camera.elevation_deg = auto_camera_elevation(p);
-  sum.camera = frame_points(frame, camera);
+  sum.camera = p.camera_given ? camera_from_pose(p.camera_pose) : frame_points(frame, camera);
   const Camera& cam = sum.camera;
-  const Vec3 centre = cam.look_at;
+  // The lights aim at the framed camera's target, or the content's middle.
+  const Vec3 centre =
+      p.camera_given ? Vec3{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2} : cam.look_at;
 
   std::string s;
   s += "// fracterra scene" + (p.title.empty() ? std::string() : ": " + comment_text(p.title)) + "\n";
@@ -159,7 +208,8 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
        comment_text(std::filesystem::path(pov_path).filename().string()) + "\n";
   s += "// Axes: fracterra world (x, y, z up) is POV-Ray <x, z, y>; units are world units.\n";
   s += "#version 3.7;\n";
-  s += "global_settings { assumed_gamma 1.0 max_trace_level 6 }\n\n";
+  s += "global_settings { assumed_gamma 1.0 max_trace_level 6" +
+       (p.scene_light ? " ambient_light rgb " + vec(p.sky_color) : std::string()) + " }\n\n";
   s += "#ifndef(FT_Texture_Scale) #declare FT_Texture_Scale = " + number(extent / 200) + "; #end\n";
   s += "// ---- povray_macros/ft_terrain.inc, embedded so the scene stands alone ----\n";
   s += kFtTerrainInc;
@@ -170,23 +220,27 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   s += "// ---- end of ft_scene_materials.inc ----\n";
   s += "\n#declare FT_Scene_Min = " + vec(lo) + ";\n#declare FT_Scene_Max = " + vec(hi) + ";\n\n";
 
-  s += "camera {\n  perspective\n  location " + vec(cam.location) + "\n  sky " +
-       vec(cam.up) +
-       "\n  right x*image_width/image_height\n  angle " + number(cam.fov_deg) + "\n  look_at " +
-       vec(cam.look_at) + "\n}\n\n";
+  s += camera_sdl(cam);
 
   const double saz = p.sun_azimuth_deg * kPi / 180, sel = p.sun_elevation_deg * kPi / 180;
   const double far = extent * 100;
   const Vec3 sun{centre[0] + far * std::sin(saz) * std::cos(sel), centre[1] + far * std::sin(sel),
                  centre[2] + far * std::cos(saz) * std::cos(sel)};
   s += "light_source {\n  " + vec(sun) + "\n  color rgb " +
-       (stormy ? std::string("<0.55, 0.58, 0.70>") : std::string("<1.25, 1.2, 1.1>")) +
+       (p.scene_light ? vec(p.sun_color)
+        : stormy      ? std::string("<0.55, 0.58, 0.70>")
+                      : std::string("<1.25, 1.2, 1.1>")) +
        "\n  parallel point_at " + vec(centre) + "\n}\n";
-  // A dim fill from the sky side so shadows are not black.
-  s += "light_source { " + vec({centre[0] - (sun[0] - centre[0]), centre[1] + far, centre[2] - (sun[2] - centre[2])}) +
-       " color rgb " + (stormy ? "<0.10, 0.11, 0.16>" : std::string("<0.18, 0.2, 0.26>")) +
-       " parallel point_at " + vec(centre) + " shadowless }\n\n";
-  if (stormy)
+  if (p.scene_light)  // the scene's own sky lights the shadows (ambient_light)
+    s += "\nbackground { rgb " + vec(p.sky_color) + " }\n\n";
+  else  // a dim fill from the sky side so shadows are not black
+    s += "light_source { " +
+         vec({centre[0] - (sun[0] - centre[0]), centre[1] + far, centre[2] - (sun[2] - centre[2])}) +
+         " color rgb " + (stormy ? "<0.10, 0.11, 0.16>" : std::string("<0.18, 0.2, 0.26>")) +
+         " parallel point_at " + vec(centre) + " shadowless }\n\n";
+  if (p.scene_light)
+    ;  // the background above
+  else if (stormy)
     s += "sky_sphere { pigment { gradient y color_map { [0 rgb <0.30, 0.31, 0.38>] [0.25 rgb <0.12, 0.13, "
          "0.20>] [1 rgb <0.04, 0.05, 0.10>] } } }\n\n";
   else
@@ -212,8 +266,17 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
     const double zw = p.has_sea ? water : sum.terrain.z_min - 1;
     s += "#declare FT_Terrain_Object = ";
     s += heightfield_sdl(relative_path(image, folder), sum.terrain, water);
-    s += "object { FT_Terrain_Object\n  FT_Terrain_Texture(" + number(sum.terrain.z_min) + ", " +
-         number(sum.terrain.z_max) + ", " + number(zw) + ")\n}\n\n";
+    if (p.terrain_colors) {
+      const std::string colors = colors_image_path(pov_path, p.image_path);
+      const std::string ref = relative_path(colors, folder);
+      quoted(ref);
+      write_colors_png(colors, *p.terrain, p.terrain_colors);
+      sum.colors_path = colors;
+      s += "object { FT_Terrain_Object\n" + colors_texture_sdl(ref, sum.terrain, p.scene_light) + "}\n\n";
+    } else {
+      s += "object { FT_Terrain_Object\n  FT_Terrain_Texture(" + number(sum.terrain.z_min) + ", " +
+           number(sum.terrain.z_max) + ", " + number(zw) + ")\n}\n\n";
+    }
   } else {
     // Polylines alone: a ground to catch their shadows, just below them.
     // Coastlines alone lie on a sea, where their white reads best.

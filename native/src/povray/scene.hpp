@@ -44,7 +44,19 @@ struct SceneParams {
   std::vector<SceneLines> lines;
   // camera.elevation_deg 0 = auto: auto_camera_elevation() of this scene.
   CameraOptions camera;
+  // Another program's camera (world axes), used as given instead of the
+  // framing above when camera_given.
+  bool camera_given = false;
+  CameraPose camera_pose;
   double sun_azimuth_deg = 235, sun_elevation_deg = 35;
+  // Linear RGB per terrain sample (3 floats each, the terrain's rows), not
+  // owned: painted on the terrain (a PNG beside its heights, "x.pov" ->
+  // "x.colors.png") instead of the materials by altitude and slope.
+  const float* terrain_colors = nullptr;
+  // Another program's light: the background and an even ambient light of
+  // sky_color, a sun of sun_color (linear RGB times strength), no fill.
+  bool scene_light = false;
+  Vec3 sky_color{0, 0, 0}, sun_color{1, 1, 1};
   // The terrain PNG; "" = beside the scene, named after it ("x.pov" -> "x.terrain.png").
   std::string image_path;
   std::string title;                     // written as a comment
@@ -63,6 +75,7 @@ struct SceneSummary {
   TerrainPlacement terrain;              // width 0 without terrain
   Vec3 lo{}, hi{};                       // content box, POV axes
   std::string image_path;
+  std::string colors_path;               // the terrain colours' PNG, "" without
 };
 
 void validate_scene_params(const SceneParams& p);

@@ -3,7 +3,7 @@
 #include <cfloat>
 #include <cstdint>
 
-namespace ft {
+namespace ft::refine {
 namespace {
 
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
@@ -52,13 +52,9 @@ constexpr ft_param_info kRows[] = {
     {ROW(window_side, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = INT32_MAX,
      .soft_min = 0, .soft_max = 4097, .unit = "samples", .label = "Window Side",
      .doc = "The window's side 2^m + 1; 0: the largest without nodata", .methods = kAll},
-    {ROW(threads, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = 1024,
-     .soft_min = 0, .soft_max = 64, .unit = "threads", .label = "Threads",
-     .doc = "Worker threads, 0: all cores; the output never depends on it", .methods = kAll},
-    {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .element_kind = -1, .unit = "", .label = "Progress",
-     .doc = "Called as the work advances; may cancel; NULL: none", .methods = kAll},
-    {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
-     .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback", .methods = kAll},
+    threads_row<ft_dem_refine_params>(),
+    progress_row<ft_dem_refine_params>("Called as the work advances; may cancel; NULL: none"),
+    progress_user_row<ft_dem_refine_params>(),
 };
 FT_PARAM_TABLE_END
 #undef ROW
@@ -87,4 +83,4 @@ DemRefineConfig dem_refine_config(const ft_dem_refine_params& p) {
   return c;
 }
 
-}  // namespace ft
+}  // namespace ft::refine

@@ -5,7 +5,7 @@
 #include "fracterra/subdiv.h"
 #include "subdiv/fractalize.hpp"
 
-namespace ft {
+namespace ft::subdiv {
 namespace {
 
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
@@ -61,13 +61,9 @@ constexpr ft_param_info kRows[] = {
      .unit = "", .label = "Weights",
      .doc = "NULL, or one weight per base vertex (a painted mask, finite), interpolated like positions",
      .methods = kAll},
-    {ROW(threads, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = 1024,
-     .soft_min = 0, .soft_max = 64, .unit = "threads", .label = "Threads",
-     .doc = "Worker threads, 0: all cores; the output never depends on it", .methods = kAll},
-    {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .element_kind = -1, .unit = "", .label = "Progress",
-     .doc = "Called once per level; may cancel; NULL: none", .methods = kAll},
-    {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
-     .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback", .methods = kAll},
+    threads_row<ft_fractalize_params>(),
+    progress_row<ft_fractalize_params>("Called once per level; may cancel; NULL: none"),
+    progress_user_row<ft_fractalize_params>(),
 };
 FT_PARAM_TABLE_END
 #undef ROW
@@ -79,4 +75,4 @@ const ParamTable& fractalize_param_table() {
   return table;
 }
 
-}  // namespace ft
+}  // namespace ft::subdiv

@@ -49,7 +49,9 @@ void Refiner::diamond_step(int s, int big, int half, float delta) {
 }
 
 // Every point of the grid with spacing `step` starting at `origin` gets
-// delta g (reference nodes stay as given).
+// delta g (reference nodes stay as given). Row j of that grid draws from row
+// j of the stage's counter (columns likewise): the place in the stage's own
+// grid, the same at any levels.
 void Refiner::add_to_grid(int level, int origin, int step, float delta, Stream stream) {
   const int count = addition_count(origin, step);
   in_bands(count, count, [&](int j0, int j1) {
@@ -59,7 +61,7 @@ void Refiner::add_to_grid(int level, int origin, int step, float delta, Stream s
 #pragma omp for schedule(static)
       for (int j = j0; j < j1; ++j) {
         const int y = origin + j * step;
-        gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(level), stream}, 0, count, g.data());
+        gaussian_fill(c_.seed, Counter{uint32_t(j), uint32_t(level), stream}, 0, count, g.data());
         float* r = row(y);
         for (int i = 0; i < count; ++i) {
           const int x = origin + i * step;

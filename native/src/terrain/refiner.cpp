@@ -88,22 +88,23 @@ int Refiner::addition_count(int origin, int step) const {
   return origin > limit ? 0 : (limit - origin) / step + 1;
 }
 
-// The centres of square row j (at y = half + j big), draws keyed by row.
+// The centres of square row j (at y = half + j big), draws keyed by the
+// row's place in stage s's own grid (see stage_row).
 void Refiner::square_one_row(int s, int j, int big, int half, float delta, float* g) {
   const int cells = n_ / big, y = half + j * big;
-  gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(s), Stream::kTerrainSquare}, 0, cells, g);
+  gaussian_fill(c_.seed, Counter{stage_row(y, half), uint32_t(s), Stream::kTerrainSquare}, 0, cells, g);
   square_row(row(y), row(y - half), row(y + half), half, cells, big, half, delta, g);
 }
 
-// The diamond points of row y, draws keyed by row: on a grid row (y a
-// multiple of big) the points at odd multiples of half, else every multiple
-// of big.
+// The diamond points of row y, draws keyed by the row's place in stage s's
+// grid: on a grid row (y a multiple of big) the points at odd multiples of
+// half, else every multiple of big.
 void Refiner::diamond_one_row(int s, int y, int big, int half, float delta, float* g) {
   const int cells = n_ / big;
   const bool on_grid_row = (y / half) % 2 == 0;
   const int x0 = on_grid_row ? half : 0;
   const int count = on_grid_row ? cells : cells + 1;
-  gaussian_fill(c_.seed, Counter{uint32_t(y), uint32_t(s), Stream::kTerrainDiamond}, 0, count, g);
+  gaussian_fill(c_.seed, Counter{stage_row(y, half), uint32_t(s), Stream::kTerrainDiamond}, 0, count, g);
   diamond_row(y, x0, count, big, half, delta, g);
 }
 

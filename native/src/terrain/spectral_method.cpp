@@ -16,11 +16,13 @@ std::any spectral_configure(const ft_terrain_params& p) {
 }
 
 // |sum c_k| <= sqrt(N) (sum |c_k|^2)^(1/2) over the N = W H coefficients
-// (Cauchy-Schwarz), whose power is scaled to sigma^2 with |g| <= 6 on both
-// parts: S = 6 sqrt(2 W H).
+// (Cauchy-Schwarz), whose power is sigma^2 times at most
+// spectral_power_ratio_bound (the waves finer than sigma's reference band
+// add to it) with |g| <= 6 on both parts: S = 6 sqrt(2 W H ratio).
 void spectral_check_heights(const std::any& config, const ft_terrain_params&) {
   const SpectralConfig& c = std::any_cast<const SpectralConfig&>(config);
-  check_height_bound("sigma", c.sigma, kMaxGaussian * std::sqrt(2.0 * c.width * c.height));
+  const double ratio = spectral_power_ratio_bound(c.width, c.height, c.hurst);
+  check_height_bound("sigma", c.sigma, kMaxGaussian * std::sqrt(2.0 * c.width * c.height * ratio));
 }
 
 Heightfield spectral_generate(const std::any& config) {

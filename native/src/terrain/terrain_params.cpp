@@ -116,9 +116,7 @@ constexpr ft_param_info kTerrainRows[] = {
      .doc = "Periodic: wrap-around neighbours, the terrain tiles seamlessly (fbm: whole cells per period, no "
             "octave rotation, not simplex); spectral synthesis always tiles",
      .methods = kCanTile},
-    {ROW(threads, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = 1024,
-     .soft_min = 0, .soft_max = 64, .unit = "threads", .label = "Threads",
-     .doc = "Worker threads, 0: all cores; the output never depends on it", .methods = FT_PARAM_ALL_METHODS},
+    threads_row<ft_terrain_params>(),
     {ROW(reference, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_FLOAT, .element_kind = -1,
      .unit = "scene units", .label = "Reference Points",
      .doc = "Reference heights (Voss 1985, seed 000): a coarse (2^m + 1)^2 grid, row-major, taken as steps "
@@ -133,7 +131,7 @@ constexpr ft_param_info kTerrainRows[] = {
      .doc = "Displacement scale of the steps after the reference grid (Voss 1985, seed 000, fig. 7 a, b)",
      .methods = kReference, .enum_count = 3, .enum_items = kReferenceScales},
     {ROW(octaves, FT_PARAM_INT32), .element_kind = -1, .default_value = 8, .hard_min = 1,
-     .hard_max = kMaxOctaves, .soft_min = 1, .soft_max = 16, .unit = "octaves", .label = "Octaves",
+     .hard_max = noise::kMaxOctaves, .soft_min = 1, .soft_max = 16, .unit = "octaves", .label = "Octaves",
      .doc = "Noise octaves summed (Quilez 2019, seed 004); the finest must stay within float resolution",
      .methods = kFbm},
     {ROW(lacunarity, FT_PARAM_DOUBLE), .flags = kAbove, .element_kind = -1, .default_value = 2, .hard_min = 1,
@@ -164,14 +162,11 @@ constexpr ft_param_info kTerrainRows[] = {
      .doc = "Domain rotation per octave (Quilez 2019): hides the alignment of the octaves' zeros and peaks; "
             "not with periodic",
      .methods = kFbm},
-    {ROW(warp, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = kMaxWarp,
+    {ROW(warp, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = noise::kMaxWarp,
      .soft_min = 0, .soft_max = 4, .unit = "cells", .label = "Warp",
      .doc = "Domain-warp displacement in base cells (Quilez 2002), 0: off", .methods = kFbm},
-    {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .element_kind = -1, .unit = "", .label = "Progress",
-     .doc = "Progress callback; may cancel; NULL: none", .methods = FT_PARAM_ALL_METHODS},
-    {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
-     .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback",
-     .methods = FT_PARAM_ALL_METHODS},
+    progress_row<ft_terrain_params>(),
+    progress_user_row<ft_terrain_params>(),
     {ROW(world_size, FT_PARAM_DOUBLE), .flags = kAbove, .since = kAbi11, .element_kind = -1, .default_value = 10,
      .hard_min = 0, .hard_max = kInf, .soft_min = 1, .soft_max = 10000, .unit = "scene units",
      .label = "World Size",
@@ -290,10 +285,8 @@ constexpr ft_param_info kProfileRows[] = {
      .soft_max = FT_REFSCALE_STD, .unit = "", .label = "Refinement Scale",
      .doc = "Displacement scale of the steps after the reference values (Voss 1985, seed 000, fig. 7 a, b)",
      .methods = FT_PARAM_ALL_METHODS, .enum_count = 3, .enum_items = kReferenceScales},
-    {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .element_kind = -1, .unit = "", .label = "Progress",
-     .doc = "Progress callback; may cancel; NULL: none", .methods = FT_PARAM_ALL_METHODS},
-    {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
-     .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback", .methods = FT_PARAM_ALL_METHODS},
+    progress_row<ft_profile_params>(),
+    progress_user_row<ft_profile_params>(),
 };
 FT_PARAM_TABLE_END
 #undef ROW

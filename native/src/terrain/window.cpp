@@ -207,7 +207,7 @@ class WindowRefiner {
       // in the region.
       auto centre_row = [&](float* row, const float* up, const float* dn, int k, bool centres_only) {
         const int64_t y = e.y0 + k * big - half;
-        const uint32_t cy = uint32_t(canon(y));
+        const uint32_t cy = detail::stage_row(canon(y), half);
         draws(Counter{cy, uint32_t(s), Stream::kTerrainSquare}, (canon(e.x0 + half) - half) / big, cn - 1,
               n_ / big, g.data());
         detail::square_row(row, up, dn, 1, cn - 1, 2, 1, square_delta, g.data());
@@ -227,8 +227,8 @@ class WindowRefiner {
         const int64_t y = e.y0 + k * big;
         if (y < r.y0 || y > r.y1) return;
         if (cn > 1) {
-          draws(Counter{uint32_t(canon(y)), uint32_t(s), Stream::kTerrainDiamond}, (canon(e.x0 + half) - half) / big,
-                cn - 1, n_ / big, g.data());
+          draws(Counter{detail::stage_row(canon(y), half), uint32_t(s), Stream::kTerrainDiamond},
+                (canon(e.x0 + half) - half) / big, cn - 1, n_ / big, g.data());
           if (up && dn) {
             detail::diamond_interior(row, up, dn, 1, cn - 1, 2, 1, diamond_delta, g.data());
           } else {  // the terrain's top or bottom border (f.r never reaches past e otherwise)
@@ -299,8 +299,8 @@ class WindowRefiner {
 #pragma omp for schedule(static)
       for (int j = 1; j < ny; j += 2) {
         const int64_t y = Y0 + j * half;
-        draws(Counter{uint32_t(canon(y)), uint32_t(s), Stream::kTerrainSquare}, (canon(X0 + half) - half) / big,
-              cnx - 1, cells, g.data());
+        draws(Counter{detail::stage_row(canon(y), half), uint32_t(s), Stream::kTerrainSquare},
+              (canon(X0 + half) - half) / big, cnx - 1, cells, g.data());
         detail::square_row(row(j), row(j - 1), row(j + 1), 1, cnx - 1, 2, 1, square_delta, g.data());
       }
       if (additions) add(0, 0, 2, square_delta, s, Stream::kTerrainAddOld, X0, Y0, half, nx, ny, F, g.data());
@@ -333,7 +333,7 @@ class WindowRefiner {
     const int count = (nx - 1 - i0) / 2 + 1;
     const int64_t x_first = X0 + i0 * half;
     const int64_t first = grid_row ? (canon(x_first) - half) / big : canon(x_first) / big;
-    draws(Counter{uint32_t(canon(y)), uint32_t(s), Stream::kTerrainDiamond}, first, count, cells, g);
+    draws(Counter{detail::stage_row(canon(y), half), uint32_t(s), Stream::kTerrainDiamond}, first, count, cells, g);
     // Interior places (both horizontal neighbours in the region) on a row
     // with both vertical ones: the hot loop.
     int lo = i0 == 0 ? 1 : 0, hi = count;
@@ -360,7 +360,8 @@ class WindowRefiner {
 #pragma omp for schedule(static)
     for (int j = j0; j < ny; j += step) {
       const int64_t y = canon(Y0 + j * half);
-      draws(Counter{uint32_t(y), uint32_t(s), stream}, (canon(X0 + i0 * half) - origin) / big, count, cells, g);
+      draws(Counter{uint32_t((y - origin) / big), uint32_t(s), stream}, (canon(X0 + i0 * half) - origin) / big, count,
+            cells, g);
       float* r = F + size_t(j) * size_t(nx);
       for (int k = 0; k < count; ++k) {
         const int i = i0 + k * step;

@@ -17,59 +17,32 @@ DEPOSIT_ATTRIBUTE = "fracterra_deposit"  # sediment laid down
 WATER_ATTRIBUTE = "fracterra_water"  # water left by the rain
 ATTRIBUTES = (FLOW_ATTRIBUTE, DEPOSIT_ATTRIBUTE, WATER_ATTRIBUTE)
 MATERIAL_NAME = "Fracterra Eroded Terrain"
-# Share of the progress bar the generation fills when erosion follows (erosion
-# is the longer part).
-GENERATION_SHARE = 0.25
-
-def effective(values):
-    """The erosion settings a run uses: a preset picks which processes run and
-    how many passes (as `fracterra erode --preset` does), the rates are the
-    settings' own; None runs nothing; Custom takes the passes as set too.
-    (A preset with rivers also sets the uplift, fitted to the generated
-    terrain's relief: generate_and_erode, as `fracterra erode --preset`.)"""
-    preset = values.get("erode_preset", "NONE")
-    if preset == "CUSTOM":
-        return values
-    if preset == "NONE":
-        return {**values, **{name: 0 for name in erosion.COUNTS}}
-    counts = erosion.preset_values(preset.lower())
-    return {**values, **{name: counts[name] for name in erosion.COUNTS}}
+# The eroded material's rule (eroded_material's nodes, eroded_colors per sample
+# for the POV-Ray export): linear RGB, and the attribute ranges each ramp rises over.
+GRASS, SEDIMENT, ROCK = (0.16, 0.26, 0.07), (0.55, 0.47, 0.33), (0.33, 0.31, 0.29)
+CHANNELS, DEPOSITS, STEEP = (0.45, 0.7), (0.05, 0.4), (0.3, 0.45)
 
 
 # --- in the job's worker thread (no bpy here)
 
-def _span(progress, start, end):
-    if progress is None:
-        return None
-    return lambda fraction: progress(start + (end - start) * fraction)
-
-
-def periodic_of(values):
-    return bool(values.get("periodic")) and params.is_used(params.PARAMS_BY_NAME["periodic"], values["method"])
-
-
 def generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=None):
-    """Generates the terrain of `values` (with its reference and falloff mask, as
-    core.generate_terrain takes them) and, when its settings ask for it, erodes
-    it; returns grid_of(heightfield) with `.erosion_maps` ({attribute: float32
-    array} or None). Runs in the worker thread."""
-    values = effective(values)
-    if not erosion.requested(values):
-        with core.generate_terrain(values, reference=reference, progress=progress, threads=threads,
-                                   falloff_mask=falloff_mask) as hf:
-            g = grid_of(hf)
-        g.erosion_maps = None
-        return g
-    with core.generate_terrain(values, reference=reference, progress=_span(progress, 0.0, GENERATION_SHARE),
-                               threads=threads, falloff_mask=falloff_mask) as hf:
-        preset = values.get("erode_preset", "NONE")
-        if preset not in ("NONE", "CUSTOM"):
-            values = {**values, **erosion.fitted_uplift(preset, hf)}
-        eroded, maps = erosion.erode_arrays(hf, values=values, periodic=periodic_of(values), threads=threads,
-                                            progress=_span(progress, GENERATION_SHARE, 1.0))
-    with eroded:
-        g = grid_of(eroded)
-        spacing = values["world_size"] / (eroded.width - 1)
+    """Builds the terrain of `values` (with its reference and falloff mask, as
+    core.generate_terrain takes them) in one library call, eroded when its
+    settings ask for it (a preset: its passes and the uplift fitted to the
+    terrain, the rates as set; Custom: everything as set); returns
+    grid_of(heightfield) with `.erosion_maps` ({attribute: float32 array} or
+    None). Runs in the worker thread."""
+    preset = values.get("erode_preset", "NONE")
+    eroded = preset not in ("NONE", "CUSTOM") or (preset == "CUSTOM" and erosion.requested(values))
+    hf, maps = core.build_terrain(values, reference=reference, falloff_mask=falloff_mask,
+                                  erosion=values if eroded else None,
+                                  preset="NONE" if preset == "CUSTOM" else preset, maps=eroded,
+                                  threads=threads, progress=progress)
+    with hf:
+        g = grid_of(hf)
+        spacing = values["world_size"] / (hf.width - 1)
+    g.erosion_maps = None
+    if eroded:
         g.erosion_maps = attribute_maps({k: np.frombuffer(v, dtype=np.float32) for k, v in maps.items()},
                                         spacing * spacing)
     return g
@@ -155,16 +128,31 @@ def eroded_material():
                 links.new(value, socket)
         return node.outputs["Color"]
 
-    grass, sediment, rock = (0.16, 0.26, 0.07, 1.0), (0.55, 0.47, 0.33, 1.0), (0.33, 0.31, 0.29, 1.0)
-    channels = ramp(attribute(FLOW_ATTRIBUTE, 200), 0.45, 0.7, 200)
-    deposits = ramp(attribute(DEPOSIT_ATTRIBUTE, 0), 0.05, 0.4, 0)
+    grass, sediment, rock = (*GRASS, 1.0), (*SEDIMENT, 1.0), (*ROCK, 1.0)
+    channels = ramp(attribute(FLOW_ATTRIBUTE, 200), *CHANNELS, 200)
+    deposits = ramp(attribute(DEPOSIT_ATTRIBUTE, 0), *DEPOSITS, 0)
     math_max = nodes.new("ShaderNodeMath")
     math_max.operation = "MAXIMUM"
     math_max.location = (-650, 100)
     links.new(channels, math_max.inputs[0])
     links.new(deposits, math_max.inputs[1])
-    steep = ramp(attribute(SLOPE_ATTRIBUTE, -200), 0.3, 0.45, -200)
+    steep = ramp(attribute(SLOPE_ATTRIBUTE, -200), *STEEP, -200)
     ground = mix(math_max.outputs["Value"], grass, sediment, 100)
     colour = mix(steep, ground, rock, -100)
     links.new(colour, bsdf.inputs["Base Color"])
     return mat
+
+
+def eroded_colors(slope, flow, deposit):
+    """eroded_material's base colour at each sample of the attribute arrays
+    (0..1 each): an (n, 3) float32 array of linear RGB, node for node."""
+
+    def ramp(x, lo, hi):  # Map Range, smoothstep, clamped
+        t = np.clip((np.asarray(x, dtype=np.float64) - lo) / (hi - lo), 0.0, 1.0)
+        return (t * t * (3.0 - 2.0 * t))[:, None]
+
+    def mix(fac, a, b):  # MixRGB, Mix
+        return (1.0 - fac) * np.asarray(a) + fac * np.asarray(b)
+
+    ground = mix(np.maximum(ramp(flow, *CHANNELS), ramp(deposit, *DEPOSITS)), GRASS, SEDIMENT)
+    return mix(ramp(slope, *STEEP), ground, ROCK).astype(np.float32)

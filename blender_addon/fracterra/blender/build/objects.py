@@ -1,10 +1,13 @@
 """Reading objects back: is an object a fracterra terrain (or measurable at
-all), a terrain's grid size, and a library heightfield of its current vertex
-heights."""
+all), a terrain's grid size, a library heightfield of its current vertex
+heights, and the settings its mesh was built from (so that after a cancel, an
+undo or a failure the sidebar shows the settings of the mesh that is there)."""
 
 import array
+import json
 import zlib
 
+import bpy
 import numpy as np
 
 from ... import core
@@ -28,13 +31,28 @@ def is_measurable(obj):
     return obj is not None and (is_terrain(obj) or obj.type == "CURVE")
 
 
+def mesh_level(obj):
+    """("Preview" or "Final", nx, ny) of what a terrain object's mesh holds, or
+    None when it is neither (edited, or built by an older add-on)."""
+    settings = params.values_of(obj.fracterra_terrain)
+    n = len(obj.data.vertices)
+    final = grid_shape(settings)
+    if n == final[0] * final[1]:
+        return "Final", *final
+    preview = grid_shape(params.preview_values(settings))
+    if n == preview[0] * preview[1]:
+        return "Preview", *preview
+    return None
+
+
 def terrain_grid_size(obj):
-    """(nx, ny) of a fracterra terrain object whose mesh is still its grid."""
-    nx, ny = grid_shape(params.values_of(obj.fracterra_terrain))
-    if len(obj.data.vertices) != nx * ny:
+    """(nx, ny) of a fracterra terrain object whose mesh is still its grid (its Final or its Preview)."""
+    level = mesh_level(obj)
+    if level is None:
+        nx, ny = grid_shape(params.values_of(obj.fracterra_terrain))
         raise SettingsError(f"'{obj.name}' has {len(obj.data.vertices)} vertices, not its {nx} x {ny} grid "
                             "(edited?); regenerate it first")
-    return nx, ny
+    return level[1], level[2]
 
 
 def heightfield_of(obj):
@@ -69,3 +87,59 @@ def sea_height(settings, lowest):
     if settings.sea == "FRACTION":
         return lowest
     return None
+
+
+# The settings a terrain mesh was built from, as JSON in a custom property of
+# the mesh: it travels with the mesh (undo restores both, a cancelled rebuild
+# keeps the old mesh and so its settings).
+BUILT_FROM = "fracterra_settings"
+_restoring = []
+
+
+def remember_settings(mesh, values):
+    """Records on `mesh` the settings (a dict, params.values_of) it was just built from."""
+    mesh[BUILT_FROM] = json.dumps(values)
+
+
+def built_settings(mesh):
+    """{name: value} the mesh was built from, or None (a mesh made before this was recorded)."""
+    text = mesh.get(BUILT_FROM) if mesh is not None else None
+    return json.loads(text) if isinstance(text, str) else None
+
+
+def restoring():
+    """True while restore_settings writes settings: no Auto Update may run then."""
+    return bool(_restoring)
+
+
+def restore_settings(obj):
+    """Puts the settings its mesh was built from back into terrain `obj`'s
+    settings (after a cancel, an undo or a failure); returns the names changed."""
+    if not is_terrain(obj):
+        return []
+    built = built_settings(obj.data)
+    if built is None:
+        return []
+    settings = obj.fracterra_terrain
+    changed = []
+    _restoring.append(obj.name)
+    try:
+        for p in params.TERRAIN_OBJECT_PARAMS:  # the preset before the passes it fills
+            if p.name in built:
+                value = tuple(built[p.name]) if p.kind == "vector" else built[p.name]
+                current = getattr(settings, p.name)
+                if (tuple(current) if p.kind == "vector" else current) != value:
+                    setattr(settings, p.name, value)
+                    changed.append(p.name)
+    finally:
+        _restoring.pop()
+    return changed
+
+
+@bpy.app.handlers.persistent
+def restore_after_undo(*_args):
+    """undo_post / redo_post: an undone Regenerate brings the old mesh back, but a
+    sidebar edit is an undo step of its own, so the settings could stay newer
+    than the mesh. Every terrain gets the settings of its mesh back."""
+    for obj in bpy.data.objects:
+        restore_settings(obj)

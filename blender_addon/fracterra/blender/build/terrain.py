@@ -17,6 +17,7 @@ from ...core.resample import dyadic_levels, resample_bilinear
 from . import erosion as erosion_ui
 from . import falloff_mask
 from . import mesh as mesh_build
+from .objects import mesh_level, remember_settings
 from ..common.images import image_luminance
 from ..common.preferences import library_threads
 from ..common.jobs import Job, run_job
@@ -124,24 +125,29 @@ def terrain_work(values, context, topology=True, frame=None, terrain_name=None):
     return work
 
 
-def _build_new_mesh(g, values, name):
-    """Build steps of a new mesh datablock; removed again if cancelled or failed."""
+def _build_new_mesh(g, values, name, settings=None):
+    """Build steps of a new mesh datablock; removed again if cancelled or failed.
+    `settings`: what the mesh records it was built from (its Preview is built
+    from `values`, its settings are the Final's); `values` when None."""
     mesh = bpy.data.meshes.new(name)
     try:
         yield from mesh_build.fill_grid_mesh_steps(mesh, g, smooth=values["smooth"])
         mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
         erosion_ui.set_maps(mesh, g.erosion_maps)
+        remember_settings(mesh, settings if settings is not None else values)
     except BaseException:  # GeneratorExit too: a cancel leaves nothing behind
         bpy.data.meshes.remove(mesh)
         raise
     return mesh, f"{g.nx} x {g.ny} vertices"
 
 
-def new_terrain_job(values, context, name="Fractal Terrain", frame=None):
+def new_terrain_job(values, context, name="Fractal Terrain", frame=None, preview=False):
     """A progress.Job whose value is (mesh, summary): a new mesh holding the terrain of
-    `values`, for an object at `frame` (its world matrix: where a mask object is seen)."""
-    work = terrain_work(values, context, frame=frame)
-    return Job("Generating terrain", work, lambda g: _build_new_mesh(g, values, name))
+    `values` (its Preview when `preview`), for an object at `frame` (its world
+    matrix: where a mask object is seen)."""
+    built = params.preview_values(values) if preview else values
+    work = terrain_work(built, context, frame=frame)
+    return Job("Generating terrain", work, lambda g: _build_new_mesh(g, built, name, values))
 
 
 def new_terrain_mesh(values, context, name="Fractal Terrain", frame=None):
@@ -164,7 +170,7 @@ def _swap_mesh(obj, new):
         new.name = name
 
 
-def _build_in_place(obj, g, values):
+def _build_in_place(obj, g, values, settings):
     """Build steps of a regenerated terrain. The same grid: its positions are
     rewritten in one step. Another grid: a new mesh is built aside and swapped
     in at the end, so a cancel never leaves the object half-built."""
@@ -176,28 +182,53 @@ def _build_in_place(obj, g, values):
         if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
             mesh_build.set_uvs(mesh, g.uv if values["uvs"] else None)
         mesh_build.set_smooth(mesh, values["smooth"])
+        remember_settings(mesh, settings)
         return f"{g.nx} x {g.ny} terrain heights rewritten"
-    new, _summary = yield from _build_new_mesh(g, values, mesh.name)
+    new, _summary = yield from _build_new_mesh(g, values, mesh.name, settings)
     _swap_mesh(obj, new)
     return f"{g.nx} x {g.ny} terrain mesh rebuilt"
 
 
-def regenerate_job(obj, context):
+def regenerate_job(obj, context, preview=False):
     """A progress.Job that regenerates terrain object `obj` from its stored
-    settings; its value is a summary. When the grid size is unchanged only
-    the vertex positions are rewritten."""
-    values = params.values_of(obj.fracterra_terrain)
+    settings (at its Preview level when `preview`); its value is a summary.
+    When the grid size is unchanged only the vertex positions are rewritten."""
+    settings = params.values_of(obj.fracterra_terrain)
+    values = params.preview_values(settings) if preview else settings
     nx, ny = grid_shape(values)
     mesh = obj.data
     same_grid = len(mesh.vertices) == nx * ny and len(mesh.polygons) == (nx - 1) * (ny - 1)
     adds_uvs = values["uvs"] and mesh.uv_layers.get(mesh_build.UV_NAME) is None
     work = terrain_work(values, context, topology=not same_grid or adds_uvs, frame=obj.matrix_world.copy(),
                         terrain_name=obj.name)
-    return Job("Regenerating terrain", work, lambda g: _build_in_place(obj, g, values))
+    label = "Regenerating terrain (Preview)" if values is not settings else "Regenerating terrain"
+    return Job(label, work, lambda g: _build_in_place(obj, g, values, settings))
 
 
-def regenerate_object(obj, context):
+def regenerate_object(obj, context, preview=False):
     """Regenerates a terrain object here and now (auto-update, scripts); returns a summary."""
     t0 = time.perf_counter()
-    summary = run_job(regenerate_job(obj, context))
+    summary = run_job(regenerate_job(obj, context, preview))
     return f"{summary} in {time.perf_counter() - t0:.2f} s"
+
+
+def preview_regenerate(obj, context):
+    """Auto Update's rebuild: the terrain at its Preview level."""
+    return regenerate_object(obj, context, preview=True)
+
+
+@bpy.app.handlers.persistent
+def final_for_render(*_args):
+    """render_pre: a command-line render (blender -b -f) renders each terrain at
+    its Final level, rebuilt here when its mesh holds the Preview. Only in
+    background Blender: there render_pre runs in the main thread before the
+    scene is read. In the window, F12 calls it from the render job's own thread,
+    where rebuilding a mesh is not safe; the sidebar says Preview then."""
+    if not bpy.app.background:
+        return
+    for obj in list(bpy.data.objects):
+        if obj.type == "MESH" and obj.fracterra_terrain.is_terrain:
+            level = mesh_level(obj)
+            if level is not None and level[0] == "Preview":
+                print(f"fracterra: {obj.name}: building the Final level for the render", flush=True)
+                regenerate_object(obj, bpy.context)

@@ -217,6 +217,10 @@ class JobOperator:
     def job_done(self, context, value):
         return {"FINISHED"}
 
+    def job_cancelled(self, context):
+        """Called when the user cancelled (Esc) or the progress callback did:
+        what was made is already gone; put anything else back."""
+
     def _refuse(self, e):
         self.report({"ERROR"}, str(e))
         return {"CANCELLED"}
@@ -237,6 +241,7 @@ class JobOperator:
         except REPORTED as e:
             return self._refuse(e)
         if state == CANCELLED:
+            self.job_cancelled(context)
             self.report({"WARNING"}, f"{job.label}: cancelled")
             return {"CANCELLED"}
         self.job_seconds = runner.seconds
@@ -288,6 +293,7 @@ class JobOperator:
             return {"RUNNING_MODAL"}
         self._end(context)
         if state == CANCELLED:
+            self.job_cancelled(context)
             self.report({"WARNING"}, f"{runner.job.label}: cancelled after {runner.seconds:.1f} s, nothing kept")
             return {"CANCELLED"}
         self.job_seconds = runner.seconds

@@ -18,7 +18,7 @@ import bpy
 BUNDLED = Path(__file__).resolve().parents[2] / "presets"
 
 # Presets the add-on no longer ships: path under the user's presets folder ->
-# SHA-256 of every version it shipped (before commit ba1d7c2).
+# SHA-256 of every version it shipped (the lowercase ones before commit ba1d7c2).
 _TERRAIN = "operator/mesh.fracterra_terrain_add/"
 RETIRED = {
     _TERRAIN + "alpine_ridges.py": {"4c0982df50b7cff743be28aaaa9245b98936721c19cb119a052bdc6a8c3f2f77"},
@@ -27,6 +27,8 @@ RETIRED = {
     _TERRAIN + "ridged_mountains.py": {"0d613216080c31dc0c45857a87619b77541bb6febdc825e81671e09927fea7d3"},
     _TERRAIN + "rough_badlands.py": {"82aa2102df3d496d25b855e72175a42bcd79aebaadd742a968a7626a8a58433c"},
     _TERRAIN + "tileable_ground.py": {"d7cc823d8847b20d23b8e5b1cb2b8ce81fa39ba927830b52cf3d44a85525d02a"},
+    # Named after a paper's author, not after what it makes (issue 24): now Lake Country.
+    _TERRAIN + "Feder Landscape.py": {"48d36501ecad947d30fb717e2a6de8c0315d10340062b9f249c52f2174ea7643"},
 }
 
 

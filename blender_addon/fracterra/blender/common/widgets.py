@@ -1,5 +1,6 @@
 """Small drawing helpers shared by the panels and the preferences (a leaf module)."""
 
+import math
 import textwrap
 
 from ... import core
@@ -30,3 +31,27 @@ def draw_size(layout, values):
         draw_wrapped(layout, "Too large: " + reason, icon="ERROR", alert=True)
     elif nx * ny >= mesh_limits.SHOW_ESTIMATE_FROM:
         layout.label(text=mesh_limits.estimate(nx, ny), icon="INFO")
+
+
+def unit_label(p, label=None):
+    """The label of parameter `p` with the unit Blender cannot show in its field
+    ("Step Length (years)", "Diffusion (x1e-7 world units^2/yr)")."""
+    label = label or p.label
+    if not p.unit_text:
+        return label
+    scale = f"x1e-{round(math.log10(p.display_scale))} " if p.display_scale else ""
+    return f"{label} ({scale}{p.unit_text})"
+
+
+def draw_setting(layout, data, name, p=None):
+    """A setting as a field; with a unit Blender cannot show (years, 1/yr, ...), its
+    label and unit on a row above the field, wrapped to the narrow sidebar, so
+    neither is cut off. A value too small for Blender's 6 decimals is drawn
+    scaled (ui/properties.display_property), the scale with the unit."""
+    shown = params.shown_name(name) if p is not None and p.display_scale else name
+    if p is None or not p.unit_text:
+        layout.prop(data, shown)
+        return
+    col = layout.column(align=True)
+    draw_wrapped(col, unit_label(p), width=30)
+    col.prop(data, shown, text="")

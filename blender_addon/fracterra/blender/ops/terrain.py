@@ -9,6 +9,7 @@ from ..ui import erosion_layout
 from ..ui import properties as props
 from ..common.jobs import JobOperator
 from ..ui.settings_layout import draw_settings
+from ..build.objects import is_terrain, restore_settings
 from ..build.terrain import new_terrain_job, regenerate_job
 from ..common.widgets import draw_size
 
@@ -31,9 +32,15 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
     # From the menu it runs in the background with a progress bar (Esc
     # cancels); the redo panel and scripts run execute() (progress.JobOperator).
     def make_job(self, context):
+        # The redo panel runs execute() again on every change, with no progress
+        # and no Esc: a terrain over its Preview size is built there at its
+        # Preview level, and the sidebar's Build Final (a cancellable job with
+        # progress) builds the rest. The menu and scripts build the Final.
+        values = params.values_of(self)
+        self._preview = self.options.is_repeat and params.preview_values(values) is not values
         # Where the object will stand: a mask object is seen over that footprint.
-        return new_terrain_job(params.values_of(self), context,
-                               frame=object_utils.add_object_align_init(context, self))
+        return new_terrain_job(values, context, frame=object_utils.add_object_align_init(context, self),
+                               preview=self._preview)
 
     def job_done(self, context, value):
         mesh, summary = value
@@ -41,17 +48,26 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
         settings = obj.fracterra_terrain
         props.copy_settings(self, settings)
         settings.is_terrain = True
-        self.report({"INFO"}, f"Fractal terrain: {summary} in {self.job_seconds:.2f} s")
+        if getattr(self, "_preview", False):
+            self.report({"INFO"}, f"Fractal terrain: Preview, {summary} in {self.job_seconds:.2f} s; "
+                                  "Build Final in the sidebar builds Levels")
+        else:
+            self.report({"INFO"}, f"Fractal terrain: {summary} in {self.job_seconds:.2f} s")
         return {"FINISHED"}
 
 
 # The operator's properties come from the same list as the object's settings.
-FRACTERRA_OT_terrain_add.__annotations__ = {**props.terrain_annotations(),
-                                             "erode_preset": erosion_layout.preset_property()}
+# Erosion is not remembered from one Add to the next (SKIP_SAVE): a new terrain
+# starts without erosion, or with the operator preset's, never silently with
+# the last object's (the redo panel keeps it while adjusting this Add).
+FRACTERRA_OT_terrain_add.__annotations__ = {
+    **props.terrain_annotations(),
+    **props.terrain_annotations(param_list=params.EROSION_PARAMS, options={"SKIP_SAVE"}),
+    "erode_preset": erosion_layout.preset_property(options={"SKIP_SAVE"})}
 
 
 class FRACTERRA_OT_terrain_regenerate(JobOperator, bpy.types.Operator):
-    """Regenerate the active fractal terrain from its settings (heights only when the grid size is unchanged)"""
+    """Regenerate the active fractal terrain from its settings at its Final level (heights only when the grid size is unchanged)"""
     bl_idname = "object.fracterra_terrain_regenerate"
     bl_label = "Regenerate Terrain"
     bl_options = {"REGISTER", "UNDO"}
@@ -65,11 +81,21 @@ class FRACTERRA_OT_terrain_regenerate(JobOperator, bpy.types.Operator):
     def make_job(self, context):
         obj = context.active_object
         obj.fracterra_terrain.last_error = ""
+        self._terrain_name = obj.name
         return regenerate_job(obj, context)
 
+    def _terrain(self):
+        obj = bpy.data.objects.get(getattr(self, "_terrain_name", ""))
+        return obj if obj is not None else bpy.context.active_object
+
+    def job_cancelled(self, context):
+        # The mesh is the one from before: so are the settings shown.
+        restore_settings(self._terrain())
+
     def _refuse(self, e):
-        obj = bpy.context.active_object
-        if obj is not None and obj.fracterra_terrain.is_terrain:
+        obj = self._terrain()
+        if is_terrain(obj):
+            restore_settings(obj)
             obj.fracterra_terrain.last_error = str(e)
         return super()._refuse(e)
 

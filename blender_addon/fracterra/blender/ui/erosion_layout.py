@@ -4,7 +4,7 @@ preset menu whose choice fills the passes (build/erosion.py runs them)."""
 from bpy.props import EnumProperty
 
 from ...core import erosion, params
-from ..build.erosion import effective
+from ..common.widgets import draw_setting, draw_wrapped
 
 # What the panels show of each process: its pass count, then its main rates.
 _GROUPS = (
@@ -22,16 +22,12 @@ def apply_preset(data):
     preset = data.erode_preset
     if preset == "CUSTOM":
         return
-    if preset == "NONE":
-        for name in erosion.COUNTS:
-            setattr(data, name, 0)
-        return
-    counts = effective({"erode_preset": preset})
+    counts = erosion.preset_values(preset.lower()) if preset != "NONE" else {}
     for name in erosion.COUNTS:
-        setattr(data, name, counts[name])
+        setattr(data, name, counts.get(name, 0))
 
 
-def preset_property(then=None):
+def preset_property(then=None, options=None):
     """The erode_preset EnumProperty whose update applies the preset (then calls `then`)."""
     p = params.PARAMS_BY_NAME["erode_preset"]
 
@@ -42,7 +38,7 @@ def preset_property(then=None):
 
     return EnumProperty(name=p.label, description=p.description, default=p.default,
                         items=[(ident, label, tip, number) for ident, label, tip, number in p.items],
-                        update=update)
+                        update=update, **({"options": options} if options is not None else {}))
 
 
 def draw_erosion(layout, data):
@@ -57,16 +53,17 @@ def draw_erosion(layout, data):
         return
     for title, count, rates in _GROUPS:
         sub = box.column(align=True)
+        # The process as a heading, its count as a whole row: "Scree: Scree Passes"
+        # in one field was cut to "Scree Pas..." in the sidebar.
+        sub.label(text=title)
         row = sub.row(align=True)
         row.enabled = data.erode_preset == "CUSTOM"
-        row.prop(data, count, text=f"{title}: {params.PARAMS_BY_NAME[count].label}")
+        row.prop(data, count)
         if getattr(data, count) > 0:
             for name in rates:
                 if name in erosion.FITTED and data.erode_preset != "CUSTOM":
                     # A preset fits them to the terrain (generate_and_erode).
                     if name == "uplift":
-                        sub.label(text=f"{params.PARAMS_BY_NAME[name].label}: fitted to the terrain")
+                        draw_wrapped(sub, f"{params.PARAMS_BY_NAME[name].label}: fitted to the terrain", width=30)
                     continue
-                # A value too small for Blender's 6 decimals is drawn scaled (props.display_property).
-                shown = params.shown_name(name) if params.PARAMS_BY_NAME[name].display_scale else name
-                sub.prop(data, shown)
+                draw_setting(sub, data, name, params.PARAMS_BY_NAME[name])

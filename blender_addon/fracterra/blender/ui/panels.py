@@ -6,8 +6,9 @@ import math
 import bpy
 
 from .settings_layout import draw_polyline_settings, draw_settings
-from ..build.objects import geometry_fingerprint, is_measurable, is_polyline
+from ..build.objects import geometry_fingerprint, is_measurable, is_polyline, mesh_level
 from ...core import params
+from ...core.params import grid_shape
 from ..common.widgets import draw_library_problem, draw_size, draw_wrapped
 
 # Operators the panels show (bl_idname of each).
@@ -17,15 +18,28 @@ POLYLINE_REGENERATE = "object.fracterra_polyline_regenerate"
 MEASURE = "object.fracterra_measure"
 
 
-def draw_regenerate(layout, settings, operator):
+def draw_regenerate(layout, settings, operator, text="Regenerate"):
     """Regenerate (operator `operator`), Auto Update and the last error of a
     terrain's or a polyline's settings, at the top of its panel."""
     # One button a row: side by side the sidebar cuts their labels.
     col = layout.column(align=True)
-    col.operator(operator, text="Regenerate", icon="FILE_REFRESH")
+    col.operator(operator, text=text, icon="FILE_REFRESH")
     col.prop(settings, "auto_update", toggle=True)
     if settings.last_error:
         draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True, width=32)
+
+
+def draw_mesh_level(layout, settings, level):
+    """Which level the mesh holds: Preview (Auto Update's) or Final (Levels)."""
+    col = layout.column(align=True)
+    if level is None:
+        col.label(text="Mesh: edited, not its grid", icon="ERROR")
+        return
+    kind, nx, ny = level
+    col.label(text=f"Mesh: {kind}, {nx} x {ny}", icon="MESH_GRID")
+    if kind == "Preview":
+        fx, fy = grid_shape(params.values_of(settings))
+        col.label(text=f"Final: {fx} x {fy}", icon="RENDER_STILL")
 
 
 class FRACTERRA_PT_terrain(bpy.types.Panel):
@@ -47,7 +61,10 @@ class FRACTERRA_PT_terrain(bpy.types.Panel):
             draw_wrapped(layout, "The active object is not a fractal terrain.", width=32)
             layout.operator(TERRAIN_ADD, text="Add Fractal Terrain", icon="RNDCURVE")
             return
-        draw_regenerate(layout, settings, TERRAIN_REGENERATE)
+        level = mesh_level(obj)
+        draw_regenerate(layout, settings, TERRAIN_REGENERATE,
+                        text="Build Final" if level is not None and level[0] == "Preview" else "Regenerate")
+        draw_mesh_level(layout, settings, level)
         draw_settings(layout, settings, compact=True)
         draw_size(layout, params.values_of(settings))
 

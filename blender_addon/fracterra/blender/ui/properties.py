@@ -10,14 +10,18 @@ from bpy.props import (BoolProperty, EnumProperty, FloatProperty, FloatVectorPro
 from ...core import params
 from . import erosion_layout
 from ..build.polyline import regenerate_polyline
-from ..build.terrain import regenerate_object
+from ..build.objects import restore_settings, restoring
+from ..build.terrain import preview_regenerate
 
 
-def bpy_property(p, update=None):
-    """The bpy.props definition of parameter `p` (update: optional callback)."""
+def bpy_property(p, update=None, options=None):
+    """The bpy.props definition of parameter `p` (update: optional callback;
+    options: e.g. {"SKIP_SAVE"})."""
     kw = {"name": p.label, "description": p.description, "default": p.default}
     if update is not None:
         kw["update"] = update
+    if options is not None:
+        kw["options"] = options
     if p.kind in ("int", "float"):
         for key in ("min", "max", "soft_min", "soft_max"):
             if getattr(p, key) is not None:
@@ -111,11 +115,11 @@ def falloff_mask_image_picker(update=None):
                         "Use this image as the falloff mask", update)
 
 
-def terrain_annotations(update=None, param_list=None):
+def terrain_annotations(update=None, param_list=None, options=None):
     """{name: property} for every setting (terrain unless another list is given)."""
     out = {}
     for p in param_list or params.TERRAIN_OBJECT_PARAMS:
-        out[p.name] = bpy_property(p, update)
+        out[p.name] = bpy_property(p, update, options)
         if p.display_scale is not None:
             out[params.shown_name(p.name)] = display_property(p)
     if "reference_image" in out:
@@ -125,22 +129,25 @@ def terrain_annotations(update=None, param_list=None):
     return out
 
 
-def live_update(flag, regenerate):
+def live_update(flag, regenerate, restore=None):
     """The update callback of a PropertyGroup's settings: with Auto Update on and
     the object made by the add-on (`flag`: is_terrain, is_polyline), regenerate
-    its object (live editing from the sidebar, only when the user asked for it)."""
+    its object (live editing from the sidebar, only when the user asked for it).
+    On a failure `restore(obj)` puts back the settings of what is there."""
     def on_change(self, context):
-        if self.auto_update and getattr(self, flag):
+        if self.auto_update and getattr(self, flag) and not restoring():
             try:
                 regenerate(self.id_data, context)
             except Exception as e:  # an update callback cannot report; show it in the panel
+                if restore is not None:
+                    restore(self.id_data)
                 self.last_error = str(e)
             else:
                 self.last_error = ""
     return on_change
 
 
-_on_setting_changed = live_update("is_terrain", regenerate_object)
+_on_setting_changed = live_update("is_terrain", preview_regenerate, restore_settings)
 
 
 class FRACTERRA_PG_terrain(bpy.types.PropertyGroup):
@@ -151,7 +158,8 @@ FRACTERRA_PG_terrain.__annotations__ = {
     "is_terrain": BoolProperty(name="Fractal Terrain", default=False,
                                description="This object was made by Add > Mesh > Fractal Terrain"),
     "auto_update": BoolProperty(name="Auto Update", default=False,
-                                description="Regenerate the terrain whenever a setting changes"),
+                                description="Regenerate the terrain at its Preview level whenever a setting "
+                                            "changes (Regenerate builds the Final level)"),
     "last_error": StringProperty(name="Last Error", default="", options={"SKIP_SAVE"}),
     **terrain_annotations(_on_setting_changed),
     # Picking an erosion preset fills the erosion settings, then regenerates as any change does.

@@ -6,13 +6,14 @@ import bpy
 
 from ...core import params
 from . import erosion_layout
+from ..common.widgets import draw_setting
 
 
 def _prop(layout, data, name):
     """layout.prop, except that without the property split (the narrow sidebar)
     an enum gets its label beside it (Blender would drop it)."""
     if layout.use_property_split or data.bl_rna.properties[name].type != "ENUM":
-        layout.prop(data, name)
+        draw_setting(layout, data, name, params.PARAMS_BY_NAME.get(name))
         return
     row = layout.split(factor=0.4, align=True)
     row.label(text=data.bl_rna.properties[name].name)
@@ -44,7 +45,8 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
     if method in params.DYADIC_METHODS:
         _prop(sub, data, "levels")
         side = 2 ** data.levels + 1
-        sub.label(text=f"{side} x {side} vertices", icon="MESH_GRID")
+        sub.label(text=f"Final: {side} x {side} vertices", icon="MESH_GRID")
+        _prop(sub, data, "preview_levels")
     else:
         _prop(sub, data, "width")
         _prop(sub, data, "height")

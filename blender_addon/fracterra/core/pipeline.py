@@ -1,0 +1,62 @@
+"""The whole terrain in one library call (fracterra/pipeline.h,
+ft_terrain_build): generate -> landform -> erode -> maps, with one progress
+callback. bpy-free; the add-on's Erode step and the pytest suite call it, and
+`fracterra terrain --erode` calls the same function in the library, so the
+same settings give the same bits everywhere.
+"""
+
+import ctypes
+from ctypes import byref, c_void_p
+
+from .binding import enum_values, library
+from .erosion import MAPS, erosion_struct
+from .errors import InvalidArgumentError
+from .terrain import Heightfield, _ProgressBridge, attach_falloff_mask, attach_reference, terrain_struct
+
+
+def build_terrain(values, reference=None, falloff_mask=None, erosion=None, preset="NONE", maps=False, threads=0,
+                  progress=None):
+    """Builds the terrain of `values` (settings by name, as generate_terrain
+    takes them, with its reference and falloff mask); returns (Heightfield,
+    {map name: array.array('f')} or None). Close the Heightfield (or use `with`).
+
+    erosion: None (no erosion unless a preset) or {setting: value} of
+    ft_erosion_params (core.params.EROSION_PARAMS); the library decides
+    whether the terrain erodes as a torus (when it tiles). preset: "NONE",
+    "VALLEYS", "RAIN", "SCREE" or "LAND": fitted to the generated terrain, it
+    sets the pass counts and what it changes from the defaults; the rest comes
+    from `erosion`. maps: also return the six maps (ft_erosion_map order, names
+    in core.erosion.MAPS). progress: None or callable(fraction) -> True to
+    cancel (raises CancelledError)."""
+    lib = library()
+    t = terrain_struct(values)
+    _ref_buf = attach_reference(t, reference)
+    _mask_buf = attach_falloff_mask(t, falloff_mask)
+    e = erosion_struct(erosion) if erosion is not None else None
+    p = lib.build_params_type()
+    lib.check(lib.ft_build_params_init(byref(p)))
+    p.terrain = ctypes.pointer(t)
+    if e is not None:
+        p.erosion = ctypes.pointer(e)
+    presets = enum_values("build", "erosion_preset")
+    if preset not in presets:
+        raise InvalidArgumentError(f"the erosion preset must be one of {', '.join(presets)}, got {preset!r}")
+    p.erosion_preset = presets[preset]
+    p.threads = threads
+    bridge = _ProgressBridge(progress)
+    p.progress = bridge.c_fn
+    out = c_void_p()
+    handles = (c_void_p * len(MAPS))()
+    status = lib.ft_terrain_build(byref(p), byref(out), ctypes.cast(handles, ctypes.POINTER(c_void_p)) if maps else None)
+    bridge.reraise()
+    lib.check(status)
+    if not maps:
+        return Heightfield(out), None
+    arrays = {}
+    for name, h in zip(MAPS, handles):
+        with Heightfield(c_void_p(h)) as m:
+            arrays[name] = m.to_array()
+    return Heightfield(out), arrays
+
+
+__all__ = ["build_terrain"]

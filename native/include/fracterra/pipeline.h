@@ -1,0 +1,60 @@
+/// @file fracterra/pipeline.h
+/// One call for a whole terrain: generate -> landform -> erode -> maps, with
+/// one progress callback across the stages (ABI 2.13). The CLI's
+/// `terrain --erode` and the Blender add-on both call it, so a setting gives
+/// the same bits in every front end.
+#ifndef FRACTERRA_PIPELINE_H
+#define FRACTERRA_PIPELINE_H
+
+#include "core.h"
+#include "erosion.h"
+#include "terrain.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// Erosion presets (ft_build_params.erosion_preset): ft_erosion_preset's
+/// names ("valleys", ...) as values.
+enum {
+  FT_EROSION_PRESET_NONE = 0,     ///< none: the erosion params as given
+  FT_EROSION_PRESET_VALLEYS = 1,  ///< fluvial with uplift
+  FT_EROSION_PRESET_RAIN = 2,     ///< hydraulic
+  FT_EROSION_PRESET_SCREE = 3,    ///< thermal
+  FT_EROSION_PRESET_LAND = 4      ///< all three
+};
+
+/// Parameters of ft_terrain_build. Fill with ft_build_params_init, then set
+/// `terrain` (and `erosion` and/or `erosion_preset` to erode). Described by
+/// ft_params_field(FT_PARAMS_BUILD, ...).
+typedef struct ft_build_params {
+  uint32_t struct_size;              ///< sizeof(ft_build_params); set by _init
+  int32_t threads;                   ///< 0: all cores; 1..1024; used by every stage (the stages' own
+                                     ///< `threads` are ignored). The output never depends on it.
+  const ft_terrain_params* terrain;  ///< the terrain and its landform; required. Its progress is ignored.
+  const ft_erosion_params* erosion;  ///< NULL: no erosion (unless erosion_preset); else the erosion
+                                     ///< settings. Their `periodic`, `threads` and progress are ignored:
+                                     ///< a terrain that tiles is eroded as a torus of its true period
+                                     ///< (midpoint and additions: size - 1, the last row and column
+                                     ///< repeating the first, and still so after erosion; others: size).
+  int32_t erosion_preset;            ///< FT_EROSION_PRESET_*: fitted to the generated terrain (as
+                                     ///< ft_erosion_preset_fitted), it sets the pass counts and every
+                                     ///< value it changes from the defaults; the rest comes from
+                                     ///< `erosion` (or the defaults when NULL). Default NONE.
+  ft_progress_fn progress;           ///< one fraction 0..1 across all stages; non-zero cancels; may be NULL
+  void* progress_user;
+} ft_build_params;
+
+/// Fills `p` with the defaults (no terrain: set p->terrain). `p` must not be NULL.
+FT_API ft_status ft_build_params_init(ft_build_params* p);
+/// Builds the terrain `p` describes. On success `*out` owns a new
+/// heightfield (free with ft_heightfield_free); when `maps` is not NULL,
+/// maps[0 .. FT_MAP_COUNT - 1] are new heightfields indexed by ft_erosion_map
+/// (erosion.h), the maps of the result (eroded or not; free each). On
+/// failure or cancellation every output is NULL and nothing is leaked.
+FT_API ft_status ft_terrain_build(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,45 @@
+// The C ABI of the terrain pipeline (fracterra/pipeline.h).
+#include <memory>
+
+#include "capi/guard.hpp"
+#include "capi/handles.hpp"
+#include "fracterra/fracterra.h"
+#include "pipeline/build_params.hpp"
+#include "pipeline/terrain_build.hpp"
+
+using ft::capi::guarded;
+
+extern "C" {
+
+FT_API ft_status ft_build_params_init(ft_build_params* p) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    *p = ft::defaults_of<ft_build_params>(ft::build_param_table());
+  });
+}
+
+FT_API ft_status ft_terrain_build(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    if (maps)
+      for (int k = 0; k < FT_MAP_COUNT; ++k) maps[k] = nullptr;
+    ft::check_not_null("params", p);
+    ft::erosion::ErosionMaps m;
+    auto result = std::make_unique<ft_heightfield>();
+    result->hf = ft::build_terrain(*p, maps ? &m : nullptr);
+    // Every handle is made before any is handed out: a failure leaves all outputs NULL.
+    std::unique_ptr<ft_heightfield> made[FT_MAP_COUNT];
+    if (maps) {
+      ft::Heightfield* all[FT_MAP_COUNT] = {&m.drainage_area, &m.slope, &m.curvature,
+                                            &m.water_depth,   &m.eroded, &m.deposited};
+      for (int k = 0; k < FT_MAP_COUNT; ++k) {
+        made[k] = std::make_unique<ft_heightfield>();
+        made[k]->hf = std::move(*all[k]);
+      }
+      for (int k = 0; k < FT_MAP_COUNT; ++k) maps[k] = made[k].release();
+    }
+    *out = result.release();
+  });
+}
+
+}  // extern "C"

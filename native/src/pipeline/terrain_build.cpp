@@ -1,0 +1,132 @@
+#include "pipeline/terrain_build.hpp"
+
+#include <cstring>
+
+#include "core/error.hpp"
+#include "erosion/erosion_params.hpp"
+#include "erosion/presets.hpp"
+#include "pipeline/build_params.hpp"
+#include "terrain/terrain.hpp"
+#include "terrain/terrain_method.hpp"
+#include "terrain/terrain_params.hpp"
+
+namespace ft {
+namespace {
+
+// Share of the progress bar the generation fills when erosion follows
+// (erosion is the longer part).
+constexpr double kGenerationShare = 0.25;
+
+// A stage's share [start, start + span) of the build's one progress bar.
+struct Span {
+  Progress outer;
+  double start, span;
+  static int32_t call(void* self, double f) {
+    auto* s = static_cast<Span*>(self);
+    try {
+      s->outer.report(s->start + s->span * f);
+    } catch (const Error&) {
+      return 1;
+    }
+    return 0;
+  }
+};
+
+bool erodes(const ft_build_params& p) { return p.erosion || p.erosion_preset != FT_EROSION_PRESET_NONE; }
+
+// The given erosion settings over the table's defaults (upgraded from an
+// older caller's struct).
+ft_erosion_params given_erosion(const ft_build_params& p) {
+  if (!p.erosion) return defaults_of<ft_erosion_params>(erosion_param_table());
+  return upgraded(erosion_param_table(), *p.erosion);
+}
+
+// A preset sets which processes run (its pass counts, all three) and every
+// setting it changes from the defaults (the uplift fitted to the terrain):
+// what `fracterra erode --preset` gives without further flags, and what the
+// add-on's presets always did. The other settings stay as given.
+ft_erosion_params apply_preset(const ft_erosion_params& given, const ft_erosion_params& preset) {
+  static const ft_erosion_params defaults = defaults_of<ft_erosion_params>(erosion_param_table());
+  ft_erosion_params out = given;
+  for (const ft_param_info& row : erosion_param_table().rows) {
+    if (row.flags & (FT_PARAM_FLAG_STRUCT_SIZE | FT_PARAM_FLAG_DATA)) continue;
+    const auto* from = reinterpret_cast<const char*>(&preset) + row.offset;
+    if (std::memcmp(from, reinterpret_cast<const char*>(&defaults) + row.offset, row.size) != 0)
+      std::memcpy(reinterpret_cast<char*>(&out) + row.offset, from, row.size);
+  }
+  out.fluvial_steps = preset.fluvial_steps;
+  out.hydraulic_iterations = preset.hydraulic_iterations;
+  out.thermal_iterations = preset.thermal_iterations;
+  return out;
+}
+
+// A dyadic periodic grid (period_overlap 1) repeats its first row and column
+// as the last: its torus is the grid without them, (W - 1) x (H - 1), at the
+// same spacing.
+Heightfield torus_of(const Heightfield& hf, int overlap) {
+  const int w = hf.width() - overlap, h = hf.height() - overlap;
+  Heightfield t(w, h);
+  for (int j = 0; j < h; ++j) std::memcpy(t.data() + size_t(j) * w, hf.data() + size_t(j) * hf.width(), sizeof(float) * w);
+  if (hf.world_size() > 0) t.set_world_size(hf.world_size() * double(w - 1) / double(hf.width() - 1));
+  return t;
+}
+
+// The torus back on the full grid: row and column 0 copied to the last, so it still tiles.
+Heightfield untorus(const Heightfield& t, int overlap, double world_size) {
+  const int w = t.width() + overlap, h = t.height() + overlap;
+  Heightfield hf(w, h);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) hf.data()[size_t(j) * w + i] = t.at(i % t.width(), j % t.height());
+  hf.set_world_size(world_size);
+  return hf;
+}
+
+}  // namespace
+
+erosion::ErosionConfig build_erosion_config(const ft_build_params& p, const Heightfield& terrain) {
+  ft_erosion_params e = given_erosion(p);
+  if (p.erosion_preset != FT_EROSION_PRESET_NONE)
+    e = apply_preset(e, erosion::to_c(erosion::erosion_preset(erosion_preset_name(p.erosion_preset), terrain)));
+  e.progress = nullptr, e.progress_user = nullptr;
+  erosion::ErosionConfig c = erosion::from_c(e);
+  // One rule for every front end: a terrain that tiles erodes as a torus.
+  c.periodic = tiles_periodically(*p.terrain);
+  c.threads = p.threads;
+  return c;
+}
+
+Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* maps) {
+  const ft_build_params p = upgraded(build_param_table(), given);
+  check_ranges(build_param_table(), &p);
+  check_not_null("terrain", p.terrain);
+  ft_terrain_params t = upgraded(terrain_param_table(), *p.terrain);
+  t.threads = p.threads;
+  // Everything is checked before any work: the terrain, then the erosion
+  // settings (their ranges; the preset's name is the table's).
+  validate_terrain_params(t);
+  const bool erode = erodes(p) || maps;
+  if (erode) erosion::from_c(given_erosion(p));
+
+  const Progress progress(p.progress, p.progress_user);
+  Span generation{progress, 0.0, erode ? kGenerationShare : 1.0};
+  t.progress = &Span::call, t.progress_user = &generation;
+  Heightfield hf = generate_terrain(t);  // with its landform
+  if (!erode) return hf;
+
+  ft_build_params q = p;
+  q.terrain = &t;
+  erosion::ErosionConfig c = build_erosion_config(q, hf);
+  Span erosion_span{progress, kGenerationShare, 1.0 - kGenerationShare};
+  c.progress = Progress(&Span::call, &erosion_span);
+  const int overlap = c.periodic ? terrain_method(t.method).period_overlap : 0;
+  const double world_size = hf.world_size();
+  if (overlap == 0) return erosion::erode(hf, c, maps);
+  const Heightfield eroded = erosion::erode(torus_of(hf, overlap), c, maps);
+  if (maps)
+    for (Heightfield* m : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth, &maps->eroded,
+                           &maps->deposited})
+      *m = untorus(*m, overlap, world_size);
+  return untorus(eroded, overlap, world_size);
+}
+
+}  // namespace ft

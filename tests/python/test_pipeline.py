@@ -1,0 +1,71 @@
+"""One pipeline, the same bits in every front end: `fracterra terrain
+--erode` (the CLI) and core.build_terrain (the binding the add-on uses) call
+the library's ft_terrain_build. Checked for a periodic midpoint terrain and a
+spectral one (both tile: eroded as a torus) and a bounded fbm one, with and
+without erosion. tests/blender/test_erosion.py closes the triangle: Blender's
+Erode step against core.build_terrain.
+
+Before the pipeline the CLI eroded only spectral terrains as a torus and the
+add-on every periodic one: these cases differed (issue 25)."""
+
+import subprocess
+
+import numpy as np
+import pytest
+
+from test_params import _cli
+
+CASES = {
+    "periodic midpoint": ({"method": "MIDPOINT", "levels": 6, "seed": 3, "periodic": True},
+                          ["--method", "midpoint", "--levels", "6", "--seed", "3", "--periodic"]),
+    "spectral": ({"method": "SPECTRAL", "width": 64, "height": 48, "seed": 3},
+                 ["--method", "spectral", "--size", "64x48", "--seed", "3"]),
+    "bounded fbm": ({"method": "FBM", "width": 50, "height": 40, "seed": 3},
+                    ["--method", "fbm", "--size", "50x40", "--seed", "3"]),
+}
+
+
+@pytest.mark.parametrize("preset", ["NONE", "LAND", "VALLEYS"])
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_cli_and_binding_build_the_same_bits(core, tmp_path, case, preset):
+    values, flags = CASES[case]
+    out = tmp_path / "t.npy"
+    erode = [] if preset == "NONE" else ["--erode", preset.lower()]
+    subprocess.run([_cli(), "terrain", *flags, *erode, "--threads", "2", "--out", str(out)], check=True)
+    cli = np.load(out)
+    hf, maps = core.build_terrain(values, preset=preset, threads=1)
+    with hf:
+        ours = np.frombuffer(hf.to_array(), dtype=np.float32).reshape(hf.height, hf.width)
+    assert maps is None
+    assert cli.dtype == np.float32 and cli.shape == ours.shape
+    assert np.array_equal(cli, ours), f"{case}, {preset}: {np.count_nonzero(cli != ours)} samples differ"
+
+
+def test_an_eroded_periodic_midpoint_terrain_still_tiles(core):
+    values, _ = CASES["periodic midpoint"]
+    hf, maps = core.build_terrain(values, preset="LAND", maps=True)
+    with hf:
+        z = np.frombuffer(hf.to_array(), dtype=np.float32).reshape(hf.height, hf.width)
+    assert np.array_equal(z[-1], z[0]) and np.array_equal(z[:, -1], z[:, 0])
+    area = np.frombuffer(maps["drainage_area"], dtype=np.float32).reshape(z.shape)
+    assert np.array_equal(area[-1], area[0])
+
+
+def test_custom_erosion_settings_pass_through_and_a_preset_sets_only_its_own(core):
+    values, _ = CASES["bounded fbm"]
+    rates = {"thermal_iterations": 0, "talus_degrees": 60.0}
+    with core.build_terrain(values, erosion=rates, preset="SCREE")[0] as steep, \
+            core.build_terrain(values, preset="SCREE")[0] as default:
+        # scree sets the passes; the talus angle stays the one given
+        assert steep.to_array() != default.to_array()
+    with core.build_terrain(values, erosion={"thermal_iterations": 40}, preset="NONE")[0] as custom, \
+            core.build_terrain(values, preset="SCREE")[0] as scree:
+        assert custom.to_array() == scree.to_array()
+
+
+def test_bad_settings_are_refused_with_the_range(core):
+    values, _ = CASES["bounded fbm"]
+    with pytest.raises(core.InvalidArgumentError, match=r"evaporation.*\[0, 1\]"):
+        core.build_terrain(values, erosion={"evaporation": 2.0})
+    with pytest.raises(core.InvalidArgumentError, match="NONE, VALLEYS"):
+        core.build_terrain(values, preset="GLACIERS")
