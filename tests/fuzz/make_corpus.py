@@ -270,4 +270,67 @@ put_grid("hurst_nan_sample", 4, initialised("hurst"), values=[float("nan")] + [1
 put_grid("clouds_median", 5, initialised("clouds"))
 put_grid("clouds_16bit_height", 5, initialised("clouds", bit_depth=16, threshold_is_quantile=0, threshold=1.0))
 put_grid("clouds_short_buffer", 5, initialised("clouds"), fixups=3)
+# ---------------------------------------------------------------- erosion (ft_erode)
+# [w - 3] [h - 3] [flags: 1 periodic, 2 raw floats, 4 maps, 8 uplift follows, 16 two threads]
+# [fluvial] [hydraulic] [thermal] [13 rate selectors, 0 = default] [world] [scale] [heights].
+def erosion(w, h, flags, fluvial, hydraulic, thermal, heights, selectors=bytes(13), world=0, scale=128):
+    fmt = "<%df" % len(heights) if flags & 2 else "<%dh" % len(heights)
+    return bytes([w - 3, h - 3, flags, fluvial, hydraulic, thermal]) + selectors + bytes([world, scale]) + \
+        struct.pack(fmt, *heights)
+
+
+def bumps(w, h, amp):
+    return [int(amp * (((x * 7 + y * 13) % 11) + ((x - w // 2) ** 2 + (y - h // 2) ** 2 < w * h // 8) * 8))
+            for y in range(h) for x in range(w)]
+
+
+put("capi_erosion", "land_17x17", erosion(17, 17, 4, 8, 8, 4, bumps(17, 17, 100)))
+put("capi_erosion", "valleys_33x20_uplift", erosion(33, 20, 8, 16, 0, 0, bumps(33, 20, 50),
+                                                    selectors=bytes([0, 0, 0, 0, 72] + [0] * 8)))
+put("capi_erosion", "periodic_two_threads_16x16", erosion(16, 16, 1 | 16 | 4, 6, 6, 6, bumps(16, 16, 30)))
+put("capi_erosion", "rain_raw_floats_9x9", erosion(9, 9, 2, 0, 16, 0, [((x * y) % 5) * 0.3 for y in range(9)
+                                                                       for x in range(9)]))
+put("capi_erosion", "plain_at_zero_3x3", erosion(3, 3, 0, 4, 0, 4, [0] * 9))
+# Issue 25: 65 x 65 zeros with +1e38 at (20, 20) and -1e38 at (40, 40), 60 fluvial steps (it hung).
+big = [0.0] * (40 * 65 + 41)
+big[20 * 65 + 20], big[40 * 65 + 40] = 1e38, -1e38
+regressions = os.path.join(HERE, "regressions", "capi_erosion")
+os.makedirs(regressions, exist_ok=True)
+with open(os.path.join(regressions, "issue25_heights_1e38"), "wb") as f:
+    f.write(erosion(65, 65, 2, 60, 0, 0, big))
+
+# ---------------------------------------------------------------- RAW16 + sidecar
+# [uint16 count of sample bytes] [samples] [sidecar JSON text].
+def raw16(samples, sidecar):
+    data = b"".join(struct.pack("<H", v) for v in samples)
+    return struct.pack("<H", len(data)) + data + sidecar.encode()
+
+
+put("raw16", "3x2_range", raw16(range(0, 60000, 10000),
+                                json.dumps({"format": "raw16", "width": 3, "height": 2, "min": -1.5, "max": 2.5,
+                                            "world_size": 10})))
+put("raw16", "square_no_sidecar", raw16([1, 2, 3, 4, 5, 6, 7, 8, 9], ""))
+put("raw16", "huge_range", raw16([0, 65535], json.dumps({"width": 2, "height": 1, "min": -1e308, "max": 1e308})))
+put("raw16", "size_mismatch", raw16([1, 2, 3], json.dumps({"width": 2, "height": 2})))
+put("raw16", "not_json", raw16([1], "{width: 1"))
+
+# ---------------------------------------------------------------- tile-set manifest
+# manifest.json text, NUL, journal text.
+def manifest(columns=2, rows=1, tile=64, complete=True):
+    tiles = [{"column": c, "row": r, "file": "tile_%d_%d.npy" % (c, r), "x0": c * tile, "y0": r * tile,
+              "width": tile + 1, "height": tile + 1, "crc32": None} for r in range(rows) for c in range(columns)]
+    return json.dumps({"format": "fracterra-tileset", "version": 1, "terrain": {"method": "midpoint", "seed": 1},
+                       "tile": tile, "tile_format": "npy", "width": columns * tile + 1, "height": rows * tile + 1,
+                       "columns": columns, "rows": rows, "sample_spacing": 0.1, "world_size": [12.8, 6.4],
+                       "height_range": {"min": -1, "max": 1, "how": "exact"}, "complete": complete,
+                       "tiles": tiles}, indent=1)
+
+
+put("manifest", "complete_2x1", manifest())
+put("manifest", "journal", manifest(complete=False) + "\0" +
+    '{"column":1,"row":0,"crc32":123}\n{"column":9,"row":0,"crc32":1}\n{"column":0,"ro')
+put("manifest", "tiles_not_objects", manifest().replace('"tiles": [', '"tiles": [1, '))
+put("manifest", "array", "[1, 2, 3]")
+put("manifest", "terrain_a_number", manifest().replace('"terrain": {"method": "midpoint", "seed": 1}', '"terrain": 5'))
+
 print("corpus written to", CORPUS)

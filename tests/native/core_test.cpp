@@ -9,10 +9,14 @@
 #include <filesystem>
 #include <fstream>
 #include <vector>
+#include <omp.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "core/parallel.hpp"
 #include "core/rng.hpp"
 #include "io/atomic_file.hpp"
 
@@ -173,5 +177,39 @@ TEST(Rng, DispatchTakesTheFastestPathTheCpuHas) {
     EXPECT_STREQ(dispatch_path(), expected);
   }
 }
+}  // namespace
+}  // namespace ft
+
+namespace ft {
+namespace {
+
+// Issue 25: on a busy machine a team of OpenMP threads loses to one. With
+// a busy process per core running, other processes leave no core free, so
+// a call takes one thread whatever it asked (other load only adds to it);
+// the override gives every core back.
+TEST(Threads, ABusyMachineGetsOneThreadAndTheOverrideAllCores) {
+  const int cores = omp_get_num_procs();
+  std::vector<pid_t> busy;
+  for (int c = 0; c < cores; ++c) {
+    const pid_t pid = fork();
+    if (pid == 0)
+      for (;;) asm volatile("");  // a busy loop the compiler keeps
+    ASSERT_GT(pid, 0);
+    busy.push_back(pid);
+  }
+  ::unsetenv("FT_THREADS_IGNORE_LOAD");
+  // The children are runnable as soon as they exist; a few samples ride
+  // out an instant when the kernel has one of them mid-switch.
+  int free_cores = cores;
+  for (int k = 0; k < 20 && free_cores > 1; ++k) free_cores = cores_free_of_other_load();
+  EXPECT_EQ(free_cores, 1);
+  EXPECT_EQ(resolve_threads(0), 1);
+  EXPECT_EQ(resolve_threads(2), 1);
+  ::setenv("FT_THREADS_IGNORE_LOAD", "1", 1);
+  EXPECT_EQ(cores_free_of_other_load(), cores);
+  EXPECT_EQ(resolve_threads(1), 1);
+  for (const pid_t pid : busy) kill(pid, SIGKILL), waitpid(pid, nullptr, 0);
+}
+
 }  // namespace
 }  // namespace ft

@@ -4,14 +4,30 @@
 
 #include <omp.h>
 
+#include <algorithm>
+
 #include "core/error.hpp"
 
 namespace ft {
 
-// Resolves a user thread count (0 = all cores) to what OpenMP should use.
+// How many cores other processes leave free right now (at least 1): the
+// cores minus the tasks of other processes that are runnable at this
+// instant (/proc/loadavg), this process's own runnable threads not counted.
+// FT_THREADS_IGNORE_LOAD=1 gives all cores (for benchmarks that compare).
+int cores_free_of_other_load();
+
+// Resolves a user thread count (0 = all cores) to what OpenMP should use:
+// at most the cores other processes leave free. On a busy machine an
+// OpenMP team is slower than one thread: each barrier (a fluvial step has
+// dozens) spin-waits for a thread the kernel descheduled (2 threads at load
+// 4: 2.3-6.7 s against 1.2-1.8 s on one, issue 25). libgomp reads its wait
+// policy (OMP_WAIT_POLICY, GOMP_SPINCOUNT) once, when it loads, before this
+// library (and in Blender, before any add-on), so the library cannot make
+// the waits passive; it takes fewer threads instead. Results never depend
+// on the thread count, so this changes only the time.
 inline int resolve_threads(int requested) {
   check_int_range("threads", requested, 0, 1024);
-  return requested == 0 ? omp_get_max_threads() : requested;
+  return std::min(requested == 0 ? omp_get_max_threads() : requested, cores_free_of_other_load());
 }
 
 }  // namespace ft

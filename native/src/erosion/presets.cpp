@@ -59,6 +59,12 @@ std::vector<ErosionPreset> erosion_presets() {
   return all;
 }
 
+std::vector<std::string> erosion_preset_names() {
+  std::vector<std::string> names;
+  for (const auto& r : kRecipes) names.push_back(r.preset.id);
+  return names;
+}
+
 ErosionConfig erosion_preset(const std::string& name) {
   const std::string k = key(name);
   for (const auto& r : kRecipes) {

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "core/buffer.hpp"
+#include "core/kernel_clones.hpp"
 #include "erosion/erosion.hpp"
 
 namespace ft::erosion {
@@ -23,7 +24,7 @@ namespace {
 // parameters of functions that are not inlined (GCC keeps restrict only on
 // parameters): the loops then vectorise, and are built for AVX-512, AVX2
 // and the baseline (the same bits on each, as in hydraulic.cpp).
-[[gnu::noinline]] __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"))) void shares_interior(const float* __restrict z, float* __restrict share, int64_t row, int32_t x0,
+[[gnu::noinline]] FT_KERNEL_CLONES void shares_interior(const float* __restrict z, float* __restrict share, int64_t row, int32_t x0,
                                        int32_t x1, const int64_t* off, const float* talus, float half_rate) {
   const int64_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
   const float t[8] = {talus[0], talus[1], talus[2], talus[3], talus[4], talus[5], talus[6], talus[7]};
@@ -41,7 +42,7 @@ namespace {
   }
 }
 
-[[gnu::noinline]] __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"))) void moves_interior(const float* __restrict z, const float* __restrict share,
+[[gnu::noinline]] FT_KERNEL_CLONES void moves_interior(const float* __restrict z, const float* __restrict share,
                                       float* __restrict next, int64_t row, int32_t x0, int32_t x1, const int64_t* off,
                                       const float* talus) {
   const int64_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};

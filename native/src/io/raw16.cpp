@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <sys/stat.h>
 
+#include <cfloat>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -45,9 +46,10 @@ Heightfield decode_raw16(const std::string& bytes, const std::string& sidecar, c
     if (j.contains("min") && j.contains("max") && j["min"].is_number() && j["max"].is_number()) {
       lo = j["min"].get<double>();
       hi = j["max"].get<double>();
-      if (!std::isfinite(lo) || !std::isfinite(hi) || hi < lo)
+      // Heights are floats: a range beyond FLT_MAX would make them infinite.
+      if (!(std::fabs(lo) <= FLT_MAX) || !(std::fabs(hi) <= FLT_MAX) || hi < lo)
         fail(FT_ERR_FORMAT, "the sidecar of '" + name + "' has min " + format_number(lo) + " and max " +
-                                format_number(hi));
+                                format_number(hi) + " (both finite floats, min <= max, are needed)");
     }
     if (j.contains("world_size") && j["world_size"].is_number()) world = j["world_size"].get<double>();
   } else {

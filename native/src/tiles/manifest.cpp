@@ -5,6 +5,7 @@
 #include <zlib.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 
@@ -69,14 +70,52 @@ nlohmann::json terrain_identity(const ft_terrain_params& p) {
   return j;
 }
 
+namespace {
+
+// What the readers of a manifest take from it, by type and range, so that a
+// damaged or hand-edited file is refused here with the field named instead
+// of failing inside the JSON library (its type errors are internal errors).
+std::string manifest_problem(const nlohmann::json& m) {
+  if (!m.is_object()) return "not a JSON object";
+  if (m.value("format", nlohmann::json()) != "fracterra-tileset") return "\"format\" is not \"fracterra-tileset\"";
+  auto count = [&](const nlohmann::json& o, const char* key, int64_t lo) {
+    return o.contains(key) && o[key].is_number_integer() && o[key].get<int64_t>() >= lo &&
+           o[key].get<int64_t>() <= int64_t(INT32_MAX);
+  };
+  for (const char* key : {"tile", "width", "height", "columns", "rows"})
+    if (!count(m, key, 1)) return std::string("\"") + key + "\" is not an integer in [1, 2^31)";
+  if (!m.contains("terrain") || !m["terrain"].is_object()) return "\"terrain\" is not an object";
+  if (!m.contains("sample_spacing") || !m["sample_spacing"].is_number()) return "\"sample_spacing\" is not a number";
+  const nlohmann::json* range = m.contains("height_range") ? &m["height_range"] : nullptr;
+  if (!range || !range->is_object() || !range->contains("min") || !range->contains("max") ||
+      !(*range)["min"].is_number() || !(*range)["max"].is_number())
+    return "\"height_range\" has no numbers \"min\" and \"max\"";
+  if (m.contains("complete") && !m["complete"].is_boolean()) return "\"complete\" is not true or false";
+  const auto columns = m["columns"].get<int64_t>(), rows = m["rows"].get<int64_t>();
+  if (!m.contains("tiles") || !m["tiles"].is_array() || int64_t(m["tiles"].size()) != columns * rows)
+    return "\"tiles\" is not a list of columns x rows tiles";
+  for (const nlohmann::json& t : m["tiles"])
+    if (!t.is_object() || !t.contains("file") || !t["file"].is_string() || !count(t, "x0", 0) ||
+        !count(t, "y0", 0) || !t.contains("crc32") || !(t["crc32"].is_null() || t["crc32"].is_number_unsigned()) ||
+        (t["crc32"].is_number_unsigned() && t["crc32"].get<uint64_t>() > UINT32_MAX))
+      return "a tile is not an object with \"file\", \"x0\", \"y0\" and \"crc32\"";
+  return "";
+}
+
+}  // namespace
+
+nlohmann::json parse_manifest(const std::string& text, const std::string& path) {
+  const nlohmann::json m = nlohmann::json::parse(text, nullptr, false);
+  const std::string problem = m.is_discarded() ? "not JSON" : manifest_problem(m);
+  if (!problem.empty())
+    fail(FT_ERR_IO, "'" + path + "' is not a tile set manifest (" + problem + "); remove it or choose another folder");
+  return m;
+}
+
 std::optional<nlohmann::json> read_manifest(const std::string& dir) {
   const std::string path = path_in(dir, kManifestName);
   if (!std::filesystem::exists(path)) return std::nullopt;
-  try {
-    return nlohmann::json::parse(io::read_file(path));
-  } catch (const nlohmann::json::exception& e) {
-    fail(FT_ERR_IO, "'" + path + "' is not a tile set manifest (" + e.what() + "); remove it or choose another folder");
-  }
+  return parse_manifest(io::read_file(path), path);
 }
 
 void write_manifest(const std::string& dir, const nlohmann::json& m) {

@@ -26,8 +26,13 @@ inline constexpr const char* kJournalName = "manifest.journal";
 // as its size and the CRC-32 of its float32 values.
 nlohmann::json terrain_identity(const ft_terrain_params& p);
 
+// A manifest's text (from `path`, named in messages): throws FT_ERR_IO when
+// it is not JSON or lacks a field its readers take (the format, tile, width,
+// height, columns, rows, terrain, sample_spacing, height_range, and columns x
+// rows tiles with file, x0, y0 and crc32), naming what is wrong.
+nlohmann::json parse_manifest(const std::string& text, const std::string& path);
 // The manifest in `dir`, or nothing when there is none; throws FT_ERR_IO for
-// one that cannot be parsed.
+// one that parse_manifest refuses.
 std::optional<nlohmann::json> read_manifest(const std::string& dir);
 void write_manifest(const std::string& dir, const nlohmann::json& m);
 
