@@ -163,7 +163,7 @@ def main():
         n = len(obj.data.vertices)
         side = math.isqrt(n)
         if side * side == n:  # its grid gets the same height and slope attributes, for the same material
-            from fracterra.blender import mesh_build
+            from fracterra.blender.build import mesh as mesh_build
             co = mesh_build.array.array("f", [0.0]) * (3 * n)
             obj.data.vertices.foreach_get("co", co)
             mesh_build.set_height_slope(obj.data, co, side, side)

@@ -58,7 +58,7 @@ def timed(fn):
 
 
 def bench_fracterra(args):
-    from fracterra.blender import terrain_build
+    from fracterra.blender.build import terrain as terrain_build
     from fracterra.core import params
     add, regen, own_add, own_regen = [], [], [], []
     for i in range(args.repeat):
@@ -114,7 +114,7 @@ def main():
     ok, status = core.status()
     if not ok:
         raise RuntimeError(status)
-    from fracterra.blender.prefs import preferences
+    from fracterra.blender.common.preferences import preferences
     prefs = preferences(bpy.context)
     if prefs is not None and args.threads is not None:
         prefs.threads = args.threads

@@ -17,7 +17,32 @@
 # Needs root (debootstrap, chroot, mounts). Exit code 77 = cannot run here.
 set -euo pipefail
 
-mirror=http://deb.debian.org/debian
+# The Debian archive this machine's apt already uses: the first source of
+# the host's own release (its suite is the codename: not -security or
+# -updates), one-line (sources.list, *.list) or deb822 (*.sources), so the
+# script works wherever apt works and names no host itself.
+host_archive() {
+  local codename files=()
+  codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+  [ -f /etc/apt/sources.list ] && files+=(/etc/apt/sources.list)
+  for f in /etc/apt/sources.list.d/*.list /etc/apt/sources.list.d/*.sources; do [ -f "$f" ] && files+=("$f"); done
+  ((${#files[@]})) || return 1
+  awk -v codename="$codename" '
+    function take(uri) { sub(/\/+$/, "", uri); print uri; found = 1; exit }
+    # One-line: deb [options] URI SUITE COMPONENTS...
+    /^[ \t]*deb[ \t]/ {
+      sub(/^[ \t]*deb[ \t]+/, ""); if ($0 ~ /^\[/) sub(/^\[[^]]*\][ \t]*/, "")
+      split($0, f, /[ \t]+/); if (f[2] == codename) take(f[1]); next
+    }
+    # deb822: paragraphs of "Field: value" lines, blank lines between.
+    /^[ \t]*$/ { if (types ~ /(^| )deb( |$)/ && (" " suites " ") ~ (" " codename " ")) { split(uris, u, / /); take(u[1]) }
+                  types = uris = suites = ""; next }
+    /^Types:/ { types = $0; sub(/^Types:[ \t]*/, "", types) }
+    /^URIs:/ { uris = $0; sub(/^URIs:[ \t]*/, "", uris) }
+    /^Suites:/ { suites = $0; sub(/^Suites:[ \t]*/, "", suites) }
+    END { exit !found }
+  ' < <(for f in "${files[@]}"; do cat "$f"; echo; done)  # a blank line ends each file's last paragraph
+}
 packages="blender python3-numpy povray povray-includes"
 recipe="2 $packages"  # change the number when the steps below change
 
@@ -62,6 +87,8 @@ if [ -x "$root/usr/bin/blender" ] && [ "$(cat "$root/.fracterra-recipe" 2>/dev/n
 fi
 tmp="$root.tmp"
 rm -rf "$tmp"
+mirror=$(host_archive) ||
+  { echo "blender4-root: no Debian archive of this release in /etc/apt/sources.list* to take trixie from" >&2; exit 77; }
 start=$SECONDS
 debootstrap --variant=minbase trixie "$tmp" "$mirror" >"$root.log" 2>&1 ||
   { echo "blender4-root: debootstrap failed, see $root.log" >&2; exit 1; }

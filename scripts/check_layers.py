@@ -32,7 +32,24 @@ Third-party headers with one home: OpenSubdiv only in subdiv/, CLI11 only in
 cli/.
 
 A folder that is not in the table is an error too: a new layer gets its rank
-here and in the README. Usage:
+here and in the README.
+
+Namespaces follow the folders, one layer = one namespace, as OpenSubdiv's
+Sdc/Vtr/Far do: core/ is the root namespace `ft` (everything stands on it);
+every other folder X/ is `ft::X` (io/ -> ft::io, noise/ -> ft::noise, ...;
+cli/ -> ft::cli, capi/ -> ft::capi), except povray/, which is `ft::pov` (it
+was so before the rule, and `pov` names the language its files write).
+Private helpers go in `ft::X::detail` or an anonymous namespace; callers in
+other layers qualify (`io::read_heightfield`) or put a using-declaration at the
+top of a .cpp, never `using namespace` in a header. A layer's namespace may
+share its name with a type (`ft::mesh` beside `ft::Mesh`) or with a function
+inside another namespace, never with a function or variable of its own
+enclosing scope `ft`. Every .hpp/.cpp of native/src/X/ and native/cli/ must
+open its layer's namespace (or one nested in it) and no other `ft` namespace;
+a file may open none only if it is capi/'s `extern "C"` code or holds only
+preprocessor lines. NAMESPACE_TODO lists what is still in plain `ft`.
+
+Usage:
 
     scripts/check_layers.py [--root DIR]     # exit 1 and one line per violation
     scripts/check_layers.py --self-test      # the check catches planted bad includes
@@ -50,18 +67,28 @@ RANK = {
     "terrain": 2,
     "polyline": 3,
     "subdiv": 4, "povray": 4,
-    "refine": 3,  # DEM refinement uses terrain/
-    "erosion": 4,  # erosion uses analysis/
+    "refine": 3,  # a real DEM refined by terrain/'s midpoint method
+    "erosion": 4,  # fluvial, hydraulic, thermal; uses analysis/
     "tiles": 3,  # tile sets: windows of terrain/ written through io/
     "pipeline": 5,  # the terrain pipeline: terrain/ then erosion/
     "tables": 6,  # every capability's parameter table, by kind
     "capi": 7, "cli": 7,
 }
 TOP = {"capi", "cli"}  # may include any public header
+# The namespace of each layer, where it is not ft::<folder>.
+NAMESPACE = {"core": "ft", "povray": "ft::pov"}
+# Still in plain `ft`, to be moved into their layer's namespace (then emptied):
+# whole layers, and single files of layers already moved.
+NAMESPACE_TODO = {"terrain", "polyline",
+                  "erosion/erosion_params.hpp", "erosion/erosion_params.cpp"}
+# Layers whose files may open no namespace at all (the extern "C" boundary).
+NO_NAMESPACE_OK = {"capi"}
 # Third-party include prefixes and the only layers that may include them.
 THIRD_PARTY_HOME = {"opensubdiv/": {"subdiv"}, "CLI/": {"cli"}}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')
+OPENS = re.compile(r"^\s*namespace\s+(ft(?:::\w+)*)\s*\{", re.M)
+COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
 SUFFIXES = {".h", ".hpp", ".cpp", ".inc", ".ipp"}
 
 
@@ -71,8 +98,31 @@ def layer_of(path, root):
     return "cli" if rel.parts[0] == "cli" else rel.parts[1]
 
 
+def namespace_of(layer):
+    return NAMESPACE.get(layer, f"ft::{layer}")
+
+
+def namespace_violations(path, layer, where, text):
+    """One message if the file opens another layer's namespace, or none where it must open one."""
+    rel = "/".join(where.parts[-2:])
+    if layer in NAMESPACE_TODO or rel in NAMESPACE_TODO:
+        return []
+    own = namespace_of(layer)
+    opened = OPENS.findall(text)
+    wrong = sorted({n for n in opened if n != own and not n.startswith(own + "::")})
+    if wrong:
+        return [f"{where}: opens namespace {', '.join(wrong)}; files of {layer}/ are in {own} "
+                f"(or {own}::detail)"]
+    if not opened and layer not in NO_NAMESPACE_OK:
+        code = [l for l in COMMENT.sub("", text).splitlines() if l.strip() and not l.lstrip().startswith("#")]
+        if code:
+            return [f"{where}: declares code outside namespace {own}; open `namespace {own} {{`"]
+    return []
+
+
 def violations(root):
-    """One message per include that points upwards or sideways (or into an unknown layer)."""
+    """One message per include that points upwards or sideways (or into an unknown layer), and
+    per file outside its layer's namespace."""
     out = []
     files = sorted(p for d in (root / "native" / "src", root / "native" / "cli") if d.is_dir()
                    for p in d.rglob("*") if p.suffix in SUFFIXES and p.is_file())
@@ -84,7 +134,9 @@ def violations(root):
         if layer not in RANK:
             continue
         where = path.relative_to(root)
-        for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+        text = path.read_text(errors="replace")
+        out.extend(namespace_violations(path, layer, where, text))
+        for number, line in enumerate(text.splitlines(), 1):
             m = INCLUDE.match(line)
             if not m:
                 continue
@@ -120,10 +172,14 @@ def self_test():
     """Plants one bad include of each kind in a scratch tree and checks each is reported,
     and that the same tree without them passes."""
     good = {
-        "native/src/core/a.hpp": '#include "core/b.hpp"\n#include "fracterra/core.h"\n',
+        "native/src/core/a.hpp": '#include "core/b.hpp"\n#include "fracterra/core.h"\nnamespace ft {\n}\n',
+        "native/src/core/m.hpp": "// macros only\n#pragma once\n#define FT_X 1\n",
+        "native/src/noise/n.cpp": "namespace ft::noise {\nnamespace {\n}\n}\nnamespace ft::noise::detail {\n}\n",
         "native/src/terrain/t.cpp": '#include "noise/fbm.hpp"\n#include "fracterra/terrain.h"\n',
-        "native/src/subdiv/s.cpp": "#include <opensubdiv/far/topologyRefiner.h>\n",
-        "native/cli/c.cpp": '#include "povray/scene.hpp"\n#include <CLI/CLI.hpp>\n',
+        "native/src/subdiv/s.cpp": "#include <opensubdiv/far/topologyRefiner.h>\nnamespace ft::subdiv {}\n",
+        "native/src/povray/p.cpp": "namespace ft::pov {\n}\n",
+        "native/src/capi/x.cpp": 'extern "C" int ft_x() { return 0; }\n',
+        "native/cli/c.cpp": '#include "povray/scene.hpp"\n#include <CLI/CLI.hpp>\nnamespace ft::cli {}\n',
     }
     bad = {
         "native/src/core/up.hpp": ('#include "terrain/terrain.hpp"\n', "upwards"),
@@ -133,6 +189,9 @@ def self_test():
         "native/cli/abi.cpp": ('#include "capi/guard.hpp"\n', "sideways"),
         "native/src/terrain/osd.cpp": ("#include <opensubdiv/far/topologyRefiner.h>\n", "only subdiv/"),
         "native/src/newlayer/x.hpp": ('#include "core/error.hpp"\n', "without a rank"),
+        "native/src/io/root.cpp": ("namespace ft {\nvoid f();\n}\n", "opens namespace ft;"),
+        "native/src/analysis/other.hpp": ("namespace ft::io {\n}\n", "opens namespace ft::io"),
+        "native/src/contour/bare.cpp": ("int f() { return 1; }\n", "outside namespace ft::contour"),
     }
     with tempfile.TemporaryDirectory() as d:
         root = Path(d)
@@ -152,7 +211,7 @@ def self_test():
         if missed or len(found) != len(bad):
             print("self-test: planted bad includes not reported (or extra reports):", *missed, *found, sep="\n  ")
             return 1
-    print(f"self-test: all {len(bad)} planted bad includes reported, the clean tree passes")
+    print(f"self-test: all {len(bad)} planted bad includes and namespaces reported, the clean tree passes")
     return 0
 
 
@@ -167,9 +226,9 @@ def main():
     for v in found:
         print(v)
     if found:
-        print(f"{len(found)} include(s) against the layer order (scripts/check_layers.py)")
+        print(f"{len(found)} include(s) or namespace(s) against the layer order (scripts/check_layers.py)")
         return 1
-    print("layers: every include points downwards")
+    print("layers: every include points downwards, every file is in its layer's namespace")
     return 0
 
 

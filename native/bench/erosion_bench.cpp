@@ -32,7 +32,7 @@ ft::Heightfield grid(int32_t n) {
   const char* dir = std::getenv("FT_ANT_DIR");
   const std::string path = dir ? std::string(dir) + "/ant_" + std::to_string(n) + ".npy" : "";
   if (!path.empty() && std::filesystem::exists(path)) {
-    ft::Heightfield hf = ft::read_heightfield(path);
+    ft::Heightfield hf = ft::io::read_heightfield(path);
     hf.set_world_size(2.0);  // A.N.T.'s default mesh size
     return hf;
   }

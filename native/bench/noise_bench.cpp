@@ -69,21 +69,21 @@ void BM_LibnoisePerlin(benchmark::State& state) {
 // fracterra gradient fbm; range(1) = threads (0: all cores), range(2) = 1 to
 // force the x86-64 baseline path instead of AVX2.
 void BM_FracterraFbm(benchmark::State& state) {
-  ft::FbmConfig c;
+  ft::noise::FbmConfig c;
   c.width = c.height = int(state.range(0));
   c.octaves = kOctaves;
   c.basis = int(state.range(3));
   c.threads = int(state.range(1));
-  ft::detail::set_simd_path(state.range(2) ? ft::detail::SimdPath::kBaseline : ft::detail::SimdPath::kAuto);
-  state.SetLabel(ft::detail::active_simd_path());
+  ft::noise::detail::set_simd_path(state.range(2) ? ft::noise::detail::SimdPath::kBaseline : ft::noise::detail::SimdPath::kAuto);
+  state.SetLabel(ft::noise::detail::active_simd_path());
   Timer timer;
   for (auto _ : state) {
     timer.run([&] {
-      ft::Heightfield hf = ft::fbm(c);
+      ft::Heightfield hf = ft::noise::fbm(c);
       benchmark::DoNotOptimize(hf.data());
     });
   }
-  ft::detail::set_simd_path(ft::detail::SimdPath::kAuto);
+  ft::noise::detail::set_simd_path(ft::noise::detail::SimdPath::kAuto);
   timer.report(state, double(c.width) * c.height, kOctaves);
 }
 
@@ -103,12 +103,12 @@ void BM_SpectralSynthesis(benchmark::State& state) {
 BENCHMARK(BM_LibnoisePerlin)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
 // args: size, threads, baseline, basis
 BENCHMARK(BM_FracterraFbm)
-    ->Args({2048, 0, 0, ft::kBasisGradient})
-    ->Args({2048, 1, 0, ft::kBasisGradient})
-    ->Args({2048, 0, 1, ft::kBasisGradient})
-    ->Args({2048, 0, 0, ft::kBasisValue})
-    ->Args({2048, 0, 0, ft::kBasisSimplex})
-    ->Args({2048, 0, 0, ft::kBasisCellularF1})
+    ->Args({2048, 0, 0, ft::noise::kBasisGradient})
+    ->Args({2048, 1, 0, ft::noise::kBasisGradient})
+    ->Args({2048, 0, 1, ft::noise::kBasisGradient})
+    ->Args({2048, 0, 0, ft::noise::kBasisValue})
+    ->Args({2048, 0, 0, ft::noise::kBasisSimplex})
+    ->Args({2048, 0, 0, ft::noise::kBasisCellularF1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_SpectralSynthesis)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
         pov::SweepOptions o;
         o.segments_per_sweep = k == 0 ? 32 : int64_t(1) << 30;
         const std::string f = (dir / ("sweep_" + std::to_string(levels) + "_" + std::to_string(k) + ".pov")).string();
-        write_file_atomically(f, kHeader + pov::sweeps_sdl(line, o, "pigment { rgb <1, 0.5, 0.2> }\n"));
+        io::write_file_atomically(f, kHeader + pov::sweeps_sdl(line, o, "pigment { rgb <1, 0.5, 0.2> }\n"));
         t[k] = render(f, 320, 240).trace;
       }
       std::printf("%8lld %14.3f %14.3f %9.0fx\n", (long long)line.vertex_count(), t[0], t[1],
@@ -155,9 +155,9 @@ int main(int argc, char** argv) {
     const std::string png = (dir / "hf.png").string();
     const auto pl = pov::write_heightfield_png(hf, png, 1, 1, 0.2 / (st.max - st.min));
     const std::string a = (dir / "hf.pov").string(), b = (dir / "mesh.pov").string();
-    write_file_atomically(a, kHeader + std::string("#declare T = ") + pov::heightfield_sdl("hf.png", pl, NAN) +
+    io::write_file_atomically(a, kHeader + std::string("#declare T = ") + pov::heightfield_sdl("hf.png", pl, NAN) +
                                  "object { T pigment { rgb 1 } }\n");
-    write_file_atomically(b, kHeader + mesh2(hf, pl));
+    io::write_file_atomically(b, kHeader + mesh2(hf, pl));
     const double sa = double(fs::file_size(a) + fs::file_size(png)), sb = double(fs::file_size(b));
     const Times ta = render(a, 64, 48), tb = render(b, 64, 48);
     std::printf("\nterrain 1025^2: file size and parse time (render 64x48)\n");

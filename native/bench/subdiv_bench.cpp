@@ -43,7 +43,7 @@ struct V {
 // level's faces out (fractalize returns them too).
 void BM_PlainOpenSubdiv(benchmark::State& state) {
   const Case& c = kCases[state.range(0)];
-  const ft::Mesh m = ft::read_obj(kMeshes + c.file);
+  const ft::Mesh m = ft::io::read_obj(kMeshes + c.file);
   size_t faces = 0;
   for (auto _ : state) {
     Sdc::Options o;
@@ -82,15 +82,15 @@ void BM_PlainOpenSubdiv(benchmark::State& state) {
 // state.range(1): threads (1, or 0 = all cores); range(2): sigma > 0?
 void BM_Fractalize(benchmark::State& state) {
   const Case& c = kCases[state.range(0)];
-  const ft::Mesh m = ft::read_obj(kMeshes + c.file);
-  ft_fractalize_params p = ft::default_fractalize_params();
+  const ft::Mesh m = ft::io::read_obj(kMeshes + c.file);
+  ft_fractalize_params p = ft::subdiv::default_fractalize_params();
   p.scheme = c.scheme;
   p.levels = c.levels;
   p.threads = int(state.range(1));
   p.sigma = state.range(2) ? 0.1 : 0.0;
   size_t faces = 0;
   for (auto _ : state) {
-    const ft::Mesh out = ft::fractalize(m, p);
+    const ft::Mesh out = ft::subdiv::fractalize(m, p);
     faces = out.face_count();
     benchmark::DoNotOptimize(out.positions.data());
   }

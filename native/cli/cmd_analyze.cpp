@@ -31,10 +31,10 @@ using nlohmann::json;
 
 struct AnalyzeCli {
   std::string file, plot, method = "auto";
-  HurstOptions band;  // only the band fields are used, from `params` once checked
+  analysis::HurstOptions band;  // only the band fields are used, from `params` once checked
   // The band flags come from ft_hurst_params' table; the estimator and the
   // transect median are --method's own form (every estimator runs).
-  ft_hurst_params params = defaults_of<ft_hurst_params>(hurst_param_table());
+  ft_hurst_params params = defaults_of<ft_hurst_params>(analysis::hurst_param_table());
   bool drainage = false, periodic = false;
 };
 
@@ -47,27 +47,27 @@ json drainage_report(const Heightfield& hf, bool periodic) {
           {"note", "real landscapes: Hack h about 0.5-0.6, theta about 0.35-0.7; areas in world units^2"}};
 }
 
-const std::vector<HurstMethod> kAllMethods = {HurstMethod::kVariogramAligned, HurstMethod::kVariogram,
-                                              HurstMethod::kMadogramAligned, HurstMethod::kMadogram,
-                                              HurstMethod::kSpectral};
+const std::vector<analysis::HurstMethod> kAllMethods = {analysis::HurstMethod::kVariogramAligned, analysis::HurstMethod::kVariogram,
+                                              analysis::HurstMethod::kMadogramAligned, analysis::HurstMethod::kMadogram,
+                                              analysis::HurstMethod::kSpectral};
 
 // One estimate, for the report and the plot.
 struct Named {
   std::string name;
-  HurstEstimate e;
+  analysis::HurstEstimate e;
 };
 
-json estimate_json(const HurstEstimate& e) {
+json estimate_json(const analysis::HurstEstimate& e) {
   json j = {{"hurst", e.hurst},
             {"dimension", e.dimension},
             {"std_error", e.std_error},
-            {"band", {{"unit", hurst_method_uses_lags(e.method) ? "lag (samples)" : "frequency (cycles per record)"},
+            {"band", {{"unit", analysis::hurst_method_uses_lags(e.method) ? "lag (samples)" : "frequency (cycles per record)"},
                       {"lo", e.band_lo},
                       {"hi", e.band_hi}}},
             {"points", e.fit.points},
             {"slope", e.fit.slope},
             {"intercept", e.fit.intercept}};
-  if (e.transects) j["transects"] = e.transect_count, j["transect_method"] = hurst_method_name(e.method);
+  if (e.transects) j["transects"] = e.transect_count, j["transect_method"] = analysis::hurst_method_name(e.method);
   return j;
 }
 
@@ -76,33 +76,33 @@ json estimate_json(const HurstEstimate& e) {
 json hurst_report(const float* profile, size_t n, const Heightfield* surface, const AnalyzeCli& c,
                   std::vector<Named>& fits) {
   json methods = json::object();
-  auto run = [&](const std::string& name, HurstOptions o) {
+  auto run = [&](const std::string& name, analysis::HurstOptions o) {
     try {
-      HurstEstimate e = surface ? estimate_hurst_surface(*surface, o) : estimate_hurst_profile(profile, n, o);
+      analysis::HurstEstimate e = surface ? analysis::estimate_hurst_surface(*surface, o) : analysis::estimate_hurst_profile(profile, n, o);
       methods[name] = estimate_json(e);
       fits.push_back({name, std::move(e)});
     } catch (const Error& err) {
       methods[name] = {{"error", err.what()}};
     }
   };
-  for (HurstMethod m : kAllMethods) {
-    HurstOptions o = c.band;
+  for (analysis::HurstMethod m : kAllMethods) {
+    analysis::HurstOptions o = c.band;
     o.method = m;
-    run(hurst_method_name(m), o);
+    run(analysis::hurst_method_name(m), o);
   }
   // The recommendation is the library's (FT_HURST_AUTO), so Blender's measure
   // operator reports the same H. The transect median uses the aligned
   // variogram on dyadic grids, the plain one otherwise.
-  const HurstChoice choice = surface ? choose_hurst_method(surface->width(), surface->height())
-                                     : choose_hurst_method(int64_t(n), 1);
+  const analysis::HurstChoice choice = surface ? analysis::choose_hurst_method(surface->width(), surface->height())
+                                     : analysis::choose_hurst_method(int64_t(n), 1);
   if (surface) {
-    HurstOptions o = c.band;
-    o.method = choice.reason == HurstChoiceReason::kDyadicGrid ? HurstMethod::kVariogramAligned
-                                                                : HurstMethod::kVariogram;
+    analysis::HurstOptions o = c.band;
+    o.method = choice.reason == analysis::HurstChoiceReason::kDyadicGrid ? analysis::HurstMethod::kVariogramAligned
+                                                                : analysis::HurstMethod::kVariogram;
     o.transects = true;
     run("transect_median", o);
   }
-  const std::string pick = c.method != "auto" ? c.method : hurst_method_name(choice.method);
+  const std::string pick = c.method != "auto" ? c.method : analysis::hurst_method_name(choice.method);
   if (!methods.contains(pick)) invalid("--method '" + pick + "' is not one of the estimators run on this input");
   json report;
   if (methods[pick].contains("error")) {
@@ -116,7 +116,7 @@ json hurst_report(const float* profile, size_t n, const Heightfield* surface, co
   return report;
 }
 
-json box_json(const BoxCountResult& b) {
+json box_json(const analysis::BoxCountResult& b) {
   return {{"dimension", b.dimension}, {"std_error", b.std_error}, {"min_size", b.min_size},
           {"max_size", b.max_size},   {"sizes", b.sizes},       {"counts", b.counts}};
 }
@@ -125,13 +125,13 @@ json box_json(const BoxCountResult& b) {
 // a second, independent reading of H through D = 2 - H (seed 001). Boxes
 // from 4 cells (finer ones see the straight marching-squares chords) to the
 // box counter's default E / 4.
-json coastline_report(const Heightfield& hf, BoxCountResult* out) {
+json coastline_report(const Heightfield& hf, analysis::BoxCountResult* out) {
   try {
-    const double level = heightfield_quantile(hf, 0.5);
-    const PolylineSet set = marching_squares(hf, level);
-    BoxCountOptions o;
+    const double level = analysis::heightfield_quantile(hf, 0.5);
+    const PolylineSet set = contour::marching_squares(hf, level);
+    analysis::BoxCountOptions o;
     o.min_size = 4;
-    const BoxCountResult b = box_counting_dimension(set, o);
+    const analysis::BoxCountResult b = analysis::box_counting_dimension(set, o);
     if (out) *out = b;
     return {{"level", level},         {"quantile", 0.5},       {"chains", set.line_count()},
             {"box_counting", box_json(b)}, {"hurst", 2 - b.dimension}};
@@ -141,33 +141,33 @@ json coastline_report(const Heightfield& hf, BoxCountResult* out) {
 }
 
 // A log-log panel: the measured points and the fitted power law over them.
-SvgPanel fit_panel(const std::string& title, const std::string& xl, const std::string& yl,
+io::SvgPanel fit_panel(const std::string& title, const std::string& xl, const std::string& yl,
                    const std::vector<double>& x, const std::vector<double>& y, double slope, double intercept,
                    const std::string& fit_label) {
-  SvgPanel p;
+  io::SvgPanel p;
   p.title = title, p.x_label = xl, p.y_label = yl, p.log_x = p.log_y = true;
-  SvgSeries data;
+  io::SvgSeries data;
   data.label = "measured", data.x = x, data.y = y, data.line = false, data.points = true;
-  SvgSeries fit;
+  io::SvgSeries fit;
   fit.label = fit_label, fit.dashed = true;
   for (double v : x) fit.x.push_back(v), fit.y.push_back(std::exp(intercept) * std::pow(v, slope));
   p.series = {data, fit};
   return p;
 }
 
-SvgPanel estimate_panel(const Named& n) {
-  const HurstEstimate& e = n.e;
+io::SvgPanel estimate_panel(const Named& n) {
+  const analysis::HurstEstimate& e = n.e;
   char label[96];
   std::snprintf(label, sizeof label, "H = %.3f +- %.3f, D = %.3f", e.hurst, e.std_error, e.dimension);
-  const bool lags = hurst_method_uses_lags(e.method);
-  const bool mad = e.method == HurstMethod::kMadogram || e.method == HurstMethod::kMadogramAligned;
+  const bool lags = analysis::hurst_method_uses_lags(e.method);
+  const bool mad = e.method == analysis::HurstMethod::kMadogram || e.method == analysis::HurstMethod::kMadogramAligned;
   std::string title = n.name;
   if (e.transects) title += " (median transect)";
   return fit_panel(title, lags ? "lag (samples)" : "frequency (cycles per record)",
                    lags ? (mad ? "E|dX|" : "0.5 E[dX^2]") : "power", e.x, e.y, e.fit.slope, e.fit.intercept, label);
 }
 
-SvgPanel box_panel(const std::string& title, const std::vector<double>& sizes, const std::vector<int64_t>& counts,
+io::SvgPanel box_panel(const std::string& title, const std::vector<double>& sizes, const std::vector<int64_t>& counts,
                    double dimension, double std_error) {
   std::vector<double> x(sizes), y(counts.begin(), counts.end());
   // Fit line through the centroid of the logs with slope -D.
@@ -179,21 +179,21 @@ SvgPanel box_panel(const std::string& title, const std::vector<double>& sizes, c
 }
 
 int run(const AnalyzeCli& c) {
-  const std::string ext = extension_of(c.file);
+  const std::string ext = io::extension_of(c.file);
   json report = {{"file", c.file}};
   std::vector<Named> fits;
-  SvgFigure fig;
+  io::SvgFigure fig;
   fig.title = c.file;
   if (ext == ".npy" || ext == ".png" || ext == ".pgm") {
     Heightfield hf;
     std::vector<float> profile;
     if (ext == ".npy") {
-      NpyArray a = read_npy(c.file);
+      io::NpyArray a = io::read_npy(c.file);
       const bool one_d = a.shape.size() == 1 || (a.shape.size() == 2 && (a.shape[0] == 1 || a.shape[1] == 1));
       if (one_d) profile = std::move(a.values);
-      else hf = read_heightfield(c.file);
+      else hf = io::read_heightfield(c.file);
     } else {
-      hf = read_heightfield(c.file);
+      hf = io::read_heightfield(c.file);
       if (hf.height() == 1 || hf.width() == 1) profile.assign(hf.data(), hf.data() + hf.size());
     }
     if (!profile.empty()) {
@@ -204,7 +204,7 @@ int run(const AnalyzeCli& c) {
       report["kind"] = "heightfield";
       report["width"] = hf.width(), report["height"] = hf.height();
       report.update(hurst_report(nullptr, 0, &hf, c, fits));
-      BoxCountResult coast;
+      analysis::BoxCountResult coast;
       report["coastline"] = coastline_report(hf, &coast);
       if (c.drainage) {
         if (hf.world_size() <= 0) hf.set_world_size(10.0);
@@ -214,15 +214,15 @@ int run(const AnalyzeCli& c) {
         fig.panels.push_back(box_panel("median coastline: box counting", coast.sizes, coast.counts, coast.dimension,
                                        coast.std_error));
     }
-    std::vector<SvgPanel> panels;
+    std::vector<io::SvgPanel> panels;
     for (const Named& n : fits) panels.push_back(estimate_panel(n));
     fig.panels.insert(fig.panels.begin(), panels.begin(), panels.end());
   } else if (ext == ".csv" || ext == ".json") {
     // Curves have a dimension, not a Hurst exponent of their own; for a
     // coastline-like curve (a level set of an fBm surface) H = 2 - D.
-    const PolylineSet set = read_polylines(c.file);
+    const PolylineSet set = io::read_polylines(c.file);
     report["kind"] = "polylines";
-    report.update(polyline_report(set));
+    report.update(analysis::polyline_report(set));
     const json& b = report["box_counting"];
     if (b.contains("dimension") && b["dimension"].is_number()) {
       const double d = b["dimension"].get<double>();
@@ -260,7 +260,7 @@ Registration reg({"analyze",
                                    "2^n + 1 grids, else spectral from 256 samples, else variogram), variogram, madogram, variogram_aligned, "
                                    "madogram_aligned, spectral, transect_median")
                         ->capture_default_str();
-                    add_param_flags(app, hurst_param_table(), &c->params, {"method", "transects"});
+                    add_param_flags(app, analysis::hurst_param_table(), &c->params, {"method", "transects"});
                     app.add_option("--plot", c->plot, "also draw the log-log fits to this .svg (or .png, through rsvg-convert)");
                     app.add_flag("--drainage", c->drainage,
                                  "heightfields: also report drainage statistics (Hack's h, slope-area theta)");
@@ -268,7 +268,7 @@ Registration reg({"analyze",
                     return [c] {
                       // Every estimator runs, so every band field is checked (as FT_HURST_AUTO reads them all).
                       c->params.method = FT_HURST_AUTO;
-                      check_ranges(hurst_param_table(), &c->params);
+                      check_ranges(analysis::hurst_param_table(), &c->params);
                       c->band.lag_min = c->params.lag_min, c->band.lag_max = c->params.lag_max;
                       c->band.freq_min = c->params.freq_min, c->band.freq_max = c->params.freq_max;
                       return run(*c);

@@ -28,7 +28,7 @@ struct CoastlineCli {
 // lakes blue, chains ending on the border yellow (1-pixel lines, DDA).
 void draw_chains(std::vector<uint8_t>& rgb, int32_t w, int32_t h, const PolylineSet& set) {
   for (int64_t i = 0; i < set.line_count(); ++i) {
-    const ChainKind kind = chain_kind(set, i);
+    const contour::ChainKind kind = contour::chain_kind(set, i);
     const uint8_t colour[3][3] = {{255, 220, 0}, {220, 20, 20}, {20, 60, 230}};
     const uint8_t* c = colour[int(kind)];
     for (int64_t k = set.line_begin(i); k + 1 < set.line_end(i); ++k) {
@@ -45,9 +45,9 @@ void draw_chains(std::vector<uint8_t>& rgb, int32_t w, int32_t h, const Polyline
 }
 
 int run(const CoastlineCli& c) {
-  const Heightfield hf = read_heightfield(c.in);
-  const double level = resolve_level(hf, parse_level(c.level, "--level"));
-  const PolylineSet set = marching_squares(hf, level);
+  const Heightfield hf = io::read_heightfield(c.in);
+  const double level = analysis::resolve_level(hf, analysis::parse_level(c.level, "--level"));
+  const PolylineSet set = contour::marching_squares(hf, level);
   if (set.line_count() == 0) {
     // An empty file would look like a success (it used to be written
     // without a word): say why there is no coastline, write nothing.
@@ -68,22 +68,22 @@ int run(const CoastlineCli& c) {
     const double k = hf.world_size() / double(hf.width() - 1);
     PolylineSet scaled = set;
     for (Vec3& p : scaled.points) p[0] *= k, p[1] *= k;
-    write_polylines(scaled, c.out);
+    io::write_polylines(scaled, c.out);
   } else if (!c.out.empty()) {
-    write_polylines(set, c.out);
+    io::write_polylines(set, c.out);
   }
   if (!c.preview.empty()) {
-    ReliefOptions ro;
+    preview::ReliefOptions ro;
     const HeightStats s = hf.stats();
     ro.sea_fraction = s.max > s.min ? std::clamp((level - s.min) / (s.max - s.min), 0.0, 1.0) : 0.0;
-    std::vector<uint8_t> rgb = shaded_relief(hf, ro);
+    std::vector<uint8_t> rgb = preview::shaded_relief(hf, ro);
     draw_chains(rgb, hf.width(), hf.height(), set);
-    write_png_rgb(c.preview, hf.width(), hf.height(), rgb.data());
+    io::write_png_rgb(c.preview, hf.width(), hf.height(), rgb.data());
   }
   int64_t islands = 0, lakes = 0, open = 0;
   for (int64_t i = 0; i < set.line_count(); ++i) {
-    const ChainKind k = chain_kind(set, i);
-    (k == ChainKind::kIsland ? islands : k == ChainKind::kLake ? lakes : open) += 1;
+    const contour::ChainKind k = contour::chain_kind(set, i);
+    (k == contour::ChainKind::kIsland ? islands : k == contour::ChainKind::kLake ? lakes : open) += 1;
   }
   const nlohmann::json j = {{"level", level},       {"chains", set.line_count()}, {"vertices", set.vertex_count()},
                             {"islands", islands},   {"lakes", lakes},             {"open_chains", open}};
@@ -95,7 +95,7 @@ Registration reg({"coastline",
                   "Level set (coastline) of a heightfield as polylines: marching squares, land on the left",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<CoastlineCli>();
-                    app.add_option("--in", c->in, kHeightfieldReadHelp)->required();
+                    app.add_option("--in", c->in, io::kHeightfieldReadHelp)->required();
                     app.add_option("--level", c->level,
                                    "height of the level set, or a quantile of the samples as qF with F in [0, 1] "
                                    "(q0.5 = the median)")

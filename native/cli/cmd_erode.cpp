@@ -62,7 +62,7 @@ Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) an
                     return [o, &app] {
                       if (o->out.empty() && o->maps.empty() && !o->stats) invalid("give --out FILE, --maps DIR and/or --stats");
                       if (!o->preset.empty()) erosion::erosion_preset(o->preset);  // an unknown name fails before reading
-                      Heightfield hf = read_heightfield(o->in);
+                      Heightfield hf = io::read_heightfield(o->in);
                       if (o->world_size > 0) hf.set_world_size(o->world_size);
                       else if (hf.world_size() <= 0) hf.set_world_size(10.0);
                       const erosion::ErosionConfig c = settings(*o, app, hf);
@@ -72,7 +72,7 @@ Registration reg({"erode", "Erode a heightfield (fluvial, hydraulic, thermal) an
                       Stopwatch clock;
                       const Heightfield eroded = erosion::erode(hf, c, o->maps.empty() ? nullptr : &maps, &budget);
                       const double seconds = clock.seconds();
-                      if (!o->out.empty()) write_heightfield(eroded, o->out);
+                      if (!o->out.empty()) io::write_heightfield(eroded, o->out);
                       if (!o->maps.empty()) erosion::write_erosion_maps(maps, o->maps);
                       if (o->stats) {
                         const HeightStats before = hf.stats(), after = eroded.stats();

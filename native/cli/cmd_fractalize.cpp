@@ -19,17 +19,17 @@ namespace ft::cli {
 namespace {
 
 struct FractalizeOptions {
-  ft_fractalize_params p = default_fractalize_params();
+  ft_fractalize_params p = subdiv::default_fractalize_params();
   std::string in, out, pov, pov_name = "FT_Fractal";
   bool stats = false;
 };
 
 int run(const FractalizeOptions& o) {
-  const Mesh base = read_obj(o.in);
+  const Mesh base = io::read_obj(o.in);
   Stopwatch clock;
   Mesh mesh;
   try {
-    mesh = fractalize(base, o.p);
+    mesh = subdiv::fractalize(base, o.p);
   } catch (const Error& e) {
     if (e.status() != FT_ERR_INVALID_ARGUMENT) throw;
     // The library counts faces and vertices from 0, OBJ 'f' lines from 1.
@@ -40,7 +40,7 @@ int run(const FractalizeOptions& o) {
   char comment[256];
   std::snprintf(comment, sizeof comment, "fractalize levels=%d hurst=%g sigma=%g seed=%llu scheme=%d mode=%d",
                 o.p.levels, o.p.hurst, o.p.sigma, (unsigned long long)o.p.seed, o.p.scheme, o.p.mode);
-  if (!o.out.empty()) write_obj(mesh, o.out, std::string(comment) + " from " + o.in);
+  if (!o.out.empty()) io::write_obj(mesh, o.out, std::string(comment) + " from " + o.in);
   if (!o.pov.empty()) pov::write_mesh2(mesh, o.pov, o.pov_name);
   if (o.stats) {
     nlohmann::json j = {{"seconds", seconds},
@@ -60,7 +60,7 @@ Registration reg({"fractalize", "Fractalize a polygon mesh (OBJ) with OpenSubdiv
                     app.add_option("--in", o->in, "input mesh .obj (polygons; 't crease'/'t corner' tags honoured)")
                         ->required()->check(CLI::ExistingFile);
                     // --levels .. --threads, --scheme midpoint|additions: from the table.
-                    add_param_flags(app, fractalize_param_table(), &p);
+                    add_param_flags(app, subdiv::fractalize_param_table(), &p);
                     app.add_option("--out", o->out, "output .obj (written atomically)");
                     app.add_option("--pov", o->pov, "also write a POV-Ray include declaring a mesh2 with normals");
                     app.add_option("--pov-name", o->pov_name, "identifier declared in the --pov file")

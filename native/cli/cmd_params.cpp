@@ -57,7 +57,7 @@ nlohmann::json row_json(const ft_param_info& row) {
 int run(bool json, const std::string& out) {
   nlohmann::json all = nlohmann::json::object();
   for (int32_t kind = 0; kind < FT_PARAMS_KIND_COUNT; ++kind) {
-    const ParamTable& t = param_table(kind);
+    const ParamTable& t = tables::param_table(kind);
     if (!json) {
       std::printf("%s (%zu bytes)\n", t.struct_name, t.struct_size);
       for (const ft_param_info& row : t.rows)
@@ -70,7 +70,7 @@ int run(bool json, const std::string& out) {
   }
   if (!json) return 0;
   if (out.empty()) std::printf("%s\n", all.dump(1).c_str());
-  else write_file_atomically(out, all.dump(1) + "\n");
+  else io::write_file_atomically(out, all.dump(1) + "\n");
   return 0;
 }
 

@@ -70,7 +70,7 @@ std::vector<double> parse_base(const std::string& text) {
 // An IFS table file: one map per line "a,b,c,d,e,f,p" ('#' comments).
 std::vector<double> read_ifs_table(const std::string& path) {
   std::vector<double> t;
-  std::istringstream in(read_file(path));
+  std::istringstream in(io::read_file(path));
   std::string line;
   int n = 0;
   while (std::getline(in, line)) {
@@ -106,8 +106,8 @@ int run(const PolylineOptions& o) {
   Stopwatch clock;
   const PolylineSet set = generate_polylines(p);
   const double seconds = clock.seconds();
-  if (!o.out.empty()) write_polylines(set, o.out);
-  if (!o.svg.empty()) write_file_atomically(o.svg, render_polylines_svg(set, 900, 600, p.branch_prob > 0));
+  if (!o.out.empty()) io::write_polylines(set, o.out);
+  if (!o.svg.empty()) io::write_file_atomically(o.svg, io::render_polylines_svg(set, 900, 600, p.branch_prob > 0));
   if (!o.pov.empty()) {
     // Framed on the line over a plain ground, its tube sized from the
     // picture (the vertex radii keep only the taper of the branches).
@@ -125,7 +125,7 @@ int run(const PolylineOptions& o) {
     }
   }
   if (o.stats) {
-    nlohmann::json j = polyline_report(set);
+    nlohmann::json j = analysis::polyline_report(set);
     j["seconds"] = seconds;
     std::printf("%s\n", j.dump().c_str());
   }

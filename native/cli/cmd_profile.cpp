@@ -25,13 +25,13 @@ struct ProfileOptions {
 };
 
 std::vector<float> read_reference(const std::string& path) {
-  if (extension_of(path) == ".npy") {
-    NpyArray a = read_npy(path);
+  if (io::extension_of(path) == ".npy") {
+    io::NpyArray a = io::read_npy(path);
     if (a.shape.size() != 1) invalid("the reference '" + path + "' must be a 1D array");
     return a.values;
   }
   // A CSV polyline: its y values are the reference heights.
-  PolylineSet s = read_polylines(path);
+  PolylineSet s = io::read_polylines(path);
   std::vector<float> v;
   for (const Vec3& q : s.points) v.push_back(float(q[1]));
   return v;
@@ -49,7 +49,7 @@ int run(const ProfileOptions& o) {
   const size_t n = (size_t(1) << p.levels) + 1;
   // The samples, plus a polyline copy (xyz + radius, 32 bytes a vertex) for
   // .csv/.json: refused up front, with the size, when above the memory cap.
-  const std::string ext = extension_of(o.out);
+  const std::string ext = io::extension_of(o.out);
   const bool as_polyline = ext == ".csv" || ext == ".json";
   check_allocation(checked_bytes(n, sizeof(float) + (as_polyline ? sizeof(Vec3) + sizeof(double) : 0)),
                    "a profile of levels " + std::to_string(p.levels) + " (" + std::to_string(n) + " samples)");
@@ -59,13 +59,13 @@ int run(const ProfileOptions& o) {
   const double seconds = clock.seconds();
   if (!o.out.empty()) {
     if (ext == ".npy") {
-      write_npy(o.out, {int64_t(n)}, x.data());
+      io::write_npy(o.out, {int64_t(n)}, x.data());
     } else if (as_polyline) {
       // As a polyline on t in [0, 1]: x = t, y = X(t).
       PolylineSet s;
       for (size_t i = 0; i < n; ++i) s.add({double(i) / double(n - 1), double(x[i]), 0.0});
       s.end_line();
-      write_polylines(s, o.out);
+      io::write_polylines(s, o.out);
     } else {
       invalid("'" + o.out + "': unsupported profile format (use .csv, .json or .npy)");
     }

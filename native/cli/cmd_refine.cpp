@@ -20,7 +20,7 @@ struct RefineCli {
   std::string nodata = "avoid";
   // seed, method and threads are flags from the table; the other fields have
   // their own forms here (+K, auto, X,Y[,SIDE]).
-  ft_dem_refine_params p = defaults_of<ft_dem_refine_params>(dem_refine_param_table());
+  ft_dem_refine_params p = defaults_of<ft_dem_refine_params>(refine::dem_refine_param_table());
 };
 
 // "auto" -> `fallback` (the "measure it" value); otherwise a number.
@@ -60,13 +60,13 @@ int run(RefineCli& o) {
   }
   // Nodata: by default the window avoids it; "fill" fills it first (then any
   // window will do), "refuse" refuses a DEM that has any.
-  const NodataPolicy policy = o.nodata == "fill" ? NodataPolicy::fill
-                              : o.nodata == "refuse" ? NodataPolicy::refuse
-                                                     : NodataPolicy::keep;
-  const DemRefineConfig c = dem_refine_config(o.p);  // the ranges, before the DEM is read
-  const Heightfield dem = read_heightfield(o.in, policy);
-  const DemRefineResult r = refine_dem(dem, c);
-  write_heightfield(r.terrain, o.out);
+  const io::NodataPolicy policy = o.nodata == "fill" ? io::NodataPolicy::fill
+                              : o.nodata == "refuse" ? io::NodataPolicy::refuse
+                                                     : io::NodataPolicy::keep;
+  const refine::DemRefineConfig c = refine::dem_refine_config(o.p);  // the ranges, before the DEM is read
+  const Heightfield dem = io::read_heightfield(o.in, policy);
+  const refine::DemRefineResult r = refine::refine_dem(dem, c);
+  io::write_heightfield(r.terrain, o.out);
   nlohmann::json j = {{"dem", {dem.width(), dem.height()}},
                       {"window", {{"x", r.window_x}, {"y", r.window_y}, {"side", r.window_side}}},
                       {"levels_added", c.levels_added},
@@ -79,7 +79,7 @@ int run(RefineCli& o) {
                       {"world_size", r.terrain.world_size()},
                       {"georeferenced", !r.terrain.georef().empty()}};
   if (r.hurst_measured)
-    j["hurst_estimate"] = {{"method", hurst_method_name(r.estimate.method)},
+    j["hurst_estimate"] = {{"method", analysis::hurst_method_name(r.estimate.method)},
                            {"hurst", r.estimate.hurst},
                            {"std_error", r.estimate.std_error},
                            {"lags", {r.estimate.band_lo, r.estimate.band_hi}}};
@@ -93,7 +93,7 @@ Registration reg({"refine", "Refine a real DEM: its samples kept, finer levels a
                     app.add_option("--in", o->in, "the DEM: any raster GDAL reads (GeoTIFF, .hgt, .asc, ...)")
                         ->required()
                         ->check(CLI::ExistingFile);
-                    app.add_option("--out", o->out, std::string("the refined terrain: ") + kHeightfieldWriteFormats +
+                    app.add_option("--out", o->out, std::string("the refined terrain: ") + io::kHeightfieldWriteFormats +
                                                         " (.tif keeps the georeference)")
                         ->required();
                     app.add_option("--levels", o->levels, "+K: levels added (1..12); the side grows 2^K times")
@@ -103,7 +103,7 @@ Registration reg({"refine", "Refine a real DEM: its samples kept, finer levels a
                     app.add_option("--sigma", o->sigma,
                                    "auto (from the DEM's increments at one pixel) or the vertical scale > 0")
                         ->capture_default_str();
-                    add_param_flags(app, dem_refine_param_table(), &o->p,
+                    add_param_flags(app, refine::dem_refine_param_table(), &o->p,
                                     {"levels_added", "hurst", "sigma", "window_x", "window_y", "window_side"});
                     app.add_option("--window", o->window,
                                    "X,Y[,SIDE]: the window's top-left sample (and side 2^m + 1); default: the "

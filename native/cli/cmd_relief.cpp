@@ -12,13 +12,13 @@ namespace {
 
 struct ReliefCli {
   std::string in, out;
-  ReliefOptions o;
+  preview::ReliefOptions o;
 };
 
 Registration reg({"relief", "Draw a shaded-relief preview PNG of a heightfield",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<ReliefCli>();
-                    app.add_option("--in", c->in, kHeightfieldReadHelp)->required()->check(CLI::ExistingFile);
+                    app.add_option("--in", c->in, io::kHeightfieldReadHelp)->required()->check(CLI::ExistingFile);
                     app.add_option("--out", c->out, "output RGB .png")->required();
                     app.add_option("--sea-fraction", c->o.sea_fraction, "fraction of the height range under water, 0..1")
                         ->capture_default_str();
@@ -29,9 +29,9 @@ Registration reg({"relief", "Draw a shaded-relief preview PNG of a heightfield",
                     app.add_option("--sun-elevation", c->o.sun_elevation, "degrees above the horizon, 0..90")
                         ->capture_default_str();
                     return [c] {
-                      const Heightfield hf = read_heightfield(c->in);
-                      const auto rgb = shaded_relief(hf, c->o);
-                      write_png_rgb(c->out, hf.width(), hf.height(), rgb.data());
+                      const Heightfield hf = io::read_heightfield(c->in);
+                      const auto rgb = preview::shaded_relief(hf, c->o);
+                      io::write_png_rgb(c->out, hf.width(), hf.height(), rgb.data());
                       return 0;
                     };
                   },

@@ -43,7 +43,7 @@ struct SceneOptions {
 // A finished 16-bit tile set as height_fields edge to edge, framed on a
 // coarse preview of the whole read through its VRT overviews.
 pov::TiledTerrain load_tiles(const std::string& dir) {
-  const std::optional<nlohmann::json> m = read_manifest(dir);
+  const std::optional<nlohmann::json> m = tiles::read_manifest(dir);
   if (!m) invalid("'" + dir + "' holds no tile set (no manifest.json); write one with fracterra tiles");
   if (!m->value("complete", false)) invalid("the tile set in '" + dir + "' is not finished; rerun fracterra tiles to resume it");
   if (m->value("tile_format", "") != "png16")
@@ -71,13 +71,13 @@ int run(SceneOptions& o) {
     if (!o.terrain.empty()) invalid("give --terrain or --tiles, not both");
     if (!std::isnan(o.sea_fraction) && !std::isnan(o.water)) invalid("give --sea-fraction or --water, not both");
     tiled = load_tiles(o.tiles);
-    hf = read_mosaic_preview(o.tiles, 257);
+    hf = tiles::read_mosaic_preview(o.tiles, 257);
     // Heights in the set's own units unless --vertical-scale says otherwise.
     pov::set_scene_terrain(p, hf, hf.world_size(), o.vertical_scale > 0 ? o.vertical_scale : 1.0, o.sea_fraction);
     if (!std::isnan(o.water)) p.has_sea = true, p.sea_level = o.water;
     p.tiles = &tiled;
   } else if (!o.terrain.empty()) {
-    hf = read_heightfield(o.terrain);
+    hf = io::read_heightfield(o.terrain);
     if (!std::isnan(o.sea_fraction) && !std::isnan(o.water)) invalid("give --sea-fraction or --water, not both");
     // The terrain's own world size (recorded by fracterra) unless --size says otherwise.
     const double size = o.size > 0 ? o.size : hf.world_size() > 0 ? hf.world_size() : 1.0;
@@ -90,7 +90,7 @@ int run(SceneOptions& o) {
   if (o.radii.size() > o.polylines.size()) invalid("more --radius options than --polyline files");
   if (o.radius_scales.size() > o.polylines.size()) invalid("more --radius-scale options than --polyline files");
   for (size_t i = 0; i < o.polylines.size(); ++i) {
-    sets[i] = read_polylines(o.polylines[i]);
+    sets[i] = io::read_polylines(o.polylines[i]);
     pov::SceneLines l;
     l.set = &sets[i];
     l.kind = pov::LineKind(i < o.kinds.size() ? o.kinds[i] : int(pov::LineKind::kGeneric));
@@ -115,7 +115,7 @@ int run(SceneOptions& o) {
 Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (and render it)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<SceneOptions>();
-                    app.add_option("--terrain", o->terrain, kHeightfieldReadHelp)->check(CLI::ExistingFile);
+                    app.add_option("--terrain", o->terrain, io::kHeightfieldReadHelp)->check(CLI::ExistingFile);
                     app.add_option("--tiles", o->tiles,
                                    "a finished 16-bit tile set folder (fracterra tiles --format png16): its tiles "
                                    "as height_fields edge to edge, in the set's world size")

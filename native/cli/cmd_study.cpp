@@ -61,21 +61,21 @@ std::string csv(const std::vector<FplStudyRow>& rows, const char* rng) {
   return o;
 }
 
-SvgPanel panel(const std::string& title, const std::string& x_label, const std::string& y_label) {
-  SvgPanel p;
+io::SvgPanel panel(const std::string& title, const std::string& x_label, const std::string& y_label) {
+  io::SvgPanel p;
   p.title = title, p.x_label = x_label, p.y_label = y_label;
   return p;
 }
 
 // Measured means: points; fits: dashed lines.
-SvgSeries points(const std::string& label, const std::string& color) {
-  SvgSeries s;
+io::SvgSeries points(const std::string& label, const std::string& color) {
+  io::SvgSeries s;
   s.label = label, s.color = color, s.line = false, s.points = true;
   return s;
 }
-SvgSeries dashed(const std::string& label, const std::string& color, std::vector<double> x = {},
+io::SvgSeries dashed(const std::string& label, const std::string& color, std::vector<double> x = {},
                  std::vector<double> y = {}) {
-  SvgSeries s;
+  io::SvgSeries s;
   s.label = label, s.color = color, s.dashed = true, s.width = 1.2, s.x = std::move(x), s.y = std::move(y);
   return s;
 }
@@ -89,7 +89,7 @@ std::string fmt_g(double v) {
 // Panels: eta/s, chi/s, gamma against s (one series per r), gamma against r
 // and the dimension against r (one series per s); our means as points with
 // +-2 standard-error bars, the paper's formulas dashed in the same colour.
-SvgFigure plot(const std::vector<FplStudyRow>& rows, const std::vector<double>& spreads, const std::vector<int>& depths,
+io::SvgFigure plot(const std::vector<FplStudyRow>& rows, const std::vector<double>& spreads, const std::vector<int>& depths,
                FplRng rng) {
   const PaperFit fit = paper_fit(rng);
   const bool uniform = rng == FplRng::kUniform;
@@ -99,19 +99,19 @@ SvgFigure plot(const std::vector<FplStudyRow>& rows, const std::vector<double>& 
       if (x.spread == s && x.depth == r) return x;
     return rows.front();
   };
-  SvgFigure f;
+  io::SvgFigure f;
   f.title = std::string("FPL ensemble study (seed 003), ") + (uniform ? "uniform urf(s)" : "normal nrf(sigma)") +
             ", K = " + std::to_string(rows.front().count) + " lines per point; dashed: the paper's fits";
   f.columns = 3;
   const char* colors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f"};
-  SvgPanel eta = panel("eta / " + sname + " (max deviation)", sname, "eta / " + sname);
-  SvgPanel chi = panel("chi / " + sname + " (mean deviation)", sname, "chi / " + sname);
-  SvgPanel gam = panel("gamma (elongation) vs " + sname, sname, "gamma");
+  io::SvgPanel eta = panel("eta / " + sname + " (max deviation)", sname, "eta / " + sname);
+  io::SvgPanel chi = panel("chi / " + sname + " (mean deviation)", sname, "chi / " + sname);
+  io::SvgPanel gam = panel("gamma (elongation) vs " + sname, sname, "gamma");
   gam.log_y = true;
   for (size_t d = 0; d < depths.size(); ++d) {
     const int r = depths[d];
     const std::string label = "r = " + std::to_string(r);
-    SvgSeries e = points(label, colors[d % 8]), c = e, g = e;
+    io::SvgSeries e = points(label, colors[d % 8]), c = e, g = e;
     for (double s : spreads) {
       if (!(s > 0)) continue;
       const FplStudyRow& x = row_at(s, r);
@@ -119,7 +119,7 @@ SvgFigure plot(const std::vector<FplStudyRow>& rows, const std::vector<double>& 
       c.x.push_back(s), c.y.push_back(x.chi.mean / s), c.y_error.push_back(2 * x.chi.se / s);
       g.x.push_back(s), g.y.push_back(x.gamma.mean), g.y_error.push_back(2 * x.gamma.se);
     }
-    SvgSeries gp = dashed("", colors[d % 8]);
+    io::SvgSeries gp = dashed("", colors[d % 8]);
     for (int i = 0; i <= 100; ++i) {
       const double s = spreads.back() * i / 100.0;
       gp.x.push_back(s), gp.y.push_back(std::exp2(fit.alpha * std::pow(s, fit.beta) * r));
@@ -131,13 +131,13 @@ SvgFigure plot(const std::vector<FplStudyRow>& rows, const std::vector<double>& 
   chi.series.push_back(dashed("paper " + fmt_g(fit.chi_per_s), "#000", {0, smax}, {fit.chi_per_s, fit.chi_per_s}));
   eta.y_min = chi.y_min = 0;
   eta.y_max = 2 * fit.eta_per_s, chi.y_max = 2 * fit.chi_per_s;
-  SvgPanel gr = panel("gamma vs r: 2^(" + fmt_g(fit.alpha) + " " + sname + "^" + fmt_g(fit.beta) + " r)", "depth r", "gamma");
+  io::SvgPanel gr = panel("gamma vs r: 2^(" + fmt_g(fit.alpha) + " " + sname + "^" + fmt_g(fit.beta) + " r)", "depth r", "gamma");
   gr.log_y = true;
-  SvgPanel dim = panel("mass dimension vs r: eq. 6 dashed", "depth r", "D");
-  SvgPanel dims = panel("dimension vs " + sname + " (r = " + std::to_string(depths.back()) + ")", sname, "D");
+  io::SvgPanel dim = panel("mass dimension vs r: eq. 6 dashed", "depth r", "D");
+  io::SvgPanel dims = panel("dimension vs " + sname + " (r = " + std::to_string(depths.back()) + ")", sname, "D");
   size_t k = 0;
-  SvgSeries mass_s = points("mass (eq. 4g)", "#1f77b4"), box_s = points("box counting", "#d62728");
-  SvgSeries eq6 = dashed("eq. 6", "#000");
+  io::SvgSeries mass_s = points("mass (eq. 4g)", "#1f77b4"), box_s = points("box counting", "#d62728");
+  io::SvgSeries eq6 = dashed("eq. 6", "#000");
   for (double s : spreads) {
     if (!(s > 0)) continue;
     const FplStudyRow& last = row_at(s, depths.back());
@@ -145,7 +145,7 @@ SvgFigure plot(const std::vector<FplStudyRow>& rows, const std::vector<double>& 
     box_s.x.push_back(s), box_s.y.push_back(last.box_dimension.mean), box_s.y_error.push_back(2 * last.box_dimension.se);
     if (depths.size() < 2) continue;
     const std::string col = colors[k++ % 8];
-    SvgSeries g = points(sname + " = " + fmt_g(s), col), gp = dashed("", col), d = g, dp = gp;
+    io::SvgSeries g = points(sname + " = " + fmt_g(s), col), gp = dashed("", col), d = g, dp = gp;
     for (int r : depths) {
       const FplStudyRow& x = row_at(s, r);
       g.x.push_back(r), g.y.push_back(x.gamma.mean), g.y_error.push_back(2 * x.gamma.se);
@@ -178,9 +178,9 @@ int run(const StudyOptions& o) {
   Stopwatch clock;
   const std::vector<FplStudyRow> rows = run_fpl_study(c);
   const std::string table = csv(rows, o.rng == 1 ? "normal" : "uniform");
-  if (!o.out_csv.empty()) write_file_atomically(o.out_csv, table);
+  if (!o.out_csv.empty()) io::write_file_atomically(o.out_csv, table);
   else std::fputs(table.c_str(), stdout);
-  if (!o.plot.empty()) write_svg(o.plot, plot(rows, c.spreads, c.depths, c.rng));
+  if (!o.plot.empty()) io::write_svg(o.plot, plot(rows, c.spreads, c.depths, c.rng));
   std::fprintf(stderr, "study: %zu points x %d lines in %.2f s\n", rows.size(), c.count, clock.seconds());
   return 0;
 }

@@ -48,7 +48,7 @@ struct TerrainOptions {
   ft_terrain_params p = default_terrain_params();
   // The pipeline's settings (a preset: --erosion-preset, or --erode) and the
   // erosion settings, both from their tables.
-  ft_build_params build = defaults_of<ft_build_params>(build_param_table());
+  ft_build_params build = defaults_of<ft_build_params>(pipeline::build_param_table());
   ft_erosion_params erosion = defaults_of<ft_erosion_params>(erosion_param_table());
   bool erosion_given = false;  // an erosion flag was given: erode with these settings
   std::string reference, falloff_mask, out, size, pov, center, curves_out;
@@ -61,12 +61,12 @@ struct TerrainOptions {
 void write_escape_curves(const TerrainOptions& o, const ft_terrain_params& p, const Heightfield& hf) {
   std::vector<double> levels;
   for (double nu : o.curves) levels.push_back(mandelbrot_height(nu, p.sigma));
-  PolylineSet set = marching_squares(hf, levels);
+  PolylineSet set = contour::marching_squares(hf, levels);
   if (o.curves_world) {
     const double k = hf.world_size() / double(hf.width() - 1);
     for (Vec3& v : set.points) v[0] *= k, v[1] *= k;
   }
-  write_polylines(set, o.curves_out);
+  io::write_polylines(set, o.curves_out);
 }
 
 int run(const TerrainOptions& o) {
@@ -81,7 +81,7 @@ int run(const TerrainOptions& o) {
   }
   Heightfield reference;
   if (!o.reference.empty()) {
-    reference = read_heightfield(o.reference);
+    reference = io::read_heightfield(o.reference);
     if (reference.width() != reference.height())
       invalid("the reference grid '" + o.reference + "' is " + std::to_string(reference.width()) + " x " +
               std::to_string(reference.height()) + "; it must be square, 2^m + 1 per side");
@@ -91,7 +91,7 @@ int run(const TerrainOptions& o) {
   Heightfield mask;
   if (!o.falloff_mask.empty()) {
     // Any raster the project reads; 8- and 16-bit images read as 0..1 (white 1).
-    mask = read_heightfield(o.falloff_mask);
+    mask = io::read_heightfield(o.falloff_mask);
     if (p.falloff != FT_FALLOFF_NONE && p.falloff != FT_FALLOFF_CUSTOM)
       invalid("--falloff-mask is the custom falloff's mask; it cannot go with --falloff " +
               std::string(p.falloff == FT_FALLOFF_SQUARE ? "square" : "radial"));
@@ -106,9 +106,9 @@ int run(const TerrainOptions& o) {
   b.terrain = &p;
   b.erosion = o.erosion_given ? &o.erosion : nullptr;
   b.threads = p.threads;
-  Heightfield hf = build_terrain(b, nullptr);
+  Heightfield hf = pipeline::build_terrain(b, nullptr);
   const double seconds = clock.seconds();
-  if (!o.out.empty()) write_heightfield(hf, o.out);
+  if (!o.out.empty()) io::write_heightfield(hf, o.out);
   if (!o.pov.empty()) pov::write_terrain_scene(hf, o.pov);  // PNG beside it
   if (!o.curves_out.empty()) write_escape_curves(o, p, hf);
   if (o.stats) {
@@ -147,12 +147,12 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_flag("--curves-world", o->curves_world,
                                  "mandelbrot: write the curves' x, y in world units (--world-size across x)");
                     app.add_option("--reference", o->reference,
-                                   "reference grid (2^m + 1)^2: " + std::string(kHeightfieldReadHelp) +
+                                   "reference grid (2^m + 1)^2: " + std::string(io::kHeightfieldReadHelp) +
                                        "; its values survive exactly (a DEM: see fracterra refine)")
                         ->check(CLI::ExistingFile);
                     app.add_option("--falloff-mask", o->falloff_mask,
                                    "custom edge falloff (sets --falloff custom): a mask spanning the terrain, " +
-                                       std::string(kHeightfieldReadHelp) +
+                                       std::string(io::kHeightfieldReadHelp) +
                                        "; white (1) keeps the height, black (0) gives --edge-level; 8/16-bit "
                                        "images read as 0..1, other rasters must hold 0..1; resampled bilinearly, "
                                        "image row 0 (the top) at terrain row 0")
@@ -160,7 +160,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     // The pipeline's and the erosion's settings from their tables; the
                     // terrain's threads serve every stage, and a terrain that tiles
                     // erodes as a torus (the library's rule, not a flag).
-                    add_param_flags(app, build_param_table(), &o->build, {"threads"},
+                    add_param_flags(app, pipeline::build_param_table(), &o->build, {"threads"},
                                     {{"erosion_preset", "--erode"}});
                     add_param_flags(app, erosion_param_table(), &o->erosion, {"periodic", "threads"});
                     app.add_option("--out", o->out,

@@ -30,15 +30,15 @@ int run(const TilesOptions& o) {
   ft_terrain_params p = o.p;
   Heightfield reference;
   if (!o.reference.empty()) {
-    reference = read_heightfield(o.reference);
+    reference = io::read_heightfield(o.reference);
     if (reference.width() != reference.height())
       invalid("the reference grid '" + o.reference + "' must be square, 2^m + 1 per side");
     p.reference = reference.data();
     p.reference_size = reference.width();
   }
   Stopwatch clock;
-  TileSet set(p, o.tile, parse_tile_format(o.format), o.out);
-  const TileGrid& g = set.spec().grid;
+  tiles::TileSet set(p, o.tile, tiles::parse_tile_format(o.format), o.out);
+  const tiles::TileGrid& g = set.spec().grid;
   int64_t written = 0, skipped = 0;
   for (int32_t row = 0; row < g.rows(); ++row)
     for (int32_t col = 0; col < g.columns(); ++col) {
@@ -46,7 +46,7 @@ int run(const TilesOptions& o) {
         ++skipped;
         continue;
       }
-      set.record(col, row, write_tile(p, set.spec(), set.dir(), col, row));
+      set.record(col, row, tiles::write_tile(p, set.spec(), set.dir(), col, row));
       ++written;
       if (!o.quiet)
         std::fprintf(stderr, "\rtile %lld of %lld", (long long)(written + skipped), (long long)g.count());
@@ -76,7 +76,7 @@ Registration reg({"tiles", "Write a terrain larger than memory as a tile set (ti
                         ->capture_default_str();
                     app.add_option("--reference", o->reference,
                                    "reference grid (2^m + 1)^2 for midpoint/additions: " +
-                                       std::string(kHeightfieldReadHelp))
+                                       std::string(io::kHeightfieldReadHelp))
                         ->check(CLI::ExistingFile);
                     app.add_option("--out", o->out,
                                    "the tile set's folder (created; a folder holding another tile set is refused; "

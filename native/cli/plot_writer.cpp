@@ -11,12 +11,12 @@
 
 namespace ft::cli {
 
-void write_plot(const std::string& path, const SvgFigure& fig) {
-  const std::string ext = extension_of(path);
-  if (ext == ".svg") return write_svg(path, fig);
+void write_plot(const std::string& path, const io::SvgFigure& fig) {
+  const std::string ext = io::extension_of(path);
+  if (ext == ".svg") return io::write_svg(path, fig);
   if (ext != ".png") invalid("--plot '" + path + "': use a .svg or .png file name");
   const std::string svg = path + ".tmp.svg", png = path + ".tmp.png";
-  write_svg(svg, fig);
+  io::write_svg(svg, fig);
   const char* argv[] = {"rsvg-convert", "-b", "white", "-o", png.c_str(), svg.c_str(), nullptr};
   pid_t pid;
   int status = -1;

@@ -11,6 +11,6 @@ namespace ft::cli {
 // Writes `fig` to `path` (.svg or .png) under a temporary name, renamed on
 // success like every fracterra file. Throws ft::Error (FT_ERR_IO when
 // rsvg-convert is missing or fails, with what to do instead).
-void write_plot(const std::string& path, const SvgFigure& fig);
+void write_plot(const std::string& path, const io::SvgFigure& fig);
 
 }  // namespace ft::cli

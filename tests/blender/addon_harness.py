@@ -33,7 +33,7 @@ def args():
 
 
 def submodule(name):
-    """The add-on's module `name` (e.g. "core", "blender.panels"), whatever the package is called."""
+    """The add-on's module `name` (e.g. "core", "blender.ui.panels"), whatever the package is called."""
     return importlib.import_module(f"{PACKAGE}.{name}")
 
 

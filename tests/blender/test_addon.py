@@ -248,7 +248,7 @@ class TerrainAddTest(unittest.TestCase):
             self.assertAlmostEqual(z[row * n + col], v, places=5)
 
     def test_reference_image_picker_lists_only_readable_images(self):
-        props = addon_harness.submodule("blender.props")
+        props = addon_harness.submodule("blender.ui.properties")
         from types import SimpleNamespace as NS
         fake = [NS(name="Render Result", type="RENDER_RESULT"), NS(name="Viewer Node", type="COMPOSITING"),
                 NS(name="photo.png", type="IMAGE"), NS(name="Untitled", type="UV_TEST")]
@@ -537,8 +537,8 @@ class ProgressTest(unittest.TestCase):
 
     def setUp(self):
         clear_scene()
-        self.progress = addon_harness.submodule("blender.progress")
-        self.build = addon_harness.submodule("blender.terrain_build")
+        self.progress = addon_harness.submodule("blender.common.jobs")
+        self.build = addon_harness.submodule("blender.build.terrain")
         self.values = core().params.defaults()
         self.values.update(levels=9, seed=3)
 
@@ -592,7 +592,7 @@ class ProgressTest(unittest.TestCase):
         self.assertEqual(len(bpy.data.meshes), 1)
 
     def test_polyline_cancelled_while_building_leaves_no_curve(self):
-        pb = addon_harness.submodule("blender.polyline_build")
+        pb = addon_harness.submodule("blender.build.polyline")
         values = {p.name: p.default for p in core().params.POLYLINE_PARAMS}
         values.update(method="FPL", depth=18, branch_prob=0.0)  # 2^18 + 1 points: a step of 100k points or more
         curves = len(bpy.data.curves)
@@ -609,7 +609,7 @@ class ProgressTest(unittest.TestCase):
         bpy.ops.mesh.primitive_cube_add()
         cube = bpy.context.active_object
         before = coords(cube.data)
-        op = addon_harness.submodule("blender.fractalize_op")
+        op = addon_harness.submodule("blender.ops.fractalize")
         fake = type("Op", (), {p.name: p.default for p in core().params.FRACTALIZE_PARAMS})()
         fake.levels = 6
         runner = self.progress.Runner(op.FRACTERRA_OT_fractalize.make_job(fake, bpy.context))
@@ -710,7 +710,7 @@ class PolylineTest(unittest.TestCase):
         obj.fracterra_polyline.depth = 3
         self.assertEqual(len(spline_points(obj)[0]), 2 ** 3 + 1)
         # The panel draws its settings, not "not a fractal terrain".
-        panels = addon_harness.submodule("blender.panels")
+        panels = addon_harness.submodule("blender.ui.panels")
         self.assertTrue(panels.FRACTERRA_PT_polyline.poll(bpy.context))
         self.assertFalse(panels.FRACTERRA_PT_terrain.poll(bpy.context))
         log = []
@@ -900,8 +900,8 @@ class TerrainToolsTest(unittest.TestCase):
         self.assertLess(extents[False], 0.9)
 
     def test_measures_are_stale_once_the_object_changes(self):
-        fingerprint = addon_harness.submodule("blender.terrain_objects").geometry_fingerprint
-        panels = addon_harness.submodule("blender.panels")
+        fingerprint = addon_harness.submodule("blender.build.objects").geometry_fingerprint
+        panels = addon_harness.submodule("blender.ui.panels")
         obj = add_terrain(levels=5, seed=1, hurst=0.76)
         self.assertEqual(bpy.ops.object.fracterra_measure(), {"FINISHED"})
         self.assertEqual(obj.fracterra_measures.geometry, fingerprint(obj))

@@ -208,8 +208,8 @@ class ErodeCancelTest(unittest.TestCase):
 
     def test_cancel_while_eroding_keeps_nothing(self):
         clear_scene()
-        progress = addon_harness.submodule("blender.progress")
-        build = addon_harness.submodule("blender.terrain_build")
+        progress = addon_harness.submodule("blender.common.jobs")
+        build = addon_harness.submodule("blender.build.terrain")
         share = 0.25  # generation's share of the bar when erosion follows (the library's pipeline)
         values = core().params.defaults()
         values.update(levels=9, seed=3, erode_preset="LAND")

@@ -142,7 +142,7 @@ def choose_from_menu(menu, ups, shot):
 
 def wait_for_jobs(limit=60.0):
     """Waits while an operator runs in the background (progress.JobOperator)."""
-    progress = addon_harness.submodule("blender.progress")
+    progress = addon_harness.submodule("blender.common.jobs")
     waited = 0.0
     while progress.busy() and waited < limit:
         yield 0.1
@@ -313,7 +313,7 @@ def scenario(shot):
     # A long job shows its progress in the status bar, and Esc cancels it: nothing is added.
     count = len(bpy.data.objects)
     meshes = len(bpy.data.meshes)
-    progress = addon_harness.submodule("blender.progress")
+    progress = addon_harness.submodule("blender.common.jobs")
     with in_view3d():
         result = bpy.ops.mesh.fracterra_terrain_add("INVOKE_DEFAULT", True, levels=12)
     check(result == {"RUNNING_MODAL"}, f"Add Terrain from the menu did not run in the background: {result}")

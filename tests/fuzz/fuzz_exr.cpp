@@ -12,7 +12,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data), size);
   ft::fuzz::expect_ok_or_error([&] {
-    const ft::Heightfield hf = ft::decode_exr(bytes);
+    const ft::Heightfield hf = ft::io::decode_exr(bytes);
     if (hf.size() == 0) ft::fuzz::bug("empty heightfield accepted");
   });
   return 0;

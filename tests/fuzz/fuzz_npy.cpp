@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data), size);
   bool two_d = false;
   ft::fuzz::expect_ok_or_error([&] {
-    const ft::NpyArray a = ft::decode_npy(bytes);
+    const ft::io::NpyArray a = ft::io::decode_npy(bytes);
     uint64_t count = 1;
     for (int64_t d : a.shape) {
       if (d < 0) ft::fuzz::bug("negative dimension");
@@ -26,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   });
   if (two_d) {
     ft::fuzz::expect_ok_or_error([&] {
-      const ft::Heightfield hf = ft::decode_heightfield(bytes, ".npy");
+      const ft::Heightfield hf = ft::io::decode_heightfield(bytes, ".npy");
       if (hf.size() == 0) ft::fuzz::bug("empty heightfield accepted");
     });
   }

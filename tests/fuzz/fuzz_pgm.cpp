@@ -11,6 +11,6 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  ft::fuzz::check_image_reader(data, size, [](const std::string& b) { return ft::decode_pgm(b); });
+  ft::fuzz::check_image_reader(data, size, [](const std::string& b) { return ft::io::decode_pgm(b); });
   return 0;
 }

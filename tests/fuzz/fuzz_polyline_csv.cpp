@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ft::fuzz::check_polyline_reader(
-      data, size, [](const std::string& t) { return ft::decode_polylines_csv(t); },
-      [](const ft::PolylineSet& s) { return ft::encode_polylines_csv(s); });
+      data, size, [](const std::string& t) { return ft::io::decode_polylines_csv(t); },
+      [](const ft::PolylineSet& s) { return ft::io::encode_polylines_csv(s); });
   return 0;
 }

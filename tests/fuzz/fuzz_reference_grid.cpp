@@ -31,7 +31,7 @@ void terrain_from(const ft::Heightfield& ref, uint8_t knobs) {
       if (hf.at(i * step, j * step) != ref.at(i, j)) bug("a reference value did not survive");
 }
 
-void profile_from(const ft::NpyArray& a, uint8_t knobs) {
+void profile_from(const ft::io::NpyArray& a, uint8_t knobs) {
   if (a.shape.size() != 1) ft::invalid("a profile reference must be 1D");  // as the CLI does
   ft_profile_params p = ft::default_profile_params();
   p.reference_scale = (knobs & 3) % 3;
@@ -58,8 +58,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data + 2), size - 2);
   static const char* const kExt[] = {".png", ".pgm", ".npy"};
   ft::fuzz::expect_ok_or_error([&] {
-    if (format % 4 == 3) profile_from(ft::decode_npy(bytes), knobs);
-    else terrain_from(ft::decode_heightfield(bytes, kExt[format % 4]), knobs);
+    if (format % 4 == 3) profile_from(ft::io::decode_npy(bytes), knobs);
+    else terrain_from(ft::io::decode_heightfield(bytes, kExt[format % 4]), knobs);
   });
   return 0;
 }

@@ -82,7 +82,7 @@ void check_image_reader(const uint8_t* data, size_t size, Decode decode) {
     if (img.width < 1 || img.height < 1 || img.pixels.size() != size_t(img.width) * size_t(img.height))
       bug("decoded image size does not match its pixels");
     if (img.bit_depth != 8 && img.bit_depth != 16) bug("bit depth neither 8 nor 16");
-    const ft::Heightfield hf = ft::image_to_heightfield(img);
+    const ft::Heightfield hf = ft::io::image_to_heightfield(img);
     if (hf.width() != img.width || hf.height() != img.height) bug("heightfield size differs from the image");
   });
 }

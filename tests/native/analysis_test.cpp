@@ -66,10 +66,10 @@ std::vector<float> power_law_signal(size_t n, double hurst, uint64_t seed) {
   return v;
 }
 
-HurstEstimate profile_estimate(const std::vector<float>& v, HurstMethod m) {
-  HurstOptions o;
+analysis::HurstEstimate profile_estimate(const std::vector<float>& v, analysis::HurstMethod m) {
+  analysis::HurstOptions o;
   o.method = m;
-  return estimate_hurst_profile(v.data(), v.size(), o);
+  return analysis::estimate_hurst_profile(v.data(), v.size(), o);
 }
 
 // ---------------------------------------------------------------- estimators
@@ -83,7 +83,7 @@ TEST(HurstEstimator, AlignedVariogramRecoversHurstOfMidpointProfiles) {
   // seeds we measured is 0.01. 0.05 (the bound) is 5 of those.
   for (double h : {0.3, 0.5, 0.8})
     for (uint64_t seed : {1, 2, 3}) {
-      const HurstEstimate e = profile_estimate(midpoint_profile(16, h, seed), HurstMethod::kVariogramAligned);
+      const analysis::HurstEstimate e = profile_estimate(midpoint_profile(16, h, seed), analysis::HurstMethod::kVariogramAligned);
       EXPECT_NEAR(e.hurst, h, 0.05) << "seed " << seed;
       EXPECT_DOUBLE_EQ(e.dimension, 2 - e.hurst);
       EXPECT_EQ(e.band_lo, 1);
@@ -101,8 +101,8 @@ TEST(HurstEstimator, AlignedVariogramRecoversHurstOfMidpointTerrains) {
   // 0.046 in 18 terrains (seeds 1-6). The bound 0.08 is 4 sd.
   for (double h : {0.3, 0.5, 0.8})
     for (uint64_t seed : {1, 2, 3}) {
-      HurstOptions o;
-      const HurstEstimate e = estimate_hurst_surface(terrain(FT_TERRAIN_MIDPOINT, 10, h, seed), o);
+      analysis::HurstOptions o;
+      const analysis::HurstEstimate e = analysis::estimate_hurst_surface(terrain(FT_TERRAIN_MIDPOINT, 10, h, seed), o);
       EXPECT_NEAR(e.hurst, h, 0.08) << "seed " << seed;
       EXPECT_DOUBLE_EQ(e.dimension, 3 - e.hurst);
       EXPECT_EQ(e.band_hi, 64);
@@ -119,9 +119,9 @@ TEST(HurstEstimator, AlignedVariogramRecoversHurstOfAdditionsTerrainsAboveTheFin
   for (double h : {0.3, 0.5, 0.8}) {
     double sum = 0;
     for (uint64_t seed : {1, 2, 3}) {
-      HurstOptions o;
+      analysis::HurstOptions o;
       o.lag_min = 4;
-      sum += estimate_hurst_surface(terrain(FT_TERRAIN_ADDITIONS, 10, h, seed), o).hurst;
+      sum += analysis::estimate_hurst_surface(terrain(FT_TERRAIN_ADDITIONS, 10, h, seed), o).hurst;
     }
     EXPECT_NEAR(sum / 3, h, 0.08) << "H " << h;
   }
@@ -132,9 +132,9 @@ TEST(HurstEstimator, AllIncrementMethodsAgreeOnBrownianProfiles) {
   // increments, so plain and aligned, variogram and madogram all estimate
   // 0.5; the madogram's scatter is a little larger than the variogram's.
   const auto v = midpoint_profile(16, 0.5, 7);
-  for (HurstMethod m : {HurstMethod::kVariogram, HurstMethod::kMadogram, HurstMethod::kVariogramAligned,
-                        HurstMethod::kMadogramAligned})
-    EXPECT_NEAR(profile_estimate(v, m).hurst, 0.5, 0.05) << hurst_method_name(m);
+  for (analysis::HurstMethod m : {analysis::HurstMethod::kVariogram, analysis::HurstMethod::kMadogram, analysis::HurstMethod::kVariogramAligned,
+                        analysis::HurstMethod::kMadogramAligned})
+    EXPECT_NEAR(profile_estimate(v, m).hurst, 0.5, 0.05) << analysis::hurst_method_name(m);
 }
 
 TEST(HurstEstimator, SpectralRecoversSlopeOfPowerLawSignals) {
@@ -146,7 +146,7 @@ TEST(HurstEstimator, SpectralRecoversSlopeOfPowerLawSignals) {
   // 5 standard errors.
   for (double h : {0.3, 0.5, 0.8})
     for (uint64_t seed : {1, 2}) {
-      const HurstEstimate e = profile_estimate(power_law_signal(16384, h, seed), HurstMethod::kSpectral);
+      const analysis::HurstEstimate e = profile_estimate(power_law_signal(16384, h, seed), analysis::HurstMethod::kSpectral);
       EXPECT_NEAR(e.hurst, h, 0.1) << "seed " << seed;
       EXPECT_EQ(e.band_lo, 8);
       EXPECT_EQ(e.band_hi, 2048);
@@ -161,27 +161,27 @@ TEST(HurstEstimator, SpectralRecoversHurstOfSpectralSynthesisTerrains) {
     ft_terrain_params p = default_terrain_params();
     p.method = FT_TERRAIN_SPECTRAL, p.width = 512, p.height = 512, p.hurst = h, p.seed = 5;
     const Heightfield hf = generate_terrain(p);
-    HurstOptions o;
-    o.method = HurstMethod::kSpectral;
-    EXPECT_NEAR(estimate_hurst_surface(hf, o).hurst, h, 0.1) << "H " << h;
+    analysis::HurstOptions o;
+    o.method = analysis::HurstMethod::kSpectral;
+    EXPECT_NEAR(analysis::estimate_hurst_surface(hf, o).hurst, h, 0.1) << "H " << h;
   }
 }
 
 TEST(HurstEstimator, TransectMedianIsTheMedianOfRowAndColumnEstimates) {
   const Heightfield hf = terrain(FT_TERRAIN_MIDPOINT, 6, 0.7, 3);  // 65 x 65
-  HurstOptions o;
+  analysis::HurstOptions o;
   o.transects = true;
   o.lag_max = 4;
-  const HurstEstimate e = estimate_hurst_surface(hf, o);
+  const analysis::HurstEstimate e = analysis::estimate_hurst_surface(hf, o);
   std::vector<double> hs;
-  HurstOptions one = o;
+  analysis::HurstOptions one = o;
   one.transects = false;
   for (int y = 0; y < hf.height(); ++y)
-    hs.push_back(estimate_hurst_profile(hf.data() + y * hf.width(), size_t(hf.width()), one).hurst);
+    hs.push_back(analysis::estimate_hurst_profile(hf.data() + y * hf.width(), size_t(hf.width()), one).hurst);
   for (int x = 0; x < hf.width(); ++x) {
     std::vector<float> column(size_t(hf.height()));
     for (int y = 0; y < hf.height(); ++y) column[size_t(y)] = hf.at(x, y);
-    hs.push_back(estimate_hurst_profile(column.data(), column.size(), one).hurst);
+    hs.push_back(analysis::estimate_hurst_profile(column.data(), column.size(), one).hurst);
   }
   std::sort(hs.begin(), hs.end());  // 130 values: the mean of the middle two
   EXPECT_DOUBLE_EQ(e.hurst, 0.5 * (hs[64] + hs[65]));
@@ -192,14 +192,14 @@ TEST(HurstEstimator, TransectMedianIsTheMedianOfRowAndColumnEstimates) {
 
 TEST(HurstEstimator, ResultDoesNotDependOnThreadCount) {
   const Heightfield hf = terrain(FT_TERRAIN_MIDPOINT, 8, 0.6, 11);
-  for (HurstMethod m : {HurstMethod::kVariogram, HurstMethod::kSpectral}) {
-    HurstOptions o;
+  for (analysis::HurstMethod m : {analysis::HurstMethod::kVariogram, analysis::HurstMethod::kSpectral}) {
+    analysis::HurstOptions o;
     o.method = m;
     omp_set_num_threads(1);
-    const double one = estimate_hurst_surface(hf, o).hurst;
+    const double one = analysis::estimate_hurst_surface(hf, o).hurst;
     omp_set_num_threads(3);
-    const double three = estimate_hurst_surface(hf, o).hurst;
-    EXPECT_EQ(one, three) << hurst_method_name(m);
+    const double three = analysis::estimate_hurst_surface(hf, o).hurst;
+    EXPECT_EQ(one, three) << analysis::hurst_method_name(m);
   }
   omp_set_num_threads(omp_get_num_procs());
 }
@@ -215,41 +215,41 @@ TEST(HurstEstimator, RejectsNanConstantShortInputAndEmptyBands) {
   };
   std::vector<float> v = midpoint_profile(8, 0.5, 1);
   v[17] = NAN;
-  EXPECT_EQ(status([&] { profile_estimate(v, HurstMethod::kVariogram); }), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(status([&] { profile_estimate(v, analysis::HurstMethod::kVariogram); }), FT_ERR_INVALID_ARGUMENT);
   const std::vector<float> flat(300, 2.5f);
-  for (HurstMethod m : {HurstMethod::kVariogram, HurstMethod::kMadogramAligned, HurstMethod::kSpectral})
-    EXPECT_EQ(status([&] { profile_estimate(flat, m); }), FT_ERR_INVALID_ARGUMENT) << hurst_method_name(m);
-  EXPECT_EQ(status([&] { profile_estimate(std::vector<float>(5, 1.f), HurstMethod::kVariogram); }),
+  for (analysis::HurstMethod m : {analysis::HurstMethod::kVariogram, analysis::HurstMethod::kMadogramAligned, analysis::HurstMethod::kSpectral})
+    EXPECT_EQ(status([&] { profile_estimate(flat, m); }), FT_ERR_INVALID_ARGUMENT) << analysis::hurst_method_name(m);
+  EXPECT_EQ(status([&] { profile_estimate(std::vector<float>(5, 1.f), analysis::HurstMethod::kVariogram); }),
             FT_ERR_INVALID_ARGUMENT);
-  HurstOptions o;
+  analysis::HurstOptions o;
   o.lag_min = 8, o.lag_max = 4;
   const auto w = midpoint_profile(8, 0.5, 1);
-  EXPECT_EQ(status([&] { estimate_hurst_profile(w.data(), w.size(), o); }), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(status([&] { analysis::estimate_hurst_profile(w.data(), w.size(), o); }), FT_ERR_INVALID_ARGUMENT);
   o.lag_min = 3, o.lag_max = 3.5;  // no power of two inside
-  EXPECT_EQ(status([&] { estimate_hurst_profile(w.data(), w.size(), o); }), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(status([&] { analysis::estimate_hurst_profile(w.data(), w.size(), o); }), FT_ERR_INVALID_ARGUMENT);
   Heightfield hf(16, 16);
   std::fill(hf.data(), hf.data() + hf.size(), 1.0f);
-  EXPECT_EQ(status([&] { estimate_hurst_surface(hf, HurstOptions{}); }), FT_ERR_INVALID_ARGUMENT);
-  HurstOptions t;
+  EXPECT_EQ(status([&] { analysis::estimate_hurst_surface(hf, analysis::HurstOptions{}); }), FT_ERR_INVALID_ARGUMENT);
+  analysis::HurstOptions t;
   t.transects = true;
-  EXPECT_EQ(status([&] { estimate_hurst_surface(hf, t); }), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(status([&] { analysis::estimate_hurst_surface(hf, t); }), FT_ERR_INVALID_ARGUMENT);
 }
 
 // ------------------------------------------------------------ levels, clouds
 
-TEST(LevelSpec, QuantilesInterpolateOrderStatistics) {
+TEST(analysis::LevelSpec, QuantilesInterpolateOrderStatistics) {
   Heightfield hf(5, 1);
   const float z[5] = {4, 0, 3, 1, 2};
   std::copy(z, z + 5, hf.data());
-  EXPECT_EQ(heightfield_quantile(hf, 0), 0);
-  EXPECT_EQ(heightfield_quantile(hf, 1), 4);
-  EXPECT_EQ(heightfield_quantile(hf, 0.5), 2);
-  EXPECT_DOUBLE_EQ(heightfield_quantile(hf, 0.625), 2.5);  // position 2.5
-  EXPECT_TRUE(parse_level("q0.25", "level").quantile);
-  EXPECT_EQ(parse_level("-1.5e1", "level").value, -15);
-  EXPECT_THROW(parse_level("q1.5", "level"), Error);
-  EXPECT_THROW(parse_level("sea", "level"), Error);
-  EXPECT_THROW(parse_level("q", "level"), Error);
+  EXPECT_EQ(analysis::heightfield_quantile(hf, 0), 0);
+  EXPECT_EQ(analysis::heightfield_quantile(hf, 1), 4);
+  EXPECT_EQ(analysis::heightfield_quantile(hf, 0.5), 2);
+  EXPECT_DOUBLE_EQ(analysis::heightfield_quantile(hf, 0.625), 2.5);  // position 2.5
+  EXPECT_TRUE(analysis::parse_level("q0.25", "level").quantile);
+  EXPECT_EQ(analysis::parse_level("-1.5e1", "level").value, -15);
+  EXPECT_THROW(analysis::parse_level("q1.5", "level"), Error);
+  EXPECT_THROW(analysis::parse_level("sea", "level"), Error);
+  EXPECT_THROW(analysis::parse_level("q", "level"), Error);
 }
 
 TEST(FederClouds, BlackBelowThresholdGreyLogarithmicAbove) {
@@ -258,10 +258,10 @@ TEST(FederClouds, BlackBelowThresholdGreyLogarithmicAbove) {
   Heightfield hf(101, 2);
   for (int y = 0; y < 2; ++y)
     for (int x = 0; x <= 100; ++x) hf.at(x, y) = float(x);
-  CloudOptions o;
+  analysis::CloudOptions o;
   o.threshold = {10, false};
   o.bit_depth = 16;
-  const GrayImage img = clouds_image(hf, o);
+  const GrayImage img = analysis::clouds_image(hf, o);
   ASSERT_EQ(img.bit_depth, 16);
   for (int x = 0; x <= 10; ++x) EXPECT_EQ(img.pixels[size_t(x)], 0) << x;
   EXPECT_EQ(img.pixels[100], 65535);
@@ -271,15 +271,15 @@ TEST(FederClouds, BlackBelowThresholdGreyLogarithmicAbove) {
     EXPECT_GT(img.pixels[size_t(x)], img.pixels[size_t(x - 1)]);
   }
   o.bit_depth = 8;
-  EXPECT_EQ(clouds_image(hf, o).pixels[100], 255);
+  EXPECT_EQ(analysis::clouds_image(hf, o).pixels[100], 255);
   o.threshold = {200, false};  // above the data: a black sky, not an error
-  const GrayImage black = clouds_image(hf, o);
+  const GrayImage black = analysis::clouds_image(hf, o);
   EXPECT_TRUE(std::all_of(black.pixels.begin(), black.pixels.end(), [](uint16_t p) { return p == 0; }));
   o.bit_depth = 12;
-  EXPECT_THROW(clouds_image(hf, o), Error);
+  EXPECT_THROW(analysis::clouds_image(hf, o), Error);
   hf.at(3, 1) = NAN;
   o.bit_depth = 8;
-  EXPECT_THROW(clouds_image(hf, o), Error);
+  EXPECT_THROW(analysis::clouds_image(hf, o), Error);
 }
 
 // ---------------------------------------------------------------------- CLI
@@ -314,7 +314,7 @@ class AnalysisCli : public ::testing::Test {
 };
 
 TEST_F(AnalysisCli, AnalyzeReportsRecommendedEstimateOfHeightfieldsAndProfiles) {
-  write_heightfield(terrain(FT_TERRAIN_MIDPOINT, 9, 0.7, 2), path("t.npy"));
+  io::write_heightfield(terrain(FT_TERRAIN_MIDPOINT, 9, 0.7, 2), path("t.npy"));
   CliResult r = run_cli("analyze " + path("t.npy"));
   ASSERT_EQ(r.status, 0) << r.out;
   nlohmann::json j = nlohmann::json::parse(r.out);
@@ -326,7 +326,7 @@ TEST_F(AnalysisCli, AnalyzeReportsRecommendedEstimateOfHeightfieldsAndProfiles) 
     EXPECT_TRUE(j["methods"][m].contains("std_error")) << m;
 
   const auto v = midpoint_profile(12, 0.4, 3);
-  write_npy(path("p.npy"), {int64_t(v.size())}, v.data());
+  io::write_npy(path("p.npy"), {int64_t(v.size())}, v.data());
   r = run_cli("analyze " + path("p.npy") + " --method madogram");
   ASSERT_EQ(r.status, 0) << r.out;
   j = nlohmann::json::parse(r.out);
@@ -343,23 +343,23 @@ TEST_F(AnalysisCli, AnalyzeReportsTheLibrarysAutoChoice) {
     ft_terrain_params p = default_terrain_params();
     p.method = FT_TERRAIN_FBM, p.width = w, p.height = h, p.seed = 4;
     const Heightfield hf = generate_terrain(p);
-    write_heightfield(hf, path("f.npy"));
+    io::write_heightfield(hf, path("f.npy"));
     const CliResult r = run_cli("analyze " + path("f.npy"));
     ASSERT_EQ(r.status, 0) << r.out;
     const nlohmann::json j = nlohmann::json::parse(r.out);
-    const HurstChoice c = choose_hurst_method(w, h);
-    HurstOptions o;
+    const analysis::HurstChoice c = analysis::choose_hurst_method(w, h);
+    analysis::HurstOptions o;
     o.method = c.method;
-    EXPECT_EQ(j["recommended"], hurst_method_name(c.method)) << w;
+    EXPECT_EQ(j["recommended"], analysis::hurst_method_name(c.method)) << w;
     EXPECT_EQ(j["recommended_because"], c.why) << w;
-    EXPECT_NEAR(j["hurst"].get<double>(), estimate_hurst_surface(hf, o).hurst, 1e-12) << w;
+    EXPECT_NEAR(j["hurst"].get<double>(), analysis::estimate_hurst_surface(hf, o).hurst, 1e-12) << w;
   }
-  EXPECT_EQ(choose_hurst_method(300, 260).method, HurstMethod::kSpectral);
-  EXPECT_EQ(choose_hurst_method(100, 90).method, HurstMethod::kVariogram);
-  EXPECT_EQ(choose_hurst_method(257, 257).method, HurstMethod::kVariogramAligned);
-  EXPECT_EQ(choose_hurst_method(257, 1).method, HurstMethod::kVariogramAligned);  // a profile
-  EXPECT_EQ(choose_hurst_method(300, 1).method, HurstMethod::kSpectral);
-  EXPECT_EQ(choose_hurst_method(257, 300).method, HurstMethod::kSpectral);  // one side dyadic is not a grid
+  EXPECT_EQ(analysis::choose_hurst_method(300, 260).method, analysis::HurstMethod::kSpectral);
+  EXPECT_EQ(analysis::choose_hurst_method(100, 90).method, analysis::HurstMethod::kVariogram);
+  EXPECT_EQ(analysis::choose_hurst_method(257, 257).method, analysis::HurstMethod::kVariogramAligned);
+  EXPECT_EQ(analysis::choose_hurst_method(257, 1).method, analysis::HurstMethod::kVariogramAligned);  // a profile
+  EXPECT_EQ(analysis::choose_hurst_method(300, 1).method, analysis::HurstMethod::kSpectral);
+  EXPECT_EQ(analysis::choose_hurst_method(257, 300).method, analysis::HurstMethod::kSpectral);  // one side dyadic is not a grid
 }
 
 TEST_F(AnalysisCli, AnalyzeRecommendsTheSpectralSlopeOffDyadicGrids) {
@@ -367,7 +367,7 @@ TEST_F(AnalysisCli, AnalyzeRecommendsTheSpectralSlopeOffDyadicGrids) {
   // Measured 0.46-0.49 for H = 0.5 over seeds 1-3; the bound is the 0.1.
   ft_terrain_params p = default_terrain_params();
   p.method = FT_TERRAIN_SPECTRAL, p.width = 512, p.height = 512, p.hurst = 0.5, p.seed = 1;
-  write_heightfield(generate_terrain(p), path("s.npy"));
+  io::write_heightfield(generate_terrain(p), path("s.npy"));
   const CliResult r = run_cli("analyze " + path("s.npy") + " --plot " + path("fits.svg"));
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -381,7 +381,7 @@ TEST_F(AnalysisCli, AnalyzeRefusesUnreadableFilesWithAMessage) {
   CliResult r = run_cli("analyze " + path("missing.npy"));
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("fracterra: error:"), std::string::npos) << r.out;
-  write_file_atomically(path("junk.png"), "not a png at all");
+  io::write_file_atomically(path("junk.png"), "not a png at all");
   r = run_cli("analyze " + path("junk.png"));
   EXPECT_EQ(r.status, 1) << r.out;
   r = run_cli("analyze " + path("data.txt"));
@@ -389,10 +389,10 @@ TEST_F(AnalysisCli, AnalyzeRefusesUnreadableFilesWithAMessage) {
 }
 
 TEST_F(AnalysisCli, CloudsWritesAGreyPngOfTheChosenDepth) {
-  write_heightfield(terrain(FT_TERRAIN_ADDITIONS, 7, 0.8, 4), path("t.png"));
+  io::write_heightfield(terrain(FT_TERRAIN_ADDITIONS, 7, 0.8, 4), path("t.png"));
   CliResult r = run_cli("clouds --in " + path("t.png") + " --threshold q0.5 --bits 16 --out " + path("c.png"));
   ASSERT_EQ(r.status, 0) << r.out;
-  GrayImage img = read_png(path("c.png"));
+  GrayImage img = io::read_png(path("c.png"));
   EXPECT_EQ(img.width, 129);
   EXPECT_EQ(img.bit_depth, 16);
   // Half the samples are at or below the median: black.

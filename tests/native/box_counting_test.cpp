@@ -36,19 +36,19 @@ TEST(BoxCounting, CountsEveryBoxASegmentCrossesNotOnlyVertices) {
   // One diagonal-ish segment from (0.5, 0.5) to (9.5, 3.5) in unit boxes:
   // it crosses 9 vertical and 3 horizontal grid lines, so 1 + 9 + 3 boxes.
   const PolylineSet s = from_points({{0.5, 0.5, 0}, {9.5, 3.5, 0}});
-  EXPECT_EQ(count_boxes(s, 1.0, 0.0, 0.0), 13);
+  EXPECT_EQ(analysis::count_boxes(s, 1.0, 0.0, 0.0), 13);
   // Along a grid row: 10 boxes, whichever direction it is drawn in.
-  EXPECT_EQ(count_boxes(from_points({{0.5, 0.5, 0}, {9.5, 0.5, 0}}), 1.0, 0.0, 0.0), 10);
-  EXPECT_EQ(count_boxes(from_points({{9.5, 0.5, 0}, {0.5, 0.5, 0}}), 1.0, 0.0, 0.0), 10);
+  EXPECT_EQ(analysis::count_boxes(from_points({{0.5, 0.5, 0}, {9.5, 0.5, 0}}), 1.0, 0.0, 0.0), 10);
+  EXPECT_EQ(analysis::count_boxes(from_points({{9.5, 0.5, 0}, {0.5, 0.5, 0}}), 1.0, 0.0, 0.0), 10);
   // A segment exactly on a grid line counts one row of boxes, not two.
-  EXPECT_EQ(count_boxes(from_points({{0, 2, 0}, {8, 2, 0}}), 1.0, 0.0, 0.0), 9);
+  EXPECT_EQ(analysis::count_boxes(from_points({{0, 2, 0}, {8, 2, 0}}), 1.0, 0.0, 0.0), 9);
 }
 
 TEST(BoxCounting, StraightLineHasDimensionOne) {
   // A single segment: no prefractal scale, so the range is given explicitly.
-  BoxCountOptions o;
+  analysis::BoxCountOptions o;
   o.min_size = 1.0 / 1024;
-  const BoxCountResult r = box_counting_dimension(from_points({{0, 0, 0}, {3, 1, 0}}), o);
+  const analysis::BoxCountResult r = analysis::box_counting_dimension(from_points({{0, 0, 0}, {3, 1, 0}}), o);
   EXPECT_NEAR(r.dimension, 1.0, 0.01);
   EXPECT_GE(r.sizes.size(), 3u);
   EXPECT_EQ(r.sizes.size(), r.counts.size());
@@ -61,29 +61,29 @@ TEST(BoxCounting, CircleHasDimensionOne) {
     const double t = 2 * std::numbers::pi * i / n;
     pts.push_back({std::cos(t), std::sin(t), 0});
   }
-  const BoxCountResult r = box_counting_dimension(from_points(pts));
+  const analysis::BoxCountResult r = analysis::box_counting_dimension(from_points(pts));
   EXPECT_NEAR(r.dimension, 1.0, 0.02);
 }
 
 TEST(BoxCounting, KochCurveMatchesLog4OverLog3) {
-  const BoxCountResult r = box_counting_dimension(koch(7));
+  const analysis::BoxCountResult r = analysis::box_counting_dimension(koch(7));
   EXPECT_NEAR(r.dimension, std::log(4.0) / std::log(3.0), 0.03) << "stderr " << r.std_error;
 }
 
 TEST(BoxCounting, SierpinskiArrowheadMatchesLog3OverLog2) {
-  const BoxCountResult r = box_counting_dimension(arrowhead(9));
+  const analysis::BoxCountResult r = analysis::box_counting_dimension(arrowhead(9));
   EXPECT_NEAR(r.dimension, std::log(3.0) / std::log(2.0), 0.03) << "stderr " << r.std_error;
 }
 
 TEST(BoxCounting, RejectsDegenerateInput) {
-  EXPECT_THROW(box_counting_dimension(PolylineSet{}), Error);
-  EXPECT_THROW(box_counting_dimension(from_points({{1, 1, 0}, {1, 1, 0}})), Error);
-  EXPECT_THROW(box_counting_dimension(from_points({{0, 0, 0}, {NAN, 1, 0}})), Error);
+  EXPECT_THROW(analysis::box_counting_dimension(PolylineSet{}), Error);
+  EXPECT_THROW(analysis::box_counting_dimension(from_points({{1, 1, 0}, {1, 1, 0}})), Error);
+  EXPECT_THROW(analysis::box_counting_dimension(from_points({{0, 0, 0}, {NAN, 1, 0}})), Error);
   // Two vertices and the automatic range: fewer than 3 sizes, a clear error.
-  EXPECT_THROW(box_counting_dimension(from_points({{0, 0, 0}, {1, 0, 0}})), Error);
-  BoxCountOptions o;
+  EXPECT_THROW(analysis::box_counting_dimension(from_points({{0, 0, 0}, {1, 0, 0}})), Error);
+  analysis::BoxCountOptions o;
   o.grid_shifts = 0;
-  EXPECT_THROW(box_counting_dimension(koch(3), o), Error);
+  EXPECT_THROW(analysis::box_counting_dimension(koch(3), o), Error);
 }
 
 }  // namespace

@@ -43,7 +43,7 @@ CliRun run(const std::string& args) {
   while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
   const int status = ::pclose(p);
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = read_file(err.string());
+  r.err = io::read_file(err.string());
   fs::remove(err);
   return r;
 }
@@ -83,7 +83,7 @@ TEST_F(Cli, PngPgmAndNpyOutputsRoundTrip) {
     const std::string out = path(std::string("t") + ext);
     const CliRun r = run("terrain --levels 6 --seed 9 --out " + out);
     ASSERT_EQ(r.code, 0) << r.err;
-    const Heightfield got = read_heightfield(out);
+    const Heightfield got = io::read_heightfield(out);
     ASSERT_EQ(got.width(), 65);
     // 16-bit formats quantise the normalised range: half a step of 1/65535.
     const double tol = std::string(ext) == ".npy" ? 0.0 : 0.5 * (s.max - s.min) / 65535.0 + 1e-6;
@@ -102,13 +102,13 @@ TEST_F(Cli, MissingOutputFolderIsOneClearLineAndNoFile) {
 TEST_F(Cli, AFailedRunNeverClobbersAGoodFile) {
   const std::string out = path("good.png");
   ASSERT_EQ(run("terrain --levels 5 --seed 1 --out " + out).code, 0);
-  const std::string before = read_file(out);
+  const std::string before = io::read_file(out);
   // A malformed reference file fails after the output was named.
-  write_file_atomically(path("bad.png"), "not a png at all");
+  io::write_file_atomically(path("bad.png"), "not a png at all");
   const CliRun r = run("terrain --levels 5 --reference " + path("bad.png") + " --out " + out);
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.err.find("not a PNG"), std::string::npos) << r.err;
-  EXPECT_EQ(read_file(out), before);
+  EXPECT_EQ(io::read_file(out), before);
   EXPECT_EQ(files(), 2u) << "no temporary file may be left behind";
 }
 
@@ -132,9 +132,9 @@ TEST_F(Cli, ReferenceGridFromAFileSurvivesInTheTerrain) {
   for (int i = 0; i < 25; ++i) ref[size_t(i)] = float(i % 7) - 2.5f;
   Heightfield r(5, 5);
   std::copy(ref.begin(), ref.end(), r.data());
-  write_heightfield(r, path("ref.npy"));
+  io::write_heightfield(r, path("ref.npy"));
   ASSERT_EQ(run("terrain --levels 6 --reference " + path("ref.npy") + " --out " + path("t.npy")).code, 0);
-  const Heightfield t = read_heightfield(path("t.npy"));
+  const Heightfield t = io::read_heightfield(path("t.npy"));
   for (int j = 0; j < 5; ++j)
     for (int i = 0; i < 5; ++i) EXPECT_EQ(t.at(i * 16, j * 16), ref[size_t(j * 5 + i)]);
 }
@@ -234,7 +234,7 @@ TEST_F(Cli, CommandsWithATableOfferEveryOneOfItsSettings) {
   for (const Case& c : cases) {
     const std::string help = run(std::string(c.command) + " --help").out;
     int flags = 0;
-    for (const ft_param_info& r : param_table(c.kind).rows) {
+    for (const ft_param_info& r : tables::param_table(c.kind).rows) {
       const ft_param_info* row = &r;
       if (row->flags & (FT_PARAM_FLAG_STRUCT_SIZE | FT_PARAM_FLAG_DATA) || row->count != 1 ||
           c.own_form.count(row->name))
@@ -255,7 +255,7 @@ TEST_F(Cli, CommandsWithATableOfferEveryOneOfItsSettings) {
   const CliRun add = run("fractalize --in " + path("quad.obj") + " --mode additions --levels 2 --out " + path("a.obj"));
   ASSERT_EQ(mid.code, 0) << mid.err;
   ASSERT_EQ(add.code, 0) << add.err;
-  EXPECT_NE(read_file(path("m.obj")), read_file(path("a.obj"))) << "--mode reaches the library";
+  EXPECT_NE(io::read_file(path("m.obj")), io::read_file(path("a.obj"))) << "--mode reaches the library";
 }
 
 TEST_F(Cli, ErodePresetsKeepTheirUpliftAndFlagsOverrideThem) {
@@ -264,14 +264,14 @@ TEST_F(Cli, ErodePresetsKeepTheirUpliftAndFlagsOverrideThem) {
   // under its table name or its old short name alike.
   const std::string in = path("t.npy");
   ASSERT_EQ(run("terrain --method fbm --size 65 --seed 2 --out " + in).code, 0);
-  Heightfield hf = read_heightfield(in);
+  Heightfield hf = io::read_heightfield(in);
   hf.set_world_size(10);  // erode's default for a file that records none (.npy)
   erosion::ErosionConfig preset = erosion::erosion_preset("valleys", hf);
   ASSERT_GT(preset.fluvial.uplift, 0.0);
   const auto same = [&](const std::string& args, const erosion::ErosionConfig& c) {
     const CliRun r = run("erode --in " + in + " " + args + " --out " + path("e.npy"));
     ASSERT_EQ(r.code, 0) << args << ": " << r.err;
-    const Heightfield got = read_heightfield(path("e.npy")), want = erosion::erode(hf, c, nullptr);
+    const Heightfield got = io::read_heightfield(path("e.npy")), want = erosion::erode(hf, c, nullptr);
     ASSERT_EQ(got.size(), want.size());
     EXPECT_TRUE(std::equal(got.data(), got.data() + got.size(), want.data())) << args;
   };
@@ -316,7 +316,7 @@ TEST_F(Cli, SceneHelpSaysWhatTheAutoCameraElevationPicks) {
     fs::create_directories(dir_ / dir);
     const CliRun r = run("scene --polyline " + path("l.csv") + " --pov " + path(dir + "/s.pov") + " " + args);
     EXPECT_EQ(r.code, 0) << args << ": " << r.err;
-    return read_file(path(dir + "/s.pov"));
+    return io::read_file(path(dir + "/s.pov"));
   };
   const std::string by_default = scene("", "a");
   EXPECT_EQ(by_default, scene("--elevation 70", "b"));
@@ -327,7 +327,7 @@ TEST_F(Cli, SceneHelpSaysWhatTheAutoCameraElevationPicks) {
 
 TEST_F(Cli, ProfileWritesCsvWithTwoToTheLevelsPlusOneRows) {
   ASSERT_EQ(run("profile --levels 8 --hurst 0.7 --out " + path("p.csv")).code, 0);
-  const std::string csv = read_file(path("p.csv"));
+  const std::string csv = io::read_file(path("p.csv"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 257 + 1);  // + header comment
 }
 
@@ -335,7 +335,7 @@ TEST_F(Cli, ReliefPreviewIsAnRgbPng) {
   ASSERT_EQ(run("terrain --levels 6 --out " + path("t.png")).code, 0);
   const CliRun r = run("relief --in " + path("t.png") + " --out " + path("r.png"));
   ASSERT_EQ(r.code, 0) << r.err;
-  const GrayImage img = read_png(path("r.png"));  // read back as luma
+  const GrayImage img = io::read_png(path("r.png"));  // read back as luma
   EXPECT_EQ(img.width, 65);
 }
 
@@ -349,7 +349,7 @@ TEST_F(Cli, TerrainLandformFlagsComeFromTheTable) {
   const CliRun r = run("terrain --levels 6 --seed 3 --levelling 1 --falloff radial --falloff-width 0.5 --edge-level -1 "
                        "--sea fraction --sea-fraction 0.4 --out " + out);
   ASSERT_EQ(r.code, 0) << r.err;
-  const Heightfield hf = read_heightfield(out);
+  const Heightfield hf = io::read_heightfield(out);
   // Outside the inscribed circle (21% of the samples) the falloff reaches the
   // edge level, -1; the sea covering 40% lies above it and floods the corners.
   const float sea = float(hf.stats().min);
@@ -365,12 +365,12 @@ TEST_F(Cli, TerrainFalloffMaskFromAnImage) {
   // A 2 x 2 mask as a 16-bit PNG: black at row 0, column 0, white elsewhere.
   Heightfield mask(2, 2);
   mask.data()[0] = 0, mask.data()[1] = 1, mask.data()[2] = 1, mask.data()[3] = 1;
-  write_heightfield(mask, path("mask.png"));
+  io::write_heightfield(mask, path("mask.png"));
   const std::string common = "terrain --levels 5 --seed 3 --edge-level -1 --out ";
   ASSERT_EQ(run(common + path("raw.npy")).code, 0);
   const CliRun r = run(common + path("masked.npy") + " --falloff-mask " + path("mask.png"));
   ASSERT_EQ(r.code, 0) << r.err;
-  const Heightfield raw = read_heightfield(path("raw.npy")), got = read_heightfield(path("masked.npy"));
+  const Heightfield raw = io::read_heightfield(path("raw.npy")), got = io::read_heightfield(path("masked.npy"));
   EXPECT_EQ(got.at(0, 0), -1.0f);            // weight 0: the edge level
   EXPECT_EQ(got.at(32, 32), raw.at(32, 32));  // weight 1: the height
   EXPECT_EQ(got.at(32, 0), raw.at(32, 0));
@@ -378,7 +378,7 @@ TEST_F(Cli, TerrainFalloffMaskFromAnImage) {
   // Values outside 0..1, another falloff, a missing file: one clear line each, no file.
   Heightfield two(2, 2);
   std::fill(two.data(), two.data() + 4, 2.0f);
-  write_heightfield(two, path("two.npy"));
+  io::write_heightfield(two, path("two.npy"));
   const CliRun bad = run(common + path("bad.npy") + " --falloff-mask " + path("two.npy"));
   EXPECT_NE(bad.code, 0);
   EXPECT_NE(bad.err.find("must be in [0, 1]"), std::string::npos) << bad.err;

@@ -43,9 +43,9 @@ Heightfield terrain(int levels, double hurst, uint64_t seed) {
   return generate_terrain(p);
 }
 
-int count_kind(const PolylineSet& s, ChainKind k) {
+int count_kind(const PolylineSet& s, contour::ChainKind k) {
   int n = 0;
-  for (int64_t i = 0; i < s.line_count(); ++i) n += chain_kind(s, i) == k;
+  for (int64_t i = 0; i < s.line_count(); ++i) n += contour::chain_kind(s, i) == k;
   return n;
 }
 
@@ -63,8 +63,8 @@ TEST(MarchingSquares, EveryVertexLiesOnTheLevelByInterpolation) {
   // floats and t is computed in double, so the residual is rounding of
   // a + t (b - a): a few ulps of the heights, far below 1e-6 of the range.
   const Heightfield hf = terrain(8, 0.6, 5);
-  const double level = heightfield_quantile(hf, 0.4);
-  const PolylineSet s = marching_squares(hf, level);
+  const double level = analysis::heightfield_quantile(hf, 0.4);
+  const PolylineSet s = contour::marching_squares(hf, level);
   ASSERT_GT(s.vertex_count(), 1000);
   const HeightStats st = hf.stats();
   for (const Vec3& p : s.points) {
@@ -91,28 +91,28 @@ TEST(MarchingSquares, OneBumpIsOneCounterClockwiseIslandOfTheRightSize) {
   // length 2 pi r = 62.8; the inscribed polygon of chords through ~40 cells
   // is shorter by < 0.5%, bilinear interpolation adds < 1%.
   const Heightfield hf = field(64, 64, [](double x, double y) { return bump(x, y, 31.5, 30.2, 12); });
-  const PolylineSet s = marching_squares(hf, 0.5);
+  const PolylineSet s = contour::marching_squares(hf, 0.5);
   ASSERT_EQ(s.line_count(), 1);
-  EXPECT_EQ(chain_kind(s, 0), ChainKind::kIsland);
+  EXPECT_EQ(contour::chain_kind(s, 0), contour::ChainKind::kIsland);
   EXPECT_EQ(s.points.front(), s.points.back());  // closed: first vertex repeated
   const double r = 12 * std::sqrt(std::log(2.0));
   EXPECT_NEAR(length(s, 0), 2 * M_PI * r, 0.015 * 2 * M_PI * r);
-  EXPECT_NEAR(signed_area(s, 0), M_PI * r * r, 0.02 * M_PI * r * r);
+  EXPECT_NEAR(contour::signed_area(s, 0), M_PI * r * r, 0.02 * M_PI * r * r);
 }
 
 TEST(MarchingSquares, FourBumpsAreFourIslandsAndAPitIsALake) {
   const Heightfield four = field(80, 80, [](double x, double y) {
     return bump(x, y, 20, 20, 6) + bump(x, y, 60, 20, 6) + bump(x, y, 20, 60, 6) + bump(x, y, 60, 60, 6);
   });
-  const PolylineSet s = marching_squares(four, 0.5);
+  const PolylineSet s = contour::marching_squares(four, 0.5);
   EXPECT_EQ(s.line_count(), 4);
-  EXPECT_EQ(count_kind(s, ChainKind::kIsland), 4);
+  EXPECT_EQ(count_kind(s, contour::ChainKind::kIsland), 4);
   // The same field upside down: four lakes, land all around them.
   const Heightfield pits = field(80, 80, [&](double x, double y) { return -four.at(int(x), int(y)); });
-  const PolylineSet p = marching_squares(pits, -0.5);
+  const PolylineSet p = contour::marching_squares(pits, -0.5);
   EXPECT_EQ(p.line_count(), 4);
-  EXPECT_EQ(count_kind(p, ChainKind::kLake), 4);
-  for (int64_t i = 0; i < 4; ++i) EXPECT_NEAR(signed_area(p, i), -signed_area(s, i), 1e-9);
+  EXPECT_EQ(count_kind(p, contour::ChainKind::kLake), 4);
+  for (int64_t i = 0; i < 4; ++i) EXPECT_NEAR(contour::signed_area(p, i), -contour::signed_area(s, i), 1e-9);
 }
 
 TEST(MarchingSquares, SaddlesFollowTheCellMean) {
@@ -122,14 +122,14 @@ TEST(MarchingSquares, SaddlesFollowTheCellMean) {
   Heightfield hf(4, 4);
   std::fill(hf.data(), hf.data() + hf.size(), 0.0f);
   hf.at(1, 1) = 1, hf.at(2, 2) = 1;
-  EXPECT_EQ(marching_squares(hf, 0.4).line_count(), 1);
-  EXPECT_EQ(marching_squares(hf, 0.6).line_count(), 2);
-  EXPECT_EQ(count_kind(marching_squares(hf, 0.6), ChainKind::kIsland), 2);
+  EXPECT_EQ(contour::marching_squares(hf, 0.4).line_count(), 1);
+  EXPECT_EQ(contour::marching_squares(hf, 0.6).line_count(), 2);
+  EXPECT_EQ(count_kind(contour::marching_squares(hf, 0.6), contour::ChainKind::kIsland), 2);
 }
 
 TEST(MarchingSquares, ChainsCloseInsideAndEndOnTheBorder) {
   const Heightfield hf = terrain(8, 0.5, 9);
-  const PolylineSet s = marching_squares(hf, heightfield_quantile(hf, 0.5));
+  const PolylineSet s = contour::marching_squares(hf, analysis::heightfield_quantile(hf, 0.5));
   const double w = hf.width() - 1, h = hf.height() - 1;
   auto on_border = [&](const Vec3& p) { return p[0] == 0 || p[1] == 0 || p[0] == w || p[1] == h; };
   int open = 0, closed = 0;
@@ -150,9 +150,9 @@ TEST(MarchingSquares, ChainsCloseInsideAndEndOnTheBorder) {
 TEST(MarchingSquares, OutputDoesNotDependOnThreadCount) {
   const Heightfield hf = terrain(9, 0.5, 2);
   omp_set_num_threads(1);
-  const PolylineSet a = marching_squares(hf, 0.1);
+  const PolylineSet a = contour::marching_squares(hf, 0.1);
   omp_set_num_threads(3);
-  const PolylineSet b = marching_squares(hf, 0.1);
+  const PolylineSet b = contour::marching_squares(hf, 0.1);
   omp_set_num_threads(omp_get_num_procs());
   EXPECT_EQ(a.points, b.points);
   EXPECT_EQ(a.offsets, b.offsets);
@@ -161,7 +161,7 @@ TEST(MarchingSquares, OutputDoesNotDependOnThreadCount) {
 TEST(MarchingSquares, SamplesExactlyOnTheLevelGiveNoRepeatedVertices) {
   // A quantile level equals a sample; an integer ramp puts whole rows on it.
   const Heightfield hf = field(9, 9, [](double x, double y) { return std::round(x + 0.3 * y); });
-  const PolylineSet s = marching_squares(hf, 4.0);
+  const PolylineSet s = contour::marching_squares(hf, 4.0);
   ASSERT_GT(s.line_count(), 0);
   for (int64_t i = 0; i < s.line_count(); ++i)
     for (int64_t k = s.line_begin(i); k + 1 < s.line_end(i); ++k)
@@ -171,23 +171,23 @@ TEST(MarchingSquares, SamplesExactlyOnTheLevelGiveNoRepeatedVertices) {
 TEST(MarchingSquares, LevelOutsideTheDataOrConstantFieldIsEmptyNaNIsAnError) {
   const Heightfield hf = terrain(6, 0.5, 1);
   const HeightStats st = hf.stats();
-  EXPECT_EQ(marching_squares(hf, st.max + 1).line_count(), 0);
-  EXPECT_EQ(marching_squares(hf, st.min - 1).line_count(), 0);
+  EXPECT_EQ(contour::marching_squares(hf, st.max + 1).line_count(), 0);
+  EXPECT_EQ(contour::marching_squares(hf, st.min - 1).line_count(), 0);
   Heightfield flat(10, 10);
   std::fill(flat.data(), flat.data() + flat.size(), 3.0f);
-  EXPECT_EQ(marching_squares(flat, 3.0).line_count(), 0);
-  EXPECT_EQ(marching_squares(flat, 2.0).line_count(), 0);
+  EXPECT_EQ(contour::marching_squares(flat, 3.0).line_count(), 0);
+  EXPECT_EQ(contour::marching_squares(flat, 2.0).line_count(), 0);
   Heightfield holes = terrain(5, 0.5, 1);
   holes.at(4, 7) = NAN;
   try {
-    marching_squares(holes, 0.0);
+    contour::marching_squares(holes, 0.0);
     FAIL() << "NaN accepted";
   } catch (const Error& e) {
     EXPECT_EQ(e.status(), FT_ERR_INVALID_ARGUMENT);
     EXPECT_NE(std::string(e.what()).find("x 4, y 7"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(marching_squares(hf, NAN), Error);
-  EXPECT_THROW(marching_squares(Heightfield(1, 5), 0.0), Error);
+  EXPECT_THROW(contour::marching_squares(hf, NAN), Error);
+  EXPECT_THROW(contour::marching_squares(Heightfield(1, 5), 0.0), Error);
 }
 
 // ------------------------------------------------ coastline dimension D = 2 - H
@@ -195,8 +195,8 @@ TEST(MarchingSquares, LevelOutsideTheDataOrConstantFieldIsEmptyNaNIsAnError) {
 // Box sizes for coastlines of sampled terrains: from 4 cells (below that the
 // marching-squares chords straighten the curve and N(eps) tends to 1/eps) up
 // to the box counter's default E / 4.
-BoxCountOptions coastline_boxes() {
-  BoxCountOptions o;
+analysis::BoxCountOptions coastline_boxes() {
+  analysis::BoxCountOptions o;
   o.min_size = 4;
   return o;
 }
@@ -216,8 +216,8 @@ TEST(CoastlineDimension, MedianLevelSetOfMidpointTerrainsHasDimensionTwoMinusH) 
       ft_terrain_params p = default_terrain_params();
       p.levels = 10, p.hurst = h, p.seed = uint64_t(k + 1), p.threads = 1;
       const Heightfield hf = generate_terrain(p);
-      const PolylineSet s = marching_squares(hf, heightfield_quantile(hf, 0.5));
-      d[size_t(k)] = box_counting_dimension(s, coastline_boxes()).dimension;
+      const PolylineSet s = contour::marching_squares(hf, analysis::heightfield_quantile(hf, 0.5));
+      d[size_t(k)] = analysis::box_counting_dimension(s, coastline_boxes()).dimension;
     }
     double mean = 0;
     for (double v : d) mean += v / 10;
@@ -231,18 +231,18 @@ TEST(CoastlineDimension, ContourOfAConeIsACircleAndOfARampALineOfDimensionOne) {
   // D = 1. A smooth curve covers N = L / eps + O(1) boxes, so the slope
   // tends to 1 only for boxes well below its size: boxes 1..25 cells (1.016
   // measured for the circle; 1.04 at 1..100, 1.07 at 4..100).
-  BoxCountOptions small;
+  analysis::BoxCountOptions small;
   small.min_size = 1, small.max_size = 25;
   const Heightfield cone = field(513, 513, [](double x, double y) { return std::hypot(x - 256.3, y - 255.8); });
-  const PolylineSet circle = marching_squares(cone, 200);
+  const PolylineSet circle = contour::marching_squares(cone, 200);
   ASSERT_EQ(circle.line_count(), 1);
-  EXPECT_EQ(chain_kind(circle, 0), ChainKind::kLake);  // land (higher) outside
-  EXPECT_NEAR(box_counting_dimension(circle, small).dimension, 1.0, 0.03);
+  EXPECT_EQ(contour::chain_kind(circle, 0), contour::ChainKind::kLake);  // land (higher) outside
+  EXPECT_NEAR(analysis::box_counting_dimension(circle, small).dimension, 1.0, 0.03);
   const Heightfield ramp = field(513, 513, [](double x, double y) { return 0.3 * x + 0.7 * y; });
-  const PolylineSet line = marching_squares(ramp, 180);
+  const PolylineSet line = contour::marching_squares(ramp, 180);
   ASSERT_EQ(line.line_count(), 1);
-  EXPECT_EQ(chain_kind(line, 0), ChainKind::kOpen);
-  EXPECT_NEAR(box_counting_dimension(line, small).dimension, 1.0, 0.03);
+  EXPECT_EQ(contour::chain_kind(line, 0), contour::ChainKind::kOpen);
+  EXPECT_NEAR(analysis::box_counting_dimension(line, small).dimension, 1.0, 0.03);
 }
 
 // ---------------------------------------------------------------------- CLI
@@ -261,14 +261,14 @@ TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
   const auto dir = std::filesystem::temp_directory_path() / ("ft_coastline_cli_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string t = (dir / "t.npy").string(), csv = (dir / "c.csv").string(), png = (dir / "p.png").string();
-  write_heightfield(terrain(8, 0.7, 4), t);
+  io::write_heightfield(terrain(8, 0.7, 4), t);
   std::string out;
   ASSERT_EQ(run_cli("coastline --in " + t + " --level q0.5 --out " + csv + " --preview " + png, &out), 0) << out;
   const nlohmann::json j = nlohmann::json::parse(out);
-  const PolylineSet s = read_polylines(csv);
+  const PolylineSet s = io::read_polylines(csv);
   EXPECT_EQ(j["chains"].get<int64_t>(), s.line_count());
   EXPECT_EQ(j["islands"].get<int>() + j["lakes"].get<int>() + j["open_chains"].get<int>(), s.line_count());
-  EXPECT_EQ(j["islands"].get<int>(), count_kind(s, ChainKind::kIsland));
+  EXPECT_EQ(j["islands"].get<int>(), count_kind(s, contour::ChainKind::kIsland));
   EXPECT_TRUE(std::filesystem::exists(png));
   // The coastline file read back by analyze: a curve, D by box counting.
   ASSERT_EQ(run_cli("analyze " + csv, &out), 0) << out;
@@ -284,11 +284,11 @@ TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
   Heightfield sized = terrain(8, 0.7, 4);
   sized.set_world_size(10);
   const std::string wpng = (dir / "w.png").string();  // .png records the world size, .npy cannot
-  write_heightfield(sized, wpng);
+  io::write_heightfield(sized, wpng);
   ASSERT_EQ(run_cli("coastline --in " + wpng + " --level q0.5 --out " + csv, &out), 0) << out;
-  const PolylineSet g = read_polylines(csv);
+  const PolylineSet g = io::read_polylines(csv);
   ASSERT_EQ(run_cli("coastline --in " + wpng + " --level q0.5 --world --out " + csv, &out), 0) << out;
-  const PolylineSet w = read_polylines(csv);
+  const PolylineSet w = io::read_polylines(csv);
   ASSERT_EQ(w.vertex_count(), g.vertex_count());
   for (size_t i = 0; i < w.points.size(); ++i) {
     EXPECT_DOUBLE_EQ(w.points[i][0], g.points[i][0] * (10.0 / 256));
@@ -305,7 +305,7 @@ TEST(CoastlineCli, ALevelOutsideTheHeightsIsAClearErrorAndWritesNothing) {
   std::filesystem::create_directories(dir);
   const std::string t = (dir / "t.npy").string(), csv = (dir / "c.csv").string();
   const Heightfield hf = terrain(6, 0.7, 4);
-  write_heightfield(hf, t);
+  io::write_heightfield(hf, t);
   const HeightStats s = hf.stats();
   std::string out;
   for (double level : {s.max + 1, s.min - 1, 1e6}) {
@@ -332,7 +332,7 @@ TEST(CoastlineCli, WorldUnitsFromTerrainsOfEveryMethod) {
     ASSERT_EQ(run_cli(std::string("terrain --method ") + method + size + " --world-size 40 --out " + t, &out), 0)
         << out;
     ASSERT_EQ(run_cli("coastline --in " + t + " --world --out " + csv, &out), 0) << method << ": " << out;
-    const PolylineSet w = read_polylines(csv);
+    const PolylineSet w = io::read_polylines(csv);
     ASSERT_GT(w.vertex_count(), 0) << method;
     double hi = 0;
     for (const Vec3& p : w.points) hi = std::max({hi, p[0], p[1]});

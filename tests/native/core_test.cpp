@@ -83,25 +83,25 @@ TEST(Memory, RefusesAllocationAboveCapWithSizeInMessage) {
   EXPECT_EQ(memory_cap(), kDefaultMemoryCap);
 }
 
-TEST(AtomicFile, UncommittedWriteLeavesOldFileIntact) {
+TEST(io::AtomicFile, UncommittedWriteLeavesOldFileIntact) {
   const auto dir = std::filesystem::temp_directory_path() / ("ft_atomic_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "f.txt").string();
-  write_file_atomically(path, "old");
+  io::write_file_atomically(path, "old");
   {
-    AtomicFile f(path);
+    io::AtomicFile f(path);
     f.write("new but never committed");
   }  // destroyed without commit, as when a writer throws midway
-  EXPECT_EQ(read_file(path), "old");
+  EXPECT_EQ(io::read_file(path), "old");
   size_t files = 0;
   for (auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();
   EXPECT_EQ(files, 1u) << "the temporary file must be removed";
   std::filesystem::remove_all(dir);
 }
 
-TEST(AtomicFile, MissingFolderIsAClearIoError) {
+TEST(io::AtomicFile, MissingFolderIsAClearIoError) {
   try {
-    write_file_atomically("/nonexistent-folder-ft/x.png", "x");
+    io::write_file_atomically("/nonexistent-folder-ft/x.png", "x");
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.status(), FT_ERR_IO);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "fracterra/fracterra.h"
 
@@ -70,6 +71,40 @@ TEST(ErosionCapi, BadInputIsAStatusWithTheParameterNamed) {
   EXPECT_NE(std::string(ft_last_error()).find("valleys"), std::string::npos);
   EXPECT_EQ(ft_erode(nullptr, &p, &out, nullptr), FT_ERR_INVALID_ARGUMENT);
   ft_heightfield_free(hf);
+}
+
+// Issue 25's input: zeros with one sample at +1e38 and one at -1e38. The
+// fluvial solve overflowed (inf - inf = NaN) and its routing never ended;
+// now the library refuses it, naming the sample and the limit, and takes
+// the same terrain scaled into the limit.
+TEST(ErosionCapi, HeightsBeyondTheFloatLimitAreRefusedNamingIt) {
+  for (const float big : {1e38f, 2e15f, 1e15f}) {
+    std::vector<float> z(65 * 65, 0.0f);
+    z[20 * 65 + 20] = big;
+    z[40 * 65 + 40] = -big;
+    ft_heightfield* hf = nullptr;
+    ASSERT_EQ(ft_heightfield_create(65, 65, z.data(), &hf), FT_OK) << ft_last_error();
+    ft_erosion_params p;
+    ft_erosion_params_init(&p);
+    p.fluvial_steps = 60;
+    ft_heightfield* out = reinterpret_cast<ft_heightfield*>(1);
+    const ft_status s = ft_erode(hf, &p, &out, nullptr);
+    if (big > 1e15f) {
+      EXPECT_EQ(s, FT_ERR_INVALID_ARGUMENT) << big;
+      const std::string m = ft_last_error();
+      EXPECT_NE(m.find("sample 20, 20"), std::string::npos) << m;
+      EXPECT_NE(m.find("within +-1e+15 world units"), std::string::npos) << m;
+      EXPECT_EQ(out, nullptr);
+    } else {
+      ASSERT_EQ(s, FT_OK) << ft_last_error();
+      double mn, mx, mean, sd;
+      ASSERT_EQ(ft_heightfield_stats(out, &mn, &mx, &mean, &sd), FT_OK);
+      // Within the input's range, to float rounding (an ulp at 1e15 is 1.3e8).
+      EXPECT_TRUE(std::isfinite(mn) && std::isfinite(mx) && mn >= -1.001e15 && mx <= 1.001e15) << mn << " " << mx;
+      ft_heightfield_free(out);
+    }
+    ft_heightfield_free(hf);
+  }
 }
 
 TEST(ErosionCapi, TheFittedPresetAndItsUpliftFlagAreValidated) {

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@
 #include "erosion/flow_graph.hpp"
 #include "erosion/multiple_flow.hpp"
 #include "erosion/presets.hpp"
+#include "io/heightfield_io.hpp"
 #include "terrain/terrain.hpp"
 
 namespace ft::erosion {
@@ -290,6 +292,33 @@ TEST(FlowRouting, EveryCellDrainsOnFractalTerrains) {
     // Filling only raises.
     for (size_t i = 0; i < z.size(); ++i) ASSERT_GE(z[i], before[i]);
   }
+}
+
+// Issue 24's hang, at its smallest: erosion wears a plain towards a base
+// level of 0 into subnormal heights, and a cell 2^-149 (the smallest
+// subnormal) above its diagonal neighbours, higher than its straight ones,
+// drew a Rho8 number below 2^-24, which made the diagonal weight exactly
+// 1/2: the weighted drop rounded to 0, routing called the cell a pit, the
+// fills (comparing heights) saw it drain, and route_and_fill looped
+// forever (seed 5 of the add-on's default terrain at levels 10, Valleys).
+TEST(FlowRouting, ACellASubnormalStepAboveItsDiagonalsDrainsUnderRho8) {
+  const float tiny = std::numeric_limits<float>::denorm_min();
+  const D8Grid g{5, 5, false, 1.0};
+  std::vector<float> z(g.size(), 0.0f);  // the edges: the base level
+  auto at = [&](int x, int y) -> float& { return z[size_t(y) * 5 + x]; };
+  for (int y = 1; y <= 3; ++y)
+    for (int x = 1; x <= 3; ++x) at(x, y) = (x + y) % 2 ? 1.0f : tiny;  // straight neighbours high
+  at(2, 2) = 2 * tiny;
+  FlowGraph graph;
+  graph.random.assign(g.size(), 1e-9f);  // r < 2^-24 everywhere
+  route_steepest(g, z.data(), -1, graph);
+  EXPECT_EQ(graph.pits, 0);
+  const int32_t r = graph.receiver[2 * 5 + 2];
+  EXPECT_TRUE(at(r % 5, r / 5) == tiny) << "receiver " << r;
+  const std::vector<float> before = z;
+  route_and_fill(g, z.data(), -1, graph);  // hung here
+  EXPECT_EQ(graph.pits, 0);
+  EXPECT_EQ(z, before) << "nothing to fill";
 }
 
 TEST(FlowRouting, LocalFillsDrainThePitsDiffusionLeaves) {
@@ -653,6 +682,29 @@ TEST(ErodeCli, WritesTheTerrainAndSixMapsWithTheirRanges) {
   // The table's words, as the C ABI and Python say them (the CLI's flags come from the table).
   EXPECT_NE(message.find("evaporation must be in [0, 1], got 2"), std::string::npos) << message;
   EXPECT_FALSE(fs::exists(dir / "x.png"));
+  fs::remove_all(dir);
+}
+
+// Issue 25's input through the CLI: a clear refusal naming the limit, exit
+// code 1, no output file (it ran forever before).
+TEST(ErodeCli, RefusesHeightsThatWouldOverflowNamingTheLimit) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("ft_erode_big_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  Heightfield hf(65, 65);
+  std::fill(hf.data(), hf.data() + hf.size(), 0.0f);
+  hf.at(20, 20) = 1e38f;
+  hf.at(40, 40) = -1e38f;
+  io::write_heightfield(hf, (dir / "t.npy").string());
+  const std::string cli = FT_CLI_PATH, d = dir.string();
+  const std::string run = cli + " erode --in " + d + "/t.npy --fluvial 60 --out " + d + "/o.npy 2>" + d + "/err.txt";
+  EXPECT_EQ(1, WEXITSTATUS(std::system(run.c_str())));
+  std::ifstream err(dir / "err.txt");
+  const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(message.find("sample 20, 20 is 1e+38: erosion needs finite heights within +-1e+15 world units"),
+            std::string::npos)
+      << message;
+  EXPECT_FALSE(fs::exists(dir / "o.npy"));
   fs::remove_all(dir);
 }
 

@@ -71,7 +71,7 @@ Child run_cli(const std::vector<std::string>& args, rlim_t fsize_limit = 0, bool
   }
   Child c;
   ::waitpid(pid, &c.status, 0);
-  c.err = read_file(err_path.string());
+  c.err = io::read_file(err_path.string());
   fs::remove(err_path);
   return c;
 }
@@ -107,11 +107,11 @@ class KilledWrite : public Folder, public ::testing::WithParamInterface<const ch
 TEST_P(KilledWrite, LeavesThePreviousFileIntactAndTheNextWriteCleansUp) {
   const std::string name = std::string("t") + GetParam(), out = path(name);
   ASSERT_EQ(run_cli({"terrain", "--levels", "3", "--out", out}).exit_code(), 0);
-  const std::string before = read_file(out);
+  const std::string before = io::read_file(out);
 
   const Child killed = run_cli({"terrain", "--levels", "8", "--seed", "2", "--out", out}, kLimit);
   ASSERT_TRUE(killed.killed_by(SIGXFSZ)) << "status " << killed.status << ": " << killed.err;
-  EXPECT_EQ(read_file(out), before) << "the destination changed";
+  EXPECT_EQ(io::read_file(out), before) << "the destination changed";
   // A killed process cannot remove its temporary file...
   const auto left = others(name);
   ASSERT_EQ(left.size(), 1u);
@@ -119,21 +119,21 @@ TEST_P(KilledWrite, LeavesThePreviousFileIntactAndTheNextWriteCleansUp) {
 
   // ...the next write of the same file removes it, as its writer is gone.
   ASSERT_EQ(run_cli({"terrain", "--levels", "4", "--out", out}).exit_code(), 0);
-  EXPECT_NE(read_file(out), before);
+  EXPECT_NE(io::read_file(out), before);
   EXPECT_TRUE(others(name).empty());
-  EXPECT_EQ(read_heightfield(out).width(), 17);
+  EXPECT_EQ(io::read_heightfield(out).width(), 17);
 }
 
 TEST_P(KilledWrite, RefusedByTheDiskIsAnIoErrorAndLeavesNothingBehind) {
   const std::string name = std::string("t") + GetParam(), out = path(name);
   ASSERT_EQ(run_cli({"terrain", "--levels", "3", "--out", out}).exit_code(), 0);
-  const std::string before = read_file(out);
+  const std::string before = io::read_file(out);
 
   const Child refused = run_cli({"terrain", "--levels", "8", "--out", out}, kLimit, /*ignore_sigxfsz=*/true);
   EXPECT_EQ(refused.exit_code(), 1) << refused.err;
   EXPECT_NE(refused.err.find("fracterra: error: "), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find(out), std::string::npos) << "the message names the file: " << refused.err;
-  EXPECT_EQ(read_file(out), before);
+  EXPECT_EQ(io::read_file(out), before);
   EXPECT_TRUE(others(name).empty()) << "temporary file left behind";
 }
 
@@ -143,11 +143,11 @@ INSTANTIATE_TEST_SUITE_P(Formats, KilledWrite, ::testing::Values(".npy", ".pgm",
 TEST_F(Folder, RefusedPolylineWriteLeavesThePreviousFileIntact) {
   const std::string out = path("p.csv");
   ASSERT_EQ(run_cli({"profile", "--levels", "3", "--out", out}).exit_code(), 0);
-  const std::string before = read_file(out);
+  const std::string before = io::read_file(out);
   // 2^12 + 1 vertices of ~80 characters: ~330 KiB.
   const Child refused = run_cli({"profile", "--levels", "12", "--out", out}, kLimit, true);
   EXPECT_EQ(refused.exit_code(), 1) << refused.err;
-  EXPECT_EQ(read_file(out), before);
+  EXPECT_EQ(io::read_file(out), before);
   EXPECT_TRUE(others("p.csv").empty());
 }
 
@@ -155,8 +155,8 @@ TEST_F(Folder, StaleTemporaryOfALiveWriterIsLeftAlone) {
   // Our own pid is alive: a temp named after it must survive another write.
   const std::string out = path("f.txt");
   const std::string live = path(".f.txt.tmp." + std::to_string(::getppid()) + ".abcdef");
-  write_file_atomically(live, "in progress");
-  write_file_atomically(out, "x");
+  io::write_file_atomically(live, "in progress");
+  io::write_file_atomically(out, "x");
   EXPECT_TRUE(fs::exists(live));
 }
 
@@ -182,7 +182,7 @@ TEST_F(Folder, CliRefusesProfileAboveTheCapWithTheSize) {
 
 std::string corpus(const std::string& harness, const std::string& name) {
   // The fuzz seeds beside tests/data: tests/fuzz/corpus/<harness>/<name>.
-  return read_file((fs::path(FT_TEST_DATA_DIR).parent_path() / "fuzz/corpus" / harness / name).string());
+  return io::read_file((fs::path(FT_TEST_DATA_DIR).parent_path() / "fuzz/corpus" / harness / name).string());
 }
 
 ft_status status_of(const std::function<void()>& f, std::string* message = nullptr) {
@@ -198,26 +198,26 @@ ft_status status_of(const std::function<void()>& f, std::string* message = nullp
 TEST(Readers, HugeImageHeadersAreRefusedBeforeAllocatingWithTheSize) {
   std::string msg;
   // PNG header claiming 2^20 x 2^20 16-bit pixels.
-  EXPECT_EQ(status_of([] { decode_png(corpus("png", "huge_header.png")); }, &msg), FT_ERR_TOO_LARGE);
+  EXPECT_EQ(status_of([] { io::decode_png(corpus("png", "huge_header.png")); }, &msg), FT_ERR_TOO_LARGE);
   // Raw rows of 2^21 bytes x 2^20 rows, x3 for libpng's transforms.
   EXPECT_NE(msg.find("needs 6144.00 GiB"), std::string::npos) << msg;
   // PGM header claiming 2^20 x 2^20 pixels.
-  EXPECT_EQ(status_of([] { decode_pgm(corpus("pgm", "p5_huge.pgm")); }, &msg), FT_ERR_TOO_LARGE);
+  EXPECT_EQ(status_of([] { io::decode_pgm(corpus("pgm", "p5_huge.pgm")); }, &msg), FT_ERR_TOO_LARGE);
   EXPECT_NE(msg.find("needs 2048.00 GiB"), std::string::npos) << msg;
 }
 
 TEST(Readers, ShortNpyDataIsAFormatErrorNotAnAllocation) {
   std::string msg;
-  EXPECT_EQ(status_of([] { decode_npy(corpus("npy", "short_data.npy")); }, &msg), FT_ERR_FORMAT);
+  EXPECT_EQ(status_of([] { io::decode_npy(corpus("npy", "short_data.npy")); }, &msg), FT_ERR_FORMAT);
   EXPECT_NE(msg.find("shorter than its shape"), std::string::npos) << msg;
 }
 
 TEST(Readers, FileLargerThanTheCapIsRefusedBeforeReading) {
   const std::string p = (fs::temp_directory_path() / ("ft_hardening_big_" + std::to_string(::getpid()))).string();
-  write_file_atomically(p, std::string(3 << 20, 'x'));
+  io::write_file_atomically(p, std::string(3 << 20, 'x'));
   set_memory_cap(1 << 20);
   std::string msg;
-  EXPECT_EQ(status_of([&] { read_file(p); }, &msg), FT_ERR_TOO_LARGE);
+  EXPECT_EQ(status_of([&] { io::read_file(p); }, &msg), FT_ERR_TOO_LARGE);
   set_memory_cap(0);
   EXPECT_NE(msg.find("needs 3.00 MiB"), std::string::npos) << msg;
   fs::remove(p);
@@ -246,7 +246,7 @@ class PovInjection : public Folder {
 };
 
 TEST_F(PovInjection, PositiveControlARawDirectiveDoesWriteTheFile) {
-  write_file_atomically(path("raw.pov"), std::string("#version 3.7;\n") + kDirective +
+  io::write_file_atomically(path("raw.pov"), std::string("#version 3.7;\n") + kDirective +
                                              "\ncamera { location <0, 1, -3> look_at 0 }\n"
                                              "light_source { <2, 4, -3> rgb 1 }\nsphere { 0, 1 pigment { rgb 1 } }\n");
   pov::render_scene(path("raw.pov"), path("raw.png"), tiny());

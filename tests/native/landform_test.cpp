@@ -231,7 +231,7 @@ TEST(Landform, TileSetsTellTerrainsWithOtherMasksApart) {
   auto identity = [](const std::vector<float>& mask) {
     ft_terrain_params p = params(FT_TERRAIN_MIDPOINT);
     p.falloff = FT_FALLOFF_CUSTOM, p.falloff_mask = mask.data(), p.falloff_mask_width = p.falloff_mask_height = 3;
-    return terrain_identity(p);
+    return tiles::terrain_identity(p);
   };
   EXPECT_EQ(identity(a), identity(same));  // the content counts, not where it lies
   EXPECT_NE(identity(a), identity(other));

@@ -203,9 +203,9 @@ TEST(Mandelbrot, LevelCurvesAreCurvesOfEqualEscapeTime) {
   // (at most ~0.2 for nu = 3 at 0.016 per sample: |grad nu| < 12 there).
   const ft_terrain_params p = mandelbrot_params(257, 257, -0.5, 0.0, 1.0, 256, 1);
   const Heightfield hf = generate_terrain(p);
-  const PolylineSet set = marching_squares(hf, std::vector<double>{mandelbrot_height(3.0, p.sigma)});
+  const PolylineSet set = contour::marching_squares(hf, std::vector<double>{mandelbrot_height(3.0, p.sigma)});
   ASSERT_EQ(set.line_count(), 1);
-  EXPECT_EQ(chain_kind(set, 0), ChainKind::kIsland);
+  EXPECT_EQ(contour::chain_kind(set, 0), contour::ChainKind::kIsland);
   const double step = 4.0 / 256;
   double worst = 0;
   for (const Vec3& v : set.points) {
@@ -215,9 +215,9 @@ TEST(Mandelbrot, LevelCurvesAreCurvesOfEqualEscapeTime) {
   EXPECT_LT(worst, 0.2);
   // Several levels come out one after another, nested loops.
   const PolylineSet rings =
-      marching_squares(hf, std::vector<double>{mandelbrot_height(2.0, 1.0), mandelbrot_height(3.0, 1.0)});
+      contour::marching_squares(hf, std::vector<double>{mandelbrot_height(2.0, 1.0), mandelbrot_height(3.0, 1.0)});
   EXPECT_EQ(rings.line_count(), 2);
-  EXPECT_GT(std::fabs(signed_area(rings, 0)), std::fabs(signed_area(rings, 1)));
+  EXPECT_GT(std::fabs(contour::signed_area(rings, 0)), std::fabs(contour::signed_area(rings, 1)));
 }
 
 TEST(Mandelbrot, RejectsBadParametersWithTheirName) {

@@ -292,13 +292,13 @@ TEST(Fbm, SameSeedSameBitsOnAnyThreadCountAndSimdPath) {
       const Heightfield one = generate_terrain(p);
       p.threads = 2;
       const Heightfield two = generate_terrain(p);
-      detail::set_simd_path(detail::SimdPath::kBaseline);
-      ASSERT_STREQ(detail::active_simd_path(), "baseline");
+      noise::detail::set_simd_path(noise::detail::SimdPath::kBaseline);
+      ASSERT_STREQ(noise::detail::active_simd_path(), "baseline");
       const Heightfield base = generate_terrain(p);
-      detail::set_simd_path(detail::SimdPath::kAuto);
+      noise::detail::set_simd_path(noise::detail::SimdPath::kAuto);
       EXPECT_TRUE(same_bits(one, two)) << "basis " << basis << " variant " << variant;
       EXPECT_TRUE(same_bits(one, base)) << "basis " << basis << " variant " << variant << ": "
-                                        << detail::active_simd_path() << " vs baseline";
+                                        << noise::detail::active_simd_path() << " vs baseline";
       p.seed = 2;
       EXPECT_FALSE(same_bits(one, generate_terrain(p))) << "another seed, another terrain";
     }
@@ -493,7 +493,7 @@ TEST(NoiseCli, WritesAnyWidthByHeightAndRejectsBadSizes) {
                             " --size 96x40 --octaves 5 --lacunarity 2.01 --hurst 0.7 --basis simplex "
                             "--variant hybrid --out " + out;
     ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-    const Heightfield hf = read_heightfield(out);
+    const Heightfield hf = io::read_heightfield(out);
     EXPECT_EQ(hf.width(), 96);
     EXPECT_EQ(hf.height(), 40);
   }

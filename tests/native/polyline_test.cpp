@@ -276,14 +276,14 @@ TEST(ClassicCurves, KochAndArrowheadHaveTheirCountsLengthsAndEnds) {
   p.method = FT_POLYLINE_KOCH;
   PolylineSet k = generate_polylines(p);
   EXPECT_EQ(k.vertex_count(), 1025);
-  EXPECT_NEAR(line_stats(k, 0).gamma, std::pow(4.0 / 3.0, 5), 1e-9);
+  EXPECT_NEAR(analysis::line_stats(k, 0).gamma, std::pow(4.0 / 3.0, 5), 1e-9);
   EXPECT_EQ(k.points.back(), (Vec3{1, 0, 0}));
   p.method = FT_POLYLINE_SIERPINSKI;
   for (int d : {4, 5}) {
     p.depth = d;
     PolylineSet a = generate_polylines(p);
     EXPECT_EQ(a.vertex_count(), int64_t(std::pow(3, d)) + 1);
-    EXPECT_NEAR(line_stats(a, 0).gamma, std::pow(1.5, d), 1e-9);
+    EXPECT_NEAR(analysis::line_stats(a, 0).gamma, std::pow(1.5, d), 1e-9);
     EXPECT_EQ(a.points.back(), (Vec3{1, 0, 0}));
   }
 }
@@ -342,10 +342,10 @@ TEST(Ifs, SierpinskiGasketHasBoxDimensionLog3OverLog2) {
     ASSERT_GE(q[1], -1e-12);
     ASSERT_LE(q[1], h * (1 - std::fabs(2 * q[0] - 1)) + 1e-12) << q[0] << " " << q[1];
   }
-  BoxCountOptions o;
+  analysis::BoxCountOptions o;
   o.max_size = 0.25;
   o.min_size = 1.0 / 128;
-  const BoxCountResult r = box_counting_dimension(s, o);
+  const analysis::BoxCountResult r = analysis::box_counting_dimension(s, o);
   EXPECT_NEAR(r.dimension, std::log(3.0) / std::log(2.0), 0.05) << "stderr " << r.std_error;
 }
 
@@ -386,21 +386,21 @@ TEST(PolylineStats, MatchEquationOneOnAKnownLine) {
   PolylineSet s;
   for (Vec3 v : {Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0}, Vec3{1, 0, 0}}) s.add(v);
   s.end_line();
-  const LineStats st = line_stats(s, 0);
+  const analysis::LineStats st = analysis::line_stats(s, 0);
   EXPECT_DOUBLE_EQ(st.eta, 0.5);
   EXPECT_DOUBLE_EQ(st.chi, 0.5 / 3);
   EXPECT_DOUBLE_EQ(st.gamma, std::sqrt(2.0));
   // M_r / M_{r-1} = sqrt 2: D = 1 / (1 - 1/2) = 2, the dragon's value.
-  EXPECT_DOUBLE_EQ(mass_dimension(s, 0), 2.0);
+  EXPECT_DOUBLE_EQ(analysis::mass_dimension(s, 0), 2.0);
   // Scale-free: the same shape on a chord of 10 gives the same numbers.
   PolylineSet big;
   for (Vec3 v : {Vec3{0, 0, 0}, Vec3{5, 5, 0}, Vec3{10, 0, 0}}) big.add(v);
   big.end_line();
-  EXPECT_DOUBLE_EQ(line_stats(big, 0).eta, 0.5);
+  EXPECT_DOUBLE_EQ(analysis::line_stats(big, 0).eta, 0.5);
 }
 
 TEST(PolylineStats, ReportHasEveryMeasure) {
-  const nlohmann::json j = polyline_report(generate_polylines(fpl(0.2, 10)));
+  const nlohmann::json j = analysis::polyline_report(generate_polylines(fpl(0.2, 10)));
   for (const char* k : {"lines", "vertices", "length", "eta", "chi", "gamma", "mass_dimension", "box_counting"})
     EXPECT_TRUE(j.contains(k)) << k;
   EXPECT_GT(j["box_counting"]["dimension"].get<double>(), 1.0);
@@ -410,7 +410,7 @@ TEST(PolylineStats, ReportHasEveryMeasure) {
   two.add({0, 0, 0});
   two.add({1, 0, 0});
   two.end_line();
-  EXPECT_TRUE(polyline_report(two)["box_counting"].contains("error"));
+  EXPECT_TRUE(analysis::polyline_report(two)["box_counting"].contains("error"));
 }
 
 // ----------------------------------------------------------------- validation
@@ -482,16 +482,16 @@ TEST(PolylineCli, WritesCsvThatReadsBackAndStudyWritesCsvAndSvg) {
   std::filesystem::create_directories(dir);
   const std::string csv = (dir / "l.csv").string();
   ASSERT_EQ(run_cli("polyline --method fpl --base \"0,0;1,0;1,1\" --spread 0.2 --depth 6 --seed 3 --out " + csv), 0);
-  const PolylineSet s = read_polylines(csv);
+  const PolylineSet s = io::read_polylines(csv);
   EXPECT_EQ(s.vertex_count(), 129);
   EXPECT_EQ(s.points[64], (Vec3{1, 0, 0}));
   EXPECT_NE(run_cli("polyline --base \"0,0\" --out " + csv), 0);
   EXPECT_NE(run_cli("polyline --spread -1 --out " + csv), 0);
   const std::string table = (dir / "s.csv").string(), svg = (dir / "s.svg").string();
   ASSERT_EQ(run_cli("study fpl --spread 0.1,0.2 --depth 4,6 --count 10 --no-box --out-csv " + table + " --plot " + svg), 0);
-  const std::string text = read_file(table);
+  const std::string text = io::read_file(table);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 5);  // header + 4 rows
-  EXPECT_NE(read_file(svg).find("</svg>"), std::string::npos);
+  EXPECT_NE(io::read_file(svg).find("</svg>"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
 

@@ -228,13 +228,13 @@ TEST(PovScene, AutomaticRadiusIsThreeQuartersOfAPixelOnFineLines) {
   const Vec3& e = sum.camera.location;
   const double d = std::hypot(c[0] - e[0], c[1] - e[1], c[2] - e[2]);
   const double pixel = 2 * d * std::tan(sum.camera.fov_deg * M_PI / 360) / 800;
-  const std::vector<double> r = sweep_radii(read_file(f));
+  const std::vector<double> r = sweep_radii(io::read_file(f));
   ASSERT_EQ(r.size(), line.points.size() + 16384 / 32 - 1);  // pieces of 32 segments share their ends
   for (double x : r) EXPECT_NEAR(x, 0.75 * pixel, 1e-6 * pixel);
   EXPECT_LT(r[0], 0.01 / 5);  // the CSV's 0.01 was a worm 7 pixels wide
   // Twice the width in pixels: half the radius.
   write_polyline_scene(l, f, polyline_camera(), 1600);
-  EXPECT_NEAR(sweep_radii(read_file(f))[0], 0.375 * pixel, 1e-6 * pixel);
+  EXPECT_NEAR(sweep_radii(io::read_file(f))[0], 0.375 * pixel, 1e-6 * pixel);
   std::filesystem::remove_all(dir);
 }
 
@@ -248,14 +248,14 @@ TEST(PovScene, RadiusOverridesScaleAndTaperOrTheFileRadii) {
   SceneLines l{&s, LineKind::kGeneric, 0.004};
   l.radii_in_world_units = false;  // the file's radii as taper
   write_polyline_scene(l, f, polyline_camera());
-  EXPECT_EQ(sweep_radii(read_file(f)), (std::vector<double>{0.004, 0.004, 0.002, 0.002}));
+  EXPECT_EQ(sweep_radii(io::read_file(f)), (std::vector<double>{0.004, 0.004, 0.002, 0.002}));
   l.radius_scale = 2.5;
   write_polyline_scene(l, f, polyline_camera());
-  EXPECT_EQ(sweep_radii(read_file(f)), (std::vector<double>{0.01, 0.01, 0.005, 0.005}));
+  EXPECT_EQ(sweep_radii(io::read_file(f)), (std::vector<double>{0.01, 0.01, 0.005, 0.005}));
   l.radii_in_world_units = true;  // the file's radii as they are (the C ABI's rule)
   l.radius_scale = 1;
   write_polyline_scene(l, f, polyline_camera());
-  EXPECT_EQ(sweep_radii(read_file(f)), (std::vector<double>{0.02, 0.02, 0.01, 0.01}));
+  EXPECT_EQ(sweep_radii(io::read_file(f)), (std::vector<double>{0.02, 0.02, 0.01, 0.01}));
   std::filesystem::remove_all(dir);
 }
 

@@ -100,16 +100,16 @@ std::string make_georeferenced(const std::string& name, int w, int h, bool with_
 
 TEST(Raster, GeoTiffRoundTripIsBitExact) {
   const Heightfield hf = random_heights(37, 23, 7);
-  write_heightfield(hf, tmp("a.tif"));
-  const Heightfield back = read_heightfield(tmp("a.tif"));
+  io::write_heightfield(hf, tmp("a.tif"));
+  const Heightfield back = io::read_heightfield(tmp("a.tif"));
   expect_same_bits(hf, back);
   EXPECT_DOUBLE_EQ(back.world_size(), 1234.5);
 }
 
 TEST(Raster, OpenExrRoundTripIsBitExact) {
   const Heightfield hf = random_heights(41, 19, 8);
-  write_heightfield(hf, tmp("a.exr"));
-  const Heightfield back = read_heightfield(tmp("a.exr"));
+  io::write_heightfield(hf, tmp("a.exr"));
+  const Heightfield back = io::read_heightfield(tmp("a.exr"));
   expect_same_bits(hf, back);
   EXPECT_DOUBLE_EQ(back.world_size(), 1234.5);
 }
@@ -119,9 +119,9 @@ TEST(Raster, Raw16RoundTripIsWithinHalfAStep) {
   const HeightStats s = hf.stats();
   for (const char* ext : {".raw", ".r16"}) {
     const std::string path = tmp(std::string("a") + ext);
-    write_heightfield(hf, path);
+    io::write_heightfield(hf, path);
     EXPECT_EQ(fs::file_size(path), 33u * 17u * 2u);
-    const Heightfield back = read_heightfield(path);
+    const Heightfield back = io::read_heightfield(path);
     ASSERT_EQ(back.width(), 33);
     ASSERT_EQ(back.height(), 17);
     // Half a step of 65535 over the range, plus float32 rounding of the
@@ -132,7 +132,7 @@ TEST(Raster, Raw16RoundTripIsWithinHalfAStep) {
     for (size_t i = 0; i < hf.size(); ++i) worst = std::max(worst, std::abs(double(back.data()[i]) - hf.data()[i]));
     EXPECT_LE(worst, 0.5 * lsb + ulp) << ext;
     EXPECT_GT(worst, 0.0) << "16 bits cannot hold these floats exactly: the test would not see a loss";
-    std::ifstream side(raw16_sidecar_path(path));
+    std::ifstream side(io::raw16_sidecar_path(path));
     const auto j = nlohmann::json::parse(side);
     EXPECT_EQ(j["width"], 33);
     EXPECT_EQ(j["height"], 17);
@@ -146,15 +146,15 @@ TEST(Raster, Raw16IsLittleEndianWithZeroAtTheLowest) {
   Heightfield hf(2, 1);
   hf.at(0, 0) = -5.0f;
   hf.at(1, 0) = 7.0f;
-  write_heightfield(hf, tmp("two.raw"));
-  const std::string bytes = read_file(tmp("two.raw"));
+  io::write_heightfield(hf, tmp("two.raw"));
+  const std::string bytes = io::read_file(tmp("two.raw"));
   ASSERT_EQ(bytes.size(), 4u);
   EXPECT_EQ(bytes, std::string("\x00\x00\xff\xff", 4));
 }
 
 TEST(Raster, GeoTiffIsCloudOptimizedWithOverviews) {
   const Heightfield hf = random_heights(1100, 700, 10);
-  write_heightfield(hf, tmp("big.tif"));
+  io::write_heightfield(hf, tmp("big.tif"));
   const auto j = nlohmann::json::parse(run("gdalinfo -json " + tmp("big.tif")));
   EXPECT_EQ(j["metadata"]["IMAGE_STRUCTURE"]["LAYOUT"], "COG");
   EXPECT_EQ(j["metadata"]["IMAGE_STRUCTURE"]["COMPRESSION"], "DEFLATE");
@@ -164,10 +164,10 @@ TEST(Raster, GeoTiffIsCloudOptimizedWithOverviews) {
 
 TEST(Raster, GeoreferencingSurvivesAsGdalinfoSeesIt) {
   const std::string src = make_georeferenced("utm.tif", 40, 30, false);
-  const Heightfield hf = read_heightfield(src);
+  const Heightfield hf = io::read_heightfield(src);
   EXPECT_DOUBLE_EQ(hf.world_size(), 39 * 30.0);  // metres between the first and last sample centres
   EXPECT_FLOAT_EQ(hf.at(5, 4), 100 + 15 + 8 + 20 % 7);
-  write_heightfield(hf, tmp("utm-out.tif"));
+  io::write_heightfield(hf, tmp("utm-out.tif"));
   const auto a = nlohmann::json::parse(run("gdalinfo -json " + src));
   const auto b = nlohmann::json::parse(run("gdalinfo -json " + tmp("utm-out.tif")));
   EXPECT_EQ(b["geoTransform"], a["geoTransform"]);
@@ -183,16 +183,16 @@ TEST(Raster, GeographicPixelsBecomeMetresForTheWorldSize) {
   g.transform = {6.0, 0.01, 0, 60.055, 0, -0.01};  // centre latitude 60.055 - 11 / 2 x 0.01 = 60: cos = 1/2
   g.has_transform = true;
   hf.set_georef(g);
-  write_heightfield(hf, tmp("geo.tif"));
+  io::write_heightfield(hf, tmp("geo.tif"));
   const double metres_per_degree = 6378137 * 3.14159265358979323846 / 180;
-  EXPECT_NEAR(read_heightfield(tmp("geo.tif")).world_size(), 10 * 0.01 * metres_per_degree * 0.5, 1e-6);
+  EXPECT_NEAR(io::read_heightfield(tmp("geo.tif")).world_size(), 10 * 0.01 * metres_per_degree * 0.5, 1e-6);
 }
 
 TEST(Raster, EsriAsciiGridIsReadThroughGdal) {
   const std::string path = tmp("grid.asc");
   std::ofstream(path) << "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 10\nNODATA_value -9999\n"
                          "1 2 3\n4 5.5 6\n";
-  const Heightfield hf = read_heightfield(path);
+  const Heightfield hf = io::read_heightfield(path);
   ASSERT_EQ(hf.width(), 3);
   ASSERT_EQ(hf.height(), 2);
   EXPECT_FLOAT_EQ(hf.at(1, 1), 5.5f);
@@ -202,7 +202,7 @@ TEST(Raster, EsriAsciiGridIsReadThroughGdal) {
 TEST(Raster, NodataIsRefusedWithItsCount) {
   const std::string src = make_georeferenced("holes.tif", 20, 10, true);
   try {
-    read_heightfield(src);
+    io::read_heightfield(src);
     FAIL() << "nodata was accepted";
   } catch (const Error& e) {
     EXPECT_EQ(e.status(), FT_ERR_FORMAT);
@@ -212,7 +212,7 @@ TEST(Raster, NodataIsRefusedWithItsCount) {
 
 TEST(Raster, NodataFillKeepsValidSamplesAndStaysInTheirRange) {
   const std::string src = make_georeferenced("holes2.tif", 20, 10, true);
-  const Heightfield hf = read_heightfield(src, NodataPolicy::fill);
+  const Heightfield hf = io::read_heightfield(src, io::NodataPolicy::fill);
   for (int y = 0; y < 10; ++y)
     for (int x = 0; x < 20; ++x) {
       const bool hole = (y == 0 && x < 2) || (y == 5 && x == 10);
@@ -228,33 +228,33 @@ TEST(Raster, NodataFillKeepsValidSamplesAndStaysInTheirRange) {
 }
 
 TEST(Raster, MalformedAndTruncatedFilesAreRefusedQuietly) {
-  write_heightfield(random_heights(300, 200, 4), tmp("good.tif"));
-  write_heightfield(random_heights(300, 200, 4), tmp("good.exr"));
+  io::write_heightfield(random_heights(300, 200, 4), tmp("good.tif"));
+  io::write_heightfield(random_heights(300, 200, 4), tmp("good.exr"));
   for (const char* ext : {".tif", ".exr"}) {
-    const std::string good = read_file(tmp(std::string("good") + ext));
+    const std::string good = io::read_file(tmp(std::string("good") + ext));
     // (A COG repeats the last 4 bytes of each tile after it: cutting fewer
     // loses nothing, and GDAL rightly reads the file.)
     for (size_t keep : {size_t(0), size_t(8), good.size() / 2, good.size() - 64}) {
       const std::string path = tmp(std::string("cut") + ext);
-      write_file_atomically(path, good.substr(0, keep));
+      io::write_file_atomically(path, good.substr(0, keep));
       testing::internal::CaptureStderr();
-      const ft_status st = status_of([&] { read_heightfield(path); });
+      const ft_status st = status_of([&] { io::read_heightfield(path); });
       EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << ext << " cut at " << keep;
       EXPECT_EQ(st, FT_ERR_FORMAT) << ext << " cut at " << keep;
     }
   }
-  write_file_atomically(tmp("junk.hgt"), std::string(1000, 'x'));
-  EXPECT_EQ(status_of([&] { read_heightfield(tmp("junk.hgt")); }), FT_ERR_FORMAT);
-  EXPECT_EQ(status_of([&] { read_heightfield(tmp("absent.tif")); }), FT_ERR_IO);
+  io::write_file_atomically(tmp("junk.hgt"), std::string(1000, 'x'));
+  EXPECT_EQ(status_of([&] { io::read_heightfield(tmp("junk.hgt")); }), FT_ERR_FORMAT);
+  EXPECT_EQ(status_of([&] { io::read_heightfield(tmp("absent.tif")); }), FT_ERR_IO);
   // RAW16: one byte short of what the sidecar promises; no sidecar and not a square.
-  write_heightfield(random_heights(8, 8, 5), tmp("r.raw"));
-  write_file_atomically(tmp("r.raw"), read_file(tmp("r.raw")).substr(1));
-  EXPECT_EQ(status_of([&] { read_heightfield(tmp("r.raw")); }), FT_ERR_FORMAT);
-  write_file_atomically(tmp("lone.r16"), std::string(10, '\0'));
-  EXPECT_EQ(status_of([&] { read_heightfield(tmp("lone.r16")); }), FT_ERR_FORMAT);
-  write_file_atomically(tmp("bad.raw.json"), "{\"width\": 1e30}");
-  write_file_atomically(tmp("bad.raw"), std::string(8, '\0'));
-  EXPECT_EQ(status_of([&] { read_heightfield(tmp("bad.raw")); }), FT_ERR_FORMAT);
+  io::write_heightfield(random_heights(8, 8, 5), tmp("r.raw"));
+  io::write_file_atomically(tmp("r.raw"), io::read_file(tmp("r.raw")).substr(1));
+  EXPECT_EQ(status_of([&] { io::read_heightfield(tmp("r.raw")); }), FT_ERR_FORMAT);
+  io::write_file_atomically(tmp("lone.r16"), std::string(10, '\0'));
+  EXPECT_EQ(status_of([&] { io::read_heightfield(tmp("lone.r16")); }), FT_ERR_FORMAT);
+  io::write_file_atomically(tmp("bad.raw.json"), "{\"width\": 1e30}");
+  io::write_file_atomically(tmp("bad.raw"), std::string(8, '\0'));
+  EXPECT_EQ(status_of([&] { io::read_heightfield(tmp("bad.raw")); }), FT_ERR_FORMAT);
 }
 
 TEST(Raster, FailedWritesLeaveNoFile) {
@@ -262,12 +262,12 @@ TEST(Raster, FailedWritesLeaveNoFile) {
   hf.at(4, 4) = std::nanf("");
   for (const char* ext : {".tif", ".exr", ".raw"}) {
     const std::string path = tmp(std::string("nan") + ext);
-    EXPECT_EQ(status_of([&] { write_heightfield(hf, path); }), FT_ERR_INVALID_ARGUMENT) << ext;
+    EXPECT_EQ(status_of([&] { io::write_heightfield(hf, path); }), FT_ERR_INVALID_ARGUMENT) << ext;
     EXPECT_FALSE(fs::exists(path)) << ext;
     EXPECT_FALSE(fs::exists(path + ".json")) << ext;
   }
   for (const char* ext : {".tif", ".exr", ".raw"})
-    EXPECT_EQ(status_of([&] { write_heightfield(random_heights(3, 3, 1), tmp("no/such/dir/x") + ext); }), FT_ERR_IO);
+    EXPECT_EQ(status_of([&] { io::write_heightfield(random_heights(3, 3, 1), tmp("no/such/dir/x") + ext); }), FT_ERR_IO);
   for (const auto& e : fs::directory_iterator(temp_dir()))
     EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
 }

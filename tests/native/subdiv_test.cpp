@@ -34,12 +34,12 @@ namespace fs = std::filesystem;
 // The shipped example meshes (compilers get absolute source paths from CMake).
 const std::string kMeshes = (fs::path(__FILE__).parent_path() / "../../examples/meshes/").lexically_normal().string();
 
-Mesh cube() { return read_obj(kMeshes + "cube.obj"); }
-Mesh icosahedron() { return read_obj(kMeshes + "icosahedron.obj"); }
-Mesh mountain() { return read_obj(kMeshes + "mountain.obj"); }
+Mesh cube() { return io::read_obj(kMeshes + "cube.obj"); }
+Mesh icosahedron() { return io::read_obj(kMeshes + "icosahedron.obj"); }
+Mesh mountain() { return io::read_obj(kMeshes + "mountain.obj"); }
 
 ft_fractalize_params params(int levels, double sigma, int scheme = FT_SCHEME_CATMARK) {
-  ft_fractalize_params p = default_fractalize_params();
+  ft_fractalize_params p = subdiv::default_fractalize_params();
   p.levels = levels;
   p.sigma = sigma;
   p.scheme = scheme;
@@ -120,7 +120,7 @@ TEST(Fractalize, ZeroSigmaEqualsPlainOpenSubdivRefinement) {
   for (const Case& c : cases) {
     const Reference ref(c.mesh, c.scheme, 4);
     for (int level = 1; level <= 4; ++level) {
-      const Mesh out = fractalize(c.mesh, params(level, 0.0, c.scheme));
+      const Mesh out = subdiv::fractalize(c.mesh, params(level, 0.0, c.scheme));
       const Far::TopologyLevel& tl = ref.refiner->GetLevel(level);
       ASSERT_EQ(out.vertex_count(), size_t(tl.GetNumVertices())) << "scheme " << c.scheme << " level " << level;
       ASSERT_EQ(out.face_count(), size_t(tl.GetNumFaces()));
@@ -159,11 +159,11 @@ TEST(Fractalize, DisplacementRmsFallsAsTwoToTheMinusKH) {
   for (double H : {0.3, 0.9}) {
     ft_fractalize_params p = params(2, 0.5, FT_SCHEME_LOOP);
     p.hurst = H;
-    std::vector<float> prev = fractalize(ico, p).positions;
+    std::vector<float> prev = subdiv::fractalize(ico, p).positions;
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     for (int k = 3; k <= 7; ++k) {
       p.levels = k;
-      const Mesh cur = fractalize(ico, p);
+      const Mesh cur = subdiv::fractalize(ico, p);
       const std::vector<float> plain = ref.refine_once(k, prev);
       const size_t old_count = prev.size() / 3;
       ASSERT_EQ(cur.positions.size(), plain.size());
@@ -197,9 +197,9 @@ TEST(Fractalize, AdditionsMoveOldVerticesToo) {
   const Reference ref(c, FT_SCHEME_CATMARK, 2);
   ft_fractalize_params p = params(1, 0.3);
   p.mode = FT_FRACTALIZE_ADDITIONS;
-  const Mesh one = fractalize(c, p);
+  const Mesh one = subdiv::fractalize(c, p);
   p.levels = 2;
-  const Mesh two = fractalize(c, p);
+  const Mesh two = subdiv::fractalize(c, p);
   const std::vector<float> plain = ref.refine_once(2, one.positions);
   int moved_old = 0;
   for (size_t v = 0; v < one.vertex_count(); ++v)
@@ -228,12 +228,12 @@ TEST(Fractalize, ClosedInputStaysClosed) {
   for (int mode : {FT_FRACTALIZE_MIDPOINT, FT_FRACTALIZE_ADDITIONS}) {
     ft_fractalize_params p = params(4, 0.3);
     p.mode = mode;
-    const Mesh rock = fractalize(cube(), p);
+    const Mesh rock = subdiv::fractalize(cube(), p);
     EXPECT_EQ(rock.face_count(), 6u * 256u);
     for (int32_t n : rock.face_sizes) ASSERT_EQ(n, 4);
     expect_closed(rock);
     p.scheme = FT_SCHEME_LOOP;
-    const Mesh planet = fractalize(icosahedron(), p);
+    const Mesh planet = subdiv::fractalize(icosahedron(), p);
     EXPECT_EQ(planet.face_count(), 20u * 256u);
     for (int32_t n : planet.face_sizes) ASSERT_EQ(n, 3);
     expect_closed(planet);
@@ -243,25 +243,25 @@ TEST(Fractalize, ClosedInputStaysClosed) {
 TEST(Fractalize, SameSeedSameBitsOnAnyThreadCount) {
   ft_fractalize_params p = params(5, 0.2, FT_SCHEME_LOOP);
   p.threads = 1;
-  const Mesh a = fractalize(icosahedron(), p);
+  const Mesh a = subdiv::fractalize(icosahedron(), p);
   for (int threads : {2, 3, 0}) {
     p.threads = threads;
-    const Mesh b = fractalize(icosahedron(), p);
+    const Mesh b = subdiv::fractalize(icosahedron(), p);
     ASSERT_EQ(a.positions.size(), b.positions.size());
     EXPECT_EQ(std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(float)), 0)
         << threads << " threads";
     EXPECT_EQ(a.face_indices, b.face_indices);
   }
   p.seed = 12;
-  EXPECT_NE(fractalize(icosahedron(), p).positions, a.positions);
+  EXPECT_NE(subdiv::fractalize(icosahedron(), p).positions, a.positions);
 }
 
 TEST(Fractalize, FixedBoundaryStaysOnThePlainBoundaryCurve) {
   const Mesh m = mountain();
-  const Mesh plain = fractalize(m, params(3, 0.0));
+  const Mesh plain = subdiv::fractalize(m, params(3, 0.0));
   ft_fractalize_params p = params(3, 0.5);
   p.fix_boundary = 1;
-  const Mesh fixed = fractalize(m, p);
+  const Mesh fixed = subdiv::fractalize(m, p);
   // Boundary of the 6 x 6 quad grid refined 3 times: a 49 x 49 vertex grid
   // whose border is at |x| = 6 or |y| = 6 in the plain result.
   int boundary = 0, moved_inside = 0;
@@ -277,7 +277,7 @@ TEST(Fractalize, FixedBoundaryStaysOnThePlainBoundaryCurve) {
   EXPECT_EQ(boundary, 4 * 48);
   EXPECT_GT(moved_inside, 1000);
   p.fix_boundary = 0;
-  const Mesh free = fractalize(m, p);
+  const Mesh free = subdiv::fractalize(m, p);
   int moved_boundary = 0;
   for (size_t v = 0; v < plain.vertex_count(); ++v) {
     const auto q = plain.vertex(v);
@@ -289,18 +289,18 @@ TEST(Fractalize, FixedBoundaryStaysOnThePlainBoundaryCurve) {
 
 TEST(Fractalize, WeightsScaleTheDisplacement) {
   const Mesh c = cube();
-  const Mesh plain = fractalize(c, params(3, 0.0));
+  const Mesh plain = subdiv::fractalize(c, params(3, 0.0));
   std::vector<float> w(c.vertex_count(), 0.0f);
   ft_fractalize_params p = params(3, 0.4);
   p.weights = w.data();
-  const Mesh masked = fractalize(c, p);
+  const Mesh masked = subdiv::fractalize(c, p);
   for (size_t i = 0; i < plain.positions.size(); ++i) ASSERT_NEAR(masked.positions[i], plain.positions[i], 1e-6f);
   // Weight 1 everywhere is the unweighted result (the interpolated weight
   // is 1 up to float rounding of the subdivision masks).
   std::fill(w.begin(), w.end(), 1.0f);
-  const Mesh ones = fractalize(c, p);
+  const Mesh ones = subdiv::fractalize(c, p);
   p.weights = nullptr;
-  const Mesh unweighted = fractalize(c, p);
+  const Mesh unweighted = subdiv::fractalize(c, p);
   for (size_t i = 0; i < ones.positions.size(); ++i) ASSERT_NEAR(ones.positions[i], unweighted.positions[i], 1e-5f);
   // A mask on the (1, 1, 1) corner only: the weight primvar is zero on the
   // faces away from it, and what moves there is only the smoothing of
@@ -308,7 +308,7 @@ TEST(Fractalize, WeightsScaleTheDisplacement) {
   std::fill(w.begin(), w.end(), 0.0f);
   w[6] = 1.0f;
   p.weights = w.data();
-  const Mesh corner = fractalize(c, p);
+  const Mesh corner = subdiv::fractalize(c, p);
   double near_d = 0, far_d = 0;
   for (size_t v = 0; v < plain.vertex_count(); ++v) {
     const auto q = plain.vertex(v), r = corner.vertex(v);
@@ -324,13 +324,13 @@ TEST(Fractalize, EdgeLengthScalingMakesTheResultScaleFree) {
   for (float& x : big.positions) x *= 8.0f;  // a power of two: exact
   ft_fractalize_params p = params(3, 0.2);
   p.scale_by_edge_length = 1;
-  const Mesh a = fractalize(small, p), b = fractalize(big, p);
+  const Mesh a = subdiv::fractalize(small, p), b = subdiv::fractalize(big, p);
   for (size_t i = 0; i < a.positions.size(); ++i) ASSERT_NEAR(8.0f * a.positions[i], b.positions[i], 1e-4f);
 }
 
 TEST(Fractalize, RejectsBadMeshesNamingTheFace) {
   auto run = [](const Mesh& m, int scheme = FT_SCHEME_CATMARK) {
-    return [m, scheme] { fractalize(m, params(2, 0.1, scheme)); };
+    return [m, scheme] { subdiv::fractalize(m, params(2, 0.1, scheme)); };
   };
   Mesh m = cube();
   m.face_indices[5] = 8;
@@ -374,7 +374,7 @@ TEST(Fractalize, RejectsBadParameters) {
     return [&c, change] {
       ft_fractalize_params p = params(2, 0.1);
       change(p);
-      fractalize(c, p);
+      subdiv::fractalize(c, p);
     };
   };
   expect_error(with([](auto& p) { p.levels = 0; }), FT_ERR_INVALID_ARGUMENT, "levels must be in 1..10");
@@ -390,7 +390,7 @@ TEST(Fractalize, RejectsBadParameters) {
 
 TEST(Fractalize, RefusesResultsAboveTheMemoryCapBeforeAllocating) {
   set_memory_cap(64 << 20);
-  expect_error([] { fractalize(cube(), params(10, 0.1)); }, FT_ERR_TOO_LARGE, "fractalizing to 10 levels");
+  expect_error([] { subdiv::fractalize(cube(), params(10, 0.1)); }, FT_ERR_TOO_LARGE, "fractalizing to 10 levels");
   set_memory_cap(0);
 }
 
@@ -406,17 +406,17 @@ TEST(Fractalize, HonoursCreases) {
     for (size_t v = 0; v < m.vertex_count(); ++v) n += m.vertex(v)[2] == 1.0f;
     return n;
   };
-  EXPECT_EQ(top(fractalize(c, params(3, 0.0))), 0);
+  EXPECT_EQ(top(subdiv::fractalize(c, params(3, 0.0))), 0);
   c.crease_pairs = {4, 5, 5, 6, 6, 7, 7, 4};
   c.crease_sharpness = {10, 10, 10, 10};
-  EXPECT_EQ(top(fractalize(c, params(3, 0.0))), 81);
+  EXPECT_EQ(top(subdiv::fractalize(c, params(3, 0.0))), 81);
 }
 
 // ---------------------------------------------------------------------------
 
 TEST(ObjIo, RoundTripIsExact) {
   ft_fractalize_params p = params(2, 0.3);
-  Mesh m = fractalize(cube(), p);
+  Mesh m = subdiv::fractalize(cube(), p);
   m.crease_pairs = {m.face_indices[0], m.face_indices[1]};
   m.crease_sharpness = {2.5f};
   m.corner_vertices = {3};
@@ -424,8 +424,8 @@ TEST(ObjIo, RoundTripIsExact) {
   const fs::path dir = fs::temp_directory_path() / ("ft_subdiv_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string path = (dir / "rock.obj").string();
-  write_obj(m, path, "a comment\nwith a newline");
-  const Mesh back = read_obj(path);
+  io::write_obj(m, path, "a comment\nwith a newline");
+  const Mesh back = io::read_obj(path);
   EXPECT_EQ(back.positions, m.positions);
   EXPECT_EQ(back.face_sizes, m.face_sizes);
   EXPECT_EQ(back.face_indices, m.face_indices);
@@ -439,15 +439,15 @@ TEST(ObjIo, RoundTripIsExact) {
 }
 
 TEST(ObjIo, ReadsPolygonsFromAllShapes) {
-  const Mesh m = decode_obj("o a\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3 4\no b\nf 2 5 3\n");
+  const Mesh m = io::decode_obj("o a\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3 4\no b\nf 2 5 3\n");
   EXPECT_EQ(m.vertex_count(), 5u);
   EXPECT_EQ(m.face_sizes, (std::vector<int32_t>{4, 3}));
   EXPECT_EQ(m.face_indices, (std::vector<int32_t>{0, 1, 2, 3, 1, 4, 2}));
 }
 
 TEST(ObjIo, ReportsMissingAndFacelessFiles) {
-  expect_error([] { read_obj("/nonexistent/mesh.obj"); }, FT_ERR_IO, "/nonexistent/mesh.obj");
-  expect_error([] { decode_obj("v 0 0 0\nv 1 0 0\n", "points.obj"); }, FT_ERR_FORMAT, "points.obj' has no faces");
+  expect_error([] { io::read_obj("/nonexistent/mesh.obj"); }, FT_ERR_IO, "/nonexistent/mesh.obj");
+  expect_error([] { io::decode_obj("v 0 0 0\nv 1 0 0\n", "points.obj"); }, FT_ERR_FORMAT, "points.obj' has no faces");
 }
 
 // Lines tinyobjloader used to take on trust (see obj_io.cpp): each now a
@@ -455,24 +455,24 @@ TEST(ObjIo, ReportsMissingAndFacelessFiles) {
 // infinite vertex or a silently wrong face.
 TEST(ObjIo, RefusesNumbersAndFacesTheReaderCannotHold) {
   const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
-  expect_error([&] { decode_obj("v 0 0 1e39\n" + quad + "f 2 3 4\n", "big.obj"); }, FT_ERR_FORMAT,
+  expect_error([&] { io::decode_obj("v 0 0 1e39\n" + quad + "f 2 3 4\n", "big.obj"); }, FT_ERR_FORMAT,
                "'big.obj': line 1: '1e39' is beyond the float range");
-  expect_error([&] { decode_obj(quad + "f 1 2 99999999999\n", "idx.obj"); }, FT_ERR_FORMAT,
+  expect_error([&] { io::decode_obj(quad + "f 1 2 99999999999\n", "idx.obj"); }, FT_ERR_FORMAT,
                "line 5: '99999999999' is not an integer in the 32-bit range");
-  expect_error([&] { decode_obj(quad + "f 1 0 2\n", "zero.obj"); }, FT_ERR_FORMAT, "line 5: vertex index 0");
-  expect_error([&] { decode_obj("v 0 nan 0\n" + quad + "f 2 3 4\n"); }, FT_ERR_FORMAT, "'nan' is not a finite number");
-  expect_error([&] { decode_obj(quad + "f 1 2 3\nt crease 2/1/0 0 1\n"); }, FT_ERR_FORMAT, "line 6: the tag's counts");
+  expect_error([&] { io::decode_obj(quad + "f 1 0 2\n", "zero.obj"); }, FT_ERR_FORMAT, "line 5: vertex index 0");
+  expect_error([&] { io::decode_obj("v 0 nan 0\n" + quad + "f 2 3 4\n"); }, FT_ERR_FORMAT, "'nan' is not a finite number");
+  expect_error([&] { io::decode_obj(quad + "f 1 2 3\nt crease 2/1/0 0 1\n"); }, FT_ERR_FORMAT, "line 6: the tag's counts");
   std::string ring;
   for (int i = 0; i < 300; ++i) ring += "v " + std::to_string(std::cos(i * 0.0209)) + " " + std::to_string(std::sin(i * 0.0209)) + " 0\n";
   ring += "f";
   for (int i = 1; i <= 300; ++i) ring += " " + std::to_string(i);
-  expect_error([&] { decode_obj(ring + "\n"); }, FT_ERR_FORMAT, "a face of 300 vertices; at most 255");
+  expect_error([&] { io::decode_obj(ring + "\n"); }, FT_ERR_FORMAT, "a face of 300 vertices; at most 255");
 }
 
 TEST(ObjIo, IgnoresWhatItDoesNotUseAndKeepsWhatItDoes) {
   // Normals, texture coordinates, weights (the fuzzer's `vw` of 1e300),
   // groups, materials; v/vt/vn faces; comments; CRLF; a '+' sign; w.
-  const Mesh m = decode_obj(
+  const Mesh m = io::decode_obj(
       "# a comment\r\nmtllib x.mtl\r\no a\r\nv 0 0 0 1\r\nv +1 0 0\r\nv 1 1 0 # corner\r\nvn 0 0 1\r\n"
       "vt 0.5 0.5\r\nvw 1 0333333333333333333333333333333333333333333333 00\r\nusemtl m\r\ns 1\r\n"
       "f 1/1/1 2/1/1 -1/1/1\r\nl 1 2\r\nt crease 2/1/0 0 1 2.5\r\nt corner 1/1/0 2 4\r\nt interpolateboundary 1/0/0 1\r\n"
@@ -513,17 +513,17 @@ TEST(FractalizeCli, WritesObjAndAPovMeshThatPovRayRenders) {
                           "cube.obj --levels 3 --hurst 0.7 --sigma 0.3 --scheme catmark --seed 5 --out " + obj +
                           " --pov " + pov + " --pov-name Rock";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  const Mesh m = read_obj(obj);
+  const Mesh m = io::read_obj(obj);
   EXPECT_EQ(m.face_count(), 6u * 64u);
   expect_closed(m);
   const std::string bad = std::string(FT_CLI_PATH) + " fractalize --in " + kMeshes +
                           "cube.obj --scheme loop --out " + obj + " 2>" + (dir / "err.txt").string();
   EXPECT_NE(std::system(bad.c_str()), 0);
-  EXPECT_NE(read_file((dir / "err.txt").string()).find("face 0 has 4 vertices; Loop"), std::string::npos);
+  EXPECT_NE(io::read_file((dir / "err.txt").string()).find("face 0 has 4 vertices; Loop"), std::string::npos);
 
   if (std::system("povray --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "povray not installed";
   const std::string scene = (dir / "scene.pov").string(), png = (dir / "rock.png").string();
-  write_file_atomically(scene, "#version 3.7;\n#include \"" + pov +
+  io::write_file_atomically(scene, "#version 3.7;\n#include \"" + pov +
                                    "\"\ncamera { location <3, 2, -4> look_at 0 }\n"
                                    "light_source { <5, 8, -6> color rgb 1 }\n"
                                    "object { Rock pigment { color rgb 0.6 } }\n");

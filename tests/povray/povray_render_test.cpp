@@ -56,7 +56,7 @@ class PovTest : public ::testing::Test {
     const pov::RenderResult r = pov::render_scene(scene, out, o);
     EXPECT_EQ(r.warnings, 0) << "povray warned on " << scene << ":\n" << r.messages;
     if (messages) *messages = r.messages;
-    return read_png(out);
+    return io::read_png(out);
   }
   fs::path dir_;
   int count_ = 0;
@@ -154,7 +154,7 @@ TEST_F(PovTest, TraceProbeConfirmsOrientationAndHeightTo16BitPrecision) {
   }
   s += "camera { location <1.6, 3, -2> look_at <1.6, 0, 0.8> }\nlight_source { <0, 10, -10> rgb 1 }\n"
        "object { T pigment { rgb 1 } }\n";
-  write_file_atomically(path("probe.pov"), s);
+  io::write_file_atomically(path("probe.pov"), s);
   std::string messages;
   render(path("probe.pov"), 8, 6, 0, &messages);
   std::map<std::pair<int, int>, double> got;
@@ -191,7 +191,7 @@ TEST_F(PovTest, HighestPointLandsWhereTheCameraSays) {
   p.camera.aspect = 160.0 / 120.0;
   p.camera.distance_scale = 2;  // the framing fits the cone tightly; leave room above it
   const auto sum = pov::write_scene(p, path("peak.pov"));
-  write_file_atomically(path("peak_flat.pov"),
+  io::write_file_atomically(path("peak_flat.pov"),
                         "#version 3.7;\n#declare FT_Sand_Tex = texture { pigment { rgb 1 } finish { emission 1 "
                         "diffuse 0 } }\n#declare FT_Grass_Tex = FT_Sand_Tex;\n#declare FT_Rock_Tex = "
                         "FT_Sand_Tex;\n#declare FT_Snow_Tex = FT_Sand_Tex;\n#declare FT_Sea_Tex = texture { pigment { rgb 0 } "
@@ -226,7 +226,7 @@ TEST_F(PovTest, ChunkedSweepRendersLikeOneSweep) {
                             "background { rgb 0.3 }\n" +
                             pov::sweeps_sdl(line, o, "pigment { rgb <1, 0.6, 0.2> }\n");
       const std::string f = path(std::string(seg == 24 ? "chunked" : "single") + ".pov");
-      write_file_atomically(f, s);
+      io::write_file_atomically(f, s);
       (seg == 24 ? a : b) = f;
     }
     const GrayImage ia = render(a), ib = render(b);
@@ -300,7 +300,7 @@ TEST_F(PovTest, SceneToUnwritablePlaceFailsCleanlyWithNoPartialFile) {
 }
 
 TEST_F(PovTest, RenderCommandShowsPovrayErrorsAndWritesNothing) {
-  write_file_atomically(path("bad.pov"), "#version 3.7;\nsphere { <0, 0, 0> 1 pigment { rgb 1 }\n");
+  io::write_file_atomically(path("bad.pov"), "#version 3.7;\nsphere { <0, 0, 0> 1 pigment { rgb 1 }\n");
   std::string out;
   const int rc = run_cli("render '" + path("bad.pov") + "' --width 32 --height 24 --out '" + path("bad.png") + "'", out);
   EXPECT_EQ(rc, 1) << out;
@@ -320,7 +320,7 @@ TEST_F(PovTest, SceneCommandWritesAndRendersTerrainWithPolylines) {
                     out),
             0)
       << out;
-  expect_not_blank(read_png(path("s.png")), "fracterra scene --render");
+  expect_not_blank(io::read_png(path("s.png")), "fracterra scene --render");
 }
 
 // `fracterra polyline ... --pov` (asked for, and missing before): a framed
@@ -332,17 +332,17 @@ TEST_F(PovTest, PolylineCommandWritesAFramedSceneThatRenders) {
                     out),
             0)
       << out;
-  const std::string sdl = read_file(path("l.pov"));
+  const std::string sdl = io::read_file(path("l.pov"));
   EXPECT_NE(sdl.find("sphere_sweep { linear_spline"), std::string::npos);
   EXPECT_NE(sdl.find("camera {"), std::string::npos);
   EXPECT_NE(sdl.find("the file's radii as taper"), std::string::npos);
-  EXPECT_GE(standout_pixels(read_png(path("l.png"))), 200) << "fracterra polyline --pov --render";
+  EXPECT_GE(standout_pixels(io::read_png(path("l.png"))), 200) << "fracterra polyline --pov --render";
   // Branching lines are drawn as lightning unless --kind says otherwise.
   ASSERT_EQ(run_cli("polyline --method fpl3d --depth 7 --branch-prob 0.05 --pov '" + path("b.pov") + "'", out), 0)
       << out;
-  EXPECT_NE(read_file(path("b.pov")).find(": lightning,"), std::string::npos);
+  EXPECT_NE(io::read_file(path("b.pov")).find(": lightning,"), std::string::npos);
   ASSERT_EQ(run_cli("polyline --method fpl --depth 7 --kind coastline --pov '" + path("c.pov") + "'", out), 0) << out;
-  EXPECT_NE(read_file(path("c.pov")).find(": coastline,"), std::string::npos);
+  EXPECT_NE(io::read_file(path("c.pov")).find(": coastline,"), std::string::npos);
   EXPECT_EQ(run_cli("polyline --method fpl --depth 4 --render '" + path("x.png") + "'", out), 1);
   EXPECT_NE(out.find("--render needs --pov"), std::string::npos) << out;
 }
@@ -356,7 +356,7 @@ TEST_F(PovTest, SceneRadiusOptionsOverrideScaleOrKeepTheFileRadii) {
     std::string out;
     EXPECT_EQ(run_cli("scene --polyline '" + path("l.csv") + "' " + flags + " --pov '" + path("s.pov") + "'", out), 0)
         << out;
-    const std::string sdl = read_file(path("s.pov"));
+    const std::string sdl = io::read_file(path("s.pov"));
     const size_t at = sdl.find(" vertices, radius ");
     return at == std::string::npos ? -1.0 : std::stod(sdl.substr(at + 18));
   };
@@ -365,15 +365,15 @@ TEST_F(PovTest, SceneRadiusOptionsOverrideScaleOrKeepTheFileRadii) {
   EXPECT_LT(automatic, 0.01);  // sized from the picture, not the file's 0.01
   EXPECT_DOUBLE_EQ(radius_comment("--radius 0.002"), 0.002);
   EXPECT_DOUBLE_EQ(radius_comment("--radius 0.002 --radius-scale 3"), 0.006);
-  EXPECT_NE(read_file(path("s.pov")).find(", 0.006\n"), std::string::npos);
+  EXPECT_NE(io::read_file(path("s.pov")).find(", 0.006\n"), std::string::npos);
   radius_comment("--radius-from-file");
-  EXPECT_NE(read_file(path("s.pov")).find(", 0.01\n"), std::string::npos);  // the stored radius
+  EXPECT_NE(io::read_file(path("s.pov")).find(", 0.01\n"), std::string::npos);  // the stored radius
   EXPECT_GE(standout_pixels(render(path("s.pov"))), 200) << "scene with the file's radii";
 }
 
 TEST_F(PovTest, MacrosFailWithClearErrorsOnBadInput) {
   // FT_FPL bounds its recursion depth (POV-Ray nests ~98 macro calls).
-  write_file_atomically(path("deep.pov"), "#version 3.7;\n#include \"ft_fpl.inc\"\n#declare P = FT_FPL(<0,0,0>, "
+  io::write_file_atomically(path("deep.pov"), "#version 3.7;\n#include \"ft_fpl.inc\"\n#declare P = FT_FPL(<0,0,0>, "
                                           "<1,0,0>, y, 0.1, false, 0, 120, seed(1));\n");
   try {
     render(path("deep.pov"), 8, 6);
@@ -396,7 +396,7 @@ TEST_F(PovTest, TiledSceneHasNoCracksAlongTheSeams) {
   ASSERT_EQ(run_cli("tiles --levels 8 --hurst 0.6 --seed 9 --tile 64 --quiet --out '" + path("set") + "'", out), 0)
       << out;
   ASSERT_EQ(run_cli("scene --tiles '" + path("set") + "' --pov '" + path("tiled.pov") + "'", out), 0) << out;
-  const std::string scene = read_file(path("tiled.pov"));
+  const std::string scene = io::read_file(path("tiled.pov"));
   size_t fields = 0;
   for (size_t at = scene.find("png \""); at != std::string::npos; at = scene.find("png \"", at + 1)) ++fields;
   EXPECT_EQ(fields, 16u);
@@ -417,14 +417,14 @@ TEST_F(PovTest, TiledSceneHasNoCracksAlongTheSeams) {
       probe += "Probe(" + pov::number(along) + ", " + pov::number(at) + ", 0, " + pov::number(eps) + ")\n";
     }
   probe += "#debug concat(\"FT_SEAMS \", str(Hits, 0, 0), \" \", str(Misses, 0, 0), \" \", str(Worst, 0, 12), \"\\n\")\n";
-  write_file_atomically(path("probe.pov"), probe);
+  io::write_file_atomically(path("probe.pov"), probe);
   std::string messages;
   const GrayImage img = render(path("probe.pov"), 160, 120, 0, &messages);
   std::smatch m;
   ASSERT_TRUE(std::regex_search(messages, m, std::regex("FT_SEAMS (\\d+) (\\d+) ([0-9.]+)"))) << messages;
   EXPECT_EQ(std::stoi(m[1]), 2 * 2 * 3 * 511);
   EXPECT_EQ(std::stoi(m[2]), 0) << "rays passed through a seam";
-  const nlohmann::json manifest = nlohmann::json::parse(read_file(path("set/manifest.json")));
+  const nlohmann::json manifest = nlohmann::json::parse(io::read_file(path("set/manifest.json")));
   const double range = manifest["height_range"]["max"].get<double>() - manifest["height_range"]["min"].get<double>();
   // The steepest slope of this terrain is below 40 height units per unit of x.
   EXPECT_LE(std::stod(m[3]), 1e-3 * range / 65535 + 40 * 2 * eps);

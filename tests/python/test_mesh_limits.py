@@ -2,7 +2,7 @@
 boundary is the first array past 2^31 - 1 bytes (here the face corners at
 12 bytes each), and levels 13 -- the size that crashed -- is refused."""
 
-from fracterra.core import mesh_limits
+from fracterra.core import mesh_limits, params
 from fracterra.core.errors import TooLargeError
 
 import pytest
@@ -24,8 +24,8 @@ def test_boundary_is_the_face_corner_array_of_2_gib():
 def test_levels_12_pass_and_13_are_refused_before_any_work():
     assert mesh_limits.too_large(4097, 4097) is None
     with pytest.raises(TooLargeError, match="Refused before generating: a 8193 x 8193 grid"):
-        mesh_limits.check_grid(*mesh_limits.grid_shape({"method": "MIDPOINT", "levels": 13}))
-    assert mesh_limits.grid_shape({"method": "FBM", "levels": 13, "width": 300, "height": 20}) == (300, 20)
+        mesh_limits.check_grid(*params.grid_shape({"method": "MIDPOINT", "levels": 13}))
+    assert params.grid_shape({"method": "FBM", "levels": 13, "width": 300, "height": 20}) == (300, 20)
 
 
 def test_estimate_names_vertices_and_memory():

@@ -5,10 +5,16 @@ definition: everything else must agree with it or state why it differs."""
 
 import ctypes
 import math
+import os
+import subprocess
+import sys
+from pathlib import Path
 
 import pytest
 
 from fracterra.core import binding
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(scope="module")
@@ -56,7 +62,7 @@ def test_a_value_outside_a_hard_range_is_refused_with_the_range(core, lib):
 
 def _addon_params(core, kind_name):
     lists = {"terrain": core.params.TERRAIN_PARAMS, "polyline": core.params.POLYLINE_PARAMS,
-             "fractalize": core.params.FRACTALIZE_PARAMS}
+             "fractalize": core.params.FRACTALIZE_PARAMS, "erosion": core.params.EROSION_PARAMS}
     return {p.field: p for p in lists.get(kind_name, ()) if p.field}
 
 
@@ -220,3 +226,32 @@ def test_soversion_follows_the_abi_major(lib):
     soname = re.search(r"Library soname: \[(.*?)\]", dynamic).group(1)
     assert soname == f"libfracterra.so.{lib.abi_major}"
     assert lib.abi_major == binding.ABI_MAJOR == 2
+
+
+def test_importing_the_settings_loads_no_library():
+    """core.params builds its tables on first use: importing core (a script, a Dask
+    worker, the add-on before its preferences name a library) loads nothing."""
+    code = ("import sys; sys.path.insert(0, %r)\n"
+            "import fracterra.core as core\n"
+            "from fracterra.core import binding\n"
+            "assert binding._library is None, 'loaded on import'\n"
+            "assert len(core.params.TERRAIN_PARAMS) > 10\n"
+            "assert binding._library is not None, 'not loaded on first use'\n") % str(ROOT / "blender_addon")
+    subprocess.run([sys.executable, "-c", code], check=True, env=os.environ.copy())
+
+
+def test_terrain_and_erosion_settings_are_separate_tables(core):
+    p = core.params
+    terrain, erode = {q.name for q in p.TERRAIN_PARAMS}, {q.name for q in p.ERODE_PARAMS}
+    assert not terrain & erode
+    assert "erode_preset" in erode and "fluvial_steps" in erode and "levels" in terrain
+    # Every erosion setting has its ft_erosion_params field: nothing is stored without one.
+    assert all(q.field == q.name for q in p.EROSION_PARAMS)
+    assert [q.name for q in p.TERRAIN_OBJECT_PARAMS] == [q.name for q in p.TERRAIN_PARAMS + p.ERODE_PARAMS]
+
+
+def test_an_override_of_a_field_the_library_lacks_is_refused(core, monkeypatch):
+    monkeypatch.setitem(core.params.BLENDER_OVERRIDES, "terrain",
+                        {**core.params.BLENDER_OVERRIDES["terrain"], "levls": (9, "a misspelt name")})
+    with pytest.raises(KeyError, match="levls"):
+        core.params.library_params("terrain")

@@ -34,15 +34,23 @@ double increment_variance(const Heightfield& hf, int lag) {
   return sum / double(n);
 }
 
-TEST(RealDem, ReadsWithItsGeoreferenceAndCountsItsNodata) {
-  ASSERT_FALSE(dem_path().empty()) << "FT_REAL_DEM is not set (run through ctest: the fixture fetches the DEM)";
+// Every test reads the DEM: each fails with the reason when it is not there
+// (a fatal failure in SetUp skips the body, which would read "").
+class RealDem : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_FALSE(dem_path().empty()) << "FT_REAL_DEM is not set (run through ctest: the fixture fetches the DEM)";
+  }
+};
+
+TEST_F(RealDem, ReadsWithItsGeoreferenceAndCountsItsNodata) {
   try {
-    read_heightfield(dem_path());
+    io::read_heightfield(dem_path());
     FAIL() << "the DEM's nodata was accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("3942 nodata samples of 8550"), std::string::npos) << e.what();
   }
-  const Heightfield dem = read_heightfield(dem_path(), NodataPolicy::keep);
+  const Heightfield dem = io::read_heightfield(dem_path(), io::NodataPolicy::keep);
   ASSERT_EQ(dem.width(), 95);
   ASSERT_EQ(dem.height(), 90);
   EXPECT_NE(dem.georef().crs_wkt.find("WGS 84"), std::string::npos);
@@ -51,18 +59,18 @@ TEST(RealDem, ReadsWithItsGeoreferenceAndCountsItsNodata) {
   // semi-major axis: 94 x 927.66 x cos(49.8167 deg) = 56 182 m.
   EXPECT_NEAR(dem.world_size(), 94 * 6378137 * M_PI / 180 / 120 * std::cos(49.81666666666666 * M_PI / 180), 1e-6);
   const HeightStats s = [&] {
-    Heightfield filled = read_heightfield(dem_path(), NodataPolicy::fill);
+    Heightfield filled = io::read_heightfield(dem_path(), io::NodataPolicy::fill);
     return filled.stats();
   }();
   EXPECT_EQ(s.min, 141.0);  // gdalinfo -stats: Min=141.000 Max=547.000
   EXPECT_EQ(s.max, 547.0);
 }
 
-TEST(RealDem, RefinementKeepsTheDemAtItsNodes) {
-  const Heightfield dem = read_heightfield(dem_path(), NodataPolicy::keep);
-  DemRefineConfig c;
+TEST_F(RealDem, RefinementKeepsTheDemAtItsNodes) {
+  const Heightfield dem = io::read_heightfield(dem_path(), io::NodataPolicy::keep);
+  refine::DemRefineConfig c;
   c.levels_added = 3;
-  const DemRefineResult r = refine_dem(dem, c);
+  const refine::DemRefineResult r = refine::refine_dem(dem, c);
   ASSERT_EQ(r.window_side, 33);  // the largest 2^m + 1 square inside Luxembourg
   ASSERT_EQ(r.terrain.width(), 257);
   for (int y = 0; y < 33; ++y)
@@ -91,17 +99,17 @@ TEST(RealDem, RefinementKeepsTheDemAtItsNodes) {
 //    r = 2^-k its height is uncertain by 2 sigma_H k; two of those.
 // Above one pixel the refined terrain must keep the DEM's own (measured)
 // variances, not the line's: the DEM is not exactly a power law there.
-TEST(RealDem, RefinedScalingContinuesTheDemsLineAcrossTheJunction) {
-  const Heightfield dem = read_heightfield(dem_path(), NodataPolicy::keep);
+TEST_F(RealDem, RefinedScalingContinuesTheDemsLineAcrossTheJunction) {
+  const Heightfield dem = io::read_heightfield(dem_path(), io::NodataPolicy::keep);
   constexpr int K = 3;
   const std::vector<uint64_t> seeds = {1, 2, 3, 4};
   std::vector<double> mean(K + 4, 0.0);  // log2 variance at fine lags 2^0 .. 2^(K + 3)
-  DemRefineResult r;
+  refine::DemRefineResult r;
   for (uint64_t seed : seeds) {
-    DemRefineConfig c;
+    refine::DemRefineConfig c;
     c.levels_added = K;
     c.seed = seed;
-    r = refine_dem(dem, c);
+    r = refine::refine_dem(dem, c);
     for (int k = 0; k < K + 4; ++k) mean[k] += std::log2(increment_variance(r.terrain, 1 << k)) / double(seeds.size());
   }
   ASSERT_TRUE(r.hurst_measured && r.sigma_measured);

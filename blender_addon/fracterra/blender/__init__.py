@@ -1,21 +1,26 @@
-"""The Blender side of the add-on: properties, operators, panels, menus.
-
-Modules import only downwards, never in a circle:
-    reporting, widgets, prefs, mesh_build, curve_build   (leaves: core and bpy only)
-    <- progress (long jobs: worker thread, status bar, Esc; imports reporting)
-    <- terrain_build, polyline_build, terrain_objects, settings_ui
-    <- props (PropertyGroups; auto-update calls terrain_build)
-    <- terrain_ops, polyline_ops, measure_op, fractalize_op, pov_export, dem_io_ops,
-       tiles_import_op (operators)
-    <- panels, menus (refer to operators by their id strings)
-tests/python/test_addon_layers.py checks this order.
+"""The Blender side of the add-on, one folder per role (imports point upwards:
+each folder imports only the folders above it; tests/python/test_addon_layers.py checks it):
+    common/  leaves: reporting, jobs (progress bar, Esc), preferences, images, widgets, presets
+    build/   Blender data from and to library arrays: mesh, curve, terrain, polyline, erosion, objects
+    ui/      properties and PropertyGroups, how settings are laid out, panels, menus
+    ops/     operators (panels and menus name them by their id strings, never import them)
+This file only lists the classes and registers them.
 """
 
 import bpy
 
-from . import (dem_io_ops, fractalize_op, measure_op, panels, polyline_ops, pov_export, prefs, presets, props,
-               terrain_ops, tiles_import_op)
-from .menus import MENUS
+from .ops import dem_io as dem_io_ops
+from .ops import fractalize as fractalize_op
+from .ops import measure as measure_op
+from .ui import panels
+from .ops import polyline as polyline_ops
+from .ops import pov_export
+from .common import preferences as prefs
+from .common import presets
+from .ui import properties as props
+from .ops import terrain as terrain_ops
+from .ops import tiles_import as tiles_import_op
+from .ui.menus import MENUS
 
 classes = (
     props.FRACTERRA_PG_terrain,

@@ -249,6 +249,29 @@ SIGNATURES = {
     "ft_heightfield_write": (c_int32, [_HF, c_char_p]),
     "ft_dem_refine_params_init": (None, [_Described("dem_refine")]),
     "ft_dem_refine": (c_int32, [_HF, _Described("dem_refine"), POINTER(_HF), c_void_p]),
+    # tiles.h (ABI 2.4; journals and per-tile ranges 2.10): the tile sets core/tiles.py drives.
+    "ft_tileset_open": (c_int32, [c_void_p, c_int32, c_int32, c_char_p, POINTER(c_void_p)]),
+    "ft_tileset_open_deferred": (c_int32, [c_void_p, c_int32, c_int32, c_char_p, POINTER(c_void_p),
+                                           POINTER(c_int32)]),
+    "ft_tileset_set_height_range": (c_int32, [c_void_p, c_double, c_double]),
+    "ft_tile_height_range": (c_int32, [c_void_p, c_int32, c_int32, c_int32, POINTER(c_double), POINTER(c_double)]),
+    "ft_tileset_free": (None, [c_void_p]),
+    "ft_tileset_grid": (c_int32, [c_void_p, POINTER(c_int32), POINTER(c_int32)]),
+    "ft_tileset_height_range": (c_int32, [c_void_p, POINTER(c_double), POINTER(c_double)]),
+    "ft_tileset_tile_done": (c_int32, [c_void_p, c_int32, c_int32, POINTER(c_int32)]),
+    "ft_tileset_record": (c_int32, [c_void_p, c_int32, c_int32, c_uint32]),
+    "ft_tileset_finish": (c_int32, [c_void_p]),
+    "ft_tile_write": (c_int32, [c_void_p, c_int32, c_int32, c_double, c_double, c_char_p, c_int32, c_int32,
+                                POINTER(c_uint32)]),
+    "ft_tileset_extent": (c_int32, [c_char_p, c_int32, POINTER(c_int64), POINTER(c_int64)]),
+    "ft_tileset_read_window": (c_int32, [c_char_p, c_int32, c_int64, c_int64, c_int32, c_int32,
+                                         POINTER(c_void_p)]),
+    # analysis.h (ABI 2.4): H of a surface from per-window increment sums.
+    "ft_increment_lags": (c_int32, [c_void_p, c_int64, c_int64, POINTER(c_int64), c_size_t, POINTER(c_size_t)]),
+    "ft_increment_sums": (c_int32, [c_void_p, c_void_p, c_int64, c_int64, c_int64, c_int64, POINTER(c_double),
+                                    POINTER(c_double), c_size_t]),
+    "ft_hurst_from_increment_sums": (c_int32, [c_void_p, c_int64, c_int64, POINTER(c_double), POINTER(c_double),
+                                               c_size_t, c_void_p]),
 }
 
 

@@ -25,15 +25,6 @@ PEAK_BYTES_PER_VERTEX = 300
 SHOW_ESTIMATE_FROM = 1_000_000
 
 
-def grid_shape(values):
-    """(nx, ny) of the terrain that settings `values` (a dict) describe."""
-    from .params import DYADIC_METHODS  # here: params takes its levels limit from this module
-    if values["method"] in DYADIC_METHODS:
-        side = 2 ** values["levels"] + 1
-        return side, side
-    return values["width"], values["height"]
-
-
 def quad_grid_counts(nx, ny):
     """{element: count} of an nx x ny vertex quad grid, as fracterra/mesh.h builds it."""
     faces = (nx - 1) * (ny - 1)

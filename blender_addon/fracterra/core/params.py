@@ -18,8 +18,12 @@ built beside its library.
 
 import json
 import math
-from dataclasses import dataclass, field as dc_field, replace
+from dataclasses import dataclass, field as dc_field
 from pathlib import Path
+
+from .binding import PARAMS_KINDS, library
+from .errors import LibraryNotFoundError
+from .mesh_limits import too_large
 
 # Where the add-on's default differs from the library's, and why: the only
 # place such a difference may be stated (tests/python/test_params.py checks
@@ -58,7 +62,6 @@ BLENDER_OVERRIDES = {
 
 # Limits of Blender that are narrower than the library's hard range: (min, max, reason).
 def _largest_levels():
-    from .mesh_limits import too_large
     return max(n for n in range(1, 16) if too_large(2 ** n + 1, 2 ** n + 1) is None)
 
 
@@ -165,8 +168,6 @@ class Param:
 
 def _description():
     """{kind name: [row dicts]} from the loaded library, else from the snapshot beside this file."""
-    from .binding import library
-    from .errors import LibraryNotFoundError
     try:
         lib = library()
     except LibraryNotFoundError:
@@ -233,9 +234,24 @@ def _param_from_row(row, kind_name, method_items):
                  geometry=name in _GEOMETRY)
 
 
+def _check_names(kind_name, rows):
+    """Every field an override table names is a field of the library's struct: a
+    misspelt or removed name would otherwise change nothing, silently."""
+    fields = {r["name"] for r in rows}
+    for table_name, table in (("BLENDER_OVERRIDES", BLENDER_OVERRIDES), ("BLENDER_LIMITS", BLENDER_LIMITS),
+                              ("NOT_PROPERTIES", NOT_PROPERTIES)):
+        unknown = set(table.get(kind_name, {})) - fields
+        if unknown:
+            raise KeyError(f"{table_name}[{kind_name!r}] names {sorted(unknown)}, not fields of "
+                           f"ft_{kind_name}_params")
+
+
 def library_params(kind_name):
     """The add-on's Params for every setting of the library's struct `kind_name` ("terrain")."""
+    if kind_name not in PARAMS_KINDS:
+        raise KeyError(f"{kind_name!r} is not a params struct of the library ({', '.join(PARAMS_KINDS)})")
     rows = _description()[kind_name]
+    _check_names(kind_name, rows)
     method = next((r for r in rows if r["name"] == "method"), None)
     method_items = tuple((i["name"], i["label"], i["doc"], i["value"]) for i in method["items"]) if method else ()
     skip = NOT_PROPERTIES.get(kind_name, {})
@@ -243,50 +259,47 @@ def library_params(kind_name):
                  if r["type"] in _KIND_OF_TYPE and not r["flags"] & 3 and r["count"] == 1 and r["name"] not in skip)
 
 
-_LIBRARY_TERRAIN = library_params("terrain")
-# The methods that make (2^levels + 1)^2 grids: those that use `levels`.
-DYADIC_METHODS = next(p for p in _LIBRARY_TERRAIN if p.name == "levels").methods
-_DYADIC = DYADIC_METHODS
+# Where the reference points come from (midpoint and additions): Blender's own terrain settings.
+def _blender_terrain_params(dyadic):
+    return (
+        Param("reference_source", "enum", "NONE", "Reference", "Coarse heights the terrain must pass through",
+              items=REFERENCE_SOURCES, methods=dyadic),
+        Param("reference_object", "string", "", "Grid Object",
+              "Mesh whose (2^m + 1)^2 vertices give the reference heights (local z, sorted by y then x)",
+              methods=dyadic),
+        Param("reference_image", "string", "", "Image", "Image whose brightness gives the reference heights",
+              methods=dyadic),
+        Param("reference_file", "string", "", "DEM File",
+              "Elevation raster whose heights become the reference points (any format GDAL reads; holes are "
+              "filled by GDAL's inverse-distance fill)", subtype="FILE_PATH", methods=dyadic),
+        Param("reference_levels", "int", 4, "Reference Levels",
+              "The image or DEM is resampled to 2^m + 1 points per side (at most Levels)", min=1, max=12,
+              methods=dyadic),
+        Param("reference_height", "float", 5.0, "Image Height",
+              "Height of white in the image; for a DEM without georeferencing, the height of its highest point "
+              "above its lowest (scene units)",
+              soft_min=-1000.0, soft_max=1000.0, subtype="DISTANCE", unit="LENGTH", methods=dyadic),
+        # Where the custom falloff's mask comes from (Falloff 'Custom'; blender/build/falloff_mask.py).
+        Param("falloff_mask_source", "enum", "OBJECT", "Mask From",
+              "What gives the custom falloff's mask, spanning the terrain", items=FALLOFF_MASK_SOURCES),
+        Param("falloff_mask_object", "string", "", "Mask Object",
+              "Mesh or curve whose outline seen from above (its faces, or a closed curve's inside, projected on "
+              "the terrain's footprint) keeps the heights; outside it they fall to the Edge Level"),
+        Param("falloff_mask_image", "string", "", "Mask Image",
+              "Image spanning the terrain: white keeps the height, black gives the Edge Level, grey between"),
+        Param("falloff_mask_soft", "bool", True, "Soft Edge",
+              "Fade the object's outline inward over the Falloff Width (a smoothstep); off: a step at the "
+              "outline"),
+        # Mesh options.
+        Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
+        Param("smooth", "bool", True, "Smooth Shading", "Shade faces smooth", geometry=True),
+    )
 
-TERRAIN_PARAMS = _LIBRARY_TERRAIN + (
-    # Where the reference points come from (midpoint and additions).
-    Param("reference_source", "enum", "NONE", "Reference", "Coarse heights the terrain must pass through",
-          items=REFERENCE_SOURCES, methods=_DYADIC),
-    Param("reference_object", "string", "", "Grid Object",
-          "Mesh whose (2^m + 1)^2 vertices give the reference heights (local z, sorted by y then x)",
-          methods=_DYADIC),
-    Param("reference_image", "string", "", "Image", "Image whose brightness gives the reference heights",
-          methods=_DYADIC),
-    Param("reference_file", "string", "", "DEM File",
-          "Elevation raster whose heights become the reference points (any format GDAL reads; holes are "
-          "filled by GDAL's inverse-distance fill)", subtype="FILE_PATH", methods=_DYADIC),
-    Param("reference_levels", "int", 4, "Reference Levels",
-          "The image or DEM is resampled to 2^m + 1 points per side (at most Levels)", min=1, max=12,
-          methods=_DYADIC),
-    Param("reference_height", "float", 5.0, "Image Height",
-          "Height of white in the image; for a DEM without georeferencing, the height of its highest point "
-          "above its lowest (scene units)",
-          soft_min=-1000.0, soft_max=1000.0, subtype="DISTANCE", unit="LENGTH", methods=_DYADIC),
-    # Where the custom falloff's mask comes from (Falloff 'Custom'; blender/falloff_mask.py).
-    Param("falloff_mask_source", "enum", "OBJECT", "Mask From",
-          "What gives the custom falloff's mask, spanning the terrain", items=FALLOFF_MASK_SOURCES),
-    Param("falloff_mask_object", "string", "", "Mask Object",
-          "Mesh or curve whose outline seen from above (its faces, or a closed curve's inside, projected on the "
-          "terrain's footprint) keeps the heights; outside it they fall to the Edge Level"),
-    Param("falloff_mask_image", "string", "", "Mask Image",
-          "Image spanning the terrain: white keeps the height, black gives the Edge Level, grey between"),
-    Param("falloff_mask_soft", "bool", True, "Soft Edge",
-          "Fade the object's outline inward over the Falloff Width (a smoothstep); off: a step at the outline"),
-    # Mesh options.
-    Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
-    Param("smooth", "bool", True, "Smooth Shading", "Shade faces smooth", geometry=True),
-)
 
-# The Erode step after generation (core/erosion.py runs it, blender/erosion_ui.py
-# draws it): ft_erosion_params as the library describes it, stored with the
-# terrain's settings so Regenerate reruns generation then erosion. In the
-# terrain's list they have no ft_terrain_params field (field None).
-EROSION_PARAMS = library_params("erosion")
+# The Erode step after generation (core/erosion.py runs it, blender/build/erosion.py
+# draws it): its own table, ft_erosion_params as the library describes it, after
+# the preset that fills it. A terrain object stores it beside the terrain's
+# settings, so Regenerate reruns generation then erosion.
 ERODE_PRESETS = (
     ("NONE", "None", "No erosion: the fractal terrain as generated", 0),
     ("VALLEYS", "Valleys", "Fluvial: stream power with uplift carves dendritic valley networks", 1),
@@ -295,50 +308,17 @@ ERODE_PRESETS = (
     ("LAND", "Land", "All three: valleys, then rain, then scree", 4),
     ("CUSTOM", "Custom", "The passes and rates below as set", 5),
 )
-TERRAIN_PARAMS = TERRAIN_PARAMS + (
-    Param("erode_preset", "enum", "NONE", "Erosion",
-          "Erode after generating: picking a preset sets the passes and rates below (then edit them)",
-          items=ERODE_PRESETS),
-) + tuple(replace(p, field=None) for p in EROSION_PARAMS)
+ERODE_PRESET = Param("erode_preset", "enum", "NONE", "Erosion",
+                     "Erode after generating: picking a preset sets the passes and rates below (then edit them)",
+                     items=ERODE_PRESETS)
 
-PARAMS_BY_NAME = {p.name: p for p in TERRAIN_PARAMS}
-
-
-def defaults():
-    """{name: default} for every terrain setting."""
-    return {p.name: p.default for p in TERRAIN_PARAMS}
-
-
-def is_used(param, method):
-    """True when `param` matters for `method` (used to lay out panels)."""
-    return param.methods is None or method in param.methods
-
-
-def fill_struct(struct, values, param_list=None):
-    """Copies the values that have a C field into a ctypes params struct
-    (ft_terrain_params unless another list is given).
-
-    `values` maps names to values; names it lacks keep the struct's value.
-    """
-    for p in param_list or TERRAIN_PARAMS:
-        if p.field and p.name in values:
-            setattr(struct, p.field, p.c_value(values[p.name]))
-    return struct
-
-
-def values_of(obj, param_list=None):
-    """{name: value} read from an object whose attributes are the settings."""
-    return {p.name: (tuple(v) if p.kind == "vector" else v)
-            for p in param_list or TERRAIN_PARAMS for v in [getattr(obj, p.name)]}
-
-
-# Polylines (fracterra/polyline.h): the library's settings, then Blender's own
+# Polylines (fracterra/polyline.h): Blender's own settings after the library's
 # (where the base comes from, the curve's bevel).
 BASE_SOURCES = (
     ("POINTS", "Two Points", "From Start to End", 0),
     ("ACTIVE", "Active Object", "Through the points of the active curve, or the edge chain of the active mesh", 1),
 )
-POLYLINE_PARAMS = library_params("polyline") + (
+_BLENDER_POLYLINE_PARAMS = (
     Param("base_source", "enum", "POINTS", "Base", "The base polyline the fractal follows", items=BASE_SOURCES),
     # A vertical bolt striking the 3D cursor from 10 m above (in the object's frame).
     Param("start", "vector", (0.0, 0.0, 10.0), "Start", "First point of the base segment",
@@ -347,11 +327,84 @@ POLYLINE_PARAMS = library_params("polyline") + (
           subtype="TRANSLATION", unit="LENGTH"),
     Param("bevel", "bool", True, "Bevel", "Give the curve thickness: bevel depth 1 times each point's radius"),
 )
-
-
-# Object > Fractalize (fracterra/subdiv.h): the library's settings, then Blender's own.
-FRACTALIZE_PARAMS = library_params("fractalize") + (
+# Object > Fractalize (fracterra/subdiv.h): Blender's own settings after the library's.
+_BLENDER_FRACTALIZE_PARAMS = (
     Param("use_creases", "bool", True, "Edge Creases", "Honour the mesh's edge creases (crease c becomes "
           "OpenSubdiv sharpness 10 c^2, as Blender's own subdivision)"),
     Param("smooth", "bool", True, "Smooth Shading", "Shade the fractal surface smooth (off: every facet flat)"),
 )
+
+
+def _tables():
+    """The tables made from the library's description: built on first use, so
+    importing this module loads no library (a script, a Dask worker, the
+    add-on's registration order decide when)."""
+    library_terrain = library_params("terrain")
+    # The methods that make (2^levels + 1)^2 grids: those that use `levels`.
+    dyadic = next(p for p in library_terrain if p.name == "levels").methods
+    terrain = library_terrain + _blender_terrain_params(dyadic)
+    erosion = library_params("erosion")
+    erode = (ERODE_PRESET,) + erosion
+    return {
+        "DYADIC_METHODS": dyadic,
+        "TERRAIN_PARAMS": terrain,  # ft_terrain_params' settings and Blender's own for a terrain
+        "EROSION_PARAMS": erosion,  # ft_erosion_params' settings
+        "ERODE_PARAMS": erode,  # the Erode step: its preset, then ft_erosion_params' settings
+        "TERRAIN_OBJECT_PARAMS": terrain + erode,  # what a terrain object stores
+        "PARAMS_BY_NAME": {p.name: p for p in terrain + erode},
+        "POLYLINE_PARAMS": library_params("polyline") + _BLENDER_POLYLINE_PARAMS,
+        "FRACTALIZE_PARAMS": library_params("fractalize") + _BLENDER_FRACTALIZE_PARAMS,
+    }
+
+
+_LAZY = ("DYADIC_METHODS", "TERRAIN_PARAMS", "EROSION_PARAMS", "ERODE_PARAMS", "TERRAIN_OBJECT_PARAMS",
+         "PARAMS_BY_NAME", "POLYLINE_PARAMS", "FRACTALIZE_PARAMS")
+
+
+def __getattr__(name):
+    """params.TERRAIN_PARAMS and the other tables, made on first use (PEP 562)."""
+    if name in _LAZY:
+        globals().update(_tables())
+        return globals()[name]
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def _table(name):
+    return globals()[name] if name in globals() else __getattr__(name)
+
+
+def defaults(param_list=None):
+    """{name: default} for every setting a terrain object stores (unless another list is given)."""
+    return {p.name: p.default for p in param_list or _table("TERRAIN_OBJECT_PARAMS")}
+
+
+def is_used(param, method):
+    """True when `param` matters for `method` (used to lay out panels)."""
+    return param.methods is None or method in param.methods
+
+
+def grid_shape(values):
+    """(nx, ny) of the terrain that settings `values` (a dict) describe."""
+    if values["method"] in _table("DYADIC_METHODS"):
+        side = 2 ** values["levels"] + 1
+        return side, side
+    return values["width"], values["height"]
+
+
+def fill_struct(struct, values, param_list=None):
+    """Copies the values that have a C field into a ctypes params struct
+    (ft_terrain_params unless another list is given).
+
+    `values` maps names to values; names it lacks keep the struct's value.
+    """
+    for p in param_list or _table("TERRAIN_PARAMS"):
+        if p.field and p.name in values:
+            setattr(struct, p.field, p.c_value(values[p.name]))
+    return struct
+
+
+def values_of(obj, param_list=None):
+    """{name: value} read from an object whose attributes are the settings
+    (those a terrain object stores unless another list is given)."""
+    return {p.name: (tuple(v) if p.kind == "vector" else v)
+            for p in param_list or _table("TERRAIN_OBJECT_PARAMS") for v in [getattr(obj, p.name)]}

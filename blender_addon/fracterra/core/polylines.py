@@ -9,7 +9,7 @@ from ctypes import POINTER, byref, c_double, c_int64, c_void_p
 
 from . import params as params_mod
 from .handle import LibraryHandle
-from .binding import PolylineStats, enum_values, library
+from .binding import HurstResult, PolylineStats, enum_values, library
 from .errors import InvalidArgumentError
 from .terrain import _ProgressBridge
 
@@ -138,7 +138,6 @@ def hurst_of_heightfield(hf, method="AUTO"):
     AUTO is the library's recommendation for the grid (the one `fracterra analyze`
     reports); 'estimator' names the method used and 'reason' says why.
     """
-    from .binding import HurstResult
     lib = library()
     p = lib.hurst_params_type()
     lib.check(lib.ft_hurst_params_init(byref(p)))

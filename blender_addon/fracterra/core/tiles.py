@@ -26,56 +26,20 @@ import json
 import os
 import sys
 import time
-from ctypes import POINTER, byref, c_double, c_int32, c_int64, c_size_t, c_uint32, c_void_p
+from ctypes import byref, c_double, c_int32, c_int64, c_size_t, c_uint32, c_void_p
 
 from . import params as params_mod
-from .binding import ENV_VAR, library
+from .binding import ENV_VAR, HurstResult, library
 from .errors import FracterraError, InvalidArgumentError
 from .handle import LibraryHandle
-from .binding import HurstResult
-from .terrain import attach_reference, terrain_struct
+from .terrain import Heightfield, attach_reference, terrain_struct
 
 FORMATS = {"png16": 0, "tiff": 1}
-_TILES_SIGNATURES = {
-    "ft_tileset_open": (c_int32, [c_void_p, c_int32, c_int32, ctypes.c_char_p, POINTER(c_void_p)]),
-    "ft_tileset_open_deferred": (c_int32, [c_void_p, c_int32, c_int32, ctypes.c_char_p, POINTER(c_void_p),
-                                           POINTER(c_int32)]),
-    "ft_tileset_set_height_range": (c_int32, [c_void_p, c_double, c_double]),
-    "ft_tile_height_range": (c_int32, [c_void_p, c_int32, c_int32, c_int32, POINTER(c_double), POINTER(c_double)]),
-    "ft_tileset_free": (None, [c_void_p]),
-    "ft_tileset_grid": (c_int32, [c_void_p, POINTER(c_int32), POINTER(c_int32)]),
-    "ft_tileset_height_range": (c_int32, [c_void_p, POINTER(c_double), POINTER(c_double)]),
-    "ft_tileset_tile_done": (c_int32, [c_void_p, c_int32, c_int32, POINTER(c_int32)]),
-    "ft_tileset_record": (c_int32, [c_void_p, c_int32, c_int32, c_uint32]),
-    "ft_tileset_finish": (c_int32, [c_void_p]),
-    "ft_tile_write": (c_int32, [c_void_p, c_int32, c_int32, c_double, c_double, ctypes.c_char_p, c_int32, c_int32,
-                                POINTER(c_uint32)]),
-    "ft_tileset_extent": (c_int32, [ctypes.c_char_p, c_int32, POINTER(c_int64), POINTER(c_int64)]),
-    "ft_tileset_read_window": (c_int32, [ctypes.c_char_p, c_int32, c_int64, c_int64, c_int32, c_int32,
-                                         POINTER(c_void_p)]),
-    # analysis.h (ABI 2.4): H of a surface from per-window increment sums.
-    "ft_increment_lags": (c_int32, [c_void_p, c_int64, c_int64, POINTER(c_int64), c_size_t, POINTER(c_size_t)]),
-    "ft_increment_sums": (c_int32, [c_void_p, c_void_p, c_int64, c_int64, c_int64, c_int64, POINTER(c_double),
-                                    POINTER(c_double), c_size_t]),
-    "ft_hurst_from_increment_sums": (c_int32, [c_void_p, c_int64, c_int64, POINTER(c_double), POINTER(c_double),
-                                               c_size_t, c_void_p]),
-}
 HURST_METHODS = {"variogram_aligned": 2, "madogram_aligned": 3}
 
 
 class SchedulerUnreachable(FracterraError):
     """The Dask scheduler named by --scheduler did not answer in time."""
-
-
-def _lib():
-    """The library with the tile functions declared (ABI 2.10)."""
-    lib = library()
-    if not getattr(lib, "_tiles_bound", False):
-        missing = lib._bind(_TILES_SIGNATURES)
-        if missing:
-            raise FracterraError(f"{lib.path} lacks {', '.join(missing)}: tile sets need ABI 2.10 or later")
-        lib._tiles_bound = True
-    return lib
 
 
 def _terrain(settings, reference):
@@ -93,7 +57,7 @@ def _format(fmt):
 
 def write_tile(col, row, settings, reference, tile, fmt, height_min, height_max, out_dir):
     """One Dask task (runs on a worker): writes tile (col, row); returns (col, row, crc32)."""
-    lib = _lib()
+    lib = library()
     p, _keep = _terrain(settings, reference)
     crc = c_uint32()
     lib.check(lib.ft_tile_write(byref(p), tile, _format(fmt), height_min, height_max, os.fsencode(out_dir), col, row,
@@ -103,7 +67,7 @@ def write_tile(col, row, settings, reference, tile, fmt, height_min, height_max,
 
 def tile_height_range(col, row, settings, reference, tile):
     """One Dask task of the exact height-range pass: tile (col, row)'s (min, max)."""
-    lib = _lib()
+    lib = library()
     p, _keep = _terrain(settings, reference)
     lo, hi = c_double(), c_double()
     lib.check(lib.ft_tile_height_range(byref(p), tile, col, row, byref(lo), byref(hi)))
@@ -122,7 +86,7 @@ class TileSet(LibraryHandle):
 
     @classmethod
     def open(cls, settings, out_dir, tile=4096, fmt="png16", reference=None):
-        lib = _lib()
+        lib = library()
         p, _keep = _terrain(settings, reference)
         out = c_void_p()
         lib.check(lib.ft_tileset_open(byref(p), tile, _format(fmt), os.fsencode(str(out_dir)), byref(out)))
@@ -132,7 +96,7 @@ class TileSet(LibraryHandle):
     def open_deferred(cls, settings, out_dir, tile=4096, fmt="png16", reference=None):
         """(set, pending): like open, but a new set needing the exact range pass is left pending
         (set_height_range gives it) instead of running that pass here."""
-        lib = _lib()
+        lib = library()
         p, _keep = _terrain(settings, reference)
         out, pending = c_void_p(), c_int32()
         lib.check(lib.ft_tileset_open_deferred(byref(p), tile, _format(fmt), os.fsencode(str(out_dir)), byref(out),
@@ -179,7 +143,7 @@ def manifest(folder):
 
 def extent(folder, lod=0):
     """(width, height): the whole set's samples per side at level of detail `lod`."""
-    lib = _lib()
+    lib = library()
     w, h = c_int64(), c_int64()
     lib.check(lib.ft_tileset_extent(os.fsencode(str(folder)), lod, byref(w), byref(h)))
     return w.value, h.value
@@ -189,8 +153,7 @@ def read_window(folder, lod=0, x0=0, y0=0, width=None, height=None):
     """A Heightfield (close it) of the window [x0, x0 + width) x [y0, y0 + height), counted at
     level of detail `lod` (every 2^lod-th sample), read back from the tile files it touches, in
     the set's real heights; None width/height: to the end of the set."""
-    from .terrain import Heightfield
-    lib = _lib()
+    lib = library()
     ew, eh = extent(folder, lod)
     width = ew - x0 if width is None else width
     height = eh - y0 if height is None else height
@@ -312,7 +275,7 @@ def _hurst_params(method):
 
 
 def _extent(settings, reference):
-    lib = _lib()
+    lib = library()
     p, _keep = _terrain(settings, reference)
     w, h = c_int64(), c_int64()
     lib.check(lib.ft_terrain_extent(byref(p), 0, byref(w), byref(h)))
@@ -321,8 +284,7 @@ def _extent(settings, reference):
 
 def tile_increment_sums(col, row, settings, reference, tile, method):
     """One Dask task: the increment sums of tile (col, row), generated as a window (exact floats)."""
-    from .terrain import Heightfield
-    lib = _lib()
+    lib = library()
     p, _keep = _terrain(settings, reference)
     w, h = _extent(settings, reference)
     x0, y0 = col * tile, row * tile
@@ -347,7 +309,7 @@ def _add_sums(parts):
 
 def hurst_from_sums(settings, sums, counts, method="variogram_aligned", reference=None):
     """H, D and the fit of the whole surface from its reduced increment sums."""
-    lib = _lib()
+    lib = library()
     w, h = _extent(settings, reference)
     hp = _hurst_params(method)
     n = len(sums)

@@ -4,7 +4,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::analysis {
 namespace {
 
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
@@ -117,4 +117,4 @@ CloudOptions cloud_options(const ft_clouds_params& p) {
   return o;
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

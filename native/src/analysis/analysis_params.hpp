@@ -13,7 +13,7 @@
 #include "core/param_table.hpp"
 #include "fracterra/analysis.h"
 
-namespace ft {
+namespace ft::analysis {
 
 const ParamTable& hurst_param_table();
 const ParamTable& clouds_param_table();
@@ -24,4 +24,4 @@ HurstOptions hurst_options(const ft_hurst_params& p, int64_t width, int64_t heig
                            std::optional<HurstChoice>& choice);
 CloudOptions cloud_options(const ft_clouds_params& p);
 
-}  // namespace ft
+}  // namespace ft::analysis

@@ -7,7 +7,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 
-namespace ft {
+namespace ft::analysis {
 namespace {
 
 struct Bounds {
@@ -188,4 +188,4 @@ BoxCountResult box_counting_dimension(const PolylineSet& set, const BoxCountOpti
   return r;
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

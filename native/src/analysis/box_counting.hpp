@@ -26,7 +26,7 @@
 
 #include "core/polyline_set.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 struct BoxCountOptions {
   double min_size = 0.0;     // smallest box side; 0: automatic (see above)
@@ -60,4 +60,4 @@ struct SlopeFit {
 };
 SlopeFit fit_slope(const std::vector<double>& x, const std::vector<double>& y);
 
-}  // namespace ft
+}  // namespace ft::analysis

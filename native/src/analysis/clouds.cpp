@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 GrayImage clouds_image(const Heightfield& hf, const CloudOptions& o) {
   if (o.bit_depth != 8 && o.bit_depth != 16) invalid("bit depth must be 8 or 16, got " + std::to_string(o.bit_depth));
@@ -39,4 +39,4 @@ GrayImage clouds_image(const Heightfield& hf, const CloudOptions& o) {
   return img;
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

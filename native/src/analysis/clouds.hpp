@@ -13,7 +13,7 @@
 #include "core/gray_image.hpp"
 #include "core/heightfield.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 struct CloudOptions {
   LevelSpec threshold{0.5, true};  // default: the median
@@ -24,4 +24,4 @@ struct CloudOptions {
 // all-black image (not an error).
 GrayImage clouds_image(const Heightfield& hf, const CloudOptions& options);
 
-}  // namespace ft
+}  // namespace ft::analysis

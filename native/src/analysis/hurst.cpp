@@ -8,7 +8,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 const char* hurst_method_name(HurstMethod m) {
   switch (m) {
@@ -118,8 +118,8 @@ HurstEstimate transect_median(const Heightfield& hf, const HurstOptions& o);  //
 HurstEstimate estimate_hurst_profile(const float* values, size_t n, const HurstOptions& options) {
   check_not_null("values", values);
   if (n < 8) invalid("a profile needs at least 8 samples for a Hurst estimate, got " + std::to_string(n));
-  detail::check_all_finite(values, n, "profile");
-  return detail::estimate_transect(values, n, 1, options);
+  analysis::detail::check_all_finite(values, n, "profile");
+  return analysis::detail::estimate_transect(values, n, 1, options);
 }
 
 HurstEstimate estimate_hurst_surface(const Heightfield& hf, const HurstOptions& o) {
@@ -127,7 +127,7 @@ HurstEstimate estimate_hurst_surface(const Heightfield& hf, const HurstOptions& 
   if (w < 8 || h < 8)
     invalid("a heightfield needs at least 8 x 8 samples for a Hurst estimate, got " + std::to_string(w) + " x " +
             std::to_string(h));
-  detail::check_all_finite(hf.data(), hf.size(), "heightfield");
+  analysis::detail::check_all_finite(hf.data(), hf.size(), "heightfield");
   if (o.transects) return detail::transect_median(hf, o);
   HurstEstimate e;
   e.method = o.method;
@@ -136,22 +136,22 @@ HurstEstimate estimate_hurst_surface(const Heightfield& hf, const HurstOptions& 
     // Rows and columns pooled when they have the same length (same
     // frequencies per record); otherwise the longer direction only.
     const size_t n = size_t(std::max(w, h));
-    const detail::Band band = detail::resolve_band(o, n);
+    const analysis::detail::Band band = analysis::detail::resolve_band(o, n);
     std::vector<double> power(n / 2 + 1, 0.0);
-    if (w >= h) detail::add_periodograms(hf.data(), size_t(w), 1, size_t(h), w, power.data());
-    if (h >= w) detail::add_periodograms(hf.data(), size_t(h), w, size_t(w), 1, power.data());
-    detail::fit_spectrum(power, band, e);
+    if (w >= h) analysis::detail::add_periodograms(hf.data(), size_t(w), 1, size_t(h), w, power.data());
+    if (h >= w) analysis::detail::add_periodograms(hf.data(), size_t(h), w, size_t(w), 1, power.data());
+    analysis::detail::fit_spectrum(power, band, e);
     e.band_lo = band.lo, e.band_hi = band.hi;
   } else {
-    const detail::Band band = detail::resolve_band(o, size_t(std::min(w, h)));
-    const std::vector<int64_t> lags = detail::lags_in_band(o.method, band);
-    detail::surface_increments(hf, o.method, lags, e.y);
+    const analysis::detail::Band band = analysis::detail::resolve_band(o, size_t(std::min(w, h)));
+    const std::vector<int64_t> lags = analysis::detail::lags_in_band(o.method, band);
+    analysis::detail::surface_increments(hf, o.method, lags, e.y);
     e.x.assign(lags.begin(), lags.end());
     e.fit = fit_loglog(e.x, e.y, "Hurst estimate (is the heightfield constant?)");
     e.band_lo = double(lags.front()), e.band_hi = double(lags.back());
   }
-  detail::finish_estimate(e);
+  analysis::detail::finish_estimate(e);
   return e;
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

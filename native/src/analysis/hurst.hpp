@@ -24,7 +24,7 @@
 #include "analysis/loglog_fit.hpp"
 #include "core/heightfield.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 enum class HurstMethod { kVariogram = 0, kMadogram = 1, kVariogramAligned = 2, kMadogramAligned = 3, kSpectral = 4 };
 
@@ -95,4 +95,4 @@ void add_periodograms(const float* v, size_t n, ptrdiff_t stride, size_t count, 
 void fit_spectrum(const std::vector<double>& power, Band band, HurstEstimate& e);
 }  // namespace detail
 
-}  // namespace ft
+}  // namespace ft::analysis

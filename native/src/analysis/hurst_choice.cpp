@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace ft {
+namespace ft::analysis {
 namespace {
 
 bool dyadic(int64_t n) { return n >= 3 && ((n - 1) & (n - 2)) == 0; }
@@ -31,4 +31,4 @@ HurstChoice choose_hurst_method(int64_t width, int64_t height) {
           "not a 2^n + 1 grid, < 256 samples per side: the plain variogram (too short for the spectral band)"};
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

@@ -7,7 +7,7 @@
 
 #include "analysis/hurst.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 enum class HurstChoiceReason : int32_t {
   kDyadicGrid = 1,   // 2^n + 1 samples per side: the dyadic-aligned variogram
@@ -24,4 +24,4 @@ struct HurstChoice {
 // A profile of `width` samples has height 1.
 HurstChoice choose_hurst_method(int64_t width, int64_t height);
 
-}  // namespace ft
+}  // namespace ft::analysis

@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::analysis {
 namespace {
 
 bool is_aligned(HurstMethod m) { return m == HurstMethod::kVariogramAligned || m == HurstMethod::kMadogramAligned; }
@@ -25,8 +25,8 @@ std::vector<int64_t> surface_lags(const HurstOptions& o, int64_t whole_width, in
     invalid(std::string("increment sums over windows need an aligned method (variogram_aligned or madogram_aligned); "
                         "got ") + hurst_method_name(o.method));
   if (whole_width < 8 || whole_height < 8) invalid("a surface needs at least 8 x 8 samples for a Hurst estimate");
-  const detail::Band band = detail::resolve_band(o, size_t(std::min(whole_width, whole_height)));
-  return detail::lags_in_band(o.method, band);
+  const analysis::detail::Band band = analysis::detail::resolve_band(o, size_t(std::min(whole_width, whole_height)));
+  return analysis::detail::lags_in_band(o.method, band);
 }
 
 void add_window_increments(const Heightfield& win, HurstMethod m, int64_t x0, int64_t y0, int64_t whole_width,
@@ -36,7 +36,7 @@ void add_window_increments(const Heightfield& win, HurstMethod m, int64_t x0, in
     invalid("the window [" + std::to_string(x0) + ", " + std::to_string(x0 + w) + ") x [" + std::to_string(y0) + ", " +
             std::to_string(y0 + h) + ") is not inside the " + std::to_string(whole_width) + " x " +
             std::to_string(whole_height) + " surface");
-  detail::check_all_finite(win.data(), win.size(), "window");
+  analysis::detail::check_all_finite(win.data(), win.size(), "window");
   const bool sq = m == HurstMethod::kVariogramAligned;
   const int64_t xe = owned_end(x0, w, whole_width), ye = owned_end(y0, h, whole_height);
   for (size_t k = 0; k < lags.size(); ++k) {
@@ -74,8 +74,8 @@ HurstEstimate estimate_from_increments(HurstMethod m, const std::vector<int64_t>
   }
   e.fit = fit_loglog(e.x, e.y, "Hurst estimate (is the surface constant?)");
   e.band_lo = double(lags.front()), e.band_hi = double(lags.back());
-  detail::finish_estimate(e);
+  analysis::detail::finish_estimate(e);
   return e;
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

@@ -17,7 +17,7 @@
 
 #include "analysis/hurst.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 // The lags estimate_hurst_surface uses on a whole_width x whole_height
 // surface with these options; the method must be an aligned one.
@@ -32,4 +32,4 @@ void add_window_increments(const Heightfield& win, HurstMethod m, int64_t x0, in
 HurstEstimate estimate_from_increments(HurstMethod m, const std::vector<int64_t>& lags, const double* sum,
                                        const double* count);
 
-}  // namespace ft
+}  // namespace ft::analysis

@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 LogLogFit fit_loglog(const std::vector<double>& x, const std::vector<double>& y, const char* what) {
   std::vector<double> lx, ly;
@@ -38,4 +38,4 @@ LogLogFit fit_loglog(const std::vector<double>& x, const std::vector<double>& y,
   return f;
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-namespace ft {
+namespace ft::analysis {
 
 struct LogLogFit {
   double slope = 0, intercept = 0;  // log(y) ~ intercept + slope log(x), natural logs
@@ -16,4 +16,4 @@ struct LogLogFit {
 // FT_ERR_INVALID_ARGUMENT naming `what` when fewer than 2 usable points remain.
 LogLogFit fit_loglog(const std::vector<double>& x, const std::vector<double>& y, const char* what);
 
-}  // namespace ft
+}  // namespace ft::analysis

@@ -4,7 +4,7 @@
 
 #include "analysis/polyline_stats.hpp"
 
-namespace ft {
+namespace ft::analysis {
 namespace {
 nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 }  // namespace
@@ -28,4 +28,4 @@ nlohmann::json polyline_report(const PolylineSet& set) {
           {"box_counting", box}};
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

@@ -6,11 +6,11 @@
 
 #include "core/polyline_set.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 // {"lines", "vertices", "length", "eta", "chi", "gamma", "mass_dimension",
 //  "box_counting": {"dimension", "std_error", "min_size", "max_size",
 //  "sizes": [...], "counts": [...]} or {"error": "..."}}. NaN values are null.
 nlohmann::json polyline_report(const PolylineSet& set);
 
-}  // namespace ft
+}  // namespace ft::analysis

@@ -4,7 +4,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::analysis {
 namespace {
 
 double dist(const Vec3& a, const Vec3& b) {
@@ -77,4 +77,4 @@ PolylineMeasures measure_polylines(const PolylineSet& set, const BoxCountOptions
   return m;
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

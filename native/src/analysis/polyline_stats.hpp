@@ -18,7 +18,7 @@
 #include "analysis/box_counting.hpp"
 #include "core/polyline_set.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 struct LineStats {
   double eta = NAN, chi = NAN, gamma = NAN;  // NaN for < 2 vertices or a zero chord
@@ -41,4 +41,4 @@ struct PolylineMeasures {
 
 PolylineMeasures measure_polylines(const PolylineSet& set, const BoxCountOptions& box = {});
 
-}  // namespace ft
+}  // namespace ft::analysis

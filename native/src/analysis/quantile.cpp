@@ -8,7 +8,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 LevelSpec parse_level(const std::string& text, const char* what) {
   LevelSpec s;
@@ -44,4 +44,4 @@ double resolve_level(const Heightfield& hf, const LevelSpec& spec) {
   return spec.value;
 }
 
-}  // namespace ft
+}  // namespace ft::analysis

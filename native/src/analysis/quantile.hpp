@@ -6,7 +6,7 @@
 
 #include "core/heightfield.hpp"
 
-namespace ft {
+namespace ft::analysis {
 
 struct LevelSpec {
   double value = 0;
@@ -23,4 +23,4 @@ double heightfield_quantile(const Heightfield& hf, double q);
 // The absolute height of a level spec.
 double resolve_level(const Heightfield& hf, const LevelSpec& spec);
 
-}  // namespace ft
+}  // namespace ft::analysis

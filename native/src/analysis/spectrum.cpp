@@ -11,7 +11,7 @@
 #include "analysis/hurst.hpp"
 #include "core/error.hpp"
 
-namespace ft::detail {
+namespace ft::analysis::detail {
 namespace {
 
 // FFTW's planner is not thread-safe; execution of a plan is.
@@ -97,4 +97,4 @@ void fit_spectrum(const std::vector<double>& power, Band band, HurstEstimate& e)
   e.fit = fit_loglog(e.x, e.y, "spectral Hurst estimate");
 }
 
-}  // namespace ft::detail
+}  // namespace ft::analysis::detail

@@ -8,7 +8,7 @@
 #include "analysis/hurst.hpp"
 #include "core/error.hpp"
 
-namespace ft::detail {
+namespace ft::analysis::detail {
 
 HurstEstimate transect_median(const Heightfield& hf, const HurstOptions& o) {
   const int64_t w = hf.width(), h = hf.height();
@@ -52,4 +52,4 @@ HurstEstimate transect_median(const Heightfield& hf, const HurstOptions& o) {
   return e;
 }
 
-}  // namespace ft::detail
+}  // namespace ft::analysis::detail

@@ -6,7 +6,7 @@
 #include "analysis/hurst.hpp"
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::analysis {
 namespace {
 
 bool aligned(HurstMethod m) {
@@ -76,4 +76,4 @@ void surface_increments(const Heightfield& hf, HurstMethod m, const std::vector<
 
 }  // namespace detail
 
-}  // namespace ft
+}  // namespace ft::analysis

@@ -22,14 +22,14 @@ using ft::capi::guarded;
 namespace {
 
 // The caller's params over the table's defaults (NULL: the defaults), as the estimator's options.
-ft::HurstOptions to_options(const ft_hurst_params* params, int64_t width, int64_t height,
-                            std::optional<ft::HurstChoice>& choice) {
-  const ft::ParamTable& t = ft::hurst_param_table();
+ft::analysis::HurstOptions to_options(const ft_hurst_params* params, int64_t width, int64_t height,
+                            std::optional<ft::analysis::HurstChoice>& choice) {
+  const ft::ParamTable& t = ft::analysis::hurst_param_table();
   const ft_hurst_params p = params ? ft::upgraded(t, *params) : ft::defaults_of<ft_hurst_params>(t);
-  return ft::hurst_options(p, width, height, choice);
+  return ft::analysis::hurst_options(p, width, height, choice);
 }
 
-void to_result(const ft::HurstEstimate& e, const std::optional<ft::HurstChoice>& choice, ft_hurst_result* out) {
+void to_result(const ft::analysis::HurstEstimate& e, const std::optional<ft::analysis::HurstChoice>& choice, ft_hurst_result* out) {
   ft_hurst_result r{};
   r.method = int32_t(e.method);
   r.transects = e.transects;
@@ -38,16 +38,16 @@ void to_result(const ft::HurstEstimate& e, const std::optional<ft::HurstChoice>&
   r.std_error = e.std_error;
   r.band_lo = e.band_lo;
   r.band_hi = e.band_hi;
-  r.band_is_frequency = !ft::hurst_method_uses_lags(e.method);
+  r.band_is_frequency = !ft::analysis::hurst_method_uses_lags(e.method);
   r.points = e.fit.points;
   r.auto_reason = choice ? int32_t(choice->reason) : FT_HURST_REASON_NONE;
   r.auto_reason_text = choice ? choice->why : "";
   ft::capi::write_result(out, r, sizeof(ft_hurst_result), "ft_hurst_result");
 }
 
-ft::CloudOptions to_cloud_options(const ft_clouds_params* params) {
-  const ft::ParamTable& t = ft::clouds_param_table();
-  return ft::cloud_options(params ? ft::upgraded(t, *params) : ft::defaults_of<ft_clouds_params>(t));
+ft::analysis::CloudOptions to_cloud_options(const ft_clouds_params* params) {
+  const ft::ParamTable& t = ft::analysis::clouds_param_table();
+  return ft::analysis::cloud_options(params ? ft::upgraded(t, *params) : ft::defaults_of<ft_clouds_params>(t));
 }
 
 }  // namespace
@@ -57,7 +57,7 @@ extern "C" {
 FT_API ft_status ft_hurst_params_init(ft_hurst_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = ft::defaults_of<ft_hurst_params>(ft::hurst_param_table());
+    *p = ft::defaults_of<ft_hurst_params>(ft::analysis::hurst_param_table());
   });
 }
 
@@ -66,9 +66,9 @@ FT_API ft_status ft_hurst_profile(const float* samples, size_t count, const ft_h
   return guarded([&] {
     ft::check_not_null("out", out);
     ft::check_not_null("samples", samples);
-    std::optional<ft::HurstChoice> choice;
-    const ft::HurstOptions o = to_options(params, int64_t(count), 1, choice);
-    to_result(ft::estimate_hurst_profile(samples, count, o), choice, out);
+    std::optional<ft::analysis::HurstChoice> choice;
+    const ft::analysis::HurstOptions o = to_options(params, int64_t(count), 1, choice);
+    to_result(ft::analysis::estimate_hurst_profile(samples, count, o), choice, out);
   });
 }
 
@@ -77,19 +77,19 @@ FT_API ft_status ft_hurst_heightfield(const ft_heightfield* hf, const ft_hurst_p
   return guarded([&] {
     ft::check_not_null("out", out);
     ft::check_not_null("heightfield", hf);
-    std::optional<ft::HurstChoice> choice;
-    const ft::HurstOptions o = to_options(params, hf->hf.width(), hf->hf.height(), choice);
-    to_result(ft::estimate_hurst_surface(hf->hf, o), choice, out);
+    std::optional<ft::analysis::HurstChoice> choice;
+    const ft::analysis::HurstOptions o = to_options(params, hf->hf.width(), hf->hf.height(), choice);
+    to_result(ft::analysis::estimate_hurst_surface(hf->hf, o), choice, out);
   });
 }
 
 namespace {
 
 // The options and lags of a whole surface for the window sums.
-std::vector<int64_t> window_lags(const ft_hurst_params* params, int64_t w, int64_t h, ft::HurstOptions& o,
-                                 std::optional<ft::HurstChoice>& choice) {
+std::vector<int64_t> window_lags(const ft_hurst_params* params, int64_t w, int64_t h, ft::analysis::HurstOptions& o,
+                                 std::optional<ft::analysis::HurstChoice>& choice) {
   o = to_options(params, w, h, choice);
-  return ft::surface_lags(o, w, h);
+  return ft::analysis::surface_lags(o, w, h);
 }
 
 void check_lag_count(size_t given, size_t wanted) {
@@ -105,8 +105,8 @@ FT_API ft_status ft_increment_lags(const ft_hurst_params* params, int64_t whole_
   return guarded([&] {
     ft::check_not_null("count", count);
     *count = 0;
-    ft::HurstOptions o;
-    std::optional<ft::HurstChoice> choice;
+    ft::analysis::HurstOptions o;
+    std::optional<ft::analysis::HurstChoice> choice;
     const std::vector<int64_t> l = window_lags(params, whole_width, whole_height, o, choice);
     if (capacity > 0) ft::check_not_null("lags", lags);
     std::copy_n(l.begin(), std::min(capacity, l.size()), lags);
@@ -121,11 +121,11 @@ FT_API ft_status ft_increment_sums(const ft_heightfield* window, const ft_hurst_
     ft::check_not_null("window", window);
     ft::check_not_null("sums", sums);
     ft::check_not_null("counts", counts);
-    ft::HurstOptions o;
-    std::optional<ft::HurstChoice> choice;
+    ft::analysis::HurstOptions o;
+    std::optional<ft::analysis::HurstChoice> choice;
     const std::vector<int64_t> l = window_lags(params, whole_width, whole_height, o, choice);
     check_lag_count(count, l.size());
-    ft::add_window_increments(window->hf, o.method, x0, y0, whole_width, whole_height, l, sums, counts);
+    ft::analysis::add_window_increments(window->hf, o.method, x0, y0, whole_width, whole_height, l, sums, counts);
   });
 }
 
@@ -136,11 +136,11 @@ FT_API ft_status ft_hurst_from_increment_sums(const ft_hurst_params* params, int
     ft::check_not_null("out", out);
     ft::check_not_null("sums", sums);
     ft::check_not_null("counts", counts);
-    ft::HurstOptions o;
-    std::optional<ft::HurstChoice> choice;
+    ft::analysis::HurstOptions o;
+    std::optional<ft::analysis::HurstChoice> choice;
     const std::vector<int64_t> l = window_lags(params, whole_width, whole_height, o, choice);
     check_lag_count(count, l.size());
-    to_result(ft::estimate_from_increments(o.method, l, sums, counts), choice, out);
+    to_result(ft::analysis::estimate_from_increments(o.method, l, sums, counts), choice, out);
   });
 }
 
@@ -150,10 +150,10 @@ FT_API ft_status ft_coastline(const ft_heightfield* hf, double level, int32_t le
     ft::capi::reset_out(out);
     ft::check_not_null("heightfield", hf);
     ft::check_finite("level", level);
-    ft::LevelSpec spec{level, level_is_quantile != 0};
+    ft::analysis::LevelSpec spec{level, level_is_quantile != 0};
     if (spec.quantile) ft::check_range("level (a quantile)", level, 0.0, 1.0);
     auto p = std::make_unique<ft_polylines>();
-    p->set = ft::marching_squares(hf->hf, ft::resolve_level(hf->hf, spec));
+    p->set = ft::contour::marching_squares(hf->hf, ft::analysis::resolve_level(hf->hf, spec));
     *out = p.release();
   });
 }
@@ -169,7 +169,7 @@ FT_API ft_status ft_level_curves(const ft_heightfield* hf, const double* levels,
     for (size_t i = 0; i < count; ++i)
       if (!std::isfinite(v[i])) ft::invalid("levels[" + std::to_string(i) + "] must be finite, got " + ft::format_number(v[i]));
     auto p = std::make_unique<ft_polylines>();
-    p->set = ft::marching_squares(hf->hf, v);
+    p->set = ft::contour::marching_squares(hf->hf, v);
     *out = p.release();
   });
 }
@@ -177,7 +177,7 @@ FT_API ft_status ft_level_curves(const ft_heightfield* hf, const double* levels,
 FT_API ft_status ft_clouds_params_init(ft_clouds_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = ft::defaults_of<ft_clouds_params>(ft::clouds_param_table());
+    *p = ft::defaults_of<ft_clouds_params>(ft::analysis::clouds_param_table());
   });
 }
 
@@ -188,7 +188,7 @@ FT_API ft_status ft_clouds(const ft_heightfield* hf, const ft_clouds_params* par
     if (count < hf->hf.size())
       ft::invalid("dst holds " + std::to_string(count) + " values, the clouds need width * height = " +
                   std::to_string(hf->hf.size()));
-    const ft::GrayImage img = ft::clouds_image(hf->hf, to_cloud_options(params));
+    const ft::GrayImage img = ft::analysis::clouds_image(hf->hf, to_cloud_options(params));
     std::copy(img.pixels.begin(), img.pixels.end(), dst);
   });
 }
@@ -197,7 +197,7 @@ FT_API ft_status ft_clouds_write_png(const ft_heightfield* hf, const ft_clouds_p
   return guarded([&] {
     ft::check_not_null("heightfield", hf);
     ft::check_not_null("path", path);
-    ft::write_png(path, ft::clouds_image(hf->hf, to_cloud_options(params)));
+    ft::io::write_png(path, ft::analysis::clouds_image(hf->hf, to_cloud_options(params)));
   });
 }
 

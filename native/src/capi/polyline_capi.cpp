@@ -33,7 +33,7 @@ FT_API ft_status ft_polyline_measure(const ft_polylines* p, ft_polyline_stats* o
   return guarded([&] {
     ft::check_not_null("polylines", p);
     ft::check_not_null("out", out);
-    const ft::PolylineMeasures m = ft::measure_polylines(p->set);
+    const ft::analysis::PolylineMeasures m = ft::analysis::measure_polylines(p->set);
     ft_polyline_stats s{};
     s.line_count = p->set.line_count();
     s.vertex_count = p->set.vertex_count();

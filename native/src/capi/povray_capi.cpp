@@ -61,11 +61,11 @@ FT_API ft_status ft_pov_write_heightfield(const ft_heightfield* hf, const char* 
   return guarded([&] {
     ft::check_not_null("heightfield", hf);
     const std::string png = path_arg("png_path", png_path);
-    std::unique_ptr<ft::AtomicFile> inc;
+    std::unique_ptr<ft::io::AtomicFile> inc;
     std::string id;
     if (inc_path) {
       id = ft::pov::identifier(name ? name : "", "name");
-      inc = std::make_unique<ft::AtomicFile>(path_arg("inc_path", inc_path));  // checks the folder first
+      inc = std::make_unique<ft::io::AtomicFile>(path_arg("inc_path", inc_path));  // checks the folder first
     }
     ft::pov::validate_terrain(hf->hf, world_size_x, world_size_y, vertical_scale);
     const auto place = ft::pov::write_heightfield_png(hf->hf, png, world_size_x, world_size_y, vertical_scale);
@@ -97,7 +97,7 @@ FT_API ft_status ft_pov_write_sweeps(const ft_polylines* lines, const ft_pov_swe
     const std::string id = ft::pov::identifier(name ? name : "", "name");
     const std::string sdl = ft::pov::sweeps_sdl(lines->set, o);
     if (sdl.empty()) ft::invalid("the polyline set has no vertices");
-    ft::write_file_atomically(path, "// fracterra polylines as chunked sphere_sweeps\n#declare " + id + " = " + sdl);
+    ft::io::write_file_atomically(path, "// fracterra polylines as chunked sphere_sweeps\n#declare " + id + " = " + sdl);
   });
 }
 

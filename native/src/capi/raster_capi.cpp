@@ -9,7 +9,7 @@
 
 using ft::capi::guarded;
 
-static_assert(ft::kRefineMidpoint == FT_TERRAIN_MIDPOINT && ft::kRefineAdditions == FT_TERRAIN_ADDITIONS,
+static_assert(ft::refine::kRefineMidpoint == FT_TERRAIN_MIDPOINT && ft::refine::kRefineAdditions == FT_TERRAIN_ADDITIONS,
               "ft_dem_refine_params.method takes the terrain's method values");
 
 extern "C" {
@@ -19,11 +19,11 @@ FT_API ft_status ft_heightfield_read(const char* path, int32_t nodata, ft_height
     ft::capi::reset_out(out);
     ft::check_not_null("path", path);
     ft::check_int_range("nodata", nodata, FT_NODATA_REFUSE, FT_NODATA_KEEP);
-    const ft::NodataPolicy policy = nodata == FT_NODATA_FILL   ? ft::NodataPolicy::fill
-                                    : nodata == FT_NODATA_KEEP ? ft::NodataPolicy::keep
-                                                               : ft::NodataPolicy::refuse;
+    const ft::io::NodataPolicy policy = nodata == FT_NODATA_FILL   ? ft::io::NodataPolicy::fill
+                                    : nodata == FT_NODATA_KEEP ? ft::io::NodataPolicy::keep
+                                                               : ft::io::NodataPolicy::refuse;
     auto h = std::make_unique<ft_heightfield>();
-    h->hf = ft::read_heightfield(path, policy);
+    h->hf = ft::io::read_heightfield(path, policy);
     *out = h.release();
   });
 }
@@ -32,12 +32,12 @@ FT_API ft_status ft_heightfield_write(const ft_heightfield* hf, const char* path
   return guarded([&] {
     ft::check_not_null("heightfield", hf);
     ft::check_not_null("path", path);
-    ft::write_heightfield(hf->hf, path);
+    ft::io::write_heightfield(hf->hf, path);
   });
 }
 
 FT_API void ft_dem_refine_params_init(ft_dem_refine_params* p) {
-  if (p) *p = ft::defaults_of<ft_dem_refine_params>(ft::dem_refine_param_table());
+  if (p) *p = ft::defaults_of<ft_dem_refine_params>(ft::refine::dem_refine_param_table());
 }
 
 FT_API ft_status ft_dem_refine(const ft_heightfield* dem, const ft_dem_refine_params* p, ft_heightfield** out,
@@ -47,8 +47,8 @@ FT_API ft_status ft_dem_refine(const ft_heightfield* dem, const ft_dem_refine_pa
     ft::check_not_null("dem", dem);
     ft::check_not_null("params", p);
     if (report) ft::check_struct_size(report->struct_size, sizeof(ft_dem_refine_report), "ft_dem_refine_report");
-    const ft::DemRefineConfig c = ft::dem_refine_config(ft::upgraded(ft::dem_refine_param_table(), *p));
-    ft::DemRefineResult r = ft::refine_dem(dem->hf, c);
+    const ft::refine::DemRefineConfig c = ft::refine::dem_refine_config(ft::upgraded(ft::refine::dem_refine_param_table(), *p));
+    ft::refine::DemRefineResult r = ft::refine::refine_dem(dem->hf, c);
     if (report) {
       report->window_x = r.window_x;
       report->window_y = r.window_y;

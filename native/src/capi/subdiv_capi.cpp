@@ -59,7 +59,7 @@ FT_API ft_status ft_mesh_create(const float* positions, int64_t vertex_count, co
       m.crease_pairs.assign(crease_pairs, crease_pairs + 2 * crease_count);
       m.crease_sharpness.assign(crease_sharpness, crease_sharpness + crease_count);
     }
-    ft::validate_mesh(m);
+    ft::subdiv::validate_mesh(m);
     *out = h.release();
   });
 }
@@ -75,7 +75,7 @@ FT_API ft_status ft_mesh_set_corners(ft_mesh* mesh, const int32_t* vertices, con
     ft::Mesh m = mesh->mesh;  // validate a copy: a bad call leaves the mesh as it was
     m.corner_vertices.assign(vertices, vertices + count);
     m.corner_sharpness.assign(sharpness, sharpness + count);
-    ft::validate_mesh(m);
+    ft::subdiv::validate_mesh(m);
     mesh->mesh = std::move(m);
   });
 }
@@ -91,7 +91,7 @@ FT_API void ft_mesh_free(ft_mesh* m) { delete m; }
 FT_API ft_status ft_fractalize_params_init(ft_fractalize_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = ft::default_fractalize_params();
+    *p = ft::subdiv::default_fractalize_params();
   });
 }
 
@@ -101,7 +101,7 @@ FT_API ft_status ft_fractalize(const ft_mesh* mesh, const ft_fractalize_params* 
     ft::check_not_null("mesh", mesh);
     ft::check_not_null("params", p);
     auto h = std::make_unique<ft_mesh>();
-    h->mesh = ft::fractalize(mesh->mesh, ft::upgraded(ft::fractalize_param_table(), *p));
+    h->mesh = ft::subdiv::fractalize(mesh->mesh, ft::upgraded(ft::subdiv::fractalize_param_table(), *p));
     *out = h.release();
   });
 }

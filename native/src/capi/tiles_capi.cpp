@@ -10,20 +10,20 @@
 #include "tiles/tileset_reader.hpp"
 
 struct ft_tileset {
-  std::unique_ptr<ft::TileSet> set;
+  std::unique_ptr<ft::tiles::TileSet> set;
 };
 
 using ft::capi::guarded;
 
 namespace {
 
-ft::TileFormat format_of(int32_t format) {
+ft::tiles::TileFormat format_of(int32_t format) {
   if (format != FT_TILES_PNG16 && format != FT_TILES_TIFF)
     ft::invalid("format must be FT_TILES_PNG16 (0) or FT_TILES_TIFF (1), got " + std::to_string(format));
-  return ft::TileFormat(format);
+  return ft::tiles::TileFormat(format);
 }
 
-const ft::TileSet& set_of(const ft_tileset* s) {
+const ft::tiles::TileSet& set_of(const ft_tileset* s) {
   ft::check_not_null("set", s);
   return *s->set;
 }
@@ -37,7 +37,7 @@ FT_API ft_status ft_tileset_open(const ft_terrain_params* p, int32_t tile, int32
     ft::check_not_null("params", p);
     ft::check_not_null("dir", dir);
     auto s = std::make_unique<ft_tileset>();
-    s->set = std::make_unique<ft::TileSet>(ft::upgraded(ft::terrain_param_table(), *p), tile, format_of(format), dir);
+    s->set = std::make_unique<ft::tiles::TileSet>(ft::upgraded(ft::terrain_param_table(), *p), tile, format_of(format), dir);
     *out = s.release();
   });
 }
@@ -51,7 +51,7 @@ FT_API ft_status ft_tileset_open_deferred(const ft_terrain_params* p, int32_t ti
     ft::check_not_null("range_pending", range_pending);
     *range_pending = 0;
     auto s = std::make_unique<ft_tileset>();
-    s->set = std::make_unique<ft::TileSet>(ft::upgraded(ft::terrain_param_table(), *p), tile, format_of(format), dir,
+    s->set = std::make_unique<ft::tiles::TileSet>(ft::upgraded(ft::terrain_param_table(), *p), tile, format_of(format), dir,
                                            true);
     *range_pending = s->set->range_pending() ? 1 : 0;
     *out = s.release();
@@ -73,8 +73,8 @@ FT_API ft_status ft_tile_height_range(const ft_terrain_params* p, int32_t tile, 
     ft::check_not_null("max", max);
     *min = *max = 0;
     const ft_terrain_params q = ft::upgraded(ft::terrain_param_table(), *p);
-    const ft::TileSpec spec = ft::make_tile_spec(q, tile, ft::TileFormat::tiff);
-    const ft::HeightRange r = ft::tile_height_range(q, spec.grid, column, row);
+    const ft::tiles::TileSpec spec = ft::tiles::make_tile_spec(q, tile, ft::tiles::TileFormat::tiff);
+    const ft::tiles::HeightRange r = ft::tiles::tile_height_range(q, spec.grid, column, row);
     *min = r.min, *max = r.max;
   });
 }
@@ -130,8 +130,8 @@ FT_API ft_status ft_tile_write(const ft_terrain_params* p, int32_t tile, int32_t
     ft::check_not_null("crc32", crc32);
     *crc32 = 0;
     const ft_terrain_params q = ft::upgraded(ft::terrain_param_table(), *p);
-    const ft::TileSpec spec = ft::make_tile_spec(q, tile, format_of(format), height_min, height_max);
-    *crc32 = ft::write_tile(q, spec, dir, column, row);
+    const ft::tiles::TileSpec spec = ft::tiles::make_tile_spec(q, tile, format_of(format), height_min, height_max);
+    *crc32 = ft::tiles::write_tile(q, spec, dir, column, row);
   });
 }
 
@@ -141,7 +141,7 @@ FT_API ft_status ft_tileset_extent(const char* dir, int32_t lod, int64_t* width,
     ft::check_not_null("width", width);
     ft::check_not_null("height", height);
     *width = *height = 0;
-    ft::tileset_extent(dir, lod, width, height);
+    ft::tiles::tileset_extent(dir, lod, width, height);
   });
 }
 
@@ -151,7 +151,7 @@ FT_API ft_status ft_tileset_read_window(const char* dir, int32_t lod, int64_t x0
     ft::capi::reset_out(out);
     ft::check_not_null("dir", dir);
     auto h = std::make_unique<ft_heightfield>();
-    h->hf = ft::read_tileset_window(dir, lod, x0, y0, width, height);
+    h->hf = ft::tiles::read_tileset_window(dir, lod, x0, y0, width, height);
     *out = h.release();
   });
 }

@@ -12,7 +12,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 
-namespace ft {
+namespace ft::contour {
 namespace {
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
@@ -175,4 +175,4 @@ PolylineSet marching_squares(const Heightfield& hf, const std::vector<double>& l
   return all;
 }
 
-}  // namespace ft
+}  // namespace ft::contour

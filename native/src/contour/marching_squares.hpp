@@ -23,7 +23,7 @@
 #include "core/heightfield.hpp"
 #include "core/polyline_set.hpp"
 
-namespace ft {
+namespace ft::contour {
 
 // Throws FT_ERR_INVALID_ARGUMENT for NaN/infinite samples or level, or a
 // heightfield smaller than 2 x 2. A level outside the data range (or a
@@ -39,4 +39,4 @@ ChainKind chain_kind(const PolylineSet& set, int64_t i);
 // Signed area (shoelace) of polyline i taken as closed; > 0 counter-clockwise.
 double signed_area(const PolylineSet& set, int64_t i);
 
-}  // namespace ft
+}  // namespace ft::contour

@@ -71,7 +71,7 @@ DrainageStats drainage_stats(const Heightfield& hf, bool periodic, double min_ar
   std::vector<double> bx, by;
   binned_medians(a_hack, l_hack, bx, by);
   if (bx.size() < 3) invalid("too few channel cells for Hack's law (need 3 area bins of 5 cells; use a larger terrain)");
-  auto hack = fit_loglog(bx, by, "Hack's law");
+  auto hack = analysis::fit_loglog(bx, by, "Hack's law");
   st.hack_h = hack.slope;
   st.hack_h_stderr = hack.slope_stderr;
   st.hack_bins = hack.points;
@@ -81,7 +81,7 @@ DrainageStats drainage_stats(const Heightfield& hf, bool periodic, double min_ar
   by.clear();
   binned_medians(a_slope, s_slope, bx, by);
   if (bx.size() < 3) invalid("too few channel cells for the slope-area fit (need 3 area bins of 5 cells)");
-  auto flint = fit_loglog(bx, by, "slope-area");
+  auto flint = analysis::fit_loglog(bx, by, "slope-area");
   st.theta = -flint.slope;
   st.theta_stderr = flint.slope_stderr;
   st.theta_bins = flint.points;

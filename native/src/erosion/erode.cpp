@@ -2,6 +2,7 @@
 // scale to small), and the maps.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <omp.h>
 #include <vector>
 
@@ -17,6 +18,14 @@ namespace {
 
 void check_rate(const char* name, double v) {
   if (!(v >= 0.0) || !std::isfinite(v)) invalid(std::string(name) + " must be a finite number >= 0, got " + format_number(v));
+}
+
+// 6 significant digits: a float sample and the limit as people write them
+// (1e+38, not 9.9999996802856925e+37).
+std::string short_number(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%g", v);
+  return s;
 }
 
 Heightfield like(const Heightfield& hf) {
@@ -41,9 +50,11 @@ void validate(const ErosionConfig& c, const Heightfield& hf) {
     invalid("erosion needs a terrain of at least 3 x 3 samples, got " + std::to_string(hf.width()) + " x " +
             std::to_string(hf.height()));
   for (size_t i = 0; i < hf.size(); ++i)
-    if (!std::isfinite(hf.data()[i]))
+    if (!(std::fabs(hf.data()[i]) <= kMaxErosionHeight))  // NaN too
       invalid("terrain height at sample " + std::to_string(i % hf.width()) + ", " + std::to_string(i / hf.width()) +
-              " is " + format_number(hf.data()[i]) + ": erosion needs finite heights");
+              " is " + short_number(hf.data()[i]) + ": erosion needs finite heights within +-" +
+              short_number(kMaxErosionHeight) + " world units (a relief up to " + short_number(2 * kMaxErosionHeight) +
+              "; beyond, its float arithmetic overflows)");
   const auto& f = c.fluvial;
   check_int_range("fluvial.steps", f.steps, 0, kMaxErosionSteps);
   check_positive("fluvial.dt", f.dt);
@@ -51,6 +62,9 @@ void validate(const ErosionConfig& c, const Heightfield& hf) {
   check_range("fluvial.m", f.m, 0.0, 2.0);
   check_rate("fluvial.diffusion", f.diffusion);
   check_rate("fluvial.uplift", f.uplift);
+  if (f.uplift * f.dt * f.steps > kMaxErosionHeight)
+    invalid("fluvial.uplift x fluvial.dt x fluvial.steps (the total uplift) must be <= " +
+            short_number(kMaxErosionHeight) + " world units, got " + format_number(f.uplift * f.dt * f.steps));
   const auto& h = c.hydraulic;
   check_int_range("hydraulic.iterations", h.iterations, 0, kMaxErosionSteps);
   check_range("hydraulic.dt", h.dt, 1e-6, 1.0);

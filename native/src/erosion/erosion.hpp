@@ -23,6 +23,20 @@ namespace ft::erosion {
 
 inline constexpr int32_t kMaxErosionSteps = 100000;
 
+// The largest |height| (world units) erosion takes, so the relief is at most
+// twice it. The implicit solves multiply heights by factors up to
+// kMaxSolveFactor (1e20) and add them in float: 1e15 keeps every product
+// below 1e35, a thousandth of FLT_MAX (3.4e38). Beyond, a height of 1e38
+// overflowed the fluvial solve to inf - inf = NaN and its routing never
+// ended (issue 25). Any real terrain is far inside: 1e15 is Everest in
+// units of 10 picometres.
+inline constexpr double kMaxErosionHeight = 1e15;
+// The largest factor an implicit solve applies (stream power's K dt A^m / L,
+// diffusion's D dt / spacing^2): a factor f moves a height to within 1 / f
+// of the relief of its target, so beyond 1e20 (reached only by absurd
+// rates, which made it inf and the heights NaN) the result no longer changes.
+inline constexpr float kMaxSolveFactor = 1e20f;
+
 struct FluvialConfig {
   int32_t steps = 0;          // time steps; 0 = off
   double dt = 1000.0;         // years per step
@@ -81,7 +95,8 @@ D8Grid grid_of(const Heightfield& hf, bool periodic);
 
 // Throws FT_ERR_INVALID_ARGUMENT naming the parameter: negative or NaN
 // rates, counts beyond kMaxErosionSteps, fractions outside their range, a
-// grid smaller than 3 x 3, or non-finite heights.
+// grid smaller than 3 x 3, heights that are not finite or beyond
+// +-kMaxErosionHeight, a total uplift (rate x dt x steps) beyond it.
 void validate(const ErosionConfig& c, const Heightfield& hf);
 
 // The processes one by one, in place. `budget` may be null.

@@ -2,6 +2,9 @@
 #include "erosion/flow_graph.hpp"
 
 #include <algorithm>
+#include <string>
+
+#include "core/error.hpp"
 
 namespace ft::erosion {
 
@@ -21,7 +24,14 @@ namespace {
 // (cos a + sin a) / rho beats the row's cos a when rho < 1 + tan a: with
 // probability tan a, so a path's mean step (1, tan a) lies along the fall
 // line (Fairfield & Leymarie 1991).
-inline float diagonal_weight(float r) { return 1.0f / (2.0f - r); }
+// Kept strictly above 1/2, so that every positive drop stays positive: for
+// r < 2^-24, 2 - r rounds to 2 and the weight to exactly 1/2, and half the
+// smallest subnormal drop (2^-149) rounds to 0. Erosion wears a plain
+// towards a base level of 0 into subnormal heights; a cell whose only lower
+// neighbours were diagonals 2^-149 below then had no positive drop, so the
+// routing called it a pit, while the fills (which compare heights) saw it
+// drain and left it alone: route_and_fill looped forever (issue 24's hang).
+inline float diagonal_weight(float r) { return std::max(1.0f / (2.0f - r), 0x1.000002p-1f); }
 
 // Steepest descent on cells x0 .. x1 - 1 of an interior row (all eight
 // neighbours at the offsets `off`): selects instead of branches, restrict
@@ -213,6 +223,12 @@ void route_and_fill(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
     if (round >= 4 || graph.pits * 16 > int64_t(g.size())) {
       fill_depressions(g, z, sink, graph.random.empty() ? nullptr : graph.random.data());
       route_steepest(g, z, sink, graph);
+      // A global fill leaves every cell a strictly lower neighbour: a pit
+      // after it is a bug (or a height that is not finite), and looping
+      // would hang the caller instead of reporting it.
+      if (graph.pits > 0)
+        fail(FT_ERR_INTERNAL, std::to_string(graph.pits) + " cells have no lower neighbour after filling "
+                              "their depressions (a bug in the flow routing)");
     } else {
       fill_pits_locally(g, z, sink, graph);
       // Routing a cell and its neighbours one by one costs about 30 times

@@ -6,6 +6,7 @@
 // rows at a time (contiguous, vectorised, columns split among threads).
 // Bounded grids hold the edges fixed (the outlets are base level); periodic
 // grids solve the cyclic system by Sherman-Morrison.
+#include <algorithm>
 #include <vector>
 
 #include "erosion/erosion.hpp"
@@ -79,7 +80,7 @@ struct LineSolver {
 }  // namespace
 
 void hillslope_diffusion(const D8Grid& g, float* z, double diffusivity_dt) {
-  const double r = diffusivity_dt / (g.spacing * g.spacing);
+  const double r = std::min(diffusivity_dt / (g.spacing * g.spacing), double(kMaxSolveFactor));
   const LineSolver along_x(g.width, r, !g.periodic), along_y(g.height, r, !g.periodic);
   const size_t w = size_t(g.width);
   // Rows: each is a contiguous line. Bounded: the first and last rows are

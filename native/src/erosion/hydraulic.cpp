@@ -39,6 +39,15 @@
 #include "core/buffer.hpp"
 #include "erosion/erosion.hpp"
 
+// The sweeps in x86-64-v4, AVX2 and portable versions, chosen at load time
+// (GCC). Clang refuses clones of a template and of a noinline function: its
+// builds (the fuzzers') keep the portable version.
+#if defined(__clang__)
+#define FT_HYDRAULIC_CLONES
+#else
+#define FT_HYDRAULIC_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
+#endif
+
 namespace ft::erosion {
 namespace {
 
@@ -151,7 +160,7 @@ inline Updated update(const Constants& k, float before, Four in, Four o, float b
 // GCC keeps restrict only on parameters, and without it the loop needs more
 // alias checks than it will version for, and does not vectorise.
 template <bool Fluxes>
-[[gnu::noinline]] __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"))) void sweep1_interior(const Constants k, int64_t row, int64_t up, int64_t down, int32_t x0,
+[[gnu::noinline]] FT_HYDRAULIC_CLONES void sweep1_interior(const Constants k, int64_t row, int64_t up, int64_t down, int32_t x0,
                                        int32_t x1, const float* __restrict b, const float* __restrict d,
                                        const float* __restrict s, const float* __restrict sent,
                                        const float* __restrict o0, const float* __restrict o1,
@@ -206,7 +215,7 @@ void sweep1_edge(State& st, const Constants& k, const float* const* old, float* 
 // Sweep 2 over interior cells: reads this pass's fluxes and the bed; writes
 // b2, the cells' own sediment and water (s2, d2, which no neighbour reads
 // in this sweep) and sent.
-[[gnu::noinline]] __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"))) void sweep2_interior(const Constants k, int64_t row, int64_t up, int64_t down, int32_t x0,
+[[gnu::noinline]] FT_HYDRAULIC_CLONES void sweep2_interior(const Constants k, int64_t row, int64_t up, int64_t down, int32_t x0,
                                        int32_t x1, const float* __restrict b, const float* __restrict f0,
                                        const float* __restrict f1, const float* __restrict f2,
                                        const float* __restrict f3, float* __restrict b2, float* __restrict s2,

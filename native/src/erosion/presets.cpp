@@ -54,11 +54,11 @@ void write_erosion_maps(const ErosionMaps& maps, const std::string& dir) {
   int k = 0;
   for (const auto& [name, hf] : all) {
     const std::string file = std::string(name) + ".png";
-    write_heightfield(*hf, dir + "/" + file);
+    io::write_heightfield(*hf, dir + "/" + file);
     const HeightStats s = hf->stats();
     index[name] = {{"file", file}, {"min", s.min}, {"max", s.max}, {"unit", units[k++]}};
   }
-  write_file_atomically(dir + "/maps.json", index.dump(2) + "\n");
+  io::write_file_atomically(dir + "/maps.json", index.dump(2) + "\n");
 }
 
 }  // namespace ft::erosion

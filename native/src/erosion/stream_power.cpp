@@ -69,7 +69,7 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n); ++i)
       erodibility[i] = float(kdt * (c.m == 0.5 ? std::sqrt(area[i]) : std::pow(area[i], c.m)));
-    auto edge_f = [&](int32_t i) { return erodibility[i] * inv_spacing; };
+    auto edge_f = [&](int32_t i) { return std::min(erodibility[i] * inv_spacing, kMaxSolveFactor); };
     // Runs of whole trees are independent; each is solved in stack order.
     const int32_t chunks = int32_t(graph.chunk_start.size()) - 1;
 #pragma omp parallel for schedule(dynamic, 1)
@@ -85,7 +85,7 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
           continue;
         }
         if (lake_floor(z[i], z[r])) continue;
-        const float f = erodibility[i] / graph.length[i];
+        const float f = std::min(erodibility[i] / graph.length[i], kMaxSolveFactor);
         z[i] = (z[i] + f * z[r]) / (1.0f + f);
       }
     if (c.diffusion > 0.0) {

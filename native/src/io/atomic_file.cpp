@@ -14,7 +14,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 std::string folder_of(const std::string& path) {
   std::filesystem::path p(path);
@@ -124,4 +124,4 @@ std::string read_file(const std::string& path) {
   return data;
 }
 
-}  // namespace ft
+}  // namespace ft::io

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace ft {
+namespace ft::io {
 
 class AtomicFile {
  public:
@@ -41,4 +41,4 @@ std::string extension_of(const std::string& path);
 // Whole file as bytes; throws FT_ERR_IO with the path and the reason.
 std::string read_file(const std::string& path);
 
-}  // namespace ft
+}  // namespace ft::io

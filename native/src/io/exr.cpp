@@ -17,7 +17,7 @@
 #include "core/memory.hpp"
 #include "io/atomic_file.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 
 constexpr const char* kWorldSize = "fracterra:world_size";
@@ -140,4 +140,4 @@ void write_exr(const Heightfield& hf, const std::string& path) {
   write_file_atomically(path, bytes);
 }
 
-}  // namespace ft
+}  // namespace ft::io

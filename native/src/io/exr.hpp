@@ -9,10 +9,10 @@
 
 #include "core/heightfield.hpp"
 
-namespace ft {
+namespace ft::io {
 
 void write_exr(const Heightfield& hf, const std::string& path);  // atomic
 Heightfield read_exr(const std::string& path);
 Heightfield decode_exr(const std::string& bytes);
 
-}  // namespace ft
+}  // namespace ft::io

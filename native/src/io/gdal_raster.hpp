@@ -20,7 +20,7 @@
 
 #include "core/heightfield.hpp"
 
-namespace ft {
+namespace ft::io {
 
 enum class NodataPolicy { refuse, fill, keep };
 
@@ -35,4 +35,4 @@ Heightfield decode_gdal(const std::string& bytes, const std::string& extension,
 // FRACTERRA_WORLD_SIZE. Written atomically.
 void write_cog(const Heightfield& hf, const std::string& path);
 
-}  // namespace ft
+}  // namespace ft::io

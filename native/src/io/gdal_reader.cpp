@@ -13,7 +13,7 @@
 #include "io/gdal_raster.hpp"
 #include "io/gdal_session.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 
 // Pixel width in metres for a geographic CRS (degrees), else as given.
@@ -129,4 +129,4 @@ Heightfield decode_gdal(const std::string& bytes, const std::string& extension, 
   return read_dataset(ds.get(), "<memory>", nodata, session);
 }
 
-}  // namespace ft
+}  // namespace ft::io

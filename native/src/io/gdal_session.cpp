@@ -10,7 +10,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 // The session of this thread's current call; GDAL's per-thread handler stack
 // has no slot we could read back from a plain handler, so keep our own.
@@ -58,4 +58,4 @@ GdalMemFile::GdalMemFile(const std::string& extension) {
 
 GdalMemFile::~GdalMemFile() { VSIUnlink(name_.c_str()); }
 
-}  // namespace ft
+}  // namespace ft::io

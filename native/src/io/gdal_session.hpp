@@ -10,7 +10,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::io {
 
 class GdalSession {
  public:
@@ -52,4 +52,4 @@ class GdalMemFile {
   std::string name_;
 };
 
-}  // namespace ft
+}  // namespace ft::io

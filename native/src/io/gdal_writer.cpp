@@ -15,7 +15,7 @@
 #include "io/gdal_raster.hpp"
 #include "io/gdal_session.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 
 struct Options {
@@ -65,4 +65,4 @@ void write_cog(const Heightfield& hf, const std::string& path) {
   write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(bytes), size_t(length)));
 }
 
-}  // namespace ft
+}  // namespace ft::io

@@ -11,7 +11,7 @@
 #include "io/pgm.hpp"
 #include "io/raw16.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 
 Heightfield from_npy(const NpyArray& a, const std::string& name) {
@@ -109,4 +109,4 @@ Heightfield read_heightfield(const std::string& path, NodataPolicy nodata) {
   return read_gdal(path, nodata);
 }
 
-}  // namespace ft
+}  // namespace ft::io

@@ -19,7 +19,7 @@
 #include "io/gdal_raster.hpp"
 #include "io/png_image.hpp"
 
-namespace ft {
+namespace ft::io {
 
 void write_heightfield(const Heightfield& hf, const std::string& path);
 Heightfield read_heightfield(const std::string& path, NodataPolicy nodata = NodataPolicy::refuse);
@@ -35,4 +35,4 @@ inline constexpr const char* kHeightfieldWriteFormats = ".png, .pgm, .npy, .tif,
 inline constexpr const char* kHeightfieldReadHelp =
     "heightfield .png, .pgm, .npy, .exr, .raw/.r16, or any raster GDAL reads (.tif, .hgt, .asc, ...)";
 
-}  // namespace ft
+}  // namespace ft::io

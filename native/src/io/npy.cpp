@@ -8,7 +8,7 @@
 #include "core/memory.hpp"
 #include "io/atomic_file.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 
 template <class T>
@@ -149,4 +149,4 @@ void write_npy(const std::string& path, const std::vector<int64_t>& shape, const
   file.commit();
 }
 
-}  // namespace ft
+}  // namespace ft::io

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace ft {
+namespace ft::io {
 
 struct NpyArray {
   std::vector<int64_t> shape;  // C order
@@ -19,4 +19,4 @@ NpyArray read_npy(const std::string& path);
 // Writes a float32 C-order array atomically.
 void write_npy(const std::string& path, const std::vector<int64_t>& shape, const float* values);
 
-}  // namespace ft
+}  // namespace ft::io

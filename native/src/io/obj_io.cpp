@@ -15,7 +15,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 
 Mesh from_reader(const tinyobj::ObjReader& r, const std::string& name) {
@@ -240,4 +240,4 @@ void write_obj(const Mesh& mesh, const std::string& path, const std::string& com
   write_file_atomically(path, encode_obj(mesh, comment));
 }
 
-}  // namespace ft
+}  // namespace ft::io

@@ -15,11 +15,11 @@
 
 #include "core/mesh.hpp"
 
-namespace ft {
+namespace ft::io {
 
 Mesh read_obj(const std::string& path);
 Mesh decode_obj(const std::string& text, const std::string& name = "<memory>");
 std::string encode_obj(const Mesh& mesh, const std::string& comment = "");
 void write_obj(const Mesh& mesh, const std::string& path, const std::string& comment = "");
 
-}  // namespace ft
+}  // namespace ft::io

@@ -7,7 +7,7 @@
 #include "core/memory.hpp"
 #include "io/atomic_file.hpp"
 
-namespace ft {
+namespace ft::io {
 
 GrayImage decode_pgm(const std::string& bytes, const std::string& name) {
   auto bad = [&](const std::string& why) { fail(FT_ERR_FORMAT, "'" + name + "' is not a usable PGM file: " + why); };
@@ -95,4 +95,4 @@ void write_pgm(const std::string& path, const GrayImage& image) {
   write_file_atomically(path, out);
 }
 
-}  // namespace ft
+}  // namespace ft::io

@@ -6,7 +6,7 @@
 
 #include "io/png_image.hpp"
 
-namespace ft {
+namespace ft::io {
 
 GrayImage decode_pgm(const std::string& bytes, const std::string& name = "<memory>");
 GrayImage read_pgm(const std::string& path);
@@ -14,4 +14,4 @@ GrayImage read_pgm(const std::string& path);
 // the range comment.
 void write_pgm(const std::string& path, const GrayImage& image);
 
-}  // namespace ft
+}  // namespace ft::io

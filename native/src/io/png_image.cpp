@@ -10,7 +10,7 @@
 #include "core/memory.hpp"
 #include "io/atomic_file.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 
 // libpng reports errors by longjmp to the setjmp in the calling function; we
@@ -197,4 +197,4 @@ GrayImage decode_png(const std::string& bytes, const std::string& name) {
 
 GrayImage read_png(const std::string& path) { return decode_png(read_file(path), path); }
 
-}  // namespace ft
+}  // namespace ft::io

@@ -7,7 +7,7 @@
 
 #include "core/gray_image.hpp"
 
-namespace ft {
+namespace ft::io {
 
 // How hard libpng works: the default (deflate level 3, libpng's adaptive
 // choice of row filter) suits a single file; `fast` (level 1, the Up filter
@@ -24,4 +24,4 @@ GrayImage read_png(const std::string& path);
 // Same from bytes in memory (for fuzzing and tests).
 GrayImage decode_png(const std::string& bytes, const std::string& name = "<memory>");
 
-}  // namespace ft
+}  // namespace ft::io

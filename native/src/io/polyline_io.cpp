@@ -8,7 +8,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 
 void check_vertex(const Vec3& p, double r, const std::string& where) {
@@ -134,4 +134,4 @@ PolylineSet read_polylines(const std::string& path) {
   fail(FT_ERR_FORMAT, "'" + path + "': unsupported polyline format (use .csv or .json)");
 }
 
-}  // namespace ft
+}  // namespace ft::io

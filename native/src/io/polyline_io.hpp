@@ -9,7 +9,7 @@
 
 #include "core/polyline_set.hpp"
 
-namespace ft {
+namespace ft::io {
 
 void write_polylines(const PolylineSet& set, const std::string& path);
 PolylineSet read_polylines(const std::string& path);
@@ -18,4 +18,4 @@ PolylineSet decode_polylines_json(const std::string& text, const std::string& na
 std::string encode_polylines_csv(const PolylineSet& set);
 std::string encode_polylines_json(const PolylineSet& set);
 
-}  // namespace ft
+}  // namespace ft::io

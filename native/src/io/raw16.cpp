@@ -10,7 +10,7 @@
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
 
-namespace ft {
+namespace ft::io {
 
 std::string raw16_sidecar_path(const std::string& path) { return path + ".json"; }
 
@@ -74,4 +74,4 @@ Heightfield read_raw16(const std::string& path) {
   return decode_raw16(read_file(path), sidecar, path);
 }
 
-}  // namespace ft
+}  // namespace ft::io

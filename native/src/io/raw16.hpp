@@ -13,7 +13,7 @@
 
 #include "core/heightfield.hpp"
 
-namespace ft {
+namespace ft::io {
 
 // Writes both files, each atomically (the sidecar first: a raw file is never
 // beside a sidecar that does not describe it, unless the second rename fails).
@@ -23,4 +23,4 @@ Heightfield read_raw16(const std::string& path);
 Heightfield decode_raw16(const std::string& bytes, const std::string& sidecar, const std::string& name);
 std::string raw16_sidecar_path(const std::string& path);
 
-}  // namespace ft
+}  // namespace ft::io

@@ -7,7 +7,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 
-namespace ft {
+namespace ft::io {
 namespace {
 
 const char* kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f"};
@@ -222,4 +222,4 @@ std::string render_polylines_svg(const PolylineSet& set, double width, double he
   return o + "</svg>\n";
 }
 
-}  // namespace ft
+}  // namespace ft::io

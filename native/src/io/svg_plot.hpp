@@ -10,7 +10,7 @@
 
 #include "core/polyline_set.hpp"
 
-namespace ft {
+namespace ft::io {
 
 struct SvgSeries {
   std::string label;             // "" keeps it out of the legend
@@ -44,4 +44,4 @@ void write_svg(const std::string& path, const SvgFigure& figure);
 // (y up), stroke widths from the radii when `use_radii` (else 1 px).
 std::string render_polylines_svg(const PolylineSet& set, double width, double height, bool use_radii = false);
 
-}  // namespace ft
+}  // namespace ft::io

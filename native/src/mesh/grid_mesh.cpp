@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::mesh {
 namespace {
 
 // Blender and most hosts index with int32, so the grid must stay below 2^31
@@ -126,4 +126,4 @@ void grid_uvs(int32_t nx, int32_t ny, float* uv, size_t count) {
   }
 }
 
-}  // namespace ft
+}  // namespace ft::mesh

@@ -9,7 +9,7 @@
 #include "core/heightfield.hpp"
 #include "fracterra/mesh.h"
 
-namespace ft {
+namespace ft::mesh {
 
 ft_grid_counts grid_counts(int32_t nx, int32_t ny);
 
@@ -33,4 +33,4 @@ void grid_topology(int32_t nx, int32_t ny, const GridTopologyBuffers& out);
 
 void grid_uvs(int32_t nx, int32_t ny, float* uv, size_t count);
 
-}  // namespace ft
+}  // namespace ft::mesh

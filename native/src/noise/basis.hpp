@@ -14,7 +14,7 @@
 #include <bit>
 #include <cstdint>
 
-namespace ft::detail {
+namespace ft::noise::detail {
 
 #define FT_INLINE [[gnu::always_inline]] inline
 
@@ -200,4 +200,4 @@ FT_INLINE F12 cellular_noise(uint32_t key, float x, float y, int32_t px, int32_t
 
 #undef FT_INLINE
 
-}  // namespace ft::detail
+}  // namespace ft::noise::detail

@@ -12,7 +12,7 @@
 #include "core/rng.hpp"
 #include "noise/basis.hpp"
 
-namespace ft {
+namespace ft::noise {
 namespace {
 
 using namespace detail;
@@ -387,4 +387,4 @@ void set_simd_path(SimdPath path) { g_path.store(path); }
 const char* active_simd_path() { return pick_row_fn() == row_avx2 ? "avx2" : "baseline"; }
 }  // namespace detail
 
-}  // namespace ft
+}  // namespace ft::noise

@@ -17,7 +17,7 @@
 #include "core/heightfield.hpp"
 #include "core/progress.hpp"
 
-namespace ft {
+namespace ft::noise {
 
 // The noise layer's own names for its bases and octave combinations. Their
 // values are the ABI's FT_BASIS_* and FT_FBM_* (terrain.cpp checks this at
@@ -95,4 +95,4 @@ void set_simd_path(SimdPath path);
 const char* active_simd_path();
 }  // namespace detail
 
-}  // namespace ft
+}  // namespace ft::noise

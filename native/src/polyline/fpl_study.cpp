@@ -54,15 +54,15 @@ std::vector<FplStudyRow> run_fpl_study(const FplStudyConfig& c) {
         line.radii.assign(size_t(n), 0.0);
         fpl_segment(f, {0, 0, 0}, {1, 0, 0}, 0, line.points.data());
         line.end_line();
-        const LineStats st = line_stats(line, 0);
+        const analysis::LineStats st = analysis::line_stats(line, 0);
         eta[size_t(k)] = st.eta;
         chi[size_t(k)] = st.chi;
         gamma[size_t(k)] = st.gamma;
-        mass[size_t(k)] = mass_dimension(line, 0);
+        mass[size_t(k)] = analysis::mass_dimension(line, 0);
         box[size_t(k)] = NAN;
         if (c.box_counting && r >= 6 && s > 0) {
           try {
-            box[size_t(k)] = box_counting_dimension(line).dimension;
+            box[size_t(k)] = analysis::box_counting_dimension(line).dimension;
           } catch (const Error&) {
           }
         }

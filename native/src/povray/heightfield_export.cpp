@@ -38,7 +38,7 @@ TerrainPlacement place_terrain(const Heightfield& hf, double world_size_x, doubl
 TerrainPlacement write_heightfield_png(const Heightfield& hf, const std::string& png_path,
                                        double world_size_x, double world_size_y, double vertical_scale) {
   TerrainPlacement p = place_terrain(hf, world_size_x, world_size_y, vertical_scale);
-  write_png(png_path, heightfield_to_image(hf));
+  io::write_png(png_path, io::heightfield_to_image(hf));
   return p;
 }
 

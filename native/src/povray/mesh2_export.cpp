@@ -58,7 +58,7 @@ std::string encode_mesh2(const Mesh& m, const std::string& name) {
 }
 
 void write_mesh2(const Mesh& mesh, const std::string& path, const std::string& name) {
-  write_file_atomically(path, encode_mesh2(mesh, name));
+  io::write_file_atomically(path, encode_mesh2(mesh, name));
 }
 
 }  // namespace ft::pov

@@ -69,7 +69,7 @@ RenderResult render_scene(const std::string& pov_path, const std::string& out_pn
   }
   for (const auto& dir : o.include_paths) args.push_back("+L" + quote(fs::absolute(dir).string()));
 
-  AtomicFile image(out_png);  // the rendered image goes to its temporary file
+  io::AtomicFile image(out_png);  // the rendered image goes to its temporary file
   int err_pipe[2];
   if (::pipe(err_pipe) != 0) fail(FT_ERR_IO, std::string("cannot start povray: ") + std::strerror(errno));
   posix_spawn_file_actions_t fa;

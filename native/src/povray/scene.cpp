@@ -110,7 +110,7 @@ double auto_camera_elevation(const SceneParams& p) {
 
 SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
   validate_scene_params(p);
-  AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
+  io::AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
   bool stormy = false;
   for (const auto& l : p.lines) stormy = stormy || l.kind == LineKind::kLightning;
   const std::string folder = folder_of(pov_path);

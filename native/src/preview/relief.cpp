@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::preview {
 namespace {
 
 struct Rgb {
@@ -100,4 +100,4 @@ std::vector<uint8_t> shaded_relief(const Heightfield& hf, const ReliefOptions& o
   return rgb;
 }
 
-}  // namespace ft
+}  // namespace ft::preview

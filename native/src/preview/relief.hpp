@@ -8,7 +8,7 @@
 
 #include "core/heightfield.hpp"
 
-namespace ft {
+namespace ft::preview {
 
 struct ReliefOptions {
   double sea_fraction = 0.35;   // fraction of the height range under water (0 = no sea)
@@ -20,4 +20,4 @@ struct ReliefOptions {
 // Returns width * height * 3 bytes of RGB, row 0 first.
 std::vector<uint8_t> shaded_relief(const Heightfield& hf, const ReliefOptions& options);
 
-}  // namespace ft
+}  // namespace ft::preview

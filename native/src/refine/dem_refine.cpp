@@ -9,7 +9,7 @@
 #include "core/memory.hpp"
 #include "terrain/terrain.hpp"
 
-namespace ft {
+namespace ft::refine {
 namespace {
 
 // Counts of nodata samples in every rectangle, by a summed-area table.
@@ -143,11 +143,11 @@ DemRefineResult refine_dem(const Heightfield& dem, const DemRefineConfig& c) {
   r.hurst_measured = c.hurst < 0;
   if (r.hurst_measured) {
     if (r.window_side < 9) invalid("measuring H needs a window of at least 9 x 9; give --hurst");
-    HurstOptions o;
-    o.method = HurstMethod::kVariogram;
+    analysis::HurstOptions o;
+    o.method = analysis::HurstMethod::kVariogram;
     o.lag_min = 1;
     o.lag_max = std::max(2, (r.window_side - 1) / 4);
-    r.estimate = estimate_hurst_surface(window, o);
+    r.estimate = analysis::estimate_hurst_surface(window, o);
     // H = 1 would add nothing (k(1) = 0); the variogram of a DEM with a trend
     // can slightly exceed it.
     r.hurst = std::clamp(r.estimate.hurst, 0.0, 0.99);
@@ -180,4 +180,4 @@ DemRefineResult refine_dem(const Heightfield& dem, const DemRefineConfig& c) {
   return r;
 }
 
-}  // namespace ft
+}  // namespace ft::refine

@@ -36,7 +36,7 @@
 #include "core/heightfield.hpp"
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::refine {
 
 // The most levels one refinement adds (the result is also held to the memory cap).
 constexpr int kMaxRefineLevels = 12;
@@ -61,7 +61,7 @@ struct DemRefineResult {
   int window_x = 0, window_y = 0, window_side = 0;
   double hurst = 0, sigma = 0;
   bool hurst_measured = false, sigma_measured = false;
-  HurstEstimate estimate;  // when hurst_measured
+  analysis::HurstEstimate estimate;  // when hurst_measured
   double v1 = 0;           // the DEM's mean squared increment at one pixel
 };
 
@@ -71,4 +71,4 @@ double centre_kriging_factor(double hurst);
 // `dem` may hold NaN (nodata); the window never does.
 DemRefineResult refine_dem(const Heightfield& dem, const DemRefineConfig& config);
 
-}  // namespace ft
+}  // namespace ft::refine

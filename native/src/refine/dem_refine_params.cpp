@@ -3,7 +3,7 @@
 #include <cfloat>
 #include <cstdint>
 
-namespace ft {
+namespace ft::refine {
 namespace {
 
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
@@ -87,4 +87,4 @@ DemRefineConfig dem_refine_config(const ft_dem_refine_params& p) {
   return c;
 }
 
-}  // namespace ft
+}  // namespace ft::refine

@@ -9,7 +9,7 @@
 #include "fracterra/raster.h"
 #include "refine/dem_refine.hpp"
 
-namespace ft {
+namespace ft::refine {
 
 // The values of `method`: FT_TERRAIN_MIDPOINT and FT_TERRAIN_ADDITIONS
 // (terrain.h belongs to terrain/; capi/ asserts that they agree).
@@ -19,4 +19,4 @@ const ParamTable& dem_refine_param_table();
 
 DemRefineConfig dem_refine_config(const ft_dem_refine_params& p);
 
-}  // namespace ft
+}  // namespace ft::refine

@@ -35,7 +35,7 @@
 #include "core/rng.hpp"
 #include "subdiv/mesh_validation.hpp"
 
-namespace ft {
+namespace ft::subdiv {
 
 using namespace OpenSubdiv;
 
@@ -267,4 +267,4 @@ Mesh fractalize(const Mesh& mesh, const ft_fractalize_params& p) {
   return detail::Fractalizer<3>(mesh, p, *refiner).run();
 }
 
-}  // namespace ft
+}  // namespace ft::subdiv

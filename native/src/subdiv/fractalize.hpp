@@ -5,7 +5,7 @@
 #include "core/mesh.hpp"
 #include "fracterra/subdiv.h"
 
-namespace ft {
+namespace ft::subdiv {
 
 inline constexpr int kMaxSubdivLevels = 10;
 
@@ -16,4 +16,4 @@ ft_fractalize_params default_fractalize_params();
 // mesh.vertex_count() values.
 Mesh fractalize(const Mesh& mesh, const ft_fractalize_params& p);
 
-}  // namespace ft
+}  // namespace ft::subdiv

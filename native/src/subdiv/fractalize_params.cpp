@@ -5,7 +5,7 @@
 #include "fracterra/subdiv.h"
 #include "subdiv/fractalize.hpp"
 
-namespace ft {
+namespace ft::subdiv {
 namespace {
 
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
@@ -79,4 +79,4 @@ const ParamTable& fractalize_param_table() {
   return table;
 }
 
-}  // namespace ft
+}  // namespace ft::subdiv

@@ -3,8 +3,8 @@
 
 #include "core/param_table.hpp"
 
-namespace ft {
+namespace ft::subdiv {
 
 const ParamTable& fractalize_param_table();
 
-}  // namespace ft
+}  // namespace ft::subdiv

@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::subdiv {
 namespace {
 
 std::string face_name(size_t f) { return "face " + std::to_string(f); }
@@ -127,4 +127,4 @@ void validate_triangles(const Mesh& m) {
               " vertices; Loop subdivision needs triangles only (use catmark or bilinear, or triangulate)");
 }
 
-}  // namespace ft
+}  // namespace ft::subdiv

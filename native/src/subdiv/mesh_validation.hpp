@@ -5,7 +5,7 @@
 
 #include "core/mesh.hpp"
 
-namespace ft {
+namespace ft::subdiv {
 
 // Throws FT_ERR_INVALID_ARGUMENT unless: positions are finite and a multiple
 // of 3; there is at least one face; every face has >= 3 distinct vertex
@@ -18,4 +18,4 @@ void validate_mesh(const Mesh& mesh);
 // Additionally for Loop subdivision: every face is a triangle.
 void validate_triangles(const Mesh& mesh);
 
-}  // namespace ft
+}  // namespace ft::subdiv

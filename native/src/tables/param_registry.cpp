@@ -12,25 +12,25 @@
 #include "subdiv/fractalize_params.hpp"
 #include "terrain/terrain_params.hpp"
 
-namespace ft {
+namespace ft::tables {
 
 const ParamTable& param_table(int32_t kind) {
   switch (kind) {
     case FT_PARAMS_TERRAIN: return terrain_param_table();
     case FT_PARAMS_PROFILE: return profile_param_table();
     case FT_PARAMS_POLYLINE: return polyline_param_table();
-    case FT_PARAMS_FRACTALIZE: return fractalize_param_table();
+    case FT_PARAMS_FRACTALIZE: return subdiv::fractalize_param_table();
     case FT_PARAMS_POV_SCENE: return pov::scene_param_table();
     case FT_PARAMS_POV_SWEEP: return pov::sweep_param_table();
-    case FT_PARAMS_HURST: return hurst_param_table();
-    case FT_PARAMS_CLOUDS: return clouds_param_table();
-    case FT_PARAMS_DEM_REFINE: return dem_refine_param_table();
+    case FT_PARAMS_HURST: return analysis::hurst_param_table();
+    case FT_PARAMS_CLOUDS: return analysis::clouds_param_table();
+    case FT_PARAMS_DEM_REFINE: return refine::dem_refine_param_table();
     case FT_PARAMS_EROSION: return erosion_param_table();
-    case FT_PARAMS_BUILD: return build_param_table();
+    case FT_PARAMS_BUILD: return pipeline::build_param_table();
     default:
       invalid("params kind must be in 0.." + std::to_string(FT_PARAMS_KIND_COUNT - 1) + ", got " +
               std::to_string(kind));
   }
 }
 
-}  // namespace ft
+}  // namespace ft::tables

@@ -5,9 +5,9 @@
 
 #include "core/param_table.hpp"
 
-namespace ft {
+namespace ft::tables {
 
 // The table of `kind` (FT_PARAMS_*); throws ft::Error for an unknown kind.
 const ParamTable& param_table(int32_t kind);
 
-}  // namespace ft
+}  // namespace ft::tables

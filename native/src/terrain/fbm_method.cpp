@@ -7,19 +7,19 @@
 namespace ft {
 namespace {
 
-const FbmConfig& config_of(const std::any& c) { return std::any_cast<const FbmConfig&>(c); }
+const noise::FbmConfig& config_of(const std::any& c) { return std::any_cast<const noise::FbmConfig&>(c); }
 
 // The noise layer's enums carry the ABI's values, so basis and variant pass through.
-static_assert(int(kBasisValue) == FT_BASIS_VALUE && int(kBasisGradient) == FT_BASIS_GRADIENT &&
-              int(kBasisSimplex) == FT_BASIS_SIMPLEX && int(kBasisCellularF1) == FT_BASIS_CELLULAR_F1 &&
-              int(kBasisCellularF2F1) == FT_BASIS_CELLULAR_F2F1);
-static_assert(int(kFbmStandard) == FT_FBM_STANDARD && int(kFbmRidged) == FT_FBM_RIDGED &&
-              int(kFbmHybrid) == FT_FBM_HYBRID && int(kFbmHetero) == FT_FBM_HETERO);
+static_assert(int(noise::kBasisValue) == FT_BASIS_VALUE && int(noise::kBasisGradient) == FT_BASIS_GRADIENT &&
+              int(noise::kBasisSimplex) == FT_BASIS_SIMPLEX && int(noise::kBasisCellularF1) == FT_BASIS_CELLULAR_F1 &&
+              int(noise::kBasisCellularF2F1) == FT_BASIS_CELLULAR_F2F1);
+static_assert(int(noise::kFbmStandard) == FT_FBM_STANDARD && int(noise::kFbmRidged) == FT_FBM_RIDGED &&
+              int(noise::kFbmHybrid) == FT_FBM_HYBRID && int(noise::kFbmHetero) == FT_FBM_HETERO);
 
 }  // namespace
 
 std::any fbm_configure(const ft_terrain_params& p) {
-  FbmConfig c;
+  noise::FbmConfig c;
   c.width = p.width, c.height = p.height, c.octaves = p.octaves, c.lacunarity = p.lacunarity;
   c.gain = p.gain, c.hurst = p.hurst, c.basis = p.basis, c.variant = p.variant;
   c.frequency = p.frequency, c.offset = p.offset, c.rotation = p.octave_rotation, c.warp = p.warp;
@@ -28,12 +28,12 @@ std::any fbm_configure(const ft_terrain_params& p) {
   return c;
 }
 
-void fbm_validate(const std::any& config, int64_t max_side) { validate_fbm(config_of(config), max_side); }
+void fbm_validate(const std::any& config, int64_t max_side) { noise::validate_fbm(config_of(config), max_side); }
 
 // fbm_height_bound: the octave recurrences at the noise's bound.
 void fbm_check_heights(const std::any& config, const ft_terrain_params& p) {
   double unscaled = 0;
-  const double per_sigma = fbm_height_bound(config_of(config), &unscaled);
+  const double per_sigma = noise::fbm_height_bound(config_of(config), &unscaled);
   if (!(unscaled <= kMaxFloatHeight))
     invalid("the fbm octave sum could reach " + format_number(unscaled) + " with offset " + format_number(p.offset) +
             " and " + std::to_string(p.octaves) + " octaves, beyond the float range; use a smaller |offset| or "
@@ -41,10 +41,10 @@ void fbm_check_heights(const std::any& config, const ft_terrain_params& p) {
   check_height_bound("sigma", p.sigma, per_sigma);
 }
 
-Heightfield fbm_generate(const std::any& config) { return fbm(config_of(config)); }
+Heightfield fbm_generate(const std::any& config) { return noise::fbm(config_of(config)); }
 
 Heightfield fbm_window(const std::any& config, const Window& w, int) {
-  return fbm_window(config_of(config), w.x0, w.y0, w.width, w.height);
+  return noise::fbm_window(config_of(config), w.x0, w.y0, w.width, w.height);
 }
 
 }  // namespace ft

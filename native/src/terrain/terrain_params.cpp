@@ -133,7 +133,7 @@ constexpr ft_param_info kTerrainRows[] = {
      .doc = "Displacement scale of the steps after the reference grid (Voss 1985, seed 000, fig. 7 a, b)",
      .methods = kReference, .enum_count = 3, .enum_items = kReferenceScales},
     {ROW(octaves, FT_PARAM_INT32), .element_kind = -1, .default_value = 8, .hard_min = 1,
-     .hard_max = kMaxOctaves, .soft_min = 1, .soft_max = 16, .unit = "octaves", .label = "Octaves",
+     .hard_max = noise::kMaxOctaves, .soft_min = 1, .soft_max = 16, .unit = "octaves", .label = "Octaves",
      .doc = "Noise octaves summed (Quilez 2019, seed 004); the finest must stay within float resolution",
      .methods = kFbm},
     {ROW(lacunarity, FT_PARAM_DOUBLE), .flags = kAbove, .element_kind = -1, .default_value = 2, .hard_min = 1,
@@ -164,7 +164,7 @@ constexpr ft_param_info kTerrainRows[] = {
      .doc = "Domain rotation per octave (Quilez 2019): hides the alignment of the octaves' zeros and peaks; "
             "not with periodic",
      .methods = kFbm},
-    {ROW(warp, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = kMaxWarp,
+    {ROW(warp, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = noise::kMaxWarp,
      .soft_min = 0, .soft_max = 4, .unit = "cells", .label = "Warp",
      .doc = "Domain-warp displacement in base cells (Quilez 2002), 0: off", .methods = kFbm},
     {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .element_kind = -1, .unit = "", .label = "Progress",

@@ -7,7 +7,7 @@
 #include "terrain/terrain.hpp"
 #include "terrain/terrain_method.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 constexpr int kCoarseLevels = 12;     // the bound's coarse pass: at most 4097^2 samples
@@ -70,4 +70,4 @@ HeightRange tile_height_range(const ft_terrain_params& p, const TileGrid& grid, 
   return {s.min, s.max, "exact"};
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -26,7 +26,7 @@
 #include "terrain/terrain.hpp"  // ft_terrain_params
 #include "tiles/tile_grid.hpp"
 
-namespace ft {
+namespace ft::tiles {
 
 struct HeightRange {
   double min = 0, max = 0;
@@ -45,4 +45,4 @@ HeightRange tile_height_range(const ft_terrain_params& p, const TileGrid& grid, 
 // of `levels` levels: 5.9 sum_{k = 2m + 1}^{2 levels} sigma 2^(-k H / 2).
 double midpoint_bound_margin(int levels, int m, double hurst, double sigma);
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -12,7 +12,7 @@
 #include "io/atomic_file.hpp"
 #include "terrain/terrain_params.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 nlohmann::json value_of(const ft_param_info& row, const void* p) {
@@ -73,14 +73,14 @@ std::optional<nlohmann::json> read_manifest(const std::string& dir) {
   const std::string path = path_in(dir, kManifestName);
   if (!std::filesystem::exists(path)) return std::nullopt;
   try {
-    return nlohmann::json::parse(read_file(path));
+    return nlohmann::json::parse(io::read_file(path));
   } catch (const nlohmann::json::exception& e) {
     fail(FT_ERR_IO, "'" + path + "' is not a tile set manifest (" + e.what() + "); remove it or choose another folder");
   }
 }
 
 void write_manifest(const std::string& dir, const nlohmann::json& m) {
-  write_file_atomically(path_in(dir, kManifestName), m.dump(1) + "\n");
+  io::write_file_atomically(path_in(dir, kManifestName), m.dump(1) + "\n");
 }
 
 void append_journal(const std::string& dir, int32_t col, int32_t row, uint32_t crc) {
@@ -98,7 +98,7 @@ void append_journal(const std::string& dir, int32_t col, int32_t row, uint32_t c
 int64_t replay_journal(const std::string& dir, nlohmann::json& m) {
   const std::string path = path_in(dir, kJournalName);
   if (!std::filesystem::exists(path)) return 0;
-  const std::string text = read_file(path);
+  const std::string text = io::read_file(path);
   nlohmann::json& tiles = m["tiles"];
   const int64_t columns = m.value("columns", int64_t(0)), rows = m.value("rows", int64_t(0));
   int64_t applied = 0;
@@ -141,4 +141,4 @@ std::string identity_difference(const nlohmann::json& wanted, const nlohmann::js
   return "";
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -16,7 +16,7 @@
 
 #include "terrain/terrain.hpp"  // ft_terrain_params
 
-namespace ft {
+namespace ft::tiles {
 
 inline constexpr const char* kManifestName = "manifest.json";
 inline constexpr const char* kJournalName = "manifest.journal";
@@ -44,4 +44,4 @@ void remove_journal(const std::string& dir);
 // else the first difference in words ("hurst: 0.8 here, 0.7 in the folder").
 std::string identity_difference(const nlohmann::json& wanted, const nlohmann::json& existing);
 
-}  // namespace ft
+}  // namespace ft::tiles

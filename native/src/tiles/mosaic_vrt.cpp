@@ -14,7 +14,7 @@
 #include "core/error.hpp"
 #include "io/gdal_session.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 struct StringList {
@@ -44,14 +44,14 @@ void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
   fs::remove(temp_vrt);
   fs::remove(temp_vrt + ".ovr");
 
-  GdalSession session;
+  io::GdalSession session;
   StringList sources;
   for (int32_t row = 0; row < spec.grid.rows(); ++row)
     for (int32_t col = 0; col < spec.grid.columns(); ++col) sources.add((folder / tile_file_name(spec, col, row)).string());
   {
     GDALBuildVRTOptions* options = GDALBuildVRTOptionsNew(nullptr, nullptr);
     int usage_error = 0;
-    GdalDataset vrt(GDALBuildVRT(temp_vrt.c_str(), CSLCount(sources.list), nullptr, sources.list, options, &usage_error));
+    io::GdalDataset vrt(GDALBuildVRT(temp_vrt.c_str(), CSLCount(sources.list), nullptr, sources.list, options, &usage_error));
     GDALBuildVRTOptionsFree(options);
     if (!vrt) session.fail(FT_ERR_IO, "GDAL could not build the mosaic '" + final_vrt + "'");
     GDALRasterBandH band = GDALGetRasterBand(vrt.get(), 1);
@@ -72,7 +72,7 @@ void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
     ConfigOption compress("COMPRESS_OVERVIEW", "DEFLATE");
     const std::string count = CPLGetConfigOption("GDAL_NUM_THREADS", "ALL_CPUS");  // a copy: set below
     ConfigOption threads("GDAL_NUM_THREADS", count.c_str());
-    GdalDataset vrt(GDALOpen(temp_vrt.c_str(), GA_ReadOnly));
+    io::GdalDataset vrt(GDALOpen(temp_vrt.c_str(), GA_ReadOnly));
     if (!vrt) session.fail(FT_ERR_IO, "GDAL could not reopen the mosaic '" + final_vrt + "'");
     if (GDALBuildOverviews(vrt.get(), "AVERAGE", int(factors.size()), factors.data(), 0, nullptr, nullptr, nullptr) !=
         CE_None)
@@ -86,8 +86,8 @@ void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
 Heightfield read_mosaic_preview(const std::string& dir, int32_t max_side) {
   check_int_range("preview side", max_side, 2, 65536);
   const std::string path = (std::filesystem::path(dir) / kMosaicName).string();
-  GdalSession session;
-  GdalDataset ds(GDALOpen(path.c_str(), GA_ReadOnly));
+  io::GdalSession session;
+  io::GdalDataset ds(GDALOpen(path.c_str(), GA_ReadOnly));
   if (!ds) session.fail(FT_ERR_IO, "cannot open the tile set's mosaic '" + path + "' (is the set finished?)");
   const int w = GDALGetRasterXSize(ds.get()), h = GDALGetRasterYSize(ds.get());
   const double k = std::min(1.0, double(max_side) / double(std::max(w, h)));
@@ -103,4 +103,4 @@ Heightfield read_mosaic_preview(const std::string& dir, int32_t max_side) {
   return hf;
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -12,7 +12,7 @@
 #include "core/heightfield.hpp"
 #include "tiles/tile_writer.hpp"
 
-namespace ft {
+namespace ft::tiles {
 
 inline constexpr const char* kMosaicName = "mosaic.vrt";
 
@@ -24,4 +24,4 @@ void write_mosaic_vrt(const TileSpec& spec, const std::string& dir);
 // level, not for measuring. Its world size is the whole's.
 Heightfield read_mosaic_preview(const std::string& dir, int32_t max_side);
 
-}  // namespace ft
+}  // namespace ft::tiles

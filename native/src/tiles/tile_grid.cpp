@@ -4,7 +4,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::tiles {
 
 Window TileGrid::window(int32_t col, int32_t row) const {
   Window w;
@@ -32,4 +32,4 @@ TileGrid make_tile_grid(int64_t width, int64_t height, int64_t tile) {
   return g;
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -11,7 +11,7 @@
 
 #include "terrain/window.hpp"
 
-namespace ft {
+namespace ft::tiles {
 
 struct TileGrid {
   int64_t width = 0, height = 0;  // the whole terrain's samples
@@ -32,4 +32,4 @@ TileGrid make_tile_grid(int64_t width, int64_t height, int64_t tile);
 
 inline constexpr int64_t kMaxTiles = 1 << 20;
 
-}  // namespace ft
+}  // namespace ft::tiles

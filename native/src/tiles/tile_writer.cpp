@@ -11,7 +11,7 @@
 #include "io/png_image.hpp"
 #include "terrain/terrain.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 std::string path_in(const std::string& dir, const std::string& name) {
@@ -96,7 +96,7 @@ void tile_geotransform(const TileSpec& spec, int32_t col, int32_t row, double t[
 }
 
 uint32_t file_crc32(const std::string& path) {
-  const std::string bytes = read_file(path);
+  const std::string bytes = io::read_file(path);
   uLong crc = crc32(0L, Z_NULL, 0);
   // zlib takes 32-bit lengths: feed large files in pieces.
   for (size_t at = 0; at < bytes.size(); at += size_t(1) << 30) {
@@ -121,16 +121,16 @@ uint32_t write_tile(const ft_terrain_params& p, const TileSpec& spec, const std:
     char text[512];
     std::snprintf(text, sizeof text, "%.17g\n0\n0\n%.17g\n%.17g\n%.17g\n", t[1], t[5], t[0] + 0.5 * t[1],
                   t[3] + 0.5 * t[5]);
-    write_file_atomically(path.substr(0, path.size() - 4) + ".pgw", text);
-    write_png(path, img, PngEffort::fast);
+    io::write_file_atomically(path.substr(0, path.size() - 4) + ".pgw", text);
+    io::write_png(path, img, io::PngEffort::fast);
   } else {
     GeoReference g;
     g.has_transform = true;
     for (int i = 0; i < 6; ++i) g.transform[size_t(i)] = t[i];
     hf.set_georef(g);
-    write_cog(hf, path);
+    io::write_cog(hf, path);
   }
   return file_crc32(path);
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -19,7 +19,7 @@
 #include "terrain/terrain.hpp"  // ft_terrain_params
 #include "tiles/tile_grid.hpp"
 
-namespace ft {
+namespace ft::tiles {
 
 enum class TileFormat { png16 = 0, tiff = 1 };
 
@@ -51,4 +51,4 @@ uint32_t write_tile(const ft_terrain_params& p, const TileSpec& spec, const std:
 // CRC-32 of a file's bytes; throws FT_ERR_IO naming the file.
 uint32_t file_crc32(const std::string& path);
 
-}  // namespace ft
+}  // namespace ft::tiles

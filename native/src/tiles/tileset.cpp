@@ -9,7 +9,7 @@
 #include "tiles/manifest.hpp"
 #include "tiles/mosaic_vrt.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 void make_folder(const std::string& dir) {
@@ -147,4 +147,4 @@ void TileSet::finish() {
   remove_journal(dir_);
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

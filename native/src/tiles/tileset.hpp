@@ -14,7 +14,7 @@
 #include "tiles/height_range.hpp"
 #include "tiles/tile_writer.hpp"
 
-namespace ft {
+namespace ft::tiles {
 
 class TileSet {
  public:
@@ -55,4 +55,4 @@ class TileSet {
   bool range_pending_ = false;
 };
 
-}  // namespace ft
+}  // namespace ft::tiles

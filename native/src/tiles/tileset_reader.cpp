@@ -10,7 +10,7 @@
 #include "tiles/manifest.hpp"
 #include "tiles/tile_writer.hpp"
 
-namespace ft {
+namespace ft::tiles {
 namespace {
 
 nlohmann::json finished_manifest(const std::string& dir) {
@@ -56,7 +56,7 @@ Heightfield read_tileset_window(const std::string& dir, int lod, int64_t x0, int
       if (e["crc32"].is_null() || file_crc32(path) != e["crc32"].get<uint32_t>())
         fail(FT_ERR_IO, "the tile '" + path + "' is missing or damaged (its CRC-32 differs from the manifest's); "
                         "rerun fracterra tiles on the folder to rewrite it");
-      const Heightfield t = read_heightfield(path);
+      const Heightfield t = io::read_heightfield(path);
       const int64_t tx0 = e["x0"].get<int64_t>(), ty0 = e["y0"].get<int64_t>();
       // The samples this tile contributes: those in [tx0, tx0 + tile) (its last column only when it is the whole's).
       const int64_t xe = c == columns - 1 ? tx0 + t.width() : tx0 + tile;
@@ -73,4 +73,4 @@ Heightfield read_tileset_window(const std::string& dir, int lod, int64_t x0, int
   return out;
 }
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -12,7 +12,7 @@
 
 #include "core/heightfield.hpp"
 
-namespace ft {
+namespace ft::tiles {
 
 // The whole set's samples per side at level of detail `lod`:
 // (width - 1) / 2^lod + 1 (rounded down).
@@ -25,4 +25,4 @@ void tileset_extent(const std::string& dir, int lod, int64_t* width, int64_t* he
 Heightfield read_tileset_window(const std::string& dir, int lod, int64_t x0, int64_t y0, int32_t width,
                                 int32_t height);
 
-}  // namespace ft
+}  // namespace ft::tiles

@@ -4,8 +4,8 @@ core.params, so panels and operators both import it without a circle)."""
 
 import bpy
 
-from ..core import params
-from . import erosion_ui
+from ...core import params
+from . import erosion_layout
 
 
 def _prop(layout, data, name):
@@ -85,7 +85,7 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
             _prop(box, data, "reference_levels")
             box.prop(data, "reference_height", text="Relief if not georeferenced")
             _prop(box, data, "reference_scale")
-    erosion_ui.draw_erosion(col, data)
+    erosion_layout.draw_erosion(col, data)
     sub = col.column(heading="Mesh", align=True)
     _prop(sub, data, "uvs")
     _prop(sub, data, "smooth")

@@ -9,20 +9,18 @@ import bpy
 import numpy as np
 from mathutils import Matrix
 
-from .. import core
-from ..core import params, raster
-from ..core.grid import NO_FLOOR, GridArrays, grid_arrays, grid_size, vertices
-from ..core.mesh_limits import check_grid, grid_shape
-from . import erosion_ui, falloff_mask, mesh_build
-from .images import image_luminance
-from .prefs import library_threads
-from .progress import Job, run_job
-from .reporting import SettingsError
-
-
-def _dyadic_levels(size):
-    n = size - 1
-    return n.bit_length() - 1 if size >= 3 and n & (n - 1) == 0 else -1
+from ...core import params, raster
+from ...core.grid import NO_FLOOR, GridArrays, grid_arrays, grid_size, vertices
+from ...core.mesh_limits import check_grid
+from ...core.params import grid_shape
+from ...core.resample import dyadic_levels, resample_bilinear
+from . import erosion as erosion_ui
+from . import falloff_mask
+from . import mesh as mesh_build
+from ..common.images import image_luminance
+from ..common.preferences import library_threads
+from ..common.jobs import Job, run_job
+from ..common.reporting import SettingsError
 
 
 def _float_array(values):
@@ -44,7 +42,7 @@ def reference_from_object(name):
     mesh = obj.data
     n = len(mesh.vertices)
     size = math.isqrt(n)
-    if size * size != n or _dyadic_levels(size) < 1:
+    if size * size != n or dyadic_levels(size) < 1:
         raise SettingsError(
             f"Reference object '{obj.name}' has {n} vertices; a reference grid needs (2^m + 1)^2 vertices "
             f"(9, 25, 81, 289, 1089, ...), e.g. Add > Mesh > Grid with 8 x 8 subdivisions (9 x 9 vertices)")
@@ -53,19 +51,6 @@ def reference_from_object(name):
     co = co.reshape(n, 3)
     order = np.lexsort((co[:, 0], co[:, 1]))  # by y, then x; stable, as sorted() was
     return size, _float_array(co[order, 2])
-
-
-def resample_bilinear(image, size):
-    """`image` (h, w) resampled bilinearly to size x size points spanning it corner to corner."""
-    h, w = image.shape
-    t = np.arange(size, dtype=np.float64) / (size - 1)
-    fx, fy = t * (w - 1), t * (h - 1)
-    x0, y0 = fx.astype(np.int64), fy.astype(np.int64)
-    x1, y1 = np.minimum(x0 + 1, w - 1), np.minimum(y0 + 1, h - 1)
-    tx, ty = (fx - x0)[None, :], (fy - y0)[:, None]
-    top = image[y0][:, x0] * (1 - tx) + image[y0][:, x1] * tx
-    bottom = image[y1][:, x0] * (1 - tx) + image[y1][:, x1] * tx
-    return top * (1 - ty) + bottom * ty
 
 
 def reference_from_image(name, levels, height):

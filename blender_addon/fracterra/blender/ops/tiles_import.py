@@ -23,12 +23,12 @@ import bpy
 import numpy as np
 from bpy_extras.io_utils import ImportHelper
 
-from .. import core
-from ..core import mesh_limits
-from ..core import tiles as core_tiles
-from ..core.grid import grid_arrays
-from . import mesh_build
-from .reporting import REPORTED, SettingsError
+from ... import core
+from ...core import mesh_limits
+from ...core import tiles as core_tiles
+from ...core.grid import grid_arrays
+from ..build import mesh as mesh_build
+from ..common.reporting import REPORTED, SettingsError
 
 
 def _north_up(values, world_size):

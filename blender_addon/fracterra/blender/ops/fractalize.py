@@ -3,12 +3,12 @@
 import bpy
 import numpy as np
 
-from ..core import params, subdiv
-from . import props
-from .mesh_build import set_smooth
-from .prefs import library_threads
-from .progress import Job, JobOperator
-from .reporting import SettingsError
+from ...core import params, subdiv
+from ..ui import properties as props
+from ..build.mesh import set_smooth
+from ..common.preferences import library_threads
+from ..common.jobs import Job, JobOperator
+from ..common.reporting import SettingsError
 
 
 def _edge_creases(mesh):

@@ -11,10 +11,10 @@ resamples it at each sample's place in the whole terrain).
 import bpy
 import numpy as np
 
-from ..core.grid import grid_size
-from ..core.mesh_limits import grid_shape
-from .images import image_luminance
-from .reporting import SettingsError
+from ...core.grid import grid_size
+from ...core.params import grid_shape
+from ..common.images import image_luminance
+from ..common.reporting import SettingsError
 
 # An object's silhouette is drawn at the terrain's own resolution up to this
 # many samples a side (the library resamples it bilinearly beyond that).

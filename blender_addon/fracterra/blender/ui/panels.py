@@ -5,16 +5,27 @@ import math
 
 import bpy
 
-from .settings_ui import draw_polyline_settings, draw_settings
-from .terrain_objects import geometry_fingerprint, is_measurable, is_polyline
-from ..core import params
-from .widgets import draw_library_problem, draw_size, draw_wrapped
+from .settings_layout import draw_polyline_settings, draw_settings
+from ..build.objects import geometry_fingerprint, is_measurable, is_polyline
+from ...core import params
+from ..common.widgets import draw_library_problem, draw_size, draw_wrapped
 
 # Operators the panels show (bl_idname of each).
 TERRAIN_ADD = "mesh.fracterra_terrain_add"
 TERRAIN_REGENERATE = "object.fracterra_terrain_regenerate"
 POLYLINE_REGENERATE = "object.fracterra_polyline_regenerate"
 MEASURE = "object.fracterra_measure"
+
+
+def draw_regenerate(layout, settings, operator):
+    """Regenerate (operator `operator`), Auto Update and the last error of a
+    terrain's or a polyline's settings, at the top of its panel."""
+    # One button a row: side by side the sidebar cuts their labels.
+    col = layout.column(align=True)
+    col.operator(operator, text="Regenerate", icon="FILE_REFRESH")
+    col.prop(settings, "auto_update", toggle=True)
+    if settings.last_error:
+        draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True, width=32)
 
 
 class FRACTERRA_PT_terrain(bpy.types.Panel):
@@ -36,12 +47,7 @@ class FRACTERRA_PT_terrain(bpy.types.Panel):
             draw_wrapped(layout, "The active object is not a fractal terrain.", width=32)
             layout.operator(TERRAIN_ADD, text="Add Fractal Terrain", icon="RNDCURVE")
             return
-        # One button a row: side by side the sidebar cuts their labels.
-        col = layout.column(align=True)
-        col.operator(TERRAIN_REGENERATE, text="Regenerate", icon="FILE_REFRESH")
-        col.prop(settings, "auto_update", toggle=True)
-        if settings.last_error:
-            draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True, width=32)
+        draw_regenerate(layout, settings, TERRAIN_REGENERATE)
         draw_settings(layout, settings, compact=True)
         draw_size(layout, params.values_of(settings))
 
@@ -60,11 +66,7 @@ class FRACTERRA_PT_polyline(bpy.types.Panel):
         layout = self.layout
         draw_library_problem(layout)
         settings = context.active_object.fracterra_polyline
-        col = layout.column(align=True)
-        col.operator(POLYLINE_REGENERATE, text="Regenerate", icon="FILE_REFRESH")
-        col.prop(settings, "auto_update", toggle=True)
-        if settings.last_error:
-            draw_wrapped(layout, settings.last_error, icon="ERROR", alert=True, width=32)
+        draw_regenerate(layout, settings, POLYLINE_REGENERATE)
         draw_polyline_settings(layout, settings, compact=True)
 
 

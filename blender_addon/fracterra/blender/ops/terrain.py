@@ -4,12 +4,13 @@ import bpy
 from bpy_extras import object_utils
 from bpy_extras.io_utils import ImportHelper
 
-from ..core import params
-from . import erosion_ui, props
-from .progress import JobOperator
-from .settings_ui import draw_settings
-from .terrain_build import new_terrain_job, regenerate_job
-from .widgets import draw_size
+from ...core import params
+from ..ui import erosion_layout
+from ..ui import properties as props
+from ..common.jobs import JobOperator
+from ..ui.settings_layout import draw_settings
+from ..build.terrain import new_terrain_job, regenerate_job
+from ..common.widgets import draw_size
 
 
 class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.AddObjectHelper):
@@ -46,7 +47,7 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
 
 # The operator's properties come from the same list as the object's settings.
 FRACTERRA_OT_terrain_add.__annotations__ = {**props.terrain_annotations(),
-                                             "erode_preset": erosion_ui.preset_property()}
+                                             "erode_preset": erosion_layout.preset_property()}
 
 
 class FRACTERRA_OT_terrain_regenerate(JobOperator, bpy.types.Operator):

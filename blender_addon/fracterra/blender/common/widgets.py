@@ -2,8 +2,8 @@
 
 import textwrap
 
-from .. import core
-from ..core import mesh_limits
+from ... import core
+from ...core import mesh_limits, params
 
 
 def draw_wrapped(layout, text, icon="NONE", width=60, alert=False):
@@ -24,7 +24,7 @@ def draw_library_problem(layout):
 
 def draw_size(layout, values):
     """For large terrains, the vertex and memory estimate, or why Blender cannot hold it."""
-    nx, ny = mesh_limits.grid_shape(values)
+    nx, ny = params.grid_shape(values)
     reason = mesh_limits.too_large(nx, ny)
     if reason:
         draw_wrapped(layout, "Too large: " + reason, icon="ERROR", alert=True)

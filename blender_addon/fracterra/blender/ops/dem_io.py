@@ -12,12 +12,12 @@ import bpy
 import numpy as np
 from bpy_extras.io_utils import ExportHelper, ImportHelper
 
-from .. import core
-from ..core import raster
-from ..core.grid import grid_arrays
-from . import mesh_build
-from .reporting import REPORTED, SettingsError
-from .terrain_objects import heightfield_of, is_terrain
+from ... import core
+from ...core import raster
+from ...core.grid import grid_arrays
+from ..build import mesh as mesh_build
+from ..common.reporting import REPORTED, SettingsError
+from ..build.objects import heightfield_of, is_terrain
 
 
 def _flipped(hf, world_size, scale=1.0):

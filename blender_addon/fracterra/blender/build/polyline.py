@@ -7,12 +7,12 @@ import json
 
 import bpy
 
-from .. import core
-from ..core import params
-from .curve_build import LineArrays, fill_curve_steps, new_curve, point_cloud_from_arrays
-from .prefs import library_threads
-from .progress import Job, run_job
-from .reporting import SettingsError
+from ... import core
+from ...core import params
+from .curve import LineArrays, fill_curve_steps, new_curve, point_cloud_from_arrays
+from ..common.preferences import library_threads
+from ..common.jobs import Job, run_job
+from ..common.reporting import SettingsError
 
 
 def default_radius(base):

@@ -7,11 +7,11 @@ import bpy
 from bpy_extras.io_utils import ExportHelper
 from mathutils import Matrix, Vector
 
-from .. import core
-from ..core import povray
-from .curve_build import curve_polylines
-from .reporting import REPORTED, SettingsError
-from .terrain_objects import heightfield_of, is_terrain, sea_height
+from ... import core
+from ...core import povray
+from ..build.curve import curve_polylines
+from ..common.reporting import REPORTED, SettingsError
+from ..build.objects import heightfield_of, is_terrain, sea_height
 
 
 def _direction_angles(v):

@@ -7,11 +7,11 @@ import zlib
 
 import numpy as np
 
-from .. import core
-from ..core import params
-from ..core.mesh_limits import grid_shape
-from .curve_build import spline_nodes
-from .reporting import SettingsError
+from ... import core
+from ...core import params
+from ...core.params import grid_shape
+from .curve import spline_nodes
+from ..common.reporting import SettingsError
 
 
 def is_terrain(obj):

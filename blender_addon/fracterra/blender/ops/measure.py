@@ -6,10 +6,10 @@ import math
 import bpy
 from mathutils import Matrix
 
-from .. import core
-from .curve_build import curve_polylines
-from .reporting import REPORTED, SettingsError
-from .terrain_objects import geometry_fingerprint, heightfield_of, is_measurable
+from ... import core
+from ..build.curve import curve_polylines
+from ..common.reporting import REPORTED, SettingsError
+from ..build.objects import geometry_fingerprint, heightfield_of, is_measurable
 
 
 class FRACTERRA_OT_measure(bpy.types.Operator):

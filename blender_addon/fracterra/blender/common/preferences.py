@@ -6,10 +6,10 @@ and it imports nothing that imports them.
 
 import bpy
 
-from .. import core
+from ... import core
 from .widgets import draw_library_problem, draw_wrapped
 
-ROOT_PACKAGE = __package__.rpartition(".")[0]
+ROOT_PACKAGE = __package__.rsplit(".", 2)[0]  # the add-on: fracterra.blender.common -> fracterra
 
 
 class FracterraPreferences(bpy.types.AddonPreferences):

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import bpy
 
-BUNDLED = Path(__file__).resolve().parent.parent / "presets"
+BUNDLED = Path(__file__).resolve().parents[2] / "presets"
 
 # Presets the add-on no longer ships: path under the user's presets folder ->
 # SHA-256 of every version it shipped (before commit ba1d7c2).

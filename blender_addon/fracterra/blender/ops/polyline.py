@@ -7,15 +7,15 @@ import numpy as np
 from bpy_extras import object_utils
 from mathutils import Matrix
 
-from .. import core
-from ..core import params
-from . import props
-from .curve_build import LineArrays, fill_curve_steps, link_new_object, new_curve, spline_nodes
-from .polyline_build import default_radius, polyline_job, regenerate_job
-from .progress import Job, JobOperator
-from .reporting import SettingsError
-from .settings_ui import draw_polyline_settings
-from .terrain_objects import heightfield_of, is_polyline, is_terrain, sea_height
+from ... import core
+from ...core import params
+from ..ui import properties as props
+from ..build.curve import LineArrays, fill_curve_steps, link_new_object, new_curve, spline_nodes
+from ..build.polyline import default_radius, polyline_job, regenerate_job
+from ..common.jobs import Job, JobOperator
+from ..common.reporting import SettingsError
+from ..ui.settings_layout import draw_polyline_settings
+from ..build.objects import heightfield_of, is_polyline, is_terrain, sea_height
 
 
 def edge_chain(mesh):

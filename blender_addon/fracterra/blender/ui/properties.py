@@ -7,10 +7,10 @@ import bpy
 from bpy.props import (BoolProperty, EnumProperty, FloatProperty, FloatVectorProperty, IntProperty,
                        StringProperty)
 
-from ..core import params
-from . import erosion_ui
-from .polyline_build import regenerate_polyline
-from .terrain_build import regenerate_object
+from ...core import params
+from . import erosion_layout
+from ..build.polyline import regenerate_polyline
+from ..build.terrain import regenerate_object
 
 
 def bpy_property(p, update=None):
@@ -114,7 +114,7 @@ def falloff_mask_image_picker(update=None):
 def terrain_annotations(update=None, param_list=None):
     """{name: property} for every setting (terrain unless another list is given)."""
     out = {}
-    for p in param_list or params.TERRAIN_PARAMS:
+    for p in param_list or params.TERRAIN_OBJECT_PARAMS:
         out[p.name] = bpy_property(p, update)
         if p.display_scale is not None:
             out[params.shown_name(p.name)] = display_property(p)
@@ -125,16 +125,22 @@ def terrain_annotations(update=None, param_list=None):
     return out
 
 
-def _on_setting_changed(self, context):
-    # Live editing from the sidebar: regenerate only when the user asked for it.
-    if self.auto_update and self.is_terrain:
-        obj = self.id_data
-        try:
-            regenerate_object(obj, context)
-        except Exception as e:  # an update callback cannot report; show it in the panel
-            self.last_error = str(e)
-        else:
-            self.last_error = ""
+def live_update(flag, regenerate):
+    """The update callback of a PropertyGroup's settings: with Auto Update on and
+    the object made by the add-on (`flag`: is_terrain, is_polyline), regenerate
+    its object (live editing from the sidebar, only when the user asked for it)."""
+    def on_change(self, context):
+        if self.auto_update and getattr(self, flag):
+            try:
+                regenerate(self.id_data, context)
+            except Exception as e:  # an update callback cannot report; show it in the panel
+                self.last_error = str(e)
+            else:
+                self.last_error = ""
+    return on_change
+
+
+_on_setting_changed = live_update("is_terrain", regenerate_object)
 
 
 class FRACTERRA_PG_terrain(bpy.types.PropertyGroup):
@@ -149,24 +155,17 @@ FRACTERRA_PG_terrain.__annotations__ = {
     "last_error": StringProperty(name="Last Error", default="", options={"SKIP_SAVE"}),
     **terrain_annotations(_on_setting_changed),
     # Picking an erosion preset fills the erosion settings, then regenerates as any change does.
-    "erode_preset": erosion_ui.preset_property(then=_on_setting_changed),
+    "erode_preset": erosion_layout.preset_property(then=_on_setting_changed),
 }
 
 
 def copy_settings(src, dst, param_list=None):
     """Copies every setting (terrain unless another list is given) between operators and PropertyGroups."""
-    for p in param_list or params.TERRAIN_PARAMS:
+    for p in param_list or params.TERRAIN_OBJECT_PARAMS:
         setattr(dst, p.name, getattr(src, p.name))
 
 
-def _on_polyline_setting_changed(self, context):
-    if self.auto_update and self.is_polyline:
-        try:
-            regenerate_polyline(self.id_data, context)
-        except Exception as e:  # an update callback cannot report; show it in the panel
-            self.last_error = str(e)
-        else:
-            self.last_error = ""
+_on_polyline_setting_changed = live_update("is_polyline", regenerate_polyline)
 
 
 class FRACTERRA_PG_polyline(bpy.types.PropertyGroup):

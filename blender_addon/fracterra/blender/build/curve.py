@@ -5,7 +5,7 @@ loop over points."""
 import bpy
 import numpy as np
 
-from .. import core
+from ... import core
 
 
 class LineArrays:

@@ -5,7 +5,7 @@ A leaf module (it imports nothing else from the add-on but `core`), so every
 operator module can use it without an import circle.
 """
 
-from .. import core
+from ... import core
 
 
 class SettingsError(ValueError):

@@ -28,7 +28,7 @@ import time
 
 import bpy
 
-from .. import core
+from ... import core
 from .reporting import REPORTED
 
 RUNNING, FINISHED, CANCELLED = "RUNNING", "FINISHED", "CANCELLED"

@@ -1,0 +1,3 @@
+"""The operators, one file per family: terrain, polyline, measure,
+fractalize, POV-Ray export, DEM import/export, tile import. The top layer:
+they import core, common/, build/ and ui/."""

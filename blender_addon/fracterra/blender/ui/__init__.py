@@ -1,0 +1,4 @@
+"""What the user sees: the properties made from the parameter tables, the
+PropertyGroups kept on objects, how settings are laid out, the sidebar panels
+and the menus. Imports core, common/ and build/; never an operator (panels
+and menus name operators by their id strings)."""
