@@ -52,7 +52,7 @@ struct TerrainOptions {
   ft_terrain_params p = default_terrain_params();
   // The pipeline's settings (a preset: --erosion-preset, or --erode) and the
   // erosion settings, both from their tables.
-  ft_build_params build = defaults_of<ft_build_params>(build_param_table());
+  ft_build_params build = defaults_of<ft_build_params>(pipeline::build_param_table());
   ft_erosion_params erosion = defaults_of<ft_erosion_params>(erosion_param_table());
   bool erosion_given = false;  // an erosion flag was given: erode with these settings
   std::string reference, falloff_mask, out, size, pov, center, curves_out, rivers;
@@ -112,7 +112,7 @@ int run(TerrainOptions& o) {
   b.terrain = &p;
   b.erosion = o.erosion_given ? &o.erosion : nullptr;
   b.threads = p.threads;
-  Heightfield hf = build_terrain(b, nullptr);
+  Heightfield hf = pipeline::build_terrain(b, nullptr);
   if (!o.rivers.empty()) {
     // The rivers of what was made, with the terrain's own sea (the landform's).
     hydrology::HydrologyConfig c;
@@ -177,7 +177,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     // The pipeline's and the erosion's settings from their tables; the
                     // terrain's threads serve every stage, and a terrain that tiles
                     // erodes as a torus (the library's rule, not a flag).
-                    add_param_flags(app, build_param_table(), &o->build, {"threads"},
+                    add_param_flags(app, pipeline::build_param_table(), &o->build, {"threads"},
                                     {{"erosion_preset", "--erode"}});
                     add_param_flags(app, erosion_param_table(), &o->erosion, {"periodic", "threads"});
                     o->erosion_maps.add_to(app);

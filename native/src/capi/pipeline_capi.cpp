@@ -14,7 +14,7 @@ extern "C" {
 FT_API ft_status ft_build_params_init(ft_build_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = ft::defaults_of<ft_build_params>(ft::build_param_table());
+    *p = ft::defaults_of<ft_build_params>(ft::pipeline::build_param_table());
   });
 }
 
@@ -26,7 +26,7 @@ FT_API ft_status ft_terrain_build(const ft_build_params* p, ft_heightfield** out
     ft::check_not_null("params", p);
     ft::erosion::ErosionMaps m;
     auto result = std::make_unique<ft_heightfield>();
-    result->hf = ft::build_terrain(*p, maps ? &m : nullptr);
+    result->hf = ft::pipeline::build_terrain(*p, maps ? &m : nullptr);
     // Every handle is made before any is handed out: a failure leaves all outputs NULL.
     std::unique_ptr<ft_heightfield> made[FT_MAP_COUNT];
     if (maps) {

@@ -2,7 +2,7 @@
 
 #include <cctype>
 
-namespace ft {
+namespace ft::pipeline {
 namespace {
 
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
@@ -71,4 +71,4 @@ std::string erosion_preset_name(int32_t preset) {
   return "";  // out of range: refused by the table's range check before
 }
 
-}  // namespace ft
+}  // namespace ft::pipeline

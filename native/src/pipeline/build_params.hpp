@@ -8,10 +8,10 @@
 #include "core/param_table.hpp"
 #include "fracterra/pipeline.h"
 
-namespace ft {
+namespace ft::pipeline {
 
 const ParamTable& build_param_table();
 // "valleys" for FT_EROSION_PRESET_VALLEYS (ft_erosion_preset's name); "" for NONE.
 std::string erosion_preset_name(int32_t preset);
 
-}  // namespace ft
+}  // namespace ft::pipeline

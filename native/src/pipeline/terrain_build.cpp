@@ -10,7 +10,7 @@
 #include "terrain/terrain_method.hpp"
 #include "terrain/terrain_params.hpp"
 
-namespace ft {
+namespace ft::pipeline {
 namespace {
 
 // Share of the progress bar the generation fills when erosion follows
@@ -129,4 +129,4 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
   return untorus(eroded, overlap, world_size);
 }
 
-}  // namespace ft
+}  // namespace ft::pipeline

@@ -8,7 +8,7 @@
 #include "erosion/erosion.hpp"
 #include "fracterra/pipeline.h"
 
-namespace ft {
+namespace ft::pipeline {
 
 // Validates everything before any work (the terrain's and the erosion's
 // params, the preset), then runs the stages. `maps` may be null; when not,
@@ -21,4 +21,4 @@ Heightfield build_terrain(const ft_build_params& p, erosion::ErosionMaps* maps);
 // them, and the torus rule of the terrain's method; threads and progress unset.
 erosion::ErosionConfig build_erosion_config(const ft_build_params& p, const Heightfield& terrain);
 
-}  // namespace ft
+}  // namespace ft::pipeline

@@ -28,7 +28,7 @@ const ParamTable& param_table(int32_t kind) {
     case FT_PARAMS_DEM_REFINE: return refine::dem_refine_param_table();
     case FT_PARAMS_EROSION: return erosion_param_table();
     case FT_PARAMS_HYDROLOGY: return hydrology::hydrology_param_table();
-    case FT_PARAMS_BUILD: return build_param_table();
+    case FT_PARAMS_BUILD: return pipeline::build_param_table();
     default:
       invalid("params kind must be in 0.." + std::to_string(FT_PARAMS_KIND_COUNT - 1) + ", got " +
               std::to_string(kind));

@@ -8,7 +8,7 @@ import bpy
 import numpy as np
 
 from ... import core
-from ...core import erosion, params
+from ...core import erosion
 from .mesh import SLOPE_ATTRIBUTE
 
 # Point attributes (0..1) beside fracterra_height and fracterra_slope.

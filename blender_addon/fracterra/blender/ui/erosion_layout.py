@@ -69,7 +69,7 @@ def draw_erosion(layout, data):
         if getattr(data, count) > 0:
             for name in rates:
                 if name in erosion.FITTED and data.erode_preset != "CUSTOM":
-                    # A preset fits them to the terrain (generate_and_erode).
+                    # A preset fits them to the terrain (the library's ft_terrain_build).
                     if name == "uplift":
                         draw_wrapped(sub, f"{params.PARAMS_BY_NAME[name].label}: fitted to the terrain", width=30)
                     continue
