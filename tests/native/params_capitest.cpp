@@ -51,7 +51,14 @@ const std::vector<Field> kFractalizeFields = {
         scale_by_edge_length, weights, threads, progress, progress_user),
 };
 const std::vector<Field> kErosionFields = {
-    FT_FIELDS(ft_erosion_params, struct_size, fluvial_steps, fluvial_dt, erodibility, area_exponent, diffusion, uplift, hydraulic_iterations, hydraulic_dt, rain, evaporation, capacity, dissolve, deposit, thermal_iterations, talus_degrees, thermal_rate, periodic, threads, progress, progress_user, uplift_follows_terrain, strength, duration, deposition, rainfall, erosion_mask, erosion_mask_width, erosion_mask_height, rain_map, rain_map_width, rain_map_height),
+    FT_FIELDS(ft_erosion_params, struct_size, fluvial_steps, fluvial_dt, erodibility, area_exponent, diffusion,
+        uplift, hydraulic_iterations, hydraulic_dt, rain, evaporation, capacity, dissolve, deposit,
+        thermal_iterations, talus_degrees, thermal_rate, periodic, threads, progress, progress_user,
+        uplift_follows_terrain, strength, duration, deposition, rainfall, erosion_mask, erosion_mask_width,
+        erosion_mask_height, rain_map, rain_map_width, rain_map_height),
+};
+const std::vector<Field> kBuildFields = {
+    FT_FIELDS(ft_build_params, struct_size, threads, terrain, erosion, erosion_preset, progress, progress_user),
 };
 const std::vector<Field> kHydrologyFields = {
     FT_FIELD(ft_hydrology_params, struct_size),       FT_FIELD(ft_hydrology_params, min_area),

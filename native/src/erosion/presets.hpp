@@ -23,7 +23,10 @@ std::vector<ErosionPreset> erosion_presets();
 ErosionConfig erosion_preset(const std::string& name);
 // Every preset's id (tests run each).
 std::vector<std::string> erosion_preset_names();
-ErosionConfig erosion_preset(const std::string& name, const Heightfield& terrain);
+// The one entry the terrain pipeline and the CLI call. The presets need no
+// fitting any more (world units and years), so this is erosion_preset(name);
+// `terrain` stays for the callers and for fits to come.
+ErosionConfig erosion_preset(const std::string& name, const Heightfield& terrain);
 
 // The six maps as 16-bit PNGs in `dir` (drainage_area.png, slope.png, ...),
 // each with its real range recorded in the PNG, and maps.json listing file,
