@@ -447,6 +447,8 @@ TEST(Erosion, PeriodicTerrainsStaySeamless) {
   EXPECT_GT(differs, 1e-3) << "the check must be able to fail";
 }
 
+// The messages name the parameter as its table does (one name per concept,
+// from the C field to the message).
 TEST(Erosion, RejectsBadInputNamingTheParameter) {
   Heightfield hf = fbm_terrain(33, 1);
   auto rejects = [&](ErosionConfig c, const char* name) {
@@ -463,22 +465,22 @@ TEST(Erosion, RejectsBadInputNamingTheParameter) {
   rejects(c, "erodibility");
   c = {};
   c.fluvial.dt = NAN;
-  rejects(c, "fluvial.dt");
+  rejects(c, "fluvial_dt");
   c = {};
   c.hydraulic.iterations = kMaxErosionSteps + 1;
-  rejects(c, "hydraulic.iterations");
+  rejects(c, "hydraulic_iterations");
   c = {};
   c.hydraulic.evaporation = 1.5;
-  rejects(c, "hydraulic.evaporation");
+  rejects(c, "evaporation");
   c = {};
   c.hydraulic.rain = -0.1;
-  rejects(c, "hydraulic.rain");
+  rejects(c, "rain");
   c = {};
   c.thermal.rate = 0;
-  rejects(c, "thermal.rate");
+  rejects(c, "thermal_rate");
   c = {};
   c.thermal.talus_degrees = 90;
-  rejects(c, "thermal.talus_degrees");
+  rejects(c, "talus_degrees");
   c = {};
   c.threads = -1;
   rejects(c, "threads");

@@ -52,13 +52,15 @@ def test_an_eroded_periodic_midpoint_terrain_still_tiles(core):
 
 
 def test_custom_erosion_settings_pass_through_and_a_preset_sets_only_its_own(core):
+    from fracterra.core import erosion
     values, _ = CASES["bounded fbm"]
-    rates = {"thermal_iterations": 0, "talus_degrees": 60.0}
-    with core.build_terrain(values, erosion=rates, preset="SCREE")[0] as steep, \
+    # Strength is not a preset's: it stays the one given, and a stronger run erodes more.
+    with core.build_terrain(values, erosion={"strength": 1.0}, preset="SCREE")[0] as strong, \
             core.build_terrain(values, preset="SCREE")[0] as default:
-        # scree sets the passes; the talus angle stays the one given
-        assert steep.to_array() != default.to_array()
-    with core.build_terrain(values, erosion={"thermal_iterations": 40}, preset="NONE")[0] as custom, \
+        assert strong.to_array() != default.to_array()
+    # A preset is its settings: given by hand with no preset, they make the same terrain.
+    own = {name: erosion.preset_values("scree")[name] for name in erosion.PRESET_FIELDS}
+    with core.build_terrain(values, erosion=own, preset="NONE")[0] as custom, \
             core.build_terrain(values, preset="SCREE")[0] as scree:
         assert custom.to_array() == scree.to_array()
 
