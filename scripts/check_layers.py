@@ -15,6 +15,8 @@ a layer of lower rank, never one of the same rank (sideways) or higher
        tiles/                                  tile sets of terrains larger than memory
                                                (windows of terrain/, files through io/)
     3  refine/                                 DEM refinement (uses terrain/)
+    3  planet/                                 fractal planets: spherical fBm (noise/), cube-sphere
+                                               and equirectangular layouts (terrain/'s tables)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
        erosion/                                fluvial, hydraulic, thermal erosion and maps
     5  pipeline/                               generate -> landform -> erode -> maps in one call
@@ -72,6 +74,7 @@ RANK = {
     "refine": 3,  # a real DEM refined by terrain/'s midpoint method
     "erosion": 4,  # fluvial, hydraulic, thermal; uses analysis/
     "tiles": 3,  # tile sets: windows of terrain/ written through io/
+    "planet": 3,  # fractal planets: noise/ in 3D on the sphere; terrain/'s enum tables
     "pipeline": 5,  # the terrain pipeline: terrain/ then erosion/
     "hydrology": 5,  # rivers, lakes, the sea: erosion/'s flow graph, polyline/'s FPL, contour/
     "tables": 6,  # every capability's parameter table, by kind

@@ -58,7 +58,9 @@ extern "C" {
 /// 2.17: a given camera, terrain colours and scene light at the end of ft_pov_scene_params
 ///      (camera_given, camera_location/direction/right/up, terrain_colors, has_scene_light,
 ///      sky_color, sun_color): the add-on's export shows Blender's view and material.
-#define FT_ABI_VERSION_MINOR 17
+/// 2.18: planet.h: fractal planets (ft_planet_face, ft_planet_equirect, ft_planet_heights,
+///      ft_planet_sea_height, ft_planet_mesh(_counts)); ft_planet_params (FT_PARAMS_PLANET).
+#define FT_ABI_VERSION_MINOR 18
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.
