@@ -9,42 +9,22 @@ undo steps of operators run from the start-up script would not be kept apart.
 Run as: xvfb-run blender --factory-startup --python test_undo.py -- --zip fracterra.zip
 """
 
-import array
 import os
 import sys
-import traceback
-import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import addon_harness  # noqa: E402
+import gui_harness  # noqa: E402
+from gui_harness import in_view3d, vertex_hash  # noqa: E402
 
 import bpy  # noqa: E402
 
-FAILURES = []
 STEP = 0.3  # seconds between steps: Blender handles its events in between
+gui_harness.PREFIX = "UNDO CHECK FAILED: "
 
 
 def check(condition, message):
-    print(("ok: " if condition else "UNDO CHECK FAILED: ") + message, flush=True)
-    if not condition:
-        FAILURES.append(message)
-
-
-def heights(obj):
-    co = array.array("f", [0.0]) * (3 * len(obj.data.vertices))
-    obj.data.vertices.foreach_get("co", co)
-    return co[2::3]
-
-
-def vertex_hash(obj):
-    return zlib.crc32(heights(obj).tobytes())
-
-
-def in_view3d():
-    window = bpy.context.window_manager.windows[0]
-    area = next(a for a in window.screen.areas if a.type == "VIEW_3D")
-    region = next(r for r in area.regions if r.type == "WINDOW")
-    return bpy.context.temp_override(window=window, area=area, region=region)
+    gui_harness.check(condition, message, verbose=True)
 
 
 def jobs():
@@ -52,12 +32,7 @@ def jobs():
 
 
 def wait_for_jobs(limit=60.0):
-    waited = 0.0
-    while jobs().busy() and waited < limit:
-        yield 0.1
-        waited += 0.1
-    check(not jobs().busy(), f"no background job still runs after {limit} s")
-    yield STEP
+    return gui_harness.wait_for_jobs(limit, STEP)
 
 
 def add_terrain(**settings):
@@ -210,20 +185,7 @@ def main():
     args = addon_harness.args()
     module = addon_harness.find_enabled() if args.installed else addon_harness.install_and_enable(args.zip)
     addon_harness.PACKAGE = module.__name__
-    steps = scenario()
-
-    def tick():
-        try:
-            return next(steps)
-        except StopIteration:
-            outcome = 1 if FAILURES else 0
-        except Exception:
-            traceback.print_exc()
-            outcome = 1
-        print("undo test " + ("FAILED: " + "; ".join(FAILURES) if outcome else "passed"), flush=True)
-        os._exit(outcome)
-
-    bpy.app.timers.register(tick, first_interval=1.0)
+    gui_harness.run_in_event_loop(scenario(), "undo test")
 
 
 main()

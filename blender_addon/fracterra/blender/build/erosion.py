@@ -25,19 +25,20 @@ CHANNELS, DEPOSITS, STEEP = (0.45, 0.7), (0.05, 0.4), (0.3, 0.45)
 
 # --- in the job's worker thread (no bpy here)
 
-def generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=None):
+def generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=None, maps=None):
     """Builds the terrain of `values` (with its reference and falloff mask, as
     core.generate_terrain takes them) in one library call, eroded when its
-    settings ask for it (a preset: its passes and the uplift fitted to the
-    terrain, the rates as set; Custom: everything as set); returns
-    grid_of(heightfield) with `.erosion_maps` ({attribute: float32 array} or
-    None). Runs in the worker thread."""
+    settings ask for it (a preset: its run and rates, Strength and the rest as
+    set; Custom: everything as set), where `maps` say (erosion_masks.maps_for:
+    the erosion mask and the rain map, or None); returns grid_of(heightfield)
+    with `.erosion_maps` ({attribute: float32 array} or None). Runs in the
+    worker thread."""
     preset = values.get("erode_preset", "NONE")
     eroded = preset not in ("NONE", "CUSTOM") or (preset == "CUSTOM" and erosion.requested(values))
     hf, maps = core.build_terrain(values, reference=reference, falloff_mask=falloff_mask,
                                   erosion=values if eroded else None,
                                   preset="NONE" if preset == "CUSTOM" else preset, maps=eroded,
-                                  threads=threads, progress=progress)
+                                  threads=threads, progress=progress, **(maps if eroded and maps else {}))
     with hf:
         g = grid_of(hf)
         spacing = values["world_size"] / (hf.width - 1)
