@@ -168,13 +168,40 @@ def a_second_add_does_not_inherit_erosion():
     check(second.fracterra_terrain.thermal_iterations == 0, "the second Add keeps no scree passes")
 
 
+def a_long_redo_hands_over_to_the_progress_bar():
+    """The redo panel runs an operator blocking, with no bar and no Esc: work
+    over jobs.REDO_BUDGET there is handed to the modal job (status-bar
+    progress, Esc cancels) with the same settings. A 2049 x 2049 fBm: the
+    levels-4 Add is instant, its redo at that size is not."""
+    bpy.ops.ed.undo_push(message="the scene emptied")  # what the redo goes back to
+    yield from add_terrain(levels=4, seed=6)
+    op = bpy.context.window_manager.operators[-1]
+    check(op.bl_idname == "MESH_OT_fracterra_terrain_add", f"the last operator is {op.bl_idname}")
+    op.properties.method, op.properties.width, op.properties.height = "FBM", 2049, 2049
+    with in_view3d():
+        result = bpy.ops.ed.undo_redo()
+    check(result == {"FINISHED"}, f"the redo returned {result}")
+    for _ in range(20):  # the job starts from a timer once the redo is over
+        if jobs().busy():
+            break
+        yield 0.1
+    check(jobs().busy(), "the long redo goes on as a background job")
+    yield from wait_for_jobs()
+    terrain = bpy.context.active_object
+    check(terrain is not None and terrain.fracterra_terrain.is_terrain and len(terrain.data.vertices) == 2049 * 2049
+          and terrain.fracterra_terrain.method == "FBM",
+          "the handed-over job built the 2049 x 2049 fBm of the redo's settings")
+    terrains = [(o.name, len(o.data.vertices)) for o in bpy.data.objects if o.fracterra_terrain.is_terrain]
+    check(len(terrains) == 1, f"one terrain, not {terrains}")
+
+
 def scenario():
     check(not bpy.app.background, "this test runs with a window (xvfb-run)")
     for step in (undo_removes_the_added_terrain, undo_removes_an_eroded_terrain,
                  undo_of_regenerate_brings_back_the_settings_of_the_mesh,
                  cancelled_regenerate_keeps_the_settings_of_the_mesh,
                  failed_regenerate_keeps_the_settings_of_the_mesh,
-                 a_second_add_does_not_inherit_erosion):
+                 a_second_add_does_not_inherit_erosion, a_long_redo_hands_over_to_the_progress_bar):
         print(f"--- {step.__name__}", flush=True)
         for obj in list(bpy.data.objects):
             bpy.data.objects.remove(obj)

@@ -256,7 +256,8 @@ class JobOperator:
         runner.cancel()
         runner._work_done.wait()
         window, area = context.window, context.area
-        category, name = self.bl_idname.split(".")
+        category, name = self.bl_idname.lower().split("_ot_") if "_OT_" in self.bl_idname else \
+            self.bl_idname.split(".")  # MESH_OT_x at run time, mesh.x in the class
         start_again = getattr(getattr(bpy.ops, category), name)
         arguments = operator_arguments(self)
 
