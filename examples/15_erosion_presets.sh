@@ -2,7 +2,7 @@
 # Every erosion preset on the add-on's default mountain (midpoint, sigma 2,
 # levelling 1, height offset 1.5, radial falloff 0.9; 10 world units) on
 # three seeds, as shaded reliefs, beside the uneroded terrain, at the default
-# strength; and one terrain as a preview (levels 8) and a final (levels 10):
+# strength (docs/erosion.md; the preview and final pairs there are Blender's):
 #   bash examples/15_erosion_presets.sh OUT_DIR [LEVELS]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"

@@ -25,6 +25,9 @@ CHANNELS, DEPOSITS, STEEP = (0.45, 0.7), (0.05, 0.4), (0.3, 0.45)
 
 # --- in the job's worker thread (no bpy here)
 
+# The library's share of the work's bar; the mesh arrays and the maps the rest.
+LIBRARY_SHARE = 0.85
+
 def generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=None, maps=None):
     """Builds the terrain of `values` (with its reference and falloff mask, as
     core.generate_terrain takes them) in one library call, eroded when its
@@ -35,17 +38,30 @@ def generate_and_erode(values, reference, progress, threads, grid_of, falloff_ma
     worker thread."""
     preset = values.get("erode_preset", "NONE")
     eroded = preset not in ("NONE", "CUSTOM") or (preset == "CUSTOM" and erosion.requested(values))
+    # The bar: the library's pipeline, then the mesh arrays (seconds at 4097^2).
+    cancelled = [False]
+
+    def part(start, span):
+        def report(fraction):
+            cancelled[0] = bool(progress(start + span * fraction)) or cancelled[0]
+            return cancelled[0]
+        return report
+
     hf, maps = core.build_terrain(values, reference=reference, falloff_mask=falloff_mask,
                                   erosion=values if eroded else None,
                                   preset="NONE" if preset == "CUSTOM" else preset, maps=eroded,
-                                  threads=threads, progress=progress, **(maps if eroded and maps else {}))
+                                  threads=threads, progress=part(0.0, LIBRARY_SHARE),
+                                  **(maps if eroded and maps else {}))
     with hf:
-        g = grid_of(hf)
+        g = grid_of(hf, part(LIBRARY_SHARE, 0.95 - LIBRARY_SHARE))
         spacing = values["world_size"] / (hf.width - 1)
     g.erosion_maps = None
     if eroded:
         g.erosion_maps = attribute_maps({k: np.frombuffer(v, dtype=np.float32) for k, v in maps.items()},
                                         spacing * spacing)
+    part(0.95, 0.05)(1.0)
+    if cancelled[0]:
+        raise core.CancelledError("Generating terrain: cancelled", core.errors.FT_ERR_CANCELLED)
     return g
 
 

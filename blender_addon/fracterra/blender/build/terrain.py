@@ -116,9 +116,9 @@ def terrain_work(values, context, topology=True, frame=None, terrain_name=None):
     # The library flattens the sea itself (ft_terrain_params.sea): no floor here.
     world_size, floor = values["world_size"], NO_FLOOR
 
-    def grid_of(hf):
+    def grid_of(hf, progress=None):
         if topology:
-            return grid_arrays(hf, world_size, floor, uvs=values["uvs"])
+            return grid_arrays(hf, world_size, floor, uvs=values["uvs"], progress=progress)
         g = GridArrays(hf.width, hf.height)
         g.co = vertices(hf, *grid_size(world_size, g.nx, g.ny), floor)
         return g
