@@ -249,7 +249,7 @@ def group_from(obj, name, keep):
 
 
 class ErodeMapsTest(unittest.TestCase):
-    """Erode Where and Rain Where from a painted vertex group or an image."""
+    """The erosion mask and the rain map from a painted vertex group or an image."""
 
     def setUp(self):
         clear_scene()
@@ -349,7 +349,7 @@ class ErodeMapsTest(unittest.TestCase):
             with self.assertRaises(RuntimeError) as e:  # a script sees the error report as RuntimeError
                 bpy.ops.object.fracterra_terrain_regenerate()
             message = str(e.exception)
-            self.assertIn("rain" if what == "rain_map" else "Erode Where", message.lower() if what == "rain_map"
+            self.assertIn("rain" if what == "rain_map" else "Erosion mask", message.lower() if what == "rain_map"
                           else message)
             self.assertIn(said, settings.last_error.lower() if said == "nan" else settings.last_error)
             self.assertEqual(heights(obj.data).tobytes(), before, "a refused Regenerate keeps the mesh")

@@ -99,7 +99,8 @@ _BY_UNIT = {"scene units": {"subtype": "DISTANCE", "unit": "LENGTH"},
             "world units": {"subtype": "DISTANCE", "unit": "LENGTH"},
             "radians": {"subtype": "ANGLE", "unit": "ROTATION"}}
 _PRECISION = {"hurst": 3, "center_x": 6, "center_y": 6,
-              "erodibility": 6, "uplift": 6}  # their defaults (2e-4, ~1e-5) are 0.000 at 3 digits
+              "erodibility": 6, "uplift": 6,  # their defaults (2e-4, ~1e-5) are 0.000 at 3 digits
+              "duration": 0}  # whole years: "100000.00" cut the label to "Dur" in the sidebar
 # Blender shows at most 6 decimals: a float whose default is under 1e-4 (the
 # diffusion's 1e-7 read 0.000000) is shown times the power of ten that brings
 # its default to 1..10, the power in its label (props.display_property). The
@@ -338,12 +339,12 @@ MAP_SOURCES = (
     ("IMAGE", "Image", "The brightness of an image spanning the terrain", 2),
 )
 EROSION_MAP_PARAMS = (
-    Param("erosion_mask_source", "enum", "NONE", "Erode Where",
+    Param("erosion_mask_source", "enum", "NONE", "Mask",
           "Where erosion acts: weight or brightness 1 erodes fully, 0 leaves the ground untouched (material "
           "worn away inside may still settle outside)", items=MAP_SOURCES),
     Param("erosion_mask_group", "string", "", "Vertex Group", "The vertex group whose weights say where erosion acts"),
     Param("erosion_mask_image", "string", "", "Image", "The image whose brightness says where erosion acts"),
-    Param("rain_map_source", "enum", "NONE", "Rain Where",
+    Param("rain_map_source", "enum", "NONE", "Rain Map",
           "Where rain falls: weight or brightness 1 gets the full rainfall, 0 none", items=MAP_SOURCES),
     Param("rain_map_group", "string", "", "Vertex Group", "The vertex group whose weights say where rain falls"),
     Param("rain_map_image", "string", "", "Image", "The image whose brightness says where rain falls"),

@@ -16,7 +16,7 @@ from ..common.reporting import SettingsError
 from .objects import mesh_grid
 
 # The maps' setting prefixes and the names the sidebar gives them.
-MAPS = {"erosion_mask": "Erode Where", "rain_map": "Rain Where"}
+MAPS = {"erosion_mask": "Erosion mask", "rain_map": "Rain map"}
 # Weights are read at most this many vertices a side (a Python loop over the
 # vertices: 513^2 takes about a second); the library resamples bilinearly.
 MAX_GROUP_SIDE = 513

@@ -115,8 +115,8 @@ class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
     target: bpy.props.EnumProperty(
         name="For", items=(("REFERENCE", "Reference", "The reference heights (Reference: Image)"),
                            ("FALLOFF_MASK", "Falloff Mask", "The custom falloff's mask (Mask From: Image)"),
-                           ("EROSION_MASK", "Erode Where", "Where erosion acts (Erode Where: Image)"),
-                           ("RAIN_MAP", "Rain Where", "Where rain falls (Rain Where: Image)")),
+                           ("EROSION_MASK", "Erosion Mask", "Where erosion acts (Mask: Image)"),
+                           ("RAIN_MAP", "Rain Map", "Where rain falls (Rain Map: Image)")),
         default="REFERENCE", options={"HIDDEN", "SKIP_SAVE"})
 
     @classmethod
@@ -139,7 +139,7 @@ class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
             prefix = self.target.lower()
             setattr(settings, prefix + "_image", image.name)
             setattr(settings, prefix + "_source", "IMAGE")
-            what = "Erode where" if self.target == "EROSION_MASK" else "Rain where"
+            what = "Erosion mask" if self.target == "EROSION_MASK" else "Rain map"
         else:
             settings.reference_image = image.name
             settings.reference_source = "IMAGE"

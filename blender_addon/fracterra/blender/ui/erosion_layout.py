@@ -141,15 +141,18 @@ def unregister():
 
 
 def _unit_row(layout, data, name):
-    """A setting whose unit Blender cannot show (years) as the field with its
-    unit right after the number: "Duration  100000 | years"."""
+    """A setting whose unit Blender cannot show (years, 1/yr) as its label, the
+    number and the unit after it: "Duration | 100000 | years". The label in
+    the field and the unit beside it cut "Duration" to "Dur" in the sidebar."""
     p = params.PARAMS_BY_NAME[name]
     if not p.unit_text or p.display_scale:
         draw_setting(layout, data, name, p)
         return
-    row = layout.split(factor=0.78, align=True)
-    row.prop(data, name)
-    row.label(text=p.unit_text)
+    row = layout.split(factor=0.42, align=True)
+    row.label(text=p.label)
+    value = row.split(factor=0.68, align=True)
+    value.prop(data, name, text="")
+    value.label(text=p.unit_text)
 
 
 def draw_erosion(layout, data, context=None):
@@ -172,7 +175,10 @@ def draw_erosion(layout, data, context=None):
         draw_maps(box, data, obj)
     wm = (context or bpy.context).window_manager
     is_open = getattr(wm, ADVANCED_OPEN, False)
-    box.prop(wm, ADVANCED_OPEN, icon="TRIA_DOWN" if is_open else "TRIA_RIGHT", emboss=False)
+    row = box.row()
+    row.use_property_split = False  # a fold's header, left-aligned in the redo panel too
+    row.alignment = "LEFT"
+    row.prop(wm, ADVANCED_OPEN, icon="TRIA_DOWN" if is_open else "TRIA_RIGHT", emboss=False)
     if is_open:
         col = box.column(align=True)
         for name in ADVANCED:
@@ -180,11 +186,11 @@ def draw_erosion(layout, data, context=None):
 
 
 def draw_maps(layout, data, obj):
-    """Erode Where and Rain Where: each from a vertex group of the terrain or an image."""
+    """The erosion mask and the rain map: each from a vertex group of the terrain or an image."""
     for what in ("erosion_mask", "rain_map"):
         col = layout.column(align=True)
         source = getattr(data, what + "_source")
-        split = col.split(factor=0.45, align=True)
+        split = col.split(factor=0.4, align=True)
         split.label(text=params.PARAMS_BY_NAME[what + "_source"].label)
         split.prop(data, what + "_source", text="")
         if source == "VERTEX_GROUP":
