@@ -60,7 +60,10 @@ extern "C" {
 ///      sky_color, sun_color): the add-on's export shows Blender's view and material.
 /// 2.18: planet.h: fractal planets (ft_planet_face, ft_planet_equirect, ft_planet_heights,
 ///      ft_planet_sea_height, ft_planet_mesh(_counts)); ft_planet_params (FT_PARAMS_PLANET).
-#define FT_ABI_VERSION_MINOR 18
+/// 2.19: splat.h: splat (weight) maps and colour maps by layer rules (ft_splat_params, described:
+///      FT_PARAMS_SPLAT; ft_splat_params_init, ft_splat_default_layers, ft_splat_weights,
+///      ft_splat_colors).
+#define FT_ABI_VERSION_MINOR 19
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -21,5 +21,6 @@
 #include "tiles.h"
 #include "pipeline.h"
 #include "planet.h"
+#include "splat.h"
 
 #endif
