@@ -140,19 +140,29 @@ def unregister():
     delattr(bpy.types.WindowManager, ADVANCED_OPEN)
 
 
-def _unit_row(layout, data, name):
+# Blender's own short unit symbols ("m", "s"), for the narrow sidebar: "years"
+# beside the number was cut to "ye..." there (the tooltip says "years").
+_SHORT_UNITS = {"years": "yr"}
+
+
+def _unit_row(layout, data, name, in_sidebar_too=True):
     """A setting whose unit Blender cannot show (years, 1/yr) as its label, the
-    number and the unit after it: "Duration | 100000 | years". The label in
-    the field and the unit beside it cut "Duration" to "Dur" in the sidebar."""
+    number and the unit after it: "Duration | 100000 | years" ("yr" in the
+    sidebar). The label in the field and the unit beside it cut "Duration" to
+    "Dur" in the sidebar; there, unless `in_sidebar_too`, the label and unit
+    go on a row above a full-width field ("Scree Angle | 40.00 | de" was cut)."""
     p = params.PARAMS_BY_NAME[name]
-    if not p.unit_text or p.display_scale:
-        draw_setting(layout, data, name, p)
+    wide = layout.use_property_split  # the redo panel; the sidebar draws without the split
+    if not p.unit_text or p.display_scale or not (wide or in_sidebar_too) or len(p.unit_text) > len("degrees"):
+        draw_setting(layout, data, name, p)  # "world units/yr" beside the field was cut even there
         return
-    row = layout.split(factor=0.42, align=True)
-    row.label(text=p.label)
-    value = row.split(factor=0.68, align=True)
+    row = layout.split(factor=0.4, align=True)
+    label = row.row()
+    label.alignment = "RIGHT" if wide else "LEFT"  # as the split layout's own labels
+    label.label(text=p.label)
+    value = row.split(factor=0.68 if wide else 0.78, align=True)
     value.prop(data, name, text="")
-    value.label(text=p.unit_text)
+    value.label(text=p.unit_text if wide else _SHORT_UNITS.get(p.unit_text, p.unit_text))
 
 
 def draw_erosion(layout, data, context=None):
@@ -182,7 +192,7 @@ def draw_erosion(layout, data, context=None):
     if is_open:
         col = box.column(align=True)
         for name in ADVANCED:
-            _unit_row(col, data, name)
+            _unit_row(col, data, name, in_sidebar_too=False)
 
 
 def draw_maps(layout, data, obj):
