@@ -196,4 +196,88 @@ TEST(PipelineCapi, OneProgressBarAcrossTheStagesCancelsAnywhere) {
   }
 }
 
+// The rivers stage (ABI 2.20) follows the method table's tiling rule: a
+// periodic midpoint terrain is a torus of 2^levels a side, so no river ends at
+// an edge, some cross the seam as one continuous line, and the water mask is
+// the torus's. Broken (rivers traced bounded, as `terrain --rivers` did for
+// every method but spectral): 40 of 41 segments end at the edge, this fails.
+struct Network {
+  ft_river_network* net = nullptr;
+  ~Network() { ft_river_network_free(net); }
+};
+
+ft_status build_rivers(const ft_terrain_params& t, Built& out, Network& net) {
+  ft_build_params b;
+  EXPECT_EQ(ft_build_params_init(&b), FT_OK);
+  ft_hydrology_params h;
+  EXPECT_EQ(ft_hydrology_params_init(&h), FT_OK);
+  h.min_area = 0.5;
+  b.terrain = &t;
+  b.rivers = &h;
+  b.erosion_preset = FT_EROSION_PRESET_VALLEYS;
+  b.threads = 2;
+  return ft_terrain_build_rivers(&b, &out.hf, nullptr, &net.net);
+}
+
+std::vector<ft_river_segment> segments_of(const ft_river_network* net) {
+  std::vector<ft_river_segment> s(size_t(ft_river_network_segment_count(net)));
+  EXPECT_EQ(ft_river_network_segments(net, s.data(), int32_t(s.size())), FT_OK);
+  return s;
+}
+
+TEST(PipelineCapi, RiversOfATilingTerrainWrapAcrossItsSeam) {
+  ft_terrain_params t = midpoint(true);
+  t.levels = 7;
+  Built b;
+  Network net;
+  ASSERT_EQ(build_rivers(t, b, net), FT_OK) << ft_last_error();
+  const int n = ft_heightfield_width(b.hf);  // 129: the torus is 128 a side
+  const double spacing = ft_heightfield_world_size(b.hf) / (n - 1), period = (n - 1) * spacing;
+  std::vector<int32_t> mask(size_t(n - 1) * (n - 1));
+  EXPECT_EQ(ft_river_network_water_mask(net.net, mask.data(), int64_t(mask.size())), FT_OK) << ft_last_error();
+  const auto segs = segments_of(net.net);
+  ASSERT_GT(segs.size(), 10u);
+  for (const auto& s : segs) EXPECT_NE(s.end, FT_RIVER_EDGE) << "a torus has no edge";
+  ft_polylines* lines = nullptr;
+  ASSERT_EQ(ft_river_network_polylines(net.net, &lines), FT_OK);
+  const double* xyz = ft_polylines_xyz(lines);
+  bool crosses = false;
+  for (const auto& s : segs)
+    for (int64_t v = s.first_vertex + 1; v < s.first_vertex + s.vertex_count; ++v) {
+      const double* a = xyz + 3 * (v - 1);
+      const double* c = xyz + 3 * v;
+      EXPECT_LT(std::hypot(c[0] - a[0], c[1] - a[1]), 2 * spacing) << "a jump: the river does not wrap";
+      crosses |= c[0] < 0 || c[1] < 0 || c[0] >= period || c[1] >= period;
+    }
+  ft_polylines_free(lines);
+  EXPECT_TRUE(crosses) << "no river crosses the seam";
+
+  // The same terrain bounded: rivers leave at its edges.
+  Built bb;
+  Network bounded;
+  ASSERT_EQ(build_rivers(midpoint(false), bb, bounded), FT_OK) << ft_last_error();
+  const auto bsegs = segments_of(bounded.net);
+  EXPECT_TRUE(std::any_of(bsegs.begin(), bsegs.end(), [](const auto& s) { return s.end == FT_RIVER_EDGE; }));
+}
+
+TEST(PipelineCapi, RiversAreBuiltOnlyWhenAskedAndBadSettingsAreRefused) {
+  const ft_terrain_params t = midpoint(false);
+  Built b;
+  Network net;
+  ft_build_params p;
+  ASSERT_EQ(ft_build_params_init(&p), FT_OK);
+  EXPECT_EQ(p.rivers, nullptr);
+  ft_hydrology_params h;
+  ASSERT_EQ(ft_hydrology_params_init(&h), FT_OK);
+  h.width_exponent = -1;
+  p.terrain = &t;
+  p.rivers = &h;
+  EXPECT_EQ(ft_terrain_build_rivers(&p, &b.hf, nullptr, &net.net), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(ft_last_error()).find("width_exponent"), std::string::npos) << ft_last_error();
+  EXPECT_EQ(b.hf, nullptr);
+  EXPECT_EQ(net.net, nullptr);
+  // Without the rivers output the stage does not run (its settings are not read).
+  EXPECT_EQ(ft_terrain_build(&p, &b.hf, nullptr), FT_OK) << ft_last_error();
+}
+
 }  // namespace

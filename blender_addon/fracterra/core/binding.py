@@ -17,7 +17,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 2
-ABI_MINOR_MIN = 13  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library); 2.12: ft_erosion_preset_fitted, uplift_follows_terrain; 2.13: ft_terrain_build (pipeline.h)
+ABI_MINOR_MIN = 20  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library); 2.12: ft_erosion_preset_fitted, uplift_follows_terrain; 2.13: ft_terrain_build (pipeline.h); 2.20: ft_terrain_build_rivers, ft_river_network_grid
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -244,12 +244,15 @@ SIGNATURES = {
     # pipeline.h (ABI 2.13): the whole terrain in one call; maps NULL or FT_MAP_COUNT handles.
     "ft_build_params_init": (c_int32, [_Described("build")]),
     "ft_terrain_build": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF)]),
+    # (ABI 2.20) with the rivers stage: the network's handle (core/rivers.py).
+    "ft_terrain_build_rivers": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF), POINTER(c_void_p)]),
     # hydrology.h (ABI 2.15): rivers, lakes and the sea; the segment and lake structs as raw memory.
     "ft_hydrology_params_init": (c_int32, [_Described("hydrology")]),
     "ft_rivers_extract": (c_int32, [_HF, _Described("hydrology"), POINTER(c_void_p)]),
     "ft_river_network_free": (None, [c_void_p]),
     "ft_river_network_segment_count": (c_int32, [c_void_p]),
     "ft_river_network_lake_count": (c_int32, [c_void_p]),
+    "ft_river_network_grid": (c_int32, [c_void_p, _I32P, _I32P]),
     "ft_river_network_polylines": (c_int32, [c_void_p, POINTER(c_void_p)]),
     "ft_river_network_vertex_values": (c_int32, [c_void_p, c_int32, POINTER(c_double), c_int64]),
     "ft_river_network_segments": (c_int32, [c_void_p, c_void_p, c_int32]),

@@ -58,7 +58,10 @@ extern "C" {
 /// 2.17: a given camera, terrain colours and scene light at the end of ft_pov_scene_params
 ///      (camera_given, camera_location/direction/right/up, terrain_colors, has_scene_light,
 ///      sky_color, sun_color): the add-on's export shows Blender's view and material.
-#define FT_ABI_VERSION_MINOR 17
+/// 2.20: rivers as the pipeline's last stage: ft_terrain_build_rivers (pipeline.h) and
+///      ft_build_params.rivers; a terrain that tiles gives rivers that wrap, in every front end;
+///      ft_river_network_grid (the grid a network was traced on).
+#define FT_ABI_VERSION_MINOR 20
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "erosion/erosion_params.hpp"
 #include "erosion/presets.hpp"
+#include "hydrology/hydrology_params.hpp"
 #include "pipeline/build_params.hpp"
 #include "terrain/terrain.hpp"
 #include "terrain/terrain_method.hpp"
@@ -13,9 +14,9 @@
 namespace ft::pipeline {
 namespace {
 
-// Share of the progress bar the generation fills when erosion follows
-// (erosion is the longer part).
-constexpr double kGenerationShare = 0.25;
+// Weights of the stages on the one progress bar (erosion is the longest;
+// rivers take about as long as generating).
+constexpr double kGenerationWeight = 0.25, kErosionWeight = 0.75, kRiversWeight = 0.1;
 
 // A stage's share [start, start + span) of the build's one progress bar.
 struct Span {
@@ -95,38 +96,74 @@ erosion::ErosionConfig build_erosion_config(const ft_build_params& p, const Heig
   return c;
 }
 
-Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* maps) {
+hydrology::HydrologyConfig build_rivers_config(const ft_build_params& p, const ft_terrain_params& t) {
+  ft_hydrology_params h = p.rivers ? *p.rivers : defaults_of<ft_hydrology_params>(hydrology::hydrology_param_table());
+  h.progress = nullptr, h.progress_user = nullptr;
+  hydrology::HydrologyConfig c = hydrology::from_c(h);
+  if (t.sea != FT_SEA_NONE) {
+    // The landform flattened this sea: the rivers end in it.
+    c.sea = hydrology::Sea(t.sea);
+    c.sea_level = t.sea_level;
+    c.sea_fraction = t.sea_fraction;
+  }
+  // One rule for every front end: a terrain that tiles is a torus.
+  c.periodic = tiles_periodically(t);
+  c.threads = p.threads;
+  return c;
+}
+
+Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* maps, hydrology::RiverNetwork* rivers) {
   const ft_build_params p = upgraded(build_param_table(), given);
   check_ranges(build_param_table(), &p);
   check_not_null("terrain", p.terrain);
   ft_terrain_params t = upgraded(terrain_param_table(), *p.terrain);
   t.threads = p.threads;
   // Everything is checked before any work: the terrain, then the erosion
-  // settings (their ranges; the preset's name is the table's).
+  // settings (their ranges; the preset's name is the table's), the rivers'.
   validate_terrain_params(t);
   const bool erode = erodes(p) || maps;
   if (erode) erosion::from_c(given_erosion(p));
+  hydrology::HydrologyConfig rc;
+  if (rivers) rc = build_rivers_config(p, t);
 
   const Progress progress(p.progress, p.progress_user);
-  Span generation{progress, 0.0, erode ? kGenerationShare : 1.0};
+  const double total =
+      kGenerationWeight + (erode ? kErosionWeight : 0.0) + (rivers ? kRiversWeight : 0.0);
+  double done = 0;
+  auto span = [&](double weight) {
+    const Span s{progress, done / total, weight / total};
+    done += weight;
+    return s;
+  };
+  Span generation = span(kGenerationWeight);
   t.progress = &Span::call, t.progress_user = &generation;
   Heightfield hf = generate_terrain(t);  // with its landform
-  if (!erode) return hf;
-
-  ft_build_params q = p;
-  q.terrain = &t;
-  erosion::ErosionConfig c = build_erosion_config(q, hf);
-  Span erosion_span{progress, kGenerationShare, 1.0 - kGenerationShare};
-  c.progress = Progress(&Span::call, &erosion_span);
-  const int overlap = c.periodic ? terrain_method(t.method).period_overlap : 0;
+  const int overlap = tiles_periodically(t) ? terrain_method(t.method).period_overlap : 0;
   const double world_size = hf.world_size();
-  if (overlap == 0) return erosion::erode(hf, c, maps);
-  const Heightfield eroded = erosion::erode(torus_of(hf, overlap), c, maps);
-  if (maps)
-    for (Heightfield* m : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth, &maps->eroded,
-                           &maps->deposited})
-      *m = untorus(*m, overlap, world_size);
-  return untorus(eroded, overlap, world_size);
+  if (erode) {
+    ft_build_params q = p;
+    q.terrain = &t;
+    erosion::ErosionConfig c = build_erosion_config(q, hf);
+    Span erosion_span = span(kErosionWeight);
+    c.progress = Progress(&Span::call, &erosion_span);
+    if (overlap == 0) {
+      hf = erosion::erode(hf, c, maps);
+    } else {
+      const Heightfield eroded = erosion::erode(torus_of(hf, overlap), c, maps);
+      if (maps)
+        for (Heightfield* m : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth,
+                               &maps->eroded, &maps->deposited})
+          *m = untorus(*m, overlap, world_size);
+      hf = untorus(eroded, overlap, world_size);
+    }
+  }
+  if (rivers) {
+    // The rivers of what was made, on the torus it was eroded on.
+    Span rivers_span = span(kRiversWeight);
+    rc.progress = Progress(&Span::call, &rivers_span);
+    *rivers = overlap == 0 ? hydrology::extract_rivers(hf, rc) : hydrology::extract_rivers(torus_of(hf, overlap), rc);
+  }
+  return hf;
 }
 
 }  // namespace ft::pipeline
