@@ -25,7 +25,7 @@ struct ErodeCli {
   ErosionMapFlags map_files;
   // The settings from ft_erosion_params' table (erosion_params.cpp): what
   // the flags wrote over the table's defaults.
-  ft_erosion_params flags = defaults_of<ft_erosion_params>(erosion_param_table());
+  ft_erosion_params flags = defaults_of<ft_erosion_params>(erosion::erosion_param_table());
 };
 
 // The flag names erode had before its flags came from the table (issue 15's
@@ -42,7 +42,7 @@ erosion::ErosionConfig settings(ErodeCli& o, const CLI::App& app, const Heightfi
   ft_erosion_params p = o.flags;
   if (!o.preset.empty()) {
     p = erosion::to_c(erosion::erosion_preset(o.preset, hf));
-    overlay_given_flags(app, erosion_param_table(), &o.flags, &p);
+    overlay_given_flags(app, erosion::erosion_param_table(), &o.flags, &p);
   }
   erosion::ErosionConfig c = erosion::from_c(p);
   o.map_files.apply(c);
@@ -72,7 +72,7 @@ Registration reg({"erode", "Erode a heightfield (channels, scree and fans over y
                     app.add_option("--world-size", o->world_size,
                                    "extent along x in world units when the file does not record it [default: 10]");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, the height range before and after, what left at the edges");
-                    add_param_flags(app, erosion_param_table(), &o->flags, {}, kAliases);
+                    add_param_flags(app, erosion::erosion_param_table(), &o->flags, {}, kAliases);
                     return [o, &app] {
                       if (o->out.empty() && o->maps.empty() && !o->stats) invalid("give --out FILE, --maps DIR and/or --stats");
                       if (!o->preset.empty()) erosion::erosion_preset(o->preset);  // an unknown name fails before reading

@@ -49,11 +49,11 @@ void parse_center(const std::string& text, ft_terrain_params& p) {
 }
 
 struct TerrainOptions {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   // The pipeline's settings (a preset: --erosion-preset, or --erode) and the
   // erosion settings, both from their tables.
   ft_build_params build = defaults_of<ft_build_params>(pipeline::build_param_table());
-  ft_erosion_params erosion = defaults_of<ft_erosion_params>(erosion_param_table());
+  ft_erosion_params erosion = defaults_of<ft_erosion_params>(erosion::erosion_param_table());
   bool erosion_given = false;  // an erosion flag was given: erode with these settings
   std::string reference, falloff_mask, out, size, pov, center, curves_out, rivers;
   std::vector<double> curves;
@@ -65,7 +65,7 @@ struct TerrainOptions {
 // heights those escape times map to, in columns and rows or world units.
 void write_escape_curves(const TerrainOptions& o, const ft_terrain_params& p, const Heightfield& hf) {
   std::vector<double> levels;
-  for (double nu : o.curves) levels.push_back(mandelbrot_height(nu, p.sigma));
+  for (double nu : o.curves) levels.push_back(terrain::mandelbrot_height(nu, p.sigma));
   PolylineSet set = contour::marching_squares(hf, levels);
   if (o.curves_world) {
     const double k = hf.world_size() / double(hf.width() - 1);
@@ -140,7 +140,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<TerrainOptions>();
                     auto& p = o->p;
-                    add_param_flags(app, terrain_param_table(), &p, {"width", "height", "center_x", "center_y"});
+                    add_param_flags(app, terrain::terrain_param_table(), &p, {"width", "height", "center_x", "center_y"});
                     app.add_option("--size", o->size,
                                    "fbm, spectral, interpolated, mandelbrot: N (square) or WxH samples, 2..65536 per "
                                    "side [default: 513]");
@@ -172,7 +172,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     // erodes as a torus (the library's rule, not a flag).
                     add_param_flags(app, pipeline::build_param_table(), &o->build, {"threads"},
                                     {{"erosion_preset", "--erode"}});
-                    add_param_flags(app, erosion_param_table(), &o->erosion, {"periodic", "threads"});
+                    add_param_flags(app, erosion::erosion_param_table(), &o->erosion, {"periodic", "threads"});
                     o->erosion_maps.add_to(app);
                     app.add_option("--rivers", o->rivers,
                                    "also trace its rivers and lakes (after --erode) with fracterra rivers' defaults "
@@ -185,7 +185,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     return [o, &app] {
                       if (o->out.empty() && o->pov.empty() && o->rivers.empty() && !o->stats)
                         invalid("give --out FILE, --pov FILE, --rivers FILE and/or --stats");
-                      for (const ft_param_info& row : erosion_param_table().rows)  // --periodic, --threads: the terrain's
+                      for (const ft_param_info& row : erosion::erosion_param_table().rows)  // --periodic, --threads: the terrain's
                         if (std::string(row.name) != "periodic" && std::string(row.name) != "threads")
                           o->erosion_given = o->erosion_given || flag_given(app, row.name);
                       return run(*o);

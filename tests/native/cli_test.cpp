@@ -74,10 +74,10 @@ TEST_F(Cli, TerrainStatsPrintsOneJsonObjectWithTheRequiredKeys) {
 }
 
 TEST_F(Cli, PngPgmAndNpyOutputsRoundTrip) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.levels = 6;
   p.seed = 9;
-  const Heightfield want = generate_terrain(p);
+  const Heightfield want = terrain::generate_terrain(p);
   const HeightStats s = want.stats();
   for (const char* ext : {".png", ".pgm", ".npy"}) {
     const std::string out = path(std::string("t") + ext);

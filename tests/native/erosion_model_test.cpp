@@ -25,7 +25,7 @@ namespace {
 // BLENDER_OVERRIDES): a midpoint mountain, levelled, raised and faded out
 // radially, 10 world units across.
 Heightfield default_mountain(int32_t levels, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = FT_TERRAIN_MIDPOINT;
   p.levels = levels;
   p.width = p.height = (1 << levels) + 1;
@@ -36,7 +36,7 @@ Heightfield default_mountain(int32_t levels, uint64_t seed) {
   p.falloff = FT_FALLOFF_RADIAL;
   p.falloff_width = 0.9;
   p.world_size = 10.0;
-  Heightfield hf = generate_terrain(p);
+  Heightfield hf = terrain::generate_terrain(p);
   hf.set_world_size(10.0);
   return hf;
 }
@@ -44,13 +44,13 @@ Heightfield default_mountain(int32_t levels, uint64_t seed) {
 // fBm: the same terrain at every size (issue 24 measured 0.996 at shared
 // points), so it is the input of the resolution test.
 Heightfield fbm(int32_t size, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = FT_TERRAIN_FBM;
   p.width = p.height = size;
   p.seed = seed;
   p.hurst = 0.8;
   p.world_size = 10.0;
-  Heightfield hf = generate_terrain(p);
+  Heightfield hf = terrain::generate_terrain(p);
   hf.set_world_size(10.0);
   return hf;
 }

@@ -185,12 +185,12 @@ TEST(Sea, IsConnectedToTheEdgeAndAnEnclosedHollowBelowItIsALake) {
 
 // An fBm terrain eroded by the fluvial preset (fitted to the terrain).
 Heightfield eroded_fbm(int32_t size, uint64_t seed, bool periodic = false) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = periodic ? FT_TERRAIN_SPECTRAL : FT_TERRAIN_FBM;
   p.width = p.height = size;
   p.seed = seed;
   p.hurst = 0.8;
-  Heightfield hf = generate_terrain(p);
+  Heightfield hf = terrain::generate_terrain(p);
   hf.set_world_size(10.0);
   erosion::ErosionConfig c = erosion::erosion_preset("valleys", hf);
   c.periodic = periodic;
@@ -317,12 +317,12 @@ TEST(Rivers, WrapOnPeriodicTerrains) {
 TEST(Lakes, EveryLakeOfAPeriodicTerrainHasItsShorelineAcrossTheSeam) {
   int crossing = 0, checked = 0;
   for (uint64_t seed : {1, 2, 3}) {
-    ft_terrain_params p = default_terrain_params();
+    ft_terrain_params p = terrain::default_terrain_params();
     p.method = FT_TERRAIN_SPECTRAL;
     p.width = p.height = 128;
     p.seed = seed;
     p.hurst = 0.8;
-    Heightfield hf = generate_terrain(p);
+    Heightfield hf = terrain::generate_terrain(p);
     hf.set_world_size(10.0);
     HydrologyConfig cfg;
     cfg.min_area = 0.2;

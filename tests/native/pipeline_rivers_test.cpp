@@ -30,7 +30,7 @@ TEST(PipelineRivers, TheCliWritesTheLibrarysRivers) {
     ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     const hydrology::WaterScene cli = hydrology::read_water_json(json);
 
-    ft_terrain_params t = default_terrain_params();
+    ft_terrain_params t = terrain::default_terrain_params();
     t.method = FT_TERRAIN_MIDPOINT;
     t.levels = 7;
     t.seed = 3;

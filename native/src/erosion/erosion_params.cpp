@@ -2,15 +2,14 @@
 
 #include <cfloat>
 
-namespace ft {
+namespace ft::erosion {
 namespace {
 
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
-constexpr double kMaxSteps = erosion::kMaxErosionSteps;
+constexpr double kMaxSteps = kMaxErosionSteps;
 constexpr uint32_t kAbi212 = 0x2000C;  // uplift_follows_terrain
 constexpr uint32_t kAbi214 = 0x2000E;  // the landscape model and its maps
-constexpr double kMaxMapSide = erosion::kMaxMapSide;
 // The defaults are ErosionConfig's (erosion.hpp); the test
 // ErosionParams.TableDefaultsAreTheConfigDefaults holds them together.
 
@@ -148,8 +147,6 @@ const ParamTable& erosion_param_table() {
   return table;
 }
 
-namespace erosion {
-
 ft_erosion_params to_c(const ErosionConfig& c) {
   ft_erosion_params p = defaults_of<ft_erosion_params>(erosion_param_table());
   p.strength = c.model.strength;
@@ -201,5 +198,4 @@ ErosionConfig from_c(const ft_erosion_params& given) {
   return c;
 }
 
-}  // namespace erosion
-}  // namespace ft
+}  // namespace ft::erosion

@@ -38,8 +38,8 @@ bool erodes(const ft_build_params& p) { return p.erosion || p.erosion_preset != 
 // The given erosion settings over the table's defaults (upgraded from an
 // older caller's struct).
 ft_erosion_params given_erosion(const ft_build_params& p) {
-  if (!p.erosion) return defaults_of<ft_erosion_params>(erosion_param_table());
-  return upgraded(erosion_param_table(), *p.erosion);
+  if (!p.erosion) return defaults_of<ft_erosion_params>(erosion::erosion_param_table());
+  return upgraded(erosion::erosion_param_table(), *p.erosion);
 }
 
 // A preset sets which processes run (its pass counts, all three) and every
@@ -47,9 +47,9 @@ ft_erosion_params given_erosion(const ft_build_params& p) {
 // what `fracterra erode --preset` gives without further flags, and what the
 // add-on's presets always did. The other settings stay as given.
 ft_erosion_params apply_preset(const ft_erosion_params& given, const ft_erosion_params& preset) {
-  static const ft_erosion_params defaults = defaults_of<ft_erosion_params>(erosion_param_table());
+  static const ft_erosion_params defaults = defaults_of<ft_erosion_params>(erosion::erosion_param_table());
   ft_erosion_params out = given;
-  for (const ft_param_info& row : erosion_param_table().rows) {
+  for (const ft_param_info& row : erosion::erosion_param_table().rows) {
     if (row.flags & (FT_PARAM_FLAG_STRUCT_SIZE | FT_PARAM_FLAG_DATA)) continue;
     const auto* from = reinterpret_cast<const char*>(&preset) + row.offset;
     if (std::memcmp(from, reinterpret_cast<const char*>(&defaults) + row.offset, row.size) != 0)
@@ -91,7 +91,7 @@ erosion::ErosionConfig build_erosion_config(const ft_build_params& p, const Heig
   e.progress = nullptr, e.progress_user = nullptr;
   erosion::ErosionConfig c = erosion::from_c(e);
   // One rule for every front end: a terrain that tiles erodes as a torus.
-  c.periodic = tiles_periodically(*p.terrain);
+  c.periodic = terrain::tiles_periodically(*p.terrain);
   c.threads = p.threads;
   return c;
 }
@@ -107,7 +107,7 @@ hydrology::HydrologyConfig build_rivers_config(const ft_build_params& p, const f
     c.sea_fraction = t.sea_fraction;
   }
   // One rule for every front end: a terrain that tiles is a torus.
-  c.periodic = tiles_periodically(t);
+  c.periodic = terrain::tiles_periodically(t);
   c.threads = p.threads;
   return c;
 }
@@ -116,11 +116,11 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
   const ft_build_params p = upgraded(build_param_table(), given);
   check_ranges(build_param_table(), &p);
   check_not_null("terrain", p.terrain);
-  ft_terrain_params t = upgraded(terrain_param_table(), *p.terrain);
+  ft_terrain_params t = upgraded(terrain::terrain_param_table(), *p.terrain);
   t.threads = p.threads;
   // Everything is checked before any work: the terrain, then the erosion
   // settings (their ranges; the preset's name is the table's), the rivers'.
-  validate_terrain_params(t);
+  terrain::validate_terrain_params(t);
   const bool erode = erodes(p) || maps;
   if (erode) erosion::from_c(given_erosion(p));
   hydrology::HydrologyConfig rc;
@@ -137,8 +137,8 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
   };
   Span generation = span(kGenerationWeight);
   t.progress = &Span::call, t.progress_user = &generation;
-  Heightfield hf = generate_terrain(t);  // with its landform
-  const int overlap = tiles_periodically(t) ? terrain_method(t.method).period_overlap : 0;
+  Heightfield hf = terrain::generate_terrain(t);  // with its landform
+  const int overlap = terrain::tiles_periodically(t) ? terrain::terrain_method(t.method).period_overlap : 0;
   const double world_size = hf.world_size();
   if (erode) {
     ft_build_params q = p;

@@ -17,16 +17,16 @@ namespace ft::tables {
 
 const ParamTable& param_table(int32_t kind) {
   switch (kind) {
-    case FT_PARAMS_TERRAIN: return terrain_param_table();
-    case FT_PARAMS_PROFILE: return profile_param_table();
-    case FT_PARAMS_POLYLINE: return polyline_param_table();
+    case FT_PARAMS_TERRAIN: return terrain::terrain_param_table();
+    case FT_PARAMS_PROFILE: return terrain::profile_param_table();
+    case FT_PARAMS_POLYLINE: return polyline::polyline_param_table();
     case FT_PARAMS_FRACTALIZE: return subdiv::fractalize_param_table();
     case FT_PARAMS_POV_SCENE: return pov::scene_param_table();
     case FT_PARAMS_POV_SWEEP: return pov::sweep_param_table();
     case FT_PARAMS_HURST: return analysis::hurst_param_table();
     case FT_PARAMS_CLOUDS: return analysis::clouds_param_table();
     case FT_PARAMS_DEM_REFINE: return refine::dem_refine_param_table();
-    case FT_PARAMS_EROSION: return erosion_param_table();
+    case FT_PARAMS_EROSION: return erosion::erosion_param_table();
     case FT_PARAMS_HYDROLOGY: return hydrology::hydrology_param_table();
     case FT_PARAMS_BUILD: return pipeline::build_param_table();
     default:
