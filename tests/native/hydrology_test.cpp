@@ -312,8 +312,8 @@ TEST(Rivers, WrapOnPeriodicTerrains) {
 // cell's centre and its dry neighbour, so it adds up to half a cell along the
 // shore: for a lake of c >= 4 cells, between 0.3 c (a thin lake whose
 // contour hugs the centres) and c + perimeter/2 <= 3 c cells. Broken (the
-// box cut at the seam, as before): 7 of 61 lakes over the three seeds had no
-// ring, and this fails.
+// box cut at the seam, as before): 28 lakes of 4 cells or more over the three
+// seeds had no ring and none crossed the seam, and this failed.
 TEST(Lakes, EveryLakeOfAPeriodicTerrainHasItsShorelineAcrossTheSeam) {
   int crossing = 0, checked = 0;
   for (uint64_t seed : {1, 2, 3}) {
@@ -332,12 +332,15 @@ TEST(Lakes, EveryLakeOfAPeriodicTerrainHasItsShorelineAcrossTheSeam) {
     for (const Lake& lake : net.water.lakes) {
       if (lake.cells < 4) continue;
       ++checked;
-      ASSERT_GE(lake.ring_count, 1) << "a lake of " << lake.cells << " cells without a shoreline";
+      EXPECT_GE(lake.ring_count, 1) << "a lake of " << lake.cells << " cells without a shoreline";
+      if (lake.ring_count == 0) continue;
+      // Shorelines and islands wind opposite ways (marching squares keeps the
+      // low side on one hand): the signed sum is the water's area, a lake
+      // whose cells touch only diagonally having several shorelines.
       double area = 0;
       bool across = false;
       for (int64_t r = lake.first_ring; r < lake.first_ring + lake.ring_count; ++r) {
-        const double a = std::fabs(contour::signed_area(net.lake_rings, r));
-        area += r == lake.first_ring ? a : -a;
+        area += contour::signed_area(net.lake_rings, r);
         for (int64_t v = net.lake_rings.line_begin(r); v < net.lake_rings.line_end(r); ++v) {
           const Vec3& q = net.lake_rings.points[size_t(v)];
           across |= q[0] < 0 || q[1] < 0 || q[0] > period || q[1] > period;
@@ -345,6 +348,7 @@ TEST(Lakes, EveryLakeOfAPeriodicTerrainHasItsShorelineAcrossTheSeam) {
         }
       }
       crossing += across;
+      area = std::fabs(area);
       EXPECT_GT(area, 0.3 * lake.cells * cell) << lake.cells << " cells";
       EXPECT_LT(area, 3.0 * lake.cells * cell) << lake.cells << " cells";
     }

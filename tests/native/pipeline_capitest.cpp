@@ -200,7 +200,8 @@ TEST(PipelineCapi, OneProgressBarAcrossTheStagesCancelsAnywhere) {
 // periodic midpoint terrain is a torus of 2^levels a side, so no river ends at
 // an edge, some cross the seam as one continuous line, and the water mask is
 // the torus's. Broken (rivers traced bounded, as `terrain --rivers` did for
-// every method but spectral): 40 of 41 segments end at the edge, this fails.
+// every method but spectral): the water mask is the whole grid's, 3 segments
+// end at the edge and none crosses the seam; this failed.
 struct Network {
   ft_river_network* net = nullptr;
   ~Network() { ft_river_network_free(net); }
@@ -233,6 +234,10 @@ TEST(PipelineCapi, RiversOfATilingTerrainWrapAcrossItsSeam) {
   ASSERT_EQ(build_rivers(t, b, net), FT_OK) << ft_last_error();
   const int n = ft_heightfield_width(b.hf);  // 129: the torus is 128 a side
   const double spacing = ft_heightfield_world_size(b.hf) / (n - 1), period = (n - 1) * spacing;
+  int32_t gw = 0, gh = 0;
+  ASSERT_EQ(ft_river_network_grid(net.net, &gw, &gh), FT_OK);
+  EXPECT_EQ(gw, n - 1);
+  EXPECT_EQ(gh, n - 1);
   std::vector<int32_t> mask(size_t(n - 1) * (n - 1));
   EXPECT_EQ(ft_river_network_water_mask(net.net, mask.data(), int64_t(mask.size())), FT_OK) << ft_last_error();
   const auto segs = segments_of(net.net);

@@ -29,7 +29,7 @@ FT_API ft_status ft_terrain_build_rivers(const ft_build_params* p, ft_heightfiel
     ft::erosion::ErosionMaps m;
     auto result = std::make_unique<ft_heightfield>();
     auto network = rivers ? std::make_unique<ft_river_network>() : nullptr;
-    result->hf = ft::pipeline::build_terrain(*p, maps ? &m : nullptr, network.get());
+    result->hf = ft::pipeline::build_terrain(*p, maps ? &m : nullptr, network ? &network->net : nullptr);
     // Every handle is made before any is handed out: a failure leaves all outputs NULL.
     std::unique_ptr<ft_heightfield> made[FT_MAP_COUNT];
     if (maps) {
