@@ -316,10 +316,21 @@ class Library:
         self.version = self.ft_version_string().decode()
         # The params structs as the library describes them: their layout cannot drift.
         self.param_rows, self.struct_types = {}, {}
-        for kind_name, kind in PARAMS_KINDS.items():
-            struct_name, size, rows = self.describe(kind)
-            self.param_rows[kind_name] = rows
-            self.struct_types[kind] = structure_from_rows(struct_name, rows, size, self.struct_types)
+        described = {kind: self.describe(kind) for kind in PARAMS_KINDS.values()}
+        # A struct that points to another (ft_build_params to ft_hydrology_params)
+        # is made after it, whatever their kind numbers.
+        todo = list(PARAMS_KINDS.items())
+        while todo:
+            ready = [(n, k) for n, k in todo
+                     if all(r["element_kind"] < 0 or r["element_kind"] in self.struct_types or r["type"] != "pointer"
+                            for r in described[k][2])]
+            if not ready:
+                raise LibraryNotFoundError(f"{self.path}: params structs point to each other in a circle")
+            for kind_name, kind in ready:
+                struct_name, size, rows = described[kind]
+                self.param_rows[kind_name] = rows
+                self.struct_types[kind] = structure_from_rows(struct_name, rows, size, self.struct_types)
+                todo.remove((kind_name, kind))
         self._bind({name: (restype, [POINTER(self.struct_types[PARAMS_KINDS[a.kind]])
                                      if isinstance(a, _Described) else a for a in argtypes])
                     for name, (restype, argtypes) in SIGNATURES.items()
