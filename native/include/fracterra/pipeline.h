@@ -50,8 +50,10 @@ typedef struct ft_build_params {
                                      ///< ignored: a terrain that tiles is routed as the torus it is
                                      ///< eroded on (rivers wrap; midpoint and additions: size - 1 per
                                      ///< side, the network's water mask too). A terrain with a sea of its
-                                     ///< own (ft_terrain_params.sea) gives the rivers that sea; the
-                                     ///< rivers' sea fields count only for a terrain without one.
+                                     ///< own (ft_terrain_params.sea) gives the rivers that sea, at the
+                                     ///< height the landform flattened it (plus 1e-3 of the relief:
+                                     ///< erosion lays sediment on its floor); the rivers'
+                                     ///< sea fields count only for a terrain without one.
 } ft_build_params;
 
 /// Fills `p` with the defaults (no terrain: set p->terrain). `p` must not be NULL.

@@ -1,5 +1,6 @@
 #include "pipeline/terrain_build.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -138,6 +139,8 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
   Span generation = span(kGenerationWeight);
   t.progress = &Span::call, t.progress_user = &generation;
   Heightfield hf = terrain::generate_terrain(t);  // with its landform
+  // Where the landform flattened its sea (a fraction: at the lowest height).
+  const double sea_z = t.sea == FT_SEA_HEIGHT ? t.sea_level : t.sea == FT_SEA_FRACTION ? hf.stats().min : 0.0;
   const int overlap = terrain::tiles_periodically(t) ? terrain::terrain_method(t.method).period_overlap : 0;
   const double world_size = hf.world_size();
   if (erode) {
@@ -159,6 +162,17 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
   }
   if (rivers) {
     // The rivers of what was made, on the torus it was eroded on.
+    if (t.sea != FT_SEA_NONE) {
+      // The rivers' sea is the landform's flat sea, as a height: erosion lays
+      // sediment on its floor (an eroded island, 69% of its cells flattened at
+      // 0: half of them within 1e-9 of it, 80% within 2e-4 of the relief, 95%
+      // within 5e-3), so the level takes 1e-3 of the relief above it; at the
+      // bare level (or a fraction of the eroded heights) most of the sea was
+      // land and the rivers ran on across its floor into hundreds of lakes.
+      const HeightStats st = hf.stats();
+      rc.sea = hydrology::Sea::kHeight;
+      rc.sea_level = std::clamp(sea_z + 1e-3 * (st.max - st.min), double(st.min), double(st.max));
+    }
     Span rivers_span = span(kRiversWeight);
     rc.progress = Progress(&Span::call, &rivers_span);
     *rivers = overlap == 0 ? hydrology::extract_rivers(hf, rc) : hydrology::extract_rivers(torus_of(hf, overlap), rc);

@@ -125,7 +125,8 @@ def _profile(terrain, collection):
     curve = bpy.data.curves.new(f"{terrain.name} River Profile", "CURVE")
     spline = curve.splines.new("POLY")
     t = np.linspace(0.0, 2.0 * np.pi, _PROFILE_POINTS, endpoint=False)
-    co = np.stack([np.cos(t), RIVER_FLAT * np.sin(t), np.zeros_like(t), np.ones_like(t)], axis=1)
+    # Blender lays a bevel object's y across the curve (horizontal with Z_UP) and its x up.
+    co = np.stack([RIVER_FLAT * np.cos(t), np.sin(t), np.zeros_like(t), np.ones_like(t)], axis=1)
     spline.points.add(len(t) - 1)
     spline.points.foreach_set("co", co.astype(np.float32).ravel())
     spline.use_cyclic_u = True
@@ -223,7 +224,9 @@ def build_water(terrain, water, heights=None):
         made.append(f"{water.lake_count} lakes")
     sea = water.mask == SEA
     if sea.any() and heights is not None:
-        level = float(heights[sea].max())
+        # Just above the sea floor the landform flattened (the same height would
+        # flicker against it): 1e-4 of the relief.
+        level = float(heights[sea].max()) + 1e-4 * float(np.ptp(heights))
         _put(terrain, "SEA", f"{terrain.name} Sea", _sea_mesh(f"{terrain.name} Sea", frame, level), collection)
         kept.add("SEA")
         made.append("the sea")
