@@ -10,11 +10,14 @@ a layer of lower rank, never one of the same rank (sideways) or higher
     1  io/ noise/ contour/ mesh/ preview/      file formats, noise bases, level sets,
        analysis/                               grid meshes, relief, measures (H, D, stats)
     2  terrain/                                terrains and the 1D Voss profile (uses noise/)
+       splat/                                  splat and colour maps by layer rules (io/)
     3  polyline/                               polylines (the profile method uses terrain/;
                                                the FPL study uses analysis/)
        tiles/                                  tile sets of terrains larger than memory
                                                (windows of terrain/, files through io/)
     3  refine/                                 DEM refinement (uses terrain/)
+       engines/                                game-engine sizes, formats and sidecars
+                                               (io/, splat/)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
        erosion/                                fluvial, hydraulic, thermal erosion and maps
     5  hydrology/                              rivers, lakes and the sea (erosion/'s routing,
@@ -72,6 +75,8 @@ RANK = {
     "refine": 3,  # a real DEM refined by terrain/'s midpoint method
     "erosion": 4,  # fluvial, hydraulic, thermal; uses analysis/
     "tiles": 3,  # tile sets: windows of terrain/ written through io/
+    "splat": 2,  # splat (weight) and colour maps by layer rules (PNGs through io/)
+    "engines": 3,  # game-engine presets: sizes, formats, sidecars (io/, splat/)
     "pipeline": 6,  # the terrain pipeline: terrain/, erosion/, then hydrology/
     "hydrology": 5,  # rivers, lakes, the sea: erosion/'s flow graph, polyline/'s FPL, contour/
     "tables": 7,  # every capability's parameter table, by kind

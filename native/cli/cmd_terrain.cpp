@@ -11,6 +11,7 @@
 #include "cli/param_flags.hpp"
 #include "contour/marching_squares.hpp"
 #include "core/error.hpp"
+#include "cli/engine_flags.hpp"
 #include "cli/erosion_map_flags.hpp"
 #include "erosion/erosion_params.hpp"
 #include "hydrology/hydrology.hpp"
@@ -59,6 +60,7 @@ struct TerrainOptions {
   std::vector<double> curves;
   bool stats = false, curves_world = false;
   ErosionMapFlags erosion_maps;
+  EngineFlags engine;
 };
 
 // The Mandelbrot terrain's curves of equal escape time: the contours at the
@@ -78,6 +80,17 @@ int run(TerrainOptions& o) {
   ft_terrain_params p = o.p;
   if (!o.size.empty()) parse_size(o.size, p);
   if (!o.center.empty()) parse_center(o.center, p);
+  o.engine.check(o.out);
+  if (o.engine.given() && p.method != FT_TERRAIN_MIDPOINT && p.method != FT_TERRAIN_ADDITIONS) {
+    // Methods of any size are made at the engine's size (nothing to resample);
+    // midpoint grids (2^n + 1) are resampled when the engine wants another size.
+    if (o.engine.engine == "godot") {  // Terrain3D takes rectangles: each side on its own
+      p.width = o.engine.generation_side(p.width);
+      p.height = o.engine.generation_side(p.height);
+    } else {  // Unity and Unreal take squares
+      p.width = p.height = o.engine.generation_side(std::max(p.width, p.height));
+    }
+  }
   if (!o.curves.empty() || !o.curves_out.empty()) {
     // Refused before the work, not after it.
     if (p.method != FT_TERRAIN_MANDELBROT) invalid("--curves: curves of equal escape time need --method mandelbrot");
@@ -118,7 +131,8 @@ int run(TerrainOptions& o) {
   Heightfield hf = pipeline::build_terrain(b, nullptr, o.rivers.empty() ? nullptr : &net);
   if (!o.rivers.empty()) hydrology::write_rivers(net, hf.georef(), o.rivers);
   const double seconds = clock.seconds();
-  if (!o.out.empty()) io::write_heightfield(hf, o.out);
+  if (!o.out.empty() && o.engine.given()) o.engine.write(hf, o.out);
+  else if (!o.out.empty()) io::write_heightfield(hf, o.out);
   if (!o.pov.empty()) pov::write_terrain_scene(hf, o.pov);  // PNG beside it
   if (!o.curves_out.empty()) write_escape_curves(o, p, hf);
   if (o.stats) {
@@ -180,6 +194,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_option("--out", o->out,
                                    "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), "
                                    ".exr (float) or .raw/.r16 (RAW16 + sidecar .json)");
+                    o->engine.add_to(app);
                     app.add_option("--pov", o->pov, "also write a POV-Ray scene (.pov, with its PNG beside it)");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, min, max, mean, std");
                     return [o, &app] {

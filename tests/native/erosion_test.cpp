@@ -28,20 +28,12 @@
 #include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
 #include "terrain/terrain.hpp"
+#include "test_terrains.hpp"
 
 namespace ft::erosion {
 namespace {
 
-Heightfield fbm_terrain(int32_t size, uint64_t seed, bool periodic = false) {
-  ft_terrain_params p = terrain::default_terrain_params();
-  p.method = periodic ? FT_TERRAIN_SPECTRAL : FT_TERRAIN_FBM;
-  p.width = p.height = size;
-  p.seed = seed;
-  p.hurst = 0.8;
-  Heightfield hf = terrain::generate_terrain(p);
-  hf.set_world_size(10.0);
-  return hf;
-}
+using test::fbm_terrain;
 
 // An fBm terrain as the routing sees it: its grid, its heights (a copy to
 // fill or route) and its outlet on a torus (-1 bounded).

@@ -1,5 +1,5 @@
 """The whole terrain in one library call (fracterra/pipeline.h,
-ft_terrain_build): generate -> landform -> erode -> maps (-> rivers), with one progress
+ft_terrain_build): generate -> landform -> erode -> maps, with one progress
 callback. bpy-free; the add-on's Erode step and the pytest suite call it, and
 `fracterra terrain --erode` calls the same function in the library, so the
 same settings give the same bits everywhere.
@@ -13,44 +13,51 @@ from .erosion import MAPS, erosion_struct
 from .errors import InvalidArgumentError
 from .params import fill_struct
 from .rivers import RiverNetwork, WaterArrays
-from .terrain import Heightfield, _ProgressBridge, attach_falloff_mask, attach_reference, terrain_struct
+from .terrain import Heightfield, _ProgressBridge, attach_falloff_mask, attach_map, attach_reference, terrain_struct
 
 
 def build_terrain(values, reference=None, falloff_mask=None, erosion=None, preset="NONE", maps=False, threads=0,
-                  progress=None):
+                  progress=None, erosion_mask=None, rain_map=None):
     """See _build; returns (Heightfield, maps or None)."""
-    hf, arrays, _water = _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress, None)
+    hf, arrays, _water = _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress,
+                                erosion_mask, rain_map, None)
     return hf, arrays
 
 
 def build_terrain_rivers(values, rivers, reference=None, falloff_mask=None, erosion=None, preset="NONE", maps=False,
-                         threads=0, progress=None):
-    """build_terrain with the pipeline's rivers stage: `rivers` is a list of
-    Params (core.params.RIVERS_PARAMS: each has the ft_hydrology_params field
-    it fills) and `values` their values by name. The library routes a terrain
-    that tiles as a torus (rivers wrap) and gives the rivers the terrain's own
-    sea. Returns (Heightfield, maps or None, core.rivers.WaterArrays)."""
-    return _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress, rivers)
+                         threads=0, progress=None, erosion_mask=None, rain_map=None):
+    """build_terrain with the pipeline's rivers stage (ABI 2.20): `rivers` is a
+    list of Params (core.params.RIVERS_PARAMS: each has the ft_hydrology_params
+    field it fills; None: no rivers) and `values` their values by name. The
+    library routes a terrain that tiles as a torus (rivers wrap) and gives the
+    rivers the terrain's own sea. Returns (Heightfield, maps or None,
+    core.rivers.WaterArrays or None)."""
+    return _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress, erosion_mask, rain_map,
+                  rivers)
 
 
-def _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress, rivers):
+def _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress, erosion_mask, rain_map, rivers):
     """Builds the terrain of `values` (settings by name, as generate_terrain
     takes them, with its reference and falloff mask); returns (Heightfield,
     {map name: array.array('f')} or None). Close the Heightfield (or use `with`).
 
     erosion: None (no erosion unless a preset) or {setting: value} of
     ft_erosion_params (core.params.EROSION_PARAMS); the library decides
-    whether the terrain erodes as a torus (when it tiles). preset: "NONE",
-    "VALLEYS", "RAIN", "SCREE" or "LAND": fitted to the generated terrain, it
+    whether the terrain erodes as a torus (when it tiles). preset: "NONE"
+    or a preset id of ft_build_params.erosion_preset ("VALLEYS", ..., "BADLANDS"): fitted to the generated terrain, it
     sets the pass counts and what it changes from the defaults; the rest comes
-    from `erosion`. maps: also return the six maps (ft_erosion_map order, names
+    from `erosion`. erosion_mask, rain_map: None or (width, height, values in
+    [0, 1]) spanning the terrain (terrain.attach_map): where erosion acts and
+    where rain falls. maps: also return the six maps (ft_erosion_map order, names
     in core.erosion.MAPS). progress: None or callable(fraction) -> True to
     cancel (raises CancelledError)."""
     lib = library()
     t = terrain_struct(values)
     _ref_buf = attach_reference(t, reference)
     _mask_buf = attach_falloff_mask(t, falloff_mask)
-    e = erosion_struct(erosion) if erosion is not None else None
+    e = erosion_struct(erosion) if erosion is not None or erosion_mask or rain_map else None
+    _maps_bufs = (attach_map(e, "erosion_mask", erosion_mask, "the erosion mask"),
+                  attach_map(e, "rain_map", rain_map, "the rain map"))
     p = lib.build_params_type()
     lib.check(lib.ft_build_params_init(byref(p)))
     p.terrain = ctypes.pointer(t)

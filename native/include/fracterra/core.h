@@ -58,6 +58,9 @@ extern "C" {
 /// 2.17: a given camera, terrain colours and scene light at the end of ft_pov_scene_params
 ///      (camera_given, camera_location/direction/right/up, terrain_colors, has_scene_light,
 ///      sky_color, sun_color): the add-on's export shows Blender's view and material.
+/// 2.19: splat.h: splat (weight) maps and colour maps by layer rules (ft_splat_params, described:
+///      FT_PARAMS_SPLAT; ft_splat_params_init, ft_splat_default_layers, ft_splat_weights,
+///      ft_splat_colors).
 /// 2.20: rivers as the pipeline's last stage: ft_terrain_build_rivers (pipeline.h) and
 ///      ft_build_params.rivers; a terrain that tiles gives rivers that wrap, in every front end;
 ///      ft_river_network_grid (the grid a network was traced on).

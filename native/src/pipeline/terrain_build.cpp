@@ -36,13 +36,6 @@ struct Span {
 
 bool erodes(const ft_build_params& p) { return p.erosion || p.erosion_preset != FT_EROSION_PRESET_NONE; }
 
-// The given erosion settings over the table's defaults (upgraded from an
-// older caller's struct).
-ft_erosion_params given_erosion(const ft_build_params& p) {
-  if (!p.erosion) return defaults_of<ft_erosion_params>(erosion::erosion_param_table());
-  return upgraded(erosion::erosion_param_table(), *p.erosion);
-}
-
 // A preset sets which processes run (its pass counts, all three) and every
 // setting it changes from the defaults (the uplift fitted to the terrain):
 // what `fracterra erode --preset` gives without further flags, and what the
@@ -85,16 +78,25 @@ Heightfield untorus(const Heightfield& t, int overlap, double world_size) {
 
 }  // namespace
 
-erosion::ErosionConfig build_erosion_config(const ft_build_params& p, const Heightfield& terrain) {
-  ft_erosion_params e = given_erosion(p);
-  if (p.erosion_preset != FT_EROSION_PRESET_NONE)
-    e = apply_preset(e, erosion::to_c(erosion::erosion_preset(erosion_preset_name(p.erosion_preset), terrain)));
-  e.progress = nullptr, e.progress_user = nullptr;
-  erosion::ErosionConfig c = erosion::from_c(e);
-  // One rule for every front end: a terrain that tiles erodes as a torus.
-  c.periodic = terrain::tiles_periodically(*p.terrain);
-  c.threads = p.threads;
-  return c;
+ft_erosion_params erosion_settings(const ft_erosion_params* given, const std::string& preset,
+                                    const Heightfield& terrain) {
+  const ft_erosion_params e = given ? upgraded(erosion::erosion_param_table(), *given)
+                                    : defaults_of<ft_erosion_params>(erosion::erosion_param_table());
+  if (preset.empty()) return e;
+  return apply_preset(e, erosion::to_c(erosion::erosion_preset(preset, terrain)));
+}
+
+Heightfield erode_terrain(const Heightfield& hf, const ft_erosion_params& e, int overlap, erosion::ErosionMaps* maps,
+                          erosion::MassBudget* budget) {
+  const erosion::ErosionConfig c = erosion::from_c(e);
+  if (!c.periodic || overlap == 0) return erosion::erode(hf, c, maps, budget);
+  const double world_size = hf.world_size();
+  const Heightfield eroded = erosion::erode(torus_of(hf, overlap), c, maps, budget);
+  if (maps)
+    for (Heightfield* m : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth, &maps->eroded,
+                           &maps->deposited})
+      *m = untorus(*m, overlap, world_size);
+  return untorus(eroded, overlap, world_size);
 }
 
 hydrology::HydrologyConfig build_rivers_config(const ft_build_params& p, const ft_terrain_params& t) {
@@ -102,7 +104,7 @@ hydrology::HydrologyConfig build_rivers_config(const ft_build_params& p, const f
   h.progress = nullptr, h.progress_user = nullptr;
   hydrology::HydrologyConfig c = hydrology::from_c(h);
   if (t.sea != FT_SEA_NONE) {
-    // The landform flattened this sea: the rivers end in it.
+    // The landform flattened this sea: the rivers end in it (its level: build_terrain).
     c.sea = hydrology::Sea(t.sea);
     c.sea_level = t.sea_level;
     c.sea_fraction = t.sea_fraction;
@@ -123,13 +125,12 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
   // settings (their ranges; the preset's name is the table's), the rivers'.
   terrain::validate_terrain_params(t);
   const bool erode = erodes(p) || maps;
-  if (erode) erosion::from_c(given_erosion(p));
+  if (erode) erosion::from_c(erosion_settings(p.erosion, "", Heightfield()));  // (no preset: no terrain read)
   hydrology::HydrologyConfig rc;
   if (rivers) rc = build_rivers_config(p, t);
 
   const Progress progress(p.progress, p.progress_user);
-  const double total =
-      kGenerationWeight + (erode ? kErosionWeight : 0.0) + (rivers ? kRiversWeight : 0.0);
+  const double total = kGenerationWeight + (erode ? kErosionWeight : 0.0) + (rivers ? kRiversWeight : 0.0);
   double done = 0;
   auto span = [&](double weight) {
     const Span s{progress, done / total, weight / total};
@@ -142,23 +143,14 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
   // Where the landform flattened its sea (a fraction: at the lowest height).
   const double sea_z = t.sea == FT_SEA_HEIGHT ? t.sea_level : t.sea == FT_SEA_FRACTION ? hf.stats().min : 0.0;
   const int overlap = terrain::tiles_periodically(t) ? terrain::terrain_method(t.method).period_overlap : 0;
-  const double world_size = hf.world_size();
   if (erode) {
-    ft_build_params q = p;
-    q.terrain = &t;
-    erosion::ErosionConfig c = build_erosion_config(q, hf);
+    ft_erosion_params e = erosion_settings(p.erosion, erosion_preset_name(p.erosion_preset), hf);
+    // One rule for every front end: a terrain that tiles erodes as a torus.
+    e.periodic = terrain::tiles_periodically(t);
+    e.threads = p.threads;
     Span erosion_span = span(kErosionWeight);
-    c.progress = Progress(&Span::call, &erosion_span);
-    if (overlap == 0) {
-      hf = erosion::erode(hf, c, maps);
-    } else {
-      const Heightfield eroded = erosion::erode(torus_of(hf, overlap), c, maps);
-      if (maps)
-        for (Heightfield* m : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth,
-                               &maps->eroded, &maps->deposited})
-          *m = untorus(*m, overlap, world_size);
-      hf = untorus(eroded, overlap, world_size);
-    }
+    e.progress = &Span::call, e.progress_user = &erosion_span;
+    hf = erode_terrain(hf, e, e.periodic ? overlap : 0, maps);
   }
   if (rivers) {
     // The rivers of what was made, on the torus it was eroded on.

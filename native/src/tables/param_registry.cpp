@@ -10,6 +10,7 @@
 #include "polyline/polyline_params.hpp"
 #include "povray/pov_params.hpp"
 #include "refine/dem_refine_params.hpp"
+#include "splat/splat_params.hpp"
 #include "subdiv/fractalize_params.hpp"
 #include "terrain/terrain_params.hpp"
 
@@ -29,9 +30,19 @@ const ParamTable& param_table(int32_t kind) {
     case FT_PARAMS_EROSION: return erosion::erosion_param_table();
     case FT_PARAMS_HYDROLOGY: return hydrology::hydrology_param_table();
     case FT_PARAMS_BUILD: return pipeline::build_param_table();
+    case FT_PARAMS_SPLAT: return splat::splat_param_table();
     default:
       invalid("params kind must be in 0.." + std::to_string(FT_PARAMS_KIND_COUNT - 1) + ", got " +
               std::to_string(kind));
+  }
+}
+
+bool has_param_table(int32_t kind) {
+  try {
+    param_table(kind);
+    return true;
+  } catch (const Error&) {
+    return false;
   }
 }
 

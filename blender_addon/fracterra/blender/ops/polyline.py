@@ -15,6 +15,7 @@ from ..build.polyline import default_radius, polyline_job, regenerate_job
 from ..build.strike import strike_base
 from ..common.jobs import Job, JobOperator
 from ..common.reporting import SettingsError
+from ..common.widgets import draw_placement
 from ..ui.settings_layout import draw_polyline_settings
 from ..build.objects import heightfield_of, is_polyline, sea_height
 from ..build.water import terrain_of
@@ -81,11 +82,7 @@ class FRACTERRA_OT_polyline_add(JobOperator, bpy.types.Operator, object_utils.Ad
     def draw(self, context):
         draw_polyline_settings(self.layout, self)
         if self.base_source == "POINTS":
-            col = self.layout.column()
-            col.use_property_split = True
-            col.prop(self, "align")
-            col.prop(self, "location")
-            col.prop(self, "rotation")
+            draw_placement(self.layout, self)
 
     # From the menu it runs in the background with a progress bar (Esc cancels);
     # the redo panel and scripts run execute() (progress.JobOperator).
