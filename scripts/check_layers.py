@@ -22,12 +22,12 @@ a layer of lower rank, never one of the same rank (sideways) or higher
                                                (io/, splat/)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
        erosion/                                fluvial, hydraulic, thermal erosion and maps
-    5  pipeline/                               generate -> landform -> erode -> maps in one call
-                                               (uses terrain/ and erosion/)
     5  hydrology/                              rivers, lakes and the sea (erosion/'s routing,
                                                polyline/'s FPL, contour/'s shorelines)
-    6  tables/                                 the parameter tables of every layer, by kind
-    7  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
+    6  pipeline/                               generate -> landform -> erode -> maps -> rivers
+                                               in one call (uses terrain/, erosion/, hydrology/)
+    7  tables/                                 the parameter tables of every layer, by kind
+    8  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
                                                by side: both link the static core, neither
                                                includes the other
 
@@ -80,10 +80,10 @@ RANK = {
     "planet": 3,  # fractal planets: noise/ in 3D on the sphere; terrain/'s enum tables
     "splat": 2,  # splat (weight) and colour maps by layer rules (PNGs through io/)
     "engines": 3,  # game-engine presets: sizes, formats, sidecars (io/, splat/)
-    "pipeline": 5,  # the terrain pipeline: terrain/ then erosion/
+    "pipeline": 6,  # the terrain pipeline: terrain/, erosion/, then hydrology/
     "hydrology": 5,  # rivers, lakes, the sea: erosion/'s flow graph, polyline/'s FPL, contour/
-    "tables": 6,  # every capability's parameter table, by kind
-    "capi": 7, "cli": 7,
+    "tables": 7,  # every capability's parameter table, by kind
+    "capi": 8, "cli": 8,
 }
 TOP = {"capi", "cli"}  # may include any public header
 # The namespace of each layer, where it is not ft::<folder>.

@@ -10,7 +10,8 @@ build_pkgs=(cmake make g++ pkg-config libpng-dev libfftw3-dev librandom123-dev l
             python3-setuptools python3-wheel python3-venv)  # the Python wheel (python/CMakeLists.txt)
 run_pkgs=(povray povray-includes blender python3 python3-numpy librsvg2-bin
           python3-distributed python3-dask python3-tqdm)  # the Dask tile driver (docs/scale.md)
-test_pkgs=(python3-pytest python3-matplotlib clang libclang-rt-14-dev libomp-dev xvfb xauth xdotool debootstrap gdal-bin python3-gdal)
+test_pkgs=(python3-pytest python3-matplotlib clang libclang-rt-14-dev libomp-dev xvfb xauth xdotool debootstrap gdal-bin
+           python3-gdal grass-core)  # grass-core: tests/grass, the drainage map against r.terraflow (installs in ~15 s)
 
 case "${1:-test}" in
   build) want=("${build_pkgs[@]}") ;;

@@ -125,18 +125,11 @@ int run(TerrainOptions& o) {
   b.terrain = &p;
   b.erosion = o.erosion_given ? &o.erosion : nullptr;
   b.threads = p.threads;
-  Heightfield hf = pipeline::build_terrain(b, nullptr);
-  if (!o.rivers.empty()) {
-    // The rivers of what was made, with the terrain's own sea (the landform's).
-    hydrology::HydrologyConfig c;
-    c.sea = hydrology::Sea(p.sea);
-    c.sea_level = p.sea_level;
-    c.sea_fraction = p.sea_fraction;
-    c.periodic = p.method == FT_TERRAIN_SPECTRAL;
-    c.threads = p.threads;
-    if (hf.world_size() <= 0) hf.set_world_size(10.0);
-    hydrology::write_rivers(hydrology::extract_rivers(hf, c), hf.georef(), o.rivers);
-  }
+  // The rivers are the pipeline's last stage (a terrain that tiles: they wrap;
+  // its own sea is theirs), with fracterra rivers' defaults.
+  hydrology::RiverNetwork net;
+  Heightfield hf = pipeline::build_terrain(b, nullptr, o.rivers.empty() ? nullptr : &net);
+  if (!o.rivers.empty()) hydrology::write_rivers(net, hf.georef(), o.rivers);
   const double seconds = clock.seconds();
   if (!o.out.empty() && o.engine.given()) o.engine.write(hf, o.out);
   else if (!o.out.empty()) io::write_heightfield(hf, o.out);

@@ -58,7 +58,8 @@ const std::vector<Field> kErosionFields = {
         erosion_mask_height, rain_map, rain_map_width, rain_map_height),
 };
 const std::vector<Field> kBuildFields = {
-    FT_FIELDS(ft_build_params, struct_size, threads, terrain, erosion, erosion_preset, progress, progress_user),
+    FT_FIELDS(ft_build_params, struct_size, threads, terrain, erosion, erosion_preset, progress, progress_user,
+              rivers),
 };
 const std::vector<Field> kSplatFields = {
     FT_FIELDS(ft_splat_params, struct_size, name, height_min, height_max, height_blend, slope_min, slope_max,

@@ -246,14 +246,21 @@ def test_importing_the_settings_loads_no_library():
     subprocess.run([sys.executable, "-c", code], check=True, env=os.environ.copy())
 
 
-def test_terrain_and_erosion_settings_are_separate_tables(core):
+def test_terrain_erosion_and_rivers_settings_are_separate_tables(core):
     p = core.params
     terrain, erode = {q.name for q in p.TERRAIN_PARAMS}, {q.name for q in p.ERODE_PARAMS}
-    assert not terrain & erode
+    rivers = {q.name for q in p.RIVERS_PARAMS}
+    assert not terrain & erode and not (terrain | erode) & rivers
     assert "erode_preset" in erode and "fluvial_steps" in erode and "levels" in terrain
     # Every erosion setting has its ft_erosion_params field: nothing is stored without one.
     assert all(q.field == q.name for q in p.EROSION_PARAMS)
-    assert [q.name for q in p.TERRAIN_OBJECT_PARAMS] == [q.name for q in p.TERRAIN_PARAMS + p.ERODE_PARAMS]
+    # Rivers and Lakes: the switch, then ft_hydrology_params' fields under "rivers_" (seed,
+    # smoothing and tolerance are the terrain's names too); the sea is the terrain's.
+    assert p.RIVERS_PARAMS[0].name == "rivers" and p.RIVERS_PARAMS[0].field is None
+    assert all(q.name == "rivers_" + q.field for q in p.RIVERS_PARAMS[1:])
+    assert {"rivers_min_area", "rivers_width_coefficient"} <= rivers and "rivers_sea" not in rivers
+    assert [q.name for q in p.TERRAIN_OBJECT_PARAMS] == [q.name for q in p.TERRAIN_PARAMS + p.ERODE_PARAMS
+                                                          + p.RIVERS_PARAMS]
 
 
 def test_an_override_of_a_field_the_library_lacks_is_refused(core, monkeypatch):

@@ -71,3 +71,28 @@ def test_bad_settings_are_refused_with_the_range(core):
         core.build_terrain(values, erosion={"evaporation": 2.0})
     with pytest.raises(core.InvalidArgumentError, match="NONE, VALLEYS"):
         core.build_terrain(values, preset="GLACIERS")
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_cli_and_binding_trace_the_same_rivers(core, tmp_path, case):
+    """The rivers stage (ABI 2.20): core.build_terrain_rivers (the add-on's
+    Rivers and Lakes) and `fracterra terrain --rivers` give the same rivers,
+    and a tiling terrain's water mask wraps back onto its grid."""
+    import json
+    values, flags = CASES[case]
+    out = tmp_path / "r.json"
+    subprocess.run([_cli(), "terrain", *flags, "--erode", "valleys", "--threads", "2", "--rivers", str(out)],
+                   check=True)
+    cli = json.loads(out.read_text())
+    rivers = {"rivers_min_area": 0.1}
+    hf, _maps, water = core.build_terrain_rivers({**values, **rivers}, core.params.RIVERS_PARAMS, preset="VALLEYS",
+                                                 threads=1)
+    hf.close()
+    assert water.segment_count == len(cli["polylines"])
+    want = np.concatenate([np.array(p["points"], dtype=np.float64) for p in cli["polylines"]])
+    np.testing.assert_allclose(water.xyz, want, atol=1e-9)
+    assert water.mask.shape == (water.ny, water.nx)
+    if case != "bounded fbm":  # a torus: no river leaves by an edge, the mask's last row repeats the first
+        assert "edge" not in {p["end"] for p in cli["polylines"]}
+        if case == "periodic midpoint":
+            assert np.array_equal(water.mask[-1], water.mask[0]) and np.array_equal(water.mask[:, -1], water.mask[:, 0])

@@ -13,6 +13,8 @@ from .ops import dem_io as dem_io_ops
 from .ops import fractalize as fractalize_op
 from .ops import measure as measure_op
 from .ui import panels
+from .ui import rivers_panel
+from .ops import rivers as rivers_ops
 from .ops import polyline as polyline_ops
 from .ops import pov_export
 from .common import preferences as prefs
@@ -35,6 +37,7 @@ classes = (
     polyline_ops.FRACTERRA_OT_polyline_add,
     polyline_ops.FRACTERRA_OT_polyline_regenerate,
     polyline_ops.FRACTERRA_OT_coastline_add,
+    rivers_ops.FRACTERRA_OT_rivers,
     measure_op.FRACTERRA_OT_measure,
     pov_export.FRACTERRA_OT_export_pov,
     fractalize_op.FRACTERRA_OT_fractalize,
@@ -42,6 +45,7 @@ classes = (
     dem_io_ops.FRACTERRA_OT_export_heights,
     tiles_import_op.FRACTERRA_OT_import_tiles,
     panels.FRACTERRA_PT_terrain,
+    rivers_panel.FRACTERRA_PT_rivers,
     panels.FRACTERRA_PT_polyline,
     panels.FRACTERRA_PT_measures,
     prefs.FracterraPreferences,

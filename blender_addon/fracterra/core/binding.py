@@ -17,7 +17,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 2
-ABI_MINOR_MIN = 19  # 2.19: splat.h, ft_drainage_statistics bound; 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library); 2.12: ft_erosion_preset_fitted, uplift_follows_terrain; 2.13: ft_terrain_build (pipeline.h)
+ABI_MINOR_MIN = 20  # 2.20: ft_terrain_build_rivers, ft_river_network_grid; 2.19: splat.h, ft_drainage_statistics bound; 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library); 2.12: ft_erosion_preset_fitted, uplift_follows_terrain; 2.13: ft_terrain_build (pipeline.h)
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -258,12 +258,15 @@ SIGNATURES = {
     # pipeline.h (ABI 2.13): the whole terrain in one call; maps NULL or FT_MAP_COUNT handles.
     "ft_build_params_init": (c_int32, [_Described("build")]),
     "ft_terrain_build": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF)]),
+    # (ABI 2.20) with the rivers stage: the network's handle (core/rivers.py).
+    "ft_terrain_build_rivers": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF), POINTER(c_void_p)]),
     # hydrology.h (ABI 2.15): rivers, lakes and the sea; the segment and lake structs as raw memory.
     "ft_hydrology_params_init": (c_int32, [_Described("hydrology")]),
     "ft_rivers_extract": (c_int32, [_HF, _Described("hydrology"), POINTER(c_void_p)]),
     "ft_river_network_free": (None, [c_void_p]),
     "ft_river_network_segment_count": (c_int32, [c_void_p]),
     "ft_river_network_lake_count": (c_int32, [c_void_p]),
+    "ft_river_network_grid": (c_int32, [c_void_p, _I32P, _I32P]),
     "ft_river_network_polylines": (c_int32, [c_void_p, POINTER(c_void_p)]),
     "ft_river_network_vertex_values": (c_int32, [c_void_p, c_int32, POINTER(c_double), c_int64]),
     "ft_river_network_segments": (c_int32, [c_void_p, c_void_p, c_int32]),
@@ -337,10 +340,21 @@ class Library:
         self.version = self.ft_version_string().decode()
         # The params structs as the library describes them: their layout cannot drift.
         self.param_rows, self.struct_types = {}, {}
-        for kind_name, kind in PARAMS_KINDS.items():
-            struct_name, size, rows = self.describe(kind)
-            self.param_rows[kind_name] = rows
-            self.struct_types[kind] = structure_from_rows(struct_name, rows, size, self.struct_types)
+        described = {kind: self.describe(kind) for kind in PARAMS_KINDS.values()}
+        # A struct that points to another (ft_build_params to ft_hydrology_params)
+        # is made after it, whatever their kind numbers.
+        todo = list(PARAMS_KINDS.items())
+        while todo:
+            ready = [(n, k) for n, k in todo
+                     if all(r["element_kind"] < 0 or r["element_kind"] in self.struct_types or r["type"] != "pointer"
+                            for r in described[k][2])]
+            if not ready:
+                raise LibraryNotFoundError(f"{self.path}: params structs point to each other in a circle")
+            for kind_name, kind in ready:
+                struct_name, size, rows = described[kind]
+                self.param_rows[kind_name] = rows
+                self.struct_types[kind] = structure_from_rows(struct_name, rows, size, self.struct_types)
+                todo.remove((kind_name, kind))
         self._bind({name: (restype, [POINTER(self.struct_types[PARAMS_KINDS[a.kind]])
                                      if isinstance(a, _Described) else a for a in argtypes])
                     for name, (restype, argtypes) in SIGNATURES.items()

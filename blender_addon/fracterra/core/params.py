@@ -18,7 +18,7 @@ built beside its library.
 
 import json
 import math
-from dataclasses import dataclass, field as dc_field
+from dataclasses import dataclass, field as dc_field, replace
 from pathlib import Path
 
 from .binding import PARAMS_KINDS, library
@@ -86,6 +86,7 @@ BLENDER_LIMITS = {
     },
 }
 # Library fields that are not Blender properties, and why.
+_SEA = "the terrain's own sea (its Sea setting) is the rivers' sea, in the library's pipeline"
 _THREADS = "set from the add-on preferences (Threads) for every operator"
 NOT_PROPERTIES = {
     "terrain": {"threads": _THREADS},
@@ -93,6 +94,10 @@ NOT_PROPERTIES = {
     "fractalize": {"threads": _THREADS},
     "erosion": {"threads": _THREADS,
                 "periodic": "the terrain's own Periodic setting: a tiling terrain is eroded as a torus"},
+    "hydrology": {"threads": _THREADS,
+                  "periodic": "the library's pipeline: a terrain that tiles gives rivers that wrap",
+                  "sea": _SEA, "sea_level": _SEA, "sea_fraction": _SEA,
+                  "sink_count": "declared sinks are for the CLI and the library (sinks is a pointer)"},
 }
 # How Blender shows a field (subtype, unit, precision): presentation only.
 _BY_UNIT = {"scene units": {"subtype": "DISTANCE", "unit": "LENGTH"},
@@ -350,6 +355,20 @@ EROSION_MAP_PARAMS = (
     Param("rain_map_image", "string", "", "Image", "The image whose brightness says where rain falls"),
 )
 
+# Rivers and Lakes (fracterra/hydrology.h), the pipeline's last stage: a
+# terrain object stores them beside its settings (ft_hydrology_params' fields
+# prefixed "rivers_": seed, tolerance and smoothing are names the terrain's
+# settings have already), so Regenerate retraces them.
+RIVERS = Param("rivers", "bool", False, "Rivers and Lakes",
+               "Trace the terrain's rivers, lakes and sea after generating (and eroding) it: rivers as curves as "
+               "wide as their discharge, lakes and the sea as flat water, parented to the terrain")
+RIVERS_PREFIX = "rivers_"
+
+
+def _rivers_params():
+    return (RIVERS,) + tuple(replace(p, name=RIVERS_PREFIX + p.name) for p in library_params("hydrology"))
+
+
 # Polylines (fracterra/polyline.h): Blender's own settings after the library's
 # (where the base comes from, the curve's bevel).
 BASE_SOURCES = (
@@ -383,19 +402,21 @@ def _tables():
     terrain = library_terrain + _blender_terrain_params(dyadic)
     erosion = library_params("erosion")
     erode = (_erode_preset(_description()["build"]),) + erosion + EROSION_MAP_PARAMS
+    rivers = _rivers_params()
     return {
         "DYADIC_METHODS": dyadic,
         "TERRAIN_PARAMS": terrain,  # ft_terrain_params' settings and Blender's own for a terrain
         "EROSION_PARAMS": erosion,  # ft_erosion_params' settings
         "ERODE_PARAMS": erode,  # the Erode step: its preset, then ft_erosion_params' settings
-        "TERRAIN_OBJECT_PARAMS": terrain + erode,  # what a terrain object stores
-        "PARAMS_BY_NAME": {p.name: p for p in terrain + erode},
+        "RIVERS_PARAMS": rivers,  # Rivers and Lakes: the switch, then ft_hydrology_params' settings
+        "TERRAIN_OBJECT_PARAMS": terrain + erode + rivers,  # what a terrain object stores
+        "PARAMS_BY_NAME": {p.name: p for p in terrain + erode + rivers},
         "POLYLINE_PARAMS": library_params("polyline") + _BLENDER_POLYLINE_PARAMS,
         "FRACTALIZE_PARAMS": library_params("fractalize") + _BLENDER_FRACTALIZE_PARAMS,
     }
 
 
-_LAZY = ("DYADIC_METHODS", "TERRAIN_PARAMS", "EROSION_PARAMS", "ERODE_PARAMS", "TERRAIN_OBJECT_PARAMS",
+_LAZY = ("DYADIC_METHODS", "TERRAIN_PARAMS", "EROSION_PARAMS", "ERODE_PARAMS", "RIVERS_PARAMS", "TERRAIN_OBJECT_PARAMS",
          "PARAMS_BY_NAME", "POLYLINE_PARAMS", "FRACTALIZE_PARAMS")
 
 

@@ -11,11 +11,32 @@ from ctypes import byref, c_void_p
 from .binding import enum_values, library
 from .erosion import MAPS, erosion_struct
 from .errors import InvalidArgumentError
+from .params import fill_struct
+from .rivers import RiverNetwork, WaterArrays
 from .terrain import Heightfield, _ProgressBridge, attach_falloff_mask, attach_map, attach_reference, terrain_struct
 
 
 def build_terrain(values, reference=None, falloff_mask=None, erosion=None, preset="NONE", maps=False, threads=0,
                   progress=None, erosion_mask=None, rain_map=None):
+    """See _build; returns (Heightfield, maps or None)."""
+    hf, arrays, _water = _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress,
+                                erosion_mask, rain_map, None)
+    return hf, arrays
+
+
+def build_terrain_rivers(values, rivers, reference=None, falloff_mask=None, erosion=None, preset="NONE", maps=False,
+                         threads=0, progress=None, erosion_mask=None, rain_map=None):
+    """build_terrain with the pipeline's rivers stage (ABI 2.20): `rivers` is a
+    list of Params (core.params.RIVERS_PARAMS: each has the ft_hydrology_params
+    field it fills; None: no rivers) and `values` their values by name. The
+    library routes a terrain that tiles as a torus (rivers wrap) and gives the
+    rivers the terrain's own sea. Returns (Heightfield, maps or None,
+    core.rivers.WaterArrays or None)."""
+    return _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress, erosion_mask, rain_map,
+                  rivers)
+
+
+def _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress, erosion_mask, rain_map, rivers):
     """Builds the terrain of `values` (settings by name, as generate_terrain
     takes them, with its reference and falloff mask); returns (Heightfield,
     {map name: array.array('f')} or None). Close the Heightfield (or use `with`).
@@ -47,20 +68,34 @@ def build_terrain(values, reference=None, falloff_mask=None, erosion=None, prese
         raise InvalidArgumentError(f"the erosion preset must be one of {', '.join(presets)}, got {preset!r}")
     p.erosion_preset = presets[preset]
     p.threads = threads
+    if rivers is not None:
+        h = lib.hydrology_params_type()
+        lib.check(lib.ft_hydrology_params_init(byref(h)))
+        fill_struct(h, values, rivers)
+        p.rivers = ctypes.pointer(h)
     bridge = _ProgressBridge(progress)
     p.progress = bridge.c_fn
-    out = c_void_p()
+    out, net = c_void_p(), c_void_p()
     handles = (c_void_p * len(MAPS))()
-    status = lib.ft_terrain_build(byref(p), byref(out), ctypes.cast(handles, ctypes.POINTER(c_void_p)) if maps else None)
+    map_out = ctypes.cast(handles, ctypes.POINTER(c_void_p)) if maps else None
+    if rivers is None:
+        status = lib.ft_terrain_build(byref(p), byref(out), map_out)
+    else:
+        status = lib.ft_terrain_build_rivers(byref(p), byref(out), map_out, byref(net))
     bridge.reraise()
     lib.check(status)
+    hf = Heightfield(out)
+    water = None
+    if rivers is not None:
+        with RiverNetwork(net) as network:
+            water = WaterArrays(network, hf.width, hf.height, hf.world_size / (hf.width - 1))
     if not maps:
-        return Heightfield(out), None
+        return hf, None, water
     arrays = {}
     for name, h in zip(MAPS, handles):
         with Heightfield(c_void_p(h)) as m:
             arrays[name] = m.to_array()
-    return Heightfield(out), arrays
+    return hf, arrays, water
 
 
-__all__ = ["build_terrain"]
+__all__ = ["build_terrain", "build_terrain_rivers"]

@@ -63,7 +63,10 @@ extern "C" {
 /// 2.19: splat.h: splat (weight) maps and colour maps by layer rules (ft_splat_params, described:
 ///      FT_PARAMS_SPLAT; ft_splat_params_init, ft_splat_default_layers, ft_splat_weights,
 ///      ft_splat_colors).
-#define FT_ABI_VERSION_MINOR 19
+/// 2.20: rivers as the pipeline's last stage: ft_terrain_build_rivers (pipeline.h) and
+///      ft_build_params.rivers; a terrain that tiles gives rivers that wrap, in every front end;
+///      ft_river_network_grid (the grid a network was traced on).
+#define FT_ABI_VERSION_MINOR 20
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

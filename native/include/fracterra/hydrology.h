@@ -95,6 +95,10 @@ FT_API ft_status ft_rivers_extract(const ft_heightfield* terrain, const ft_hydro
 FT_API void ft_river_network_free(ft_river_network* net);
 FT_API int32_t ft_river_network_segment_count(const ft_river_network* net);
 FT_API int32_t ft_river_network_lake_count(const ft_river_network* net);
+/// The grid the network was traced on (ABI 2.20): the terrain's, or the torus
+/// of a tiling terrain built by ft_terrain_build_rivers (one sample smaller a
+/// side for midpoint and additions). Its water mask has width x height cells.
+FT_API ft_status ft_river_network_grid(const ft_river_network* net, int32_t* width, int32_t* height);
 /// The rivers as polylines (one per segment, radius = half the width); a new
 /// handle, free with ft_polylines_free.
 FT_API ft_status ft_river_network_polylines(const ft_river_network* net, ft_polylines** out);

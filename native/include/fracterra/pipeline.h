@@ -1,6 +1,6 @@
 /// @file fracterra/pipeline.h
-/// One call for a whole terrain: generate -> landform -> erode -> maps, with
-/// one progress callback across the stages (ABI 2.13). The CLI's
+/// One call for a whole terrain: generate -> landform -> erode -> maps ->
+/// rivers, with one progress callback across the stages (ABI 2.13; rivers 2.20). The CLI's
 /// `terrain --erode` and the Blender add-on both call it, so a setting gives
 /// the same bits in every front end.
 #ifndef FRACTERRA_PIPELINE_H
@@ -8,6 +8,7 @@
 
 #include "core.h"
 #include "erosion.h"
+#include "hydrology.h"
 #include "terrain.h"
 
 #ifdef __cplusplus
@@ -44,6 +45,15 @@ typedef struct ft_build_params {
                                      ///< `erosion` (or the defaults when NULL). Default NONE.
   ft_progress_fn progress;           ///< one fraction 0..1 across all stages; non-zero cancels; may be NULL
   void* progress_user;
+  const ft_hydrology_params* rivers; ///< (2.20) the rivers stage's settings (ft_terrain_build_rivers);
+                                     ///< NULL: the defaults. Their `periodic`, `threads` and progress are
+                                     ///< ignored: a terrain that tiles is routed as the torus it is
+                                     ///< eroded on (rivers wrap; midpoint and additions: size - 1 per
+                                     ///< side, the network's water mask too). A terrain with a sea of its
+                                     ///< own (ft_terrain_params.sea) gives the rivers that sea, at the
+                                     ///< height the landform flattened it (plus 1e-3 of the relief:
+                                     ///< erosion lays sediment on its floor); the rivers'
+                                     ///< sea fields count only for a terrain without one.
 } ft_build_params;
 
 /// Fills `p` with the defaults (no terrain: set p->terrain). `p` must not be NULL.
@@ -54,6 +64,12 @@ FT_API ft_status ft_build_params_init(ft_build_params* p);
 /// (erosion.h), the maps of the result (eroded or not; free each). On
 /// failure or cancellation every output is NULL and nothing is leaked.
 FT_API ft_status ft_terrain_build(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps);
+/// ft_terrain_build, then its rivers, lakes and sea (ABI 2.20): `rivers` (not
+/// NULL) receives the network of the built terrain (free with
+/// ft_river_network_free), traced with p->rivers under the pipeline's rules
+/// (above). `maps` may be NULL. On failure or cancellation every output is NULL.
+FT_API ft_status ft_terrain_build_rivers(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps,
+                                         ft_river_network** rivers);
 
 #ifdef __cplusplus
 }

@@ -3,6 +3,7 @@
 
 #include "core/heightfield.hpp"
 #include "core/polyline_set.hpp"
+#include "hydrology/hydrology.hpp"
 
 struct ft_heightfield {
   ft::Heightfield hf;
@@ -10,4 +11,8 @@ struct ft_heightfield {
 
 struct ft_polylines {
   ft::PolylineSet set;
+};
+
+struct ft_river_network {
+  ft::hydrology::RiverNetwork net;
 };

@@ -11,10 +11,6 @@
 
 using ft::capi::guarded;
 
-struct ft_river_network {
-  ft::hydrology::RiverNetwork net;
-};
-
 namespace {
 
 void check_count(const char* what, int64_t given, int64_t want) {
@@ -54,6 +50,16 @@ FT_API int32_t ft_river_network_segment_count(const ft_river_network* net) {
 
 FT_API int32_t ft_river_network_lake_count(const ft_river_network* net) {
   return net ? int32_t(net->net.water.lakes.size()) : 0;
+}
+
+FT_API ft_status ft_river_network_grid(const ft_river_network* net, int32_t* width, int32_t* height) {
+  return guarded([&] {
+    ft::check_not_null("net", net);
+    ft::check_not_null("width", width);
+    ft::check_not_null("height", height);
+    *width = net->net.grid.width;
+    *height = net->net.grid.height;
+  });
 }
 
 FT_API ft_status ft_river_network_polylines(const ft_river_network* net, ft_polylines** out) {

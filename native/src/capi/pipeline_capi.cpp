@@ -18,15 +18,18 @@ FT_API ft_status ft_build_params_init(ft_build_params* p) {
   });
 }
 
-FT_API ft_status ft_terrain_build(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps) {
+FT_API ft_status ft_terrain_build_rivers(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps,
+                                         ft_river_network** rivers) {
   return guarded([&] {
     ft::capi::reset_out(out);
+    if (rivers) *rivers = nullptr;
     if (maps)
       for (int k = 0; k < FT_MAP_COUNT; ++k) maps[k] = nullptr;
     ft::check_not_null("params", p);
     ft::erosion::ErosionMaps m;
     auto result = std::make_unique<ft_heightfield>();
-    result->hf = ft::pipeline::build_terrain(*p, maps ? &m : nullptr);
+    auto network = rivers ? std::make_unique<ft_river_network>() : nullptr;
+    result->hf = ft::pipeline::build_terrain(*p, maps ? &m : nullptr, network ? &network->net : nullptr);
     // Every handle is made before any is handed out: a failure leaves all outputs NULL.
     std::unique_ptr<ft_heightfield> made[FT_MAP_COUNT];
     if (maps) {
@@ -38,8 +41,13 @@ FT_API ft_status ft_terrain_build(const ft_build_params* p, ft_heightfield** out
       }
       for (int k = 0; k < FT_MAP_COUNT; ++k) maps[k] = made[k].release();
     }
+    if (rivers) *rivers = network.release();
     *out = result.release();
   });
+}
+
+FT_API ft_status ft_terrain_build(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps) {
+  return ft_terrain_build_rivers(p, out, maps, nullptr);
 }
 
 }  // extern "C"

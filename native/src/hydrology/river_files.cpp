@@ -117,7 +117,7 @@ io::VectorLayer lake_layer(const RiverNetwork& net) {
   L.integer = {true, false, false, false, true, true};
   for (size_t k = 0; k < net.water.lakes.size(); ++k) {
     const Lake& l = net.water.lakes[k];
-    if (l.ring_count == 0) continue;  // cut by a periodic map's seam
+    if (l.ring_count == 0) continue;  // a lake around the whole torus has no inside
     std::vector<std::vector<Vec3>> rings;
     for (int64_t r = l.first_ring; r < l.first_ring + l.ring_count; ++r)
       rings.emplace_back(net.lake_rings.points.begin() + net.lake_rings.line_begin(r),

@@ -8,6 +8,7 @@ namespace {
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbi213 = 0x2000D;
+constexpr uint32_t kAbi220 = 0x20014;
 
 // The names are ft_erosion_preset's (lower case); PipelineTest checks them
 // against erosion_preset_names().
@@ -48,6 +49,11 @@ constexpr ft_param_info kRows[] = {
      .methods = kAll},
     {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .since = kAbi213, .element_type = FT_PARAM_OPAQUE,
      .element_kind = -1, .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback",
+     .methods = kAll},
+    {ROW(rivers, FT_PARAM_POINTER), .flags = kData, .since = kAbi220, .element_type = FT_PARAM_OPAQUE,
+     .element_kind = FT_PARAMS_HYDROLOGY, .unit = "", .label = "Rivers",
+     .doc = "The rivers stage's settings (ft_hydrology_params) for ft_terrain_build_rivers; NULL: the defaults. "
+            "A terrain that tiles gives rivers that wrap; a terrain's own sea is the rivers' sea",
      .methods = kAll},
 };
 FT_PARAM_TABLE_END

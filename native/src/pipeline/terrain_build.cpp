@@ -1,10 +1,12 @@
 #include "pipeline/terrain_build.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/error.hpp"
 #include "erosion/erosion_params.hpp"
 #include "erosion/presets.hpp"
+#include "hydrology/hydrology_params.hpp"
 #include "pipeline/build_params.hpp"
 #include "terrain/terrain.hpp"
 #include "terrain/terrain_method.hpp"
@@ -13,9 +15,9 @@
 namespace ft::pipeline {
 namespace {
 
-// Share of the progress bar the generation fills when erosion follows
-// (erosion is the longer part).
-constexpr double kGenerationShare = 0.25;
+// Weights of the stages on the one progress bar (erosion is the longest;
+// rivers take about as long as generating).
+constexpr double kGenerationWeight = 0.25, kErosionWeight = 0.75, kRiversWeight = 0.1;
 
 // A stage's share [start, start + span) of the build's one progress bar.
 struct Span {
@@ -97,31 +99,77 @@ Heightfield erode_terrain(const Heightfield& hf, const ft_erosion_params& e, int
   return untorus(eroded, overlap, world_size);
 }
 
-Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* maps) {
+hydrology::HydrologyConfig build_rivers_config(const ft_build_params& p, const ft_terrain_params& t) {
+  ft_hydrology_params h = p.rivers ? *p.rivers : defaults_of<ft_hydrology_params>(hydrology::hydrology_param_table());
+  h.progress = nullptr, h.progress_user = nullptr;
+  hydrology::HydrologyConfig c = hydrology::from_c(h);
+  if (t.sea != FT_SEA_NONE) {
+    // The landform flattened this sea: the rivers end in it (its level: build_terrain).
+    c.sea = hydrology::Sea(t.sea);
+    c.sea_level = t.sea_level;
+    c.sea_fraction = t.sea_fraction;
+  }
+  // One rule for every front end: a terrain that tiles is a torus.
+  c.periodic = terrain::tiles_periodically(t);
+  c.threads = p.threads;
+  return c;
+}
+
+Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* maps, hydrology::RiverNetwork* rivers) {
   const ft_build_params p = upgraded(build_param_table(), given);
   check_ranges(build_param_table(), &p);
   check_not_null("terrain", p.terrain);
   ft_terrain_params t = upgraded(terrain::terrain_param_table(), *p.terrain);
   t.threads = p.threads;
   // Everything is checked before any work: the terrain, then the erosion
-  // settings (their ranges; the preset's name is the table's).
+  // settings (their ranges; the preset's name is the table's), the rivers'.
   terrain::validate_terrain_params(t);
   const bool erode = erodes(p) || maps;
   if (erode) erosion::from_c(erosion_settings(p.erosion, "", Heightfield()));  // (no preset: no terrain read)
+  hydrology::HydrologyConfig rc;
+  if (rivers) rc = build_rivers_config(p, t);
 
   const Progress progress(p.progress, p.progress_user);
-  Span generation{progress, 0.0, erode ? kGenerationShare : 1.0};
+  const double total = kGenerationWeight + (erode ? kErosionWeight : 0.0) + (rivers ? kRiversWeight : 0.0);
+  double done = 0;
+  auto span = [&](double weight) {
+    const Span s{progress, done / total, weight / total};
+    done += weight;
+    return s;
+  };
+  Span generation = span(kGenerationWeight);
   t.progress = &Span::call, t.progress_user = &generation;
   Heightfield hf = terrain::generate_terrain(t);  // with its landform
-  if (!erode) return hf;
-
-  ft_erosion_params e = erosion_settings(p.erosion, erosion_preset_name(p.erosion_preset), hf);
-  // One rule for every front end: a terrain that tiles erodes as a torus.
-  e.periodic = terrain::tiles_periodically(t);
-  e.threads = p.threads;
-  Span erosion_span{progress, kGenerationShare, 1.0 - kGenerationShare};
-  e.progress = &Span::call, e.progress_user = &erosion_span;
-  return erode_terrain(hf, e, e.periodic ? terrain::terrain_method(t.method).period_overlap : 0, maps);
+  // Where the landform flattened its sea (a fraction: at the lowest height).
+  const double sea_z = t.sea == FT_SEA_HEIGHT ? t.sea_level : t.sea == FT_SEA_FRACTION ? hf.stats().min : 0.0;
+  const int overlap = terrain::tiles_periodically(t) ? terrain::terrain_method(t.method).period_overlap : 0;
+  if (erode) {
+    ft_erosion_params e = erosion_settings(p.erosion, erosion_preset_name(p.erosion_preset), hf);
+    // One rule for every front end: a terrain that tiles erodes as a torus.
+    e.periodic = terrain::tiles_periodically(t);
+    e.threads = p.threads;
+    Span erosion_span = span(kErosionWeight);
+    e.progress = &Span::call, e.progress_user = &erosion_span;
+    hf = erode_terrain(hf, e, e.periodic ? overlap : 0, maps);
+  }
+  if (rivers) {
+    // The rivers of what was made, on the torus it was eroded on.
+    if (t.sea != FT_SEA_NONE) {
+      // The rivers' sea is the landform's flat sea, as a height: erosion lays
+      // sediment on its floor (an eroded island, 69% of its cells flattened at
+      // 0: half of them within 1e-9 of it, 80% within 2e-4 of the relief, 95%
+      // within 5e-3), so the level takes 1e-3 of the relief above it; at the
+      // bare level (or a fraction of the eroded heights) most of the sea was
+      // land and the rivers ran on across its floor into hundreds of lakes.
+      const HeightStats st = hf.stats();
+      rc.sea = hydrology::Sea::kHeight;
+      rc.sea_level = std::clamp(sea_z + 1e-3 * (st.max - st.min), double(st.min), double(st.max));
+    }
+    Span rivers_span = span(kRiversWeight);
+    rc.progress = Progress(&Span::call, &rivers_span);
+    *rivers = overlap == 0 ? hydrology::extract_rivers(hf, rc) : hydrology::extract_rivers(torus_of(hf, overlap), rc);
+  }
+  return hf;
 }
 
 }  // namespace ft::pipeline

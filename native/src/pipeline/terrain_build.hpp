@@ -1,8 +1,8 @@
-// The terrain pipeline: generate -> landform -> erode -> maps, one call with
-// one progress callback (fracterra/pipeline.h). The CLI and the C ABI (so the
-// Blender add-on) both come through here, so the stages are put together
-// once; `fracterra erode --in` runs the erode stage alone through the same
-// calls. A later stage (rivers) is one more step in build_terrain.
+// The terrain pipeline: generate -> landform -> erode -> maps -> rivers, one
+// call with one progress callback (fracterra/pipeline.h). The CLI and the C
+// ABI (so the Blender add-on) both come through here, so the stages are put
+// together once, with one rule for a terrain that tiles (a torus);
+// `fracterra erode --in` runs the erode stage alone through the same calls.
 #pragma once
 
 #include <string>
@@ -10,14 +10,18 @@
 #include "core/heightfield.hpp"
 #include "erosion/erosion.hpp"
 #include "fracterra/pipeline.h"
+#include "hydrology/hydrology.hpp"
 
 namespace ft::pipeline {
 
 // Validates everything before any work (the terrain's and the erosion's
 // params, the preset), then runs the stages. `maps` may be null; when not,
 // it receives the result's maps (of the eroded terrain, or of the generated
-// one without erosion). Throws ft::Error naming what is wrong.
-Heightfield build_terrain(const ft_build_params& p, erosion::ErosionMaps* maps);
+// one without erosion). `rivers` may be null; when not, it receives the
+// rivers, lakes and sea of the result (p.rivers' settings, or the defaults,
+// under build_rivers_config's rules). Throws ft::Error naming what is wrong.
+Heightfield build_terrain(const ft_build_params& p, erosion::ErosionMaps* maps,
+                          hydrology::RiverNetwork* rivers = nullptr);
 
 // The erosion settings for `terrain`: `given` (null: the table's defaults)
 // with the preset named `preset` (an id, label or old id; "": none) fitted to
@@ -35,5 +39,10 @@ ft_erosion_params erosion_settings(const ft_erosion_params* given, const std::st
 // back after. `maps` and `budget` may be null.
 Heightfield erode_terrain(const Heightfield& hf, const ft_erosion_params& e, int overlap, erosion::ErosionMaps* maps,
                           erosion::MassBudget* budget = nullptr);
+
+// The rivers stage's settings for terrain `t` (upgraded and range-checked):
+// p.rivers (or the defaults) with the terrain's torus rule (periodic when it
+// tiles), the terrain's own sea when it has one, the build's threads; no progress.
+hydrology::HydrologyConfig build_rivers_config(const ft_build_params& p, const ft_terrain_params& t);
 
 }  // namespace ft::pipeline

@@ -8,7 +8,7 @@ import bpy
 import numpy as np
 
 from ... import core
-from ...core import erosion
+from ...core import erosion, params
 from .mesh import SLOPE_ATTRIBUTE
 
 # Point attributes (0..1) beside fracterra_height and fracterra_slope.
@@ -34,7 +34,8 @@ def generate_and_erode(values, reference, progress, threads, grid_of, falloff_ma
     settings ask for it (a preset: its run and rates, Strength and the rest as
     set; Custom: everything as set), where `maps` say (erosion_masks.maps_for:
     the erosion mask and the rain map, or None); returns grid_of(heightfield)
-    with `.erosion_maps` ({attribute: float32 array} or None). Runs in the
+    with `.erosion_maps` ({attribute: float32 array} or None) and `.water`
+    (core.rivers.WaterArrays, or None without Rivers and Lakes). Runs in the
     worker thread."""
     preset = values.get("erode_preset", "NONE")
     eroded = preset not in ("NONE", "CUSTOM") or (preset == "CUSTOM" and erosion.requested(values))
@@ -47,15 +48,18 @@ def generate_and_erode(values, reference, progress, threads, grid_of, falloff_ma
             return cancelled[0]
         return report
 
-    hf, maps = core.build_terrain(values, reference=reference, falloff_mask=falloff_mask,
-                                  erosion=values if eroded else None,
-                                  preset="NONE" if preset == "CUSTOM" else preset, maps=eroded,
-                                  threads=threads, progress=part(0.0, LIBRARY_SHARE),
-                                  **(maps if eroded and maps else {}))
+    # With Rivers and Lakes on, the pipeline's last stage traces them too (water.py builds them).
+    hf, maps, water = core.build_terrain_rivers(values, params.RIVERS_PARAMS if values.get("rivers") else None,
+                                                reference=reference, falloff_mask=falloff_mask,
+                                                erosion=values if eroded else None,
+                                                preset="NONE" if preset == "CUSTOM" else preset, maps=eroded,
+                                                threads=threads, progress=part(0.0, LIBRARY_SHARE),
+                                                **(maps if eroded and maps else {}))
     with hf:
         g = grid_of(hf, part(LIBRARY_SHARE, 0.95 - LIBRARY_SHARE))
         spacing = values["world_size"] / (hf.width - 1)
     g.erosion_maps = None
+    g.water = water
     if eroded:
         g.erosion_maps = attribute_maps({k: np.frombuffer(v, dtype=np.float32) for k, v in maps.items()},
                                         spacing * spacing)

@@ -6,7 +6,7 @@ import bpy
 import numpy as np
 
 
-def _loop_total_writable():
+def loop_total_writable():
     # Blender 4.0 derives polygon sizes from loop_start; 3.x needs loop_total.
     return not bpy.types.MeshPolygon.bl_rna.properties["loop_total"].is_readonly
 
@@ -34,7 +34,7 @@ def fill_grid_mesh_steps(mesh, g, smooth=True):
     mesh.loops.foreach_set("edge_index", g.loop_edges)
     yield 0.6
     mesh.polygons.foreach_set("loop_start", g.loop_starts)
-    if _loop_total_writable():
+    if loop_total_writable():
         mesh.polygons.foreach_set("loop_total", g.loop_totals)
     yield 0.7
     set_uvs(mesh, g.uv)

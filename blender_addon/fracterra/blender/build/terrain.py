@@ -18,6 +18,7 @@ from . import erosion as erosion_ui
 from . import erosion_masks
 from . import falloff_mask
 from . import mesh as mesh_build
+from . import water as water_build
 from .objects import mesh_level, remember_settings
 from ..common.images import image_luminance
 from ..common.preferences import library_threads
@@ -148,7 +149,21 @@ def _build_new_mesh(g, values, name, settings=None):
     except BaseException:  # GeneratorExit too: a cancel leaves nothing behind
         bpy.data.meshes.remove(mesh)
         raise
+    water_build.remember(mesh, _water_of(g))  # built once the operator has made its object
     return mesh, f"{g.nx} x {g.ny} vertices"
+
+
+def _water_of(g):
+    """(WaterArrays, heights (ny, nx)) of a built grid, or None without Rivers and Lakes."""
+    water = getattr(g, "water", None)
+    if water is None:
+        return None
+    return water, np.frombuffer(g.co, dtype=np.float32)[2::3].reshape(g.ny, g.nx)
+
+
+def build_water(obj, pending):
+    """The water objects of terrain `obj` from _water_of's value (None: removes them); a summary."""
+    return water_build.build_water(obj, *pending) if pending is not None else water_build.build_water(obj, None)
 
 
 def new_terrain_job(values, context, name="Fractal Terrain", frame=None, preview=False):
@@ -194,11 +209,15 @@ def _build_in_place(obj, g, values, settings, groups=None):
             mesh_build.set_uvs(mesh, g.uv if values["uvs"] else None)
         mesh_build.set_smooth(mesh, values["smooth"])
         remember_settings(mesh, settings)
-        return f"{g.nx} x {g.ny} terrain heights rewritten"
+        return _with_water(f"{g.nx} x {g.ny} terrain heights rewritten", build_water(obj, _water_of(g)))
     new, _summary = yield from _build_new_mesh(g, values, mesh.name, settings)
     _swap_mesh(obj, new)
     erosion_masks.carry_groups(obj, groups or {}, g.nx, g.ny)
-    return f"{g.nx} x {g.ny} terrain mesh rebuilt"
+    return _with_water(f"{g.nx} x {g.ny} terrain mesh rebuilt", build_water(obj, water_build.take(new)))
+
+
+def _with_water(summary, water):
+    return f"{summary}; {water}" if water else summary
 
 
 def regenerate_job(obj, context, preview=False):

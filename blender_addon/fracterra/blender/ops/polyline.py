@@ -12,11 +12,13 @@ from ...core import params
 from ..ui import properties as props
 from ..build.curve import LineArrays, fill_curve_steps, link_new_object, new_curve, spline_nodes
 from ..build.polyline import default_radius, polyline_job, regenerate_job
+from ..build.strike import strike_base
 from ..common.jobs import Job, JobOperator
 from ..common.reporting import SettingsError
 from ..common.widgets import draw_placement
 from ..ui.settings_layout import draw_polyline_settings
-from ..build.objects import heightfield_of, is_polyline, is_terrain, sea_height
+from ..build.objects import heightfield_of, is_polyline, sea_height
+from ..build.water import terrain_of
 
 
 def edge_chain(mesh):
@@ -86,6 +88,12 @@ class FRACTERRA_OT_polyline_add(JobOperator, bpy.types.Operator, object_utils.Ad
     # the redo panel and scripts run execute() (progress.JobOperator).
     def make_job(self, context):
         values = params.values_of(self, params.POLYLINE_PARAMS)
+        is_set = self.properties.is_property_set
+        if values["base_source"] == "POINTS" and not (is_set("start") or is_set("end")):
+            # The default bolt over a terrain strikes its surface under the 3D cursor.
+            self.start, self.end = strike_base(context, object_utils.add_object_align_init(context, self),
+                                               values["start"], values["end"])
+            values = params.values_of(self, params.POLYLINE_PARAMS)
         base, self._matrix = base_polyline(values, context)
         if not self.properties.is_property_set("radius"):
             self.radius = values["radius"] = default_radius(base)
@@ -157,14 +165,10 @@ COASTLINE_NEEDS = "Select a fractal terrain (Add > Mesh > Fractal Terrain) in Ob
 
 
 def coastline_terrain(obj):
-    """The terrain a coastline is drawn for: the active terrain, or the parent of
-    the active coastline (what is active right after the operator, when its redo
-    panel re-runs it)."""
-    if is_terrain(obj):
-        return obj
-    if obj is not None and obj.get("fracterra_kind") == "COASTLINE" and is_terrain(obj.parent):
-        return obj.parent
-    return None
+    """The terrain a coastline is drawn for: the active terrain, or the terrain
+    of the active coastline or water object (what is active right after the
+    operator, when its redo panel re-runs it)."""
+    return terrain_of(obj)
 
 
 class FRACTERRA_OT_coastline_add(JobOperator, bpy.types.Operator):

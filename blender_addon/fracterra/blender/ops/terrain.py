@@ -10,7 +10,8 @@ from ..ui import properties as props
 from ..common.jobs import JobOperator
 from ..ui.settings_layout import draw_settings
 from ..build.objects import is_terrain, restore_settings
-from ..build.terrain import new_terrain_job, regenerate_job
+from ..build.terrain import build_water, new_terrain_job, regenerate_job
+from ..build.water import take as take_water, terrain_of
 from ..common.widgets import draw_placement, draw_size
 
 
@@ -47,6 +48,9 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
         settings = obj.fracterra_terrain
         props.copy_settings(self, settings)
         settings.is_terrain = True
+        water = build_water(obj, take_water(mesh))
+        if water:
+            summary = f"{summary}; {water}"
         if getattr(self, "_preview", False):
             self.report({"INFO"}, f"Fractal terrain: Preview, {summary} in {self.job_seconds:.2f} s; "
                                   "Build Final in the sidebar builds Levels")
@@ -62,6 +66,8 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
 FRACTERRA_OT_terrain_add.__annotations__ = {
     **props.terrain_annotations(),
     **props.terrain_annotations(param_list=params.EROSION_PARAMS + params.EROSION_MAP_PARAMS, options={"SKIP_SAVE"}),
+    # Rivers and Lakes, likewise: a new terrain starts without them unless asked.
+    **props.terrain_annotations(param_list=params.RIVERS_PARAMS, options={"SKIP_SAVE"}),
     "erode_preset": erosion_layout.preset_property(options={"SKIP_SAVE"})}
 
 
@@ -73,12 +79,11 @@ class FRACTERRA_OT_terrain_regenerate(JobOperator, bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        obj = context.active_object
-        return (obj is not None and obj.type == "MESH" and context.mode == "OBJECT"
-                and obj.fracterra_terrain.is_terrain)
+        # The active terrain, or the terrain of the active water object or coastline.
+        return context.mode == "OBJECT" and terrain_of(context.active_object) is not None
 
     def make_job(self, context):
-        obj = context.active_object
+        obj = terrain_of(context.active_object)
         obj.fracterra_terrain.last_error = ""
         self._terrain_name = obj.name
         return regenerate_job(obj, context)

@@ -7,6 +7,7 @@ import bpy
 
 from .settings_layout import draw_polyline_settings, draw_settings
 from ..build.objects import geometry_fingerprint, is_measurable, is_polyline, mesh_level
+from ..build.water import terrain_of
 from ...core import params
 from ...core.params import grid_shape
 from ..common.widgets import draw_library_problem, draw_size, draw_wrapped
@@ -64,12 +65,15 @@ class FRACTERRA_PT_terrain(_SidebarPanel, bpy.types.Panel):
     def draw(self, context):
         layout = self.layout
         draw_library_problem(layout)
-        obj = context.active_object
-        settings = getattr(obj, "fracterra_terrain", None) if obj is not None else None
-        if settings is None or not settings.is_terrain:
+        # A terrain, or one of its water objects or its coastline: the terrain's settings.
+        obj = terrain_of(context.active_object)
+        settings = obj.fracterra_terrain if obj is not None else None
+        if settings is None:
             draw_wrapped(layout, "The active object is not a fractal terrain.", width=32)
             layout.operator(TERRAIN_ADD, text="Add Fractal Terrain", icon="RNDCURVE")
             return
+        if obj != context.active_object:
+            layout.label(text=f"Terrain: {obj.name}", icon="MESH_GRID")
         level = mesh_level(obj)
         draw_regenerate(layout, settings, TERRAIN_REGENERATE,
                         text="Build Final" if level is not None and level[0] == "Preview" else "Regenerate")

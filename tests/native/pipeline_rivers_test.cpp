@@ -1,0 +1,56 @@
+// The rivers stage of the library's pipeline is what the CLI writes:
+// `fracterra terrain ... --rivers r.json` is ft::pipeline::build_terrain with
+// rivers, point for point, on a tiling terrain (where the torus rule matters)
+// and a bounded one. Broken (the CLI deciding periodicity itself, spectral
+// only, as it did): the periodic case differs in its segment count.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+#include "hydrology/river_files.hpp"
+#include "pipeline/build_params.hpp"
+#include "pipeline/terrain_build.hpp"
+#include "terrain/terrain.hpp"
+
+namespace ft::pipeline {
+namespace {
+
+TEST(PipelineRivers, TheCliWritesTheLibrarysRivers) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("ft_pipeline_rivers_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  for (const bool periodic : {true, false}) {
+    const std::string json = (dir / "r.json").string();
+    const std::string cmd = std::string(FT_CLI_PATH) + " terrain --method midpoint --levels 7 --seed 3 " +
+                            (periodic ? "--periodic " : "") + "--erode valleys --threads 2 --rivers " + json +
+                            " > " + (dir / "log.txt").string() + " 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    const hydrology::WaterScene cli = hydrology::read_water_json(json);
+
+    ft_terrain_params t = terrain::default_terrain_params();
+    t.method = FT_TERRAIN_MIDPOINT;
+    t.levels = 7;
+    t.seed = 3;
+    t.periodic = periodic;
+    ft_build_params b = defaults_of<ft_build_params>(build_param_table());
+    b.terrain = &t;
+    b.erosion_preset = FT_EROSION_PRESET_VALLEYS;
+    b.threads = 2;
+    hydrology::RiverNetwork net;
+    build_terrain(b, nullptr, &net);
+
+    ASSERT_EQ(cli.rivers.line_count(), net.lines.line_count()) << "periodic " << periodic;
+    ASSERT_EQ(cli.rivers.points.size(), net.lines.points.size()) << "periodic " << periodic;
+    for (size_t v = 0; v < net.lines.points.size(); ++v)
+      for (int k = 0; k < 3; ++k)
+        ASSERT_NEAR(cli.rivers.points[v][k], net.lines.points[v][k], 1e-9) << "vertex " << v;
+    EXPECT_EQ(cli.lakes.size(), net.water.lakes.size());
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace ft::pipeline
