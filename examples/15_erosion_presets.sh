@@ -2,7 +2,7 @@
 # Every erosion preset on the add-on's default mountain (midpoint, sigma 2,
 # levelling 1, height offset 1.5, radial falloff 0.9; 10 world units) on
 # three seeds, as shaded reliefs, beside the uneroded terrain, at the default
-# strength; and one terrain as a preview (levels 8) and a final (levels 10):
+# strength (docs/erosion.md; the preview and final pairs there are Blender's):
 #   bash examples/15_erosion_presets.sh OUT_DIR [LEVELS]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -14,8 +14,10 @@ mountain=(--method midpoint --sigma 2 --levelling 1 --height-offset 1.5 --fallof
 for seed in 1 2 3; do
   "$ft" terrain "${mountain[@]}" --levels "$levels" --seed "$seed" --out "$out/uneroded-seed$seed.npy"
   "$ft" relief --in "$out/uneroded-seed$seed.npy" --out "$out/uneroded-seed$seed.png" --sea-fraction 0
-  for preset in gentle_valleys rugged_mountains badlands alluvial_fans scree_slopes; do
-    "$ft" terrain "${mountain[@]}" --levels "$levels" --seed "$seed" --erode "$preset" --out "$out/$preset-seed$seed.npy"
+  # `terrain --erode` takes the pipeline's names (valleys, ...); the files are named by the preset ids.
+  for pair in gentle_valleys:valleys rugged_mountains:land badlands:badlands alluvial_fans:rain scree_slopes:scree; do
+    preset="${pair%%:*}"
+    "$ft" terrain "${mountain[@]}" --levels "$levels" --seed "$seed" --erode "${pair##*:}" --out "$out/$preset-seed$seed.npy"
     "$ft" relief --in "$out/$preset-seed$seed.npy" --out "$out/$preset-seed$seed.png" --sea-fraction 0
   done
 done

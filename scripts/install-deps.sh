@@ -6,10 +6,11 @@ set -euo pipefail
 
 build_pkgs=(cmake make g++ pkg-config libpng-dev libfftw3-dev librandom123-dev libcli11-dev
             nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libosd-dev
-            libtinyobjloader-dev libnoise-dev libgdal-dev libopenexr-dev)
+            libtinyobjloader-dev libnoise-dev libgdal-dev libopenexr-dev
+            python3-setuptools python3-wheel python3-venv)  # the Python wheel (python/CMakeLists.txt)
 run_pkgs=(povray povray-includes blender python3 python3-numpy librsvg2-bin
           python3-distributed python3-dask python3-tqdm)  # the Dask tile driver (docs/scale.md)
-test_pkgs=(python3-pytest clang libclang-rt-14-dev libomp-dev xvfb xauth xdotool debootstrap gdal-bin python3-gdal)
+test_pkgs=(python3-pytest python3-matplotlib clang libclang-rt-14-dev libomp-dev xvfb xauth xdotool debootstrap gdal-bin python3-gdal)
 
 case "${1:-test}" in
   build) want=("${build_pkgs[@]}") ;;

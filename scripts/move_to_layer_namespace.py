@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Moves a layer, native/src/X/, from the plain namespace `ft` into `ft::X` and
 qualifies its names in every other C++ file (other layers, cli/, capi/,
-native/bench, tests/). Used for noise/ ... analysis/ (issue 25); kept for the
-layers still in scripts/check_layers.py's NAMESPACE_TODO (terrain/, polyline/).
+native/bench, tests/). Used for every layer (issue 25), terrain/ and polyline/
+last; kept for code brought in from older branches (run it again: it also
+qualifies new callers of a layer already moved).
 
     scripts/move_to_layer_namespace.py X [EXTRA_NAME ...]
 

@@ -40,10 +40,10 @@ ft::Heightfield grid(int32_t n) {
     hf.set_world_size(2.0);  // A.N.T.'s default mesh size
     return hf;
   }
-  ft_terrain_params p = ft::default_terrain_params();
+  ft_terrain_params p = ft::terrain::default_terrain_params();
   p.method = FT_TERRAIN_FBM;
   p.width = p.height = n;
-  return ft::generate_terrain(p);
+  return ft::terrain::generate_terrain(p);
 }
 
 void AntPasses(benchmark::State& state) {
@@ -103,12 +103,12 @@ void Fluvial(benchmark::State& state) {
 BENCHMARK(Fluvial)->Arg(513)->Arg(1025)->Arg(2049)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 void LandPreset(benchmark::State& state) {
-  ft_terrain_params p = ft::default_terrain_params();
+  ft_terrain_params p = ft::terrain::default_terrain_params();
   p.method = FT_TERRAIN_FBM;
   p.width = p.height = int32_t(state.range(0));
   p.hurst = 0.8;
   p.seed = 1;
-  ft::Heightfield src = ft::generate_terrain(p);
+  ft::Heightfield src = ft::terrain::generate_terrain(p);
   src.set_world_size(10.0);
   ErosionConfig c = erosion_preset("land", src);
   c.threads = bench_threads();

@@ -88,12 +88,12 @@ void BM_FracterraFbm(benchmark::State& state) {
 }
 
 void BM_SpectralSynthesis(benchmark::State& state) {
-  ft::SpectralConfig c;
+  ft::terrain::SpectralConfig c;
   c.width = c.height = int(state.range(0));
   Timer timer;
   for (auto _ : state) {
     timer.run([&] {
-      ft::Heightfield hf = ft::spectral_synthesis(c);
+      ft::Heightfield hf = ft::terrain::spectral_synthesis(c);
       benchmark::DoNotOptimize(hf.data());
     });
   }

@@ -45,14 +45,14 @@ void BM_FplNaiveRecursionPushBack(benchmark::State& state) {
 BENCHMARK(BM_FplNaiveRecursionPushBack)->Unit(benchmark::kMillisecond);
 
 void BM_FplBlockedFill(benchmark::State& state) {
-  ft::FplConfig c;
+  ft::polyline::FplConfig c;
   c.depth = kDepth;
   c.spread = 0.2;
-  c.rng = state.range(0) ? ft::FplRng::kNormal : ft::FplRng::kUniform;
+  c.rng = state.range(0) ? ft::polyline::FplRng::kNormal : ft::polyline::FplRng::kUniform;
   c.threads = int(state.range(1));
   std::vector<ft::Vec3> out(kVertices);
   for (auto _ : state) {
-    ft::fpl_segment(c, {0, 0, 0}, {1, 0, 0}, 0, out.data());
+    ft::polyline::fpl_segment(c, {0, 0, 0}, {1, 0, 0}, 0, out.data());
     benchmark::DoNotOptimize(out.data());
   }
   state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(kVertices * sizeof(ft::Vec3)));
@@ -65,12 +65,12 @@ BENCHMARK(BM_FplBlockedFill)->Args({0, 1})->Args({1, 1})->Args({0, 2})->Args({1,
 // The whole public path: validation, PolylineSet allocation (zero-filled by
 // std::vector), radii, the fill.
 void BM_FplGeneratePolylines(benchmark::State& state) {
-  ft_polyline_params p = ft::default_polyline_params();
+  ft_polyline_params p = ft::polyline::default_polyline_params();
   p.depth = kDepth;
   p.spread = 0.2;
   p.threads = 1;
   for (auto _ : state) {
-    ft::PolylineSet s = ft::generate_polylines(p);
+    ft::PolylineSet s = ft::polyline::generate_polylines(p);
     benchmark::DoNotOptimize(s.points.data());
   }
   state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(kVertices * sizeof(ft::Vec3)));

@@ -147,10 +147,10 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
 
-    ft_terrain_params p = default_terrain_params();
+    ft_terrain_params p = terrain::default_terrain_params();
     p.levels = 10;
     p.seed = 7;
-    const Heightfield hf = generate_terrain(p);
+    const Heightfield hf = terrain::generate_terrain(p);
     const HeightStats st = hf.stats();
     const std::string png = (dir / "hf.png").string();
     const auto pl = pov::write_heightfield_png(hf, png, 1, 1, 0.2 / (st.max - st.min));

@@ -55,12 +55,12 @@ void BM_NaiveMidpoint(benchmark::State& state) {
 }
 
 void BM_FracterraMidpoint(benchmark::State& state) {
-  ft_terrain_params p = ft::default_terrain_params();
+  ft_terrain_params p = ft::terrain::default_terrain_params();
   p.levels = int(state.range(0));
   p.hurst = 0.8;
   p.threads = int(state.range(1));
   for (auto _ : state) {
-    ft::Heightfield hf = ft::generate_terrain(p);
+    ft::Heightfield hf = ft::terrain::generate_terrain(p);
     benchmark::DoNotOptimize(hf.data());
   }
   const double side = double((1 << p.levels) + 1);
@@ -70,12 +70,12 @@ void BM_FracterraMidpoint(benchmark::State& state) {
 // A tile of a levels-16 terrain (65537^2, never whole): the window of
 // tile (7, 9) of `fracterra tiles --tile 4096`, halo included.
 void BM_MidpointWindow(benchmark::State& state) {
-  ft_terrain_params p = ft::default_terrain_params();
+  ft_terrain_params p = ft::terrain::default_terrain_params();
   p.levels = 16;
   p.hurst = 0.8;
   p.threads = int(state.range(0));
   for (auto _ : state) {
-    ft::Heightfield hf = ft::generate_terrain_window(p, 0, 7 * 4096, 9 * 4096, 4097, 4097);
+    ft::Heightfield hf = ft::terrain::generate_terrain_window(p, 0, 7 * 4096, 9 * 4096, 4097, 4097);
     benchmark::DoNotOptimize(hf.data());
   }
   state.counters["samples/s"] = benchmark::Counter(4097.0 * 4097.0, benchmark::Counter::kIsIterationInvariantRate);

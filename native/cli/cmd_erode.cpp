@@ -7,6 +7,7 @@
 
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/engine_flags.hpp"
 #include "cli/erosion_map_flags.hpp"
 #include "cli/param_flags.hpp"
 #include "core/error.hpp"
@@ -14,6 +15,7 @@
 #include "erosion/erosion_params.hpp"
 #include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
+#include "pipeline/terrain_build.hpp"
 
 namespace ft::cli {
 namespace {
@@ -23,9 +25,10 @@ struct ErodeCli {
   double world_size = 0;
   bool stats = false;
   ErosionMapFlags map_files;
+  EngineFlags engine;
   // The settings from ft_erosion_params' table (erosion_params.cpp): what
   // the flags wrote over the table's defaults.
-  ft_erosion_params flags = defaults_of<ft_erosion_params>(erosion_param_table());
+  ft_erosion_params flags = defaults_of<ft_erosion_params>(erosion::erosion_param_table());
 };
 
 // The flag names erode had before its flags came from the table (issue 15's
@@ -35,18 +38,14 @@ const std::map<std::string, std::string> kAliases = {{"fluvial_steps", "--fluvia
                                                      {"thermal_iterations", "--thermal"},
                                                      {"talus_degrees", "--talus"}};
 
-// The settings to erode `hf` with: the flags over the table's defaults, or
-// over the preset when one is named (a flag given on the command line wins
-// over the preset's value), and the map files.
-erosion::ErosionConfig settings(ErodeCli& o, const CLI::App& app, const Heightfield& hf) {
-  ft_erosion_params p = o.flags;
-  if (!o.preset.empty()) {
-    p = erosion::to_c(erosion::erosion_preset(o.preset, hf));
-    overlay_given_flags(app, erosion_param_table(), &o.flags, &p);
-  }
-  erosion::ErosionConfig c = erosion::from_c(p);
-  o.map_files.apply(c);
-  return c;
+// The settings to erode `hf` with, by the pipeline's rule (the flags over
+// the table's defaults, the preset fitted to `hf` over them), then the flags
+// given on the command line over the preset's values, and the map files.
+ft_erosion_params settings(ErodeCli& o, const CLI::App& app, const Heightfield& hf) {
+  ft_erosion_params e = pipeline::erosion_settings(&o.flags, o.preset, hf);
+  if (!o.preset.empty()) overlay_given_flags(app, erosion::erosion_param_table(), &o.flags, &e);
+  o.map_files.apply(e);
+  return e;
 }
 
 std::string preset_help() {
@@ -69,24 +68,34 @@ Registration reg({"erode", "Erode a heightfield (channels, scree and fans over y
                                    "also write every map as float32 with its linear values: tif or exr");
                     app.add_option("--preset", o->preset, preset_help());
                     o->map_files.add_to(app);
+                    o->engine.add_to(app);
                     app.add_option("--world-size", o->world_size,
                                    "extent along x in world units when the file does not record it [default: 10]");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, the height range before and after, what left at the edges");
-                    add_param_flags(app, erosion_param_table(), &o->flags, {}, kAliases);
+                    add_param_flags(app, erosion::erosion_param_table(), &o->flags, {}, kAliases);
                     return [o, &app] {
                       if (o->out.empty() && o->maps.empty() && !o->stats) invalid("give --out FILE, --maps DIR and/or --stats");
                       if (!o->preset.empty()) erosion::erosion_preset(o->preset);  // an unknown name fails before reading
+                      o->engine.check(o->out);
                       Heightfield hf = io::read_heightfield(o->in);
                       if (o->world_size > 0) hf.set_world_size(o->world_size);
                       else if (hf.world_size() <= 0) hf.set_world_size(10.0);
-                      const erosion::ErosionConfig c = settings(*o, app, hf);
+                      const ft_erosion_params e = settings(*o, app, hf);
                       if (!o->maps.empty()) std::filesystem::create_directories(o->maps);
                       erosion::ErosionMaps maps;
                       erosion::MassBudget budget;
                       Stopwatch clock;
-                      const Heightfield eroded = erosion::erode(hf, c, o->maps.empty() ? nullptr : &maps, &budget);
+                      // The pipeline's erode stage, as `terrain --erode` runs it (a file's
+                      // grid has no repeated edge: a periodic one is a torus as it is).
+                      // Godot's control map reads the maps (sediment where deposits and flow are).
+                      const bool want_maps = !o->maps.empty() || o->engine.engine == "godot";
+                      const Heightfield eroded =
+                          pipeline::erode_terrain(hf, e, 0, want_maps ? &maps : nullptr, &budget);
                       const double seconds = clock.seconds();
-                      if (!o->out.empty()) io::write_heightfield(eroded, o->out);
+                      if (!o->out.empty() && o->engine.given())
+                        o->engine.write(eroded, o->out, {nullptr, want_maps ? &maps.deposited : nullptr,
+                                                         want_maps ? &maps.drainage_area : nullptr});
+                      else if (!o->out.empty()) io::write_heightfield(eroded, o->out);
                       if (!o->maps.empty())
                         erosion::write_erosion_maps(maps, o->maps, o->maps_float.empty() ? "" : "." + o->maps_float);
                       if (o->stats) {

@@ -27,7 +27,7 @@ const std::map<std::string, int> kKinds = {{"line", int(pov::LineKind::kGeneric)
                                            {"coastline", int(pov::LineKind::kCoastline)}};
 
 struct PolylineOptions {
-  ft_polyline_params p = default_polyline_params();
+  ft_polyline_params p = polyline::default_polyline_params();
   std::string base, normal, ifs_table, out, svg, pov, render;
   int kind = -1;  // -1: lightning when the line branches, else line
   pov::RenderOptions r;
@@ -104,7 +104,7 @@ int run(const PolylineOptions& o) {
     p.ifs_maps = int32_t(table.size() / 7);
   }
   Stopwatch clock;
-  const PolylineSet set = generate_polylines(p);
+  const PolylineSet set = polyline::generate_polylines(p);
   const double seconds = clock.seconds();
   if (!o.out.empty()) io::write_polylines(set, o.out);
   if (!o.svg.empty()) io::write_file_atomically(o.svg, io::render_polylines_svg(set, 900, 600, p.branch_prob > 0));
@@ -138,7 +138,7 @@ Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch
                     // Every setting of ft_polyline_params from its table; the base polyline,
                     // the plane normal and an IFS table have their own forms below. --ifs and
                     // --points are the names these flags had before the table.
-                    add_param_flags(app, polyline_param_table(), &o->p, {},
+                    add_param_flags(app, polyline::polyline_param_table(), &o->p, {},
                                     {{"ifs_preset", "--ifs"}, {"ifs_points", "--points"}});
                     app.add_option("--base", o->base,
                                    "base polyline \"x0,y0[,z0];x1,y1[,z1];...\" (>= 2 points, consecutive ones "

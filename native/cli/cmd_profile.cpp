@@ -19,7 +19,7 @@ namespace ft::cli {
 namespace {
 
 struct ProfileOptions {
-  ft_profile_params p = default_profile_params();
+  ft_profile_params p = terrain::default_profile_params();
   std::string reference, out;
   bool stats = false;
 };
@@ -45,7 +45,7 @@ int run(const ProfileOptions& o) {
     p.reference = ref.data();
     p.reference_size = int32_t(ref.size());
   }
-  validate_profile_params(p);
+  terrain::validate_profile_params(p);
   const size_t n = (size_t(1) << p.levels) + 1;
   // The samples, plus a polyline copy (xyz + radius, 32 bytes a vertex) for
   // .csv/.json: refused up front, with the size, when above the memory cap.
@@ -55,7 +55,7 @@ int run(const ProfileOptions& o) {
                    "a profile of levels " + std::to_string(p.levels) + " (" + std::to_string(n) + " samples)");
   std::vector<float> x(n);
   Stopwatch clock;
-  generate_profile(p, x.data(), n);
+  terrain::generate_profile(p, x.data(), n);
   const double seconds = clock.seconds();
   if (!o.out.empty()) {
     if (ext == ".npy") {
@@ -83,7 +83,7 @@ Registration reg({"profile", "Generate a Voss 1D fractal profile (a horizon)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<ProfileOptions>();
                     auto& p = o->p;
-                    add_param_flags(app, profile_param_table(), &p);
+                    add_param_flags(app, terrain::profile_param_table(), &p);
                     app.add_option("--reference", o->reference,
                                    "2^m + 1 reference values: a 1D .npy, or a .csv whose y column is used")
                         ->check(CLI::ExistingFile);

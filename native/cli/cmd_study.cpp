@@ -46,12 +46,12 @@ std::vector<T> parse_list(const std::string& text, const char* what) {
   return v;
 }
 
-std::string csv(const std::vector<FplStudyRow>& rows, const char* rng) {
+std::string csv(const std::vector<polyline::FplStudyRow>& rows, const char* rng) {
   std::string o =
       "rng,spread,depth,count,eta_mean,eta_se,chi_mean,chi_se,gamma_mean,gamma_se,mass_dim_mean,mass_dim_se,"
       "box_dim_mean,box_dim_se,paper_eta,paper_chi,paper_gamma,paper_dim\n";
   char buf[512];
-  for (const FplStudyRow& r : rows) {
+  for (const polyline::FplStudyRow& r : rows) {
     std::snprintf(buf, sizeof buf, "%s,%g,%d,%d,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,%.3g,%.6g,%.6g,%.6g,%.6g\n",
                   rng, r.spread, r.depth, r.count, r.eta.mean, r.eta.se, r.chi.mean, r.chi.se, r.gamma.mean,
                   r.gamma.se, r.mass_dimension.mean, r.mass_dimension.se, r.box_dimension.mean, r.box_dimension.se,
@@ -89,13 +89,13 @@ std::string fmt_g(double v) {
 // Panels: eta/s, chi/s, gamma against s (one series per r), gamma against r
 // and the dimension against r (one series per s); our means as points with
 // +-2 standard-error bars, the paper's formulas dashed in the same colour.
-io::SvgFigure plot(const std::vector<FplStudyRow>& rows, const std::vector<double>& spreads, const std::vector<int>& depths,
-               FplRng rng) {
-  const PaperFit fit = paper_fit(rng);
-  const bool uniform = rng == FplRng::kUniform;
+io::SvgFigure plot(const std::vector<polyline::FplStudyRow>& rows, const std::vector<double>& spreads, const std::vector<int>& depths,
+               polyline::FplRng rng) {
+  const polyline::PaperFit fit = polyline::paper_fit(rng);
+  const bool uniform = rng == polyline::FplRng::kUniform;
   const std::string sname = uniform ? "s" : "sigma";
-  auto row_at = [&](double s, int r) -> const FplStudyRow& {
-    for (const FplStudyRow& x : rows)
+  auto row_at = [&](double s, int r) -> const polyline::FplStudyRow& {
+    for (const polyline::FplStudyRow& x : rows)
       if (x.spread == s && x.depth == r) return x;
     return rows.front();
   };
@@ -114,7 +114,7 @@ io::SvgFigure plot(const std::vector<FplStudyRow>& rows, const std::vector<doubl
     io::SvgSeries e = points(label, colors[d % 8]), c = e, g = e;
     for (double s : spreads) {
       if (!(s > 0)) continue;
-      const FplStudyRow& x = row_at(s, r);
+      const polyline::FplStudyRow& x = row_at(s, r);
       e.x.push_back(s), e.y.push_back(x.eta.mean / s), e.y_error.push_back(2 * x.eta.se / s);
       c.x.push_back(s), c.y.push_back(x.chi.mean / s), c.y_error.push_back(2 * x.chi.se / s);
       g.x.push_back(s), g.y.push_back(x.gamma.mean), g.y_error.push_back(2 * x.gamma.se);
@@ -140,14 +140,14 @@ io::SvgFigure plot(const std::vector<FplStudyRow>& rows, const std::vector<doubl
   io::SvgSeries eq6 = dashed("eq. 6", "#000");
   for (double s : spreads) {
     if (!(s > 0)) continue;
-    const FplStudyRow& last = row_at(s, depths.back());
+    const polyline::FplStudyRow& last = row_at(s, depths.back());
     mass_s.x.push_back(s), mass_s.y.push_back(last.mass_dimension.mean), mass_s.y_error.push_back(2 * last.mass_dimension.se);
     box_s.x.push_back(s), box_s.y.push_back(last.box_dimension.mean), box_s.y_error.push_back(2 * last.box_dimension.se);
     if (depths.size() < 2) continue;
     const std::string col = colors[k++ % 8];
     io::SvgSeries g = points(sname + " = " + fmt_g(s), col), gp = dashed("", col), d = g, dp = gp;
     for (int r : depths) {
-      const FplStudyRow& x = row_at(s, r);
+      const polyline::FplStudyRow& x = row_at(s, r);
       g.x.push_back(r), g.y.push_back(x.gamma.mean), g.y_error.push_back(2 * x.gamma.se);
       gp.x.push_back(r), gp.y.push_back(x.paper_gamma);
       d.x.push_back(r), d.y.push_back(x.mass_dimension.mean), d.y_error.push_back(2 * x.mass_dimension.se);
@@ -166,8 +166,8 @@ io::SvgFigure plot(const std::vector<FplStudyRow>& rows, const std::vector<doubl
 }
 
 int run(const StudyOptions& o) {
-  FplStudyConfig c;
-  c.rng = o.rng == 1 ? FplRng::kNormal : FplRng::kUniform;
+  polyline::FplStudyConfig c;
+  c.rng = o.rng == 1 ? polyline::FplRng::kNormal : polyline::FplRng::kUniform;
   c.spreads = parse_list<double>(o.spreads, "--spread");
   c.depths = parse_list<int>(o.depths, "--depth");
   std::sort(c.spreads.begin(), c.spreads.end());
@@ -176,7 +176,7 @@ int run(const StudyOptions& o) {
   c.seed = o.seed;
   c.box_counting = !o.no_box;
   Stopwatch clock;
-  const std::vector<FplStudyRow> rows = run_fpl_study(c);
+  const std::vector<polyline::FplStudyRow> rows = polyline::run_fpl_study(c);
   const std::string table = csv(rows, o.rng == 1 ? "normal" : "uniform");
   if (!o.out_csv.empty()) io::write_file_atomically(o.out_csv, table);
   else std::fputs(table.c_str(), stdout);

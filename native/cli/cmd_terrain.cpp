@@ -11,6 +11,7 @@
 #include "cli/param_flags.hpp"
 #include "contour/marching_squares.hpp"
 #include "core/error.hpp"
+#include "cli/engine_flags.hpp"
 #include "cli/erosion_map_flags.hpp"
 #include "erosion/erosion_params.hpp"
 #include "hydrology/hydrology.hpp"
@@ -49,23 +50,24 @@ void parse_center(const std::string& text, ft_terrain_params& p) {
 }
 
 struct TerrainOptions {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   // The pipeline's settings (a preset: --erosion-preset, or --erode) and the
   // erosion settings, both from their tables.
   ft_build_params build = defaults_of<ft_build_params>(pipeline::build_param_table());
-  ft_erosion_params erosion = defaults_of<ft_erosion_params>(erosion_param_table());
+  ft_erosion_params erosion = defaults_of<ft_erosion_params>(erosion::erosion_param_table());
   bool erosion_given = false;  // an erosion flag was given: erode with these settings
   std::string reference, falloff_mask, out, size, pov, center, curves_out, rivers;
   std::vector<double> curves;
   bool stats = false, curves_world = false;
   ErosionMapFlags erosion_maps;
+  EngineFlags engine;
 };
 
 // The Mandelbrot terrain's curves of equal escape time: the contours at the
 // heights those escape times map to, in columns and rows or world units.
 void write_escape_curves(const TerrainOptions& o, const ft_terrain_params& p, const Heightfield& hf) {
   std::vector<double> levels;
-  for (double nu : o.curves) levels.push_back(mandelbrot_height(nu, p.sigma));
+  for (double nu : o.curves) levels.push_back(terrain::mandelbrot_height(nu, p.sigma));
   PolylineSet set = contour::marching_squares(hf, levels);
   if (o.curves_world) {
     const double k = hf.world_size() / double(hf.width() - 1);
@@ -78,6 +80,17 @@ int run(TerrainOptions& o) {
   ft_terrain_params p = o.p;
   if (!o.size.empty()) parse_size(o.size, p);
   if (!o.center.empty()) parse_center(o.center, p);
+  o.engine.check(o.out);
+  if (o.engine.given() && p.method != FT_TERRAIN_MIDPOINT && p.method != FT_TERRAIN_ADDITIONS) {
+    // Methods of any size are made at the engine's size (nothing to resample);
+    // midpoint grids (2^n + 1) are resampled when the engine wants another size.
+    if (o.engine.engine == "godot") {  // Terrain3D takes rectangles: each side on its own
+      p.width = o.engine.generation_side(p.width);
+      p.height = o.engine.generation_side(p.height);
+    } else {  // Unity and Unreal take squares
+      p.width = p.height = o.engine.generation_side(std::max(p.width, p.height));
+    }
+  }
   if (!o.curves.empty() || !o.curves_out.empty()) {
     // Refused before the work, not after it.
     if (p.method != FT_TERRAIN_MANDELBROT) invalid("--curves: curves of equal escape time need --method mandelbrot");
@@ -125,7 +138,8 @@ int run(TerrainOptions& o) {
     hydrology::write_rivers(hydrology::extract_rivers(hf, c), hf.georef(), o.rivers);
   }
   const double seconds = clock.seconds();
-  if (!o.out.empty()) io::write_heightfield(hf, o.out);
+  if (!o.out.empty() && o.engine.given()) o.engine.write(hf, o.out);
+  else if (!o.out.empty()) io::write_heightfield(hf, o.out);
   if (!o.pov.empty()) pov::write_terrain_scene(hf, o.pov);  // PNG beside it
   if (!o.curves_out.empty()) write_escape_curves(o, p, hf);
   if (o.stats) {
@@ -147,7 +161,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<TerrainOptions>();
                     auto& p = o->p;
-                    add_param_flags(app, terrain_param_table(), &p, {"width", "height", "center_x", "center_y"});
+                    add_param_flags(app, terrain::terrain_param_table(), &p, {"width", "height", "center_x", "center_y"});
                     app.add_option("--size", o->size,
                                    "fbm, spectral, interpolated, mandelbrot: N (square) or WxH samples, 2..65536 per "
                                    "side [default: 513]");
@@ -179,7 +193,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     // erodes as a torus (the library's rule, not a flag).
                     add_param_flags(app, pipeline::build_param_table(), &o->build, {"threads"},
                                     {{"erosion_preset", "--erode"}});
-                    add_param_flags(app, erosion_param_table(), &o->erosion, {"periodic", "threads"});
+                    add_param_flags(app, erosion::erosion_param_table(), &o->erosion, {"periodic", "threads"});
                     o->erosion_maps.add_to(app);
                     app.add_option("--rivers", o->rivers,
                                    "also trace its rivers and lakes (after --erode) with fracterra rivers' defaults "
@@ -187,12 +201,13 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_option("--out", o->out,
                                    "output .png (16-bit), .pgm (16-bit), .npy (float32), .tif (COG float32), "
                                    ".exr (float) or .raw/.r16 (RAW16 + sidecar .json)");
+                    o->engine.add_to(app);
                     app.add_option("--pov", o->pov, "also write a POV-Ray scene (.pov, with its PNG beside it)");
                     app.add_flag("--stats", o->stats, "print a JSON object: seconds, min, max, mean, std");
                     return [o, &app] {
                       if (o->out.empty() && o->pov.empty() && o->rivers.empty() && !o->stats)
                         invalid("give --out FILE, --pov FILE, --rivers FILE and/or --stats");
-                      for (const ft_param_info& row : erosion_param_table().rows)  // --periodic, --threads: the terrain's
+                      for (const ft_param_info& row : erosion::erosion_param_table().rows)  // --periodic, --threads: the terrain's
                         if (std::string(row.name) != "periodic" && std::string(row.name) != "threads")
                           o->erosion_given = o->erosion_given || flag_given(app, row.name);
                       return run(*o);

@@ -20,7 +20,7 @@ namespace ft::cli {
 namespace {
 
 struct TilesOptions {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   std::string reference, out, format = "png16";
   int64_t tile = 4096;
   bool quiet = false;
@@ -65,7 +65,7 @@ int run(const TilesOptions& o) {
 Registration reg({"tiles", "Write a terrain larger than memory as a tile set (tiles, manifest, VRT mosaic)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<TilesOptions>();
-                    add_param_flags(app, terrain_param_table(), &o->p);
+                    add_param_flags(app, terrain::terrain_param_table(), &o->p);
                     app.add_option("--tile", o->tile,
                                    "cells per tile side: tiles hold tile + 1 samples and share their edge samples "
                                    "with their neighbours; range [2, 65536]")

@@ -16,25 +16,16 @@ void ErosionMapFlags::add_to(CLI::App& app) {
       ->check(CLI::ExistingFile);
 }
 
-void ErosionMapFlags::apply(erosion::ErosionConfig& c) {
+void ErosionMapFlags::apply(ft_erosion_params& p) {
   if (!erosion_mask.empty()) {
     mask_grid = io::read_heightfield(erosion_mask);
-    c.erosion_mask = {mask_grid.data(), mask_grid.width(), mask_grid.height()};
+    p.erosion_mask = mask_grid.data(), p.erosion_mask_width = mask_grid.width(),
+    p.erosion_mask_height = mask_grid.height();
   }
   if (!rain_map.empty()) {
     rain_grid = io::read_heightfield(rain_map);
-    c.rain_map = {rain_grid.data(), rain_grid.width(), rain_grid.height()};
+    p.rain_map = rain_grid.data(), p.rain_map_width = rain_grid.width(), p.rain_map_height = rain_grid.height();
   }
-}
-
-void ErosionMapFlags::apply(ft_erosion_params& p) {
-  erosion::ErosionConfig c;
-  apply(c);
-  if (!erosion_mask.empty())
-    p.erosion_mask = c.erosion_mask.values, p.erosion_mask_width = c.erosion_mask.width,
-    p.erosion_mask_height = c.erosion_mask.height;
-  if (!rain_map.empty())
-    p.rain_map = c.rain_map.values, p.rain_map_width = c.rain_map.width, p.rain_map_height = c.rain_map.height;
 }
 
 }  // namespace ft::cli

@@ -6,7 +6,6 @@
 
 #include "cli/cli_util.hpp"
 #include "core/heightfield.hpp"
-#include "erosion/erosion.hpp"
 #include "fracterra/erosion.h"
 
 namespace ft::cli {
@@ -16,9 +15,8 @@ struct ErosionMapFlags {
   Heightfield mask_grid, rain_grid;    // what they hold, alive while the settings point at them
 
   void add_to(CLI::App& app);
-  // Reads the files and points `c`'s maps at them (checked by erode()).
-  void apply(erosion::ErosionConfig& c);
-  // The same for the C settings the pipeline takes (terrain --erode).
+  // Reads the files and points the settings' maps at them (checked by the
+  // erosion's validate()).
   void apply(ft_erosion_params& p);
 };
 

@@ -4,8 +4,7 @@ opened, every operator of those menus run with its redo panel (Adjust Last
 Operation) drawn, every sidebar panel shown, and the window saved as a
 screenshot after each step (artifacts a person can open: --out).
 
-It also checks what needs a window: undo after Regenerate restores the
-heights (a hash of the vertex data), the coastline's redo changes its level,
+It also checks what needs a window (undo: test_undo.py): the coastline's redo changes its level,
 sizes beyond Blender's limit are a report, and a polyline is re-edited in
 place from its sidebar panel. Panel and menu drawing errors only print a
 traceback, so ctest fails on any "Traceback" in the log (FAIL_REGULAR_EXPRESSION).
@@ -18,23 +17,17 @@ import argparse
 import os
 import subprocess
 import sys
-import traceback
-import zlib
 
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import addon_harness  # noqa: E402
+import gui_harness  # noqa: E402
+from gui_harness import check, in_view3d, vertex_hash, view3d  # noqa: E402
 
-FAILURES = []
+gui_harness.PREFIX = "GUI CHECK FAILED: "
 DRAWN = {}  # what drew at least once: class or menu function name -> count
 STEP = 0.4  # seconds between steps: Blender redraws in between
-
-
-def check(condition, message):
-    if not condition:
-        FAILURES.append(message)
-        print(f"GUI CHECK FAILED: {message}", flush=True)
 
 
 def options():
@@ -43,19 +36,6 @@ def options():
     parser.add_argument("--zip", required=True)
     parser.add_argument("--out", required=True, help="folder for the screenshots")
     return parser.parse_args(argv)
-
-
-def view3d():
-    window = bpy.context.window_manager.windows[0]
-    area = next(a for a in window.screen.areas if a.type == "VIEW_3D")
-    region = next(r for r in area.regions if r.type == "WINDOW")
-    return window, area, region
-
-
-def in_view3d(region_type="WINDOW"):
-    window, area, _ = view3d()
-    region = next(r for r in area.regions if r.type == region_type)
-    return bpy.context.temp_override(window=window, area=area, region=region)
 
 
 def count_draws(cls):
@@ -79,13 +59,6 @@ def pointer_to(region):
     x = region.x + region.width // 2
     y = window.height - (region.y + region.height // 2)
     xdotool("mousemove", str(x), str(y))
-
-
-def vertex_hash(obj):
-    import array
-    co = array.array("f", [0.0]) * (3 * len(obj.data.vertices))
-    obj.data.vertices.foreach_get("co", co)
-    return zlib.crc32(co.tobytes())
 
 
 class Shots:
@@ -141,14 +114,7 @@ def choose_from_menu(menu, ups, shot):
 
 
 def wait_for_jobs(limit=60.0):
-    """Waits while an operator runs in the background (progress.JobOperator)."""
-    progress = addon_harness.submodule("blender.common.jobs")
-    waited = 0.0
-    while progress.busy() and waited < limit:
-        yield 0.1
-        waited += 0.1
-    check(not progress.busy(), f"a background job still ran after {limit} s")
-    yield STEP
+    return gui_harness.wait_for_jobs(limit, STEP)
 
 
 def expand_redo_panel():
@@ -255,22 +221,9 @@ def scenario(shot):
     settings.erode_preset = "NONE"
     yield STEP
 
-    # Undo after Regenerate restores the heights.
+    # (Undo after Regenerate: test_undo.py, which checks the settings shown too.)
     terrain = bpy.context.active_object
     name = terrain.name
-    before = vertex_hash(terrain)
-    terrain.fracterra_terrain.seed = 7
-    with in_view3d():
-        bpy.ops.object.fracterra_terrain_regenerate("INVOKE_DEFAULT", True)  # True: its undo step, as a button
-    yield from wait_for_jobs()
-    check(vertex_hash(bpy.data.objects[name]) != before, "Regenerate with a new seed left the heights")
-    with in_view3d():
-        bpy.ops.ed.undo()
-    yield STEP
-    terrain = bpy.data.objects[name]  # undo reloads the data: fetch it again
-    check(vertex_hash(terrain) == before, "undo after Regenerate did not restore the heights")
-    check(terrain.fracterra_terrain.seed == 1, "undo after Regenerate did not restore the seed")
-    shot("terrain-after-undo")
 
     # Measures, then the coastline and its redo.
     with in_view3d():
@@ -374,22 +327,8 @@ def main():
     args = options()
     addon_harness.PACKAGE = addon_harness.install_and_enable(args.zip).__name__
     instrument()
-    shot = Shots(args.out)
-    steps = scenario(shot)
-
-    def tick():
-        try:
-            return next(steps)
-        except StopIteration:
-            outcome = 1 if FAILURES else 0
-        except Exception:
-            traceback.print_exc()
-            outcome = 1
-        print(f"GUI test drew: {sorted(DRAWN)}", flush=True)
-        print("GUI test " + ("FAILED: " + "; ".join(FAILURES) if outcome else "passed"), flush=True)
-        os._exit(outcome)
-
-    bpy.app.timers.register(tick, first_interval=1.0)
+    gui_harness.run_in_event_loop(scenario(Shots(args.out)), "GUI test",
+                                  at_end=lambda: print(f"GUI test drew: {sorted(DRAWN)}", flush=True))
 
 
 main()

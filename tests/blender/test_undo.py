@@ -9,42 +9,22 @@ undo steps of operators run from the start-up script would not be kept apart.
 Run as: xvfb-run blender --factory-startup --python test_undo.py -- --zip fracterra.zip
 """
 
-import array
 import os
 import sys
-import traceback
-import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import addon_harness  # noqa: E402
+import gui_harness  # noqa: E402
+from gui_harness import in_view3d, vertex_hash  # noqa: E402
 
 import bpy  # noqa: E402
 
-FAILURES = []
 STEP = 0.3  # seconds between steps: Blender handles its events in between
+gui_harness.PREFIX = "UNDO CHECK FAILED: "
 
 
 def check(condition, message):
-    print(("ok: " if condition else "UNDO CHECK FAILED: ") + message, flush=True)
-    if not condition:
-        FAILURES.append(message)
-
-
-def heights(obj):
-    co = array.array("f", [0.0]) * (3 * len(obj.data.vertices))
-    obj.data.vertices.foreach_get("co", co)
-    return co[2::3]
-
-
-def vertex_hash(obj):
-    return zlib.crc32(heights(obj).tobytes())
-
-
-def in_view3d():
-    window = bpy.context.window_manager.windows[0]
-    area = next(a for a in window.screen.areas if a.type == "VIEW_3D")
-    region = next(r for r in area.regions if r.type == "WINDOW")
-    return bpy.context.temp_override(window=window, area=area, region=region)
+    gui_harness.check(condition, message, verbose=True)
 
 
 def jobs():
@@ -52,12 +32,7 @@ def jobs():
 
 
 def wait_for_jobs(limit=60.0):
-    waited = 0.0
-    while jobs().busy() and waited < limit:
-        yield 0.1
-        waited += 0.1
-    check(not jobs().busy(), f"no background job still runs after {limit} s")
-    yield STEP
+    return gui_harness.wait_for_jobs(limit, STEP)
 
 
 def add_terrain(**settings):
@@ -193,13 +168,40 @@ def a_second_add_does_not_inherit_erosion():
     check(second.fracterra_terrain.thermal_iterations == 0, "the second Add keeps no scree passes")
 
 
+def a_long_redo_hands_over_to_the_progress_bar():
+    """The redo panel runs an operator blocking, with no bar and no Esc: work
+    over jobs.REDO_BUDGET there is handed to the modal job (status-bar
+    progress, Esc cancels) with the same settings. A 2049 x 2049 fBm: the
+    levels-4 Add is instant, its redo at that size is not."""
+    bpy.ops.ed.undo_push(message="the scene emptied")  # what the redo goes back to
+    yield from add_terrain(levels=4, seed=6)
+    op = bpy.context.window_manager.operators[-1]
+    check(op.bl_idname == "MESH_OT_fracterra_terrain_add", f"the last operator is {op.bl_idname}")
+    op.properties.method, op.properties.width, op.properties.height = "FBM", 2049, 2049
+    with in_view3d():
+        result = bpy.ops.ed.undo_redo()
+    check(result == {"FINISHED"}, f"the redo returned {result}")
+    for _ in range(20):  # the job starts from a timer once the redo is over
+        if jobs().busy():
+            break
+        yield 0.1
+    check(jobs().busy(), "the long redo goes on as a background job")
+    yield from wait_for_jobs()
+    terrain = bpy.context.active_object
+    check(terrain is not None and terrain.fracterra_terrain.is_terrain and len(terrain.data.vertices) == 2049 * 2049
+          and terrain.fracterra_terrain.method == "FBM",
+          "the handed-over job built the 2049 x 2049 fBm of the redo's settings")
+    terrains = [(o.name, len(o.data.vertices)) for o in bpy.data.objects if o.fracterra_terrain.is_terrain]
+    check(len(terrains) == 1, f"one terrain, not {terrains}")
+
+
 def scenario():
     check(not bpy.app.background, "this test runs with a window (xvfb-run)")
     for step in (undo_removes_the_added_terrain, undo_removes_an_eroded_terrain,
                  undo_of_regenerate_brings_back_the_settings_of_the_mesh,
                  cancelled_regenerate_keeps_the_settings_of_the_mesh,
                  failed_regenerate_keeps_the_settings_of_the_mesh,
-                 a_second_add_does_not_inherit_erosion):
+                 a_second_add_does_not_inherit_erosion, a_long_redo_hands_over_to_the_progress_bar):
         print(f"--- {step.__name__}", flush=True)
         for obj in list(bpy.data.objects):
             bpy.data.objects.remove(obj)
@@ -210,20 +212,7 @@ def main():
     args = addon_harness.args()
     module = addon_harness.find_enabled() if args.installed else addon_harness.install_and_enable(args.zip)
     addon_harness.PACKAGE = module.__name__
-    steps = scenario()
-
-    def tick():
-        try:
-            return next(steps)
-        except StopIteration:
-            outcome = 1 if FAILURES else 0
-        except Exception:
-            traceback.print_exc()
-            outcome = 1
-        print("undo test " + ("FAILED: " + "; ".join(FAILURES) if outcome else "passed"), flush=True)
-        os._exit(outcome)
-
-    bpy.app.timers.register(tick, first_interval=1.0)
+    gui_harness.run_in_event_loop(scenario(), "undo test")
 
 
 main()

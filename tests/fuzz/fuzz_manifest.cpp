@@ -46,7 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (!m) ft::fuzz::bug("an existing manifest was not read");
     // Resuming: the identity check against a terrain, then the journal.
     const nlohmann::json wanted = {
-        {"terrain", ft::tiles::terrain_identity(ft::default_terrain_params())}, {"tile", 64}, {"tile_format", "npy"}};
+        {"terrain", ft::tiles::terrain_identity(ft::terrain::default_terrain_params())}, {"tile", 64}, {"tile_format", "npy"}};
     ft::tiles::identity_difference(wanted, *m);
     ft::tiles::replay_journal(dir, *m);
   });

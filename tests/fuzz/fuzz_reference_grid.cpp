@@ -15,7 +15,7 @@ namespace {
 using ft::fuzz::bug;
 
 void terrain_from(const ft::Heightfield& ref, uint8_t knobs) {
-  ft_terrain_params p = ft::default_terrain_params();
+  ft_terrain_params p = ft::terrain::default_terrain_params();
   p.method = (knobs & 1) ? FT_TERRAIN_ADDITIONS : FT_TERRAIN_MIDPOINT;
   p.periodic = (knobs >> 1) & 1;
   p.reference_scale = ((knobs >> 2) & 3) % 3;
@@ -24,7 +24,7 @@ void terrain_from(const ft::Heightfield& ref, uint8_t knobs) {
   if (ref.width() != ref.height()) ft::invalid("the reference grid must be square");  // as the CLI does
   p.reference = ref.data();
   p.reference_size = ref.width();
-  const ft::Heightfield hf = ft::generate_terrain(p);
+  const ft::Heightfield hf = ft::terrain::generate_terrain(p);
   const int step = (hf.width() - 1) / (ref.width() - 1);
   for (int32_t j = 0; j < ref.height(); ++j)
     for (int32_t i = 0; i < ref.width(); ++i)
@@ -33,13 +33,13 @@ void terrain_from(const ft::Heightfield& ref, uint8_t knobs) {
 
 void profile_from(const ft::io::NpyArray& a, uint8_t knobs) {
   if (a.shape.size() != 1) ft::invalid("a profile reference must be 1D");  // as the CLI does
-  ft_profile_params p = ft::default_profile_params();
+  ft_profile_params p = ft::terrain::default_profile_params();
   p.reference_scale = (knobs & 3) % 3;
   p.levels = 1 + (knobs >> 2) % 16;
   p.reference = a.values.data();
   p.reference_size = int32_t(a.values.size() > (1u << 20) ? -1 : int64_t(a.values.size()));
   std::vector<float> x((size_t(1) << p.levels) + 1);
-  ft::generate_profile(p, x.data(), x.size());
+  ft::terrain::generate_profile(p, x.data(), x.size());
   const size_t step = (x.size() - 1) / (a.values.size() - 1);
   for (size_t i = 0; i < a.values.size(); ++i)
     if (x[i * step] != a.values[i]) bug("a reference value did not survive");

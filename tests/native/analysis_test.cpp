@@ -30,17 +30,17 @@ namespace ft {
 namespace {
 
 std::vector<float> midpoint_profile(int levels, double hurst, uint64_t seed) {
-  ft_profile_params p = default_profile_params();
+  ft_profile_params p = terrain::default_profile_params();
   p.levels = levels, p.hurst = hurst, p.seed = seed;
   std::vector<float> v((size_t(1) << levels) + 1);
-  generate_profile(p, v.data(), v.size());
+  terrain::generate_profile(p, v.data(), v.size());
   return v;
 }
 
 Heightfield terrain(int method, int levels, double hurst, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = method, p.levels = levels, p.hurst = hurst, p.seed = seed;
-  return generate_terrain(p);
+  return terrain::generate_terrain(p);
 }
 
 // A periodic signal with power exactly |c_k|^2 ~ k^-B (B = 2H + 1): complex
@@ -158,9 +158,9 @@ TEST(HurstEstimator, SpectralRecoversHurstOfSpectralSynthesisTerrains) {
   // Spectral synthesis fixes the power law exactly, so the estimate over
   // 1024 transects has a standard error of ~0.01; 0.1 is the bound.
   for (double h : {0.3, 0.5, 0.8}) {
-    ft_terrain_params p = default_terrain_params();
+    ft_terrain_params p = terrain::default_terrain_params();
     p.method = FT_TERRAIN_SPECTRAL, p.width = 512, p.height = 512, p.hurst = h, p.seed = 5;
-    const Heightfield hf = generate_terrain(p);
+    const Heightfield hf = terrain::generate_terrain(p);
     analysis::HurstOptions o;
     o.method = analysis::HurstMethod::kSpectral;
     EXPECT_NEAR(analysis::estimate_hurst_surface(hf, o).hurst, h, 0.1) << "H " << h;
@@ -340,9 +340,9 @@ TEST_F(AnalysisCli, AnalyzeReportsRecommendedEstimateOfHeightfieldsAndProfiles) 
 // measure operator too): analyze reports exactly its estimate and reason.
 TEST_F(AnalysisCli, AnalyzeReportsTheLibrarysAutoChoice) {
   for (auto [w, h] : {std::pair{300, 260}, std::pair{100, 90}, std::pair{257, 257}}) {
-    ft_terrain_params p = default_terrain_params();
+    ft_terrain_params p = terrain::default_terrain_params();
     p.method = FT_TERRAIN_FBM, p.width = w, p.height = h, p.seed = 4;
-    const Heightfield hf = generate_terrain(p);
+    const Heightfield hf = terrain::generate_terrain(p);
     io::write_heightfield(hf, path("f.npy"));
     const CliResult r = run_cli("analyze " + path("f.npy"));
     ASSERT_EQ(r.status, 0) << r.out;
@@ -365,9 +365,9 @@ TEST_F(AnalysisCli, AnalyzeReportsTheLibrarysAutoChoice) {
 TEST_F(AnalysisCli, AnalyzeRecommendsTheSpectralSlopeOffDyadicGrids) {
   // 512^2 spectral synthesis: not a 2^n + 1 grid, >= 256 samples a side.
   // Measured 0.46-0.49 for H = 0.5 over seeds 1-3; the bound is the 0.1.
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = FT_TERRAIN_SPECTRAL, p.width = 512, p.height = 512, p.hurst = 0.5, p.seed = 1;
-  io::write_heightfield(generate_terrain(p), path("s.npy"));
+  io::write_heightfield(terrain::generate_terrain(p), path("s.npy"));
   const CliResult r = run_cli("analyze " + path("s.npy") + " --plot " + path("fits.svg"));
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json j = nlohmann::json::parse(r.out);

@@ -21,14 +21,14 @@ PolylineSet from_points(std::vector<Vec3> pts) {
 }
 
 PolylineSet koch(int depth) {
-  std::vector<Vec3> pts(size_t(koch_vertex_count(depth)));
-  koch_curve({0, 0, 0}, {1, 0, 0}, depth, pts.data());
+  std::vector<Vec3> pts(size_t(polyline::koch_vertex_count(depth)));
+  polyline::koch_curve({0, 0, 0}, {1, 0, 0}, depth, pts.data());
   return from_points(pts);
 }
 
 PolylineSet arrowhead(int depth) {
-  std::vector<Vec3> pts(size_t(arrowhead_vertex_count(depth)));
-  arrowhead_curve({0, 0, 0}, {1, 0, 0}, depth, pts.data());
+  std::vector<Vec3> pts(size_t(polyline::arrowhead_vertex_count(depth)));
+  polyline::arrowhead_curve({0, 0, 0}, {1, 0, 0}, depth, pts.data());
   return from_points(pts);
 }
 

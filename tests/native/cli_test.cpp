@@ -74,10 +74,10 @@ TEST_F(Cli, TerrainStatsPrintsOneJsonObjectWithTheRequiredKeys) {
 }
 
 TEST_F(Cli, PngPgmAndNpyOutputsRoundTrip) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.levels = 6;
   p.seed = 9;
-  const Heightfield want = generate_terrain(p);
+  const Heightfield want = terrain::generate_terrain(p);
   const HeightStats s = want.stats();
   for (const char* ext : {".png", ".pgm", ".npy"}) {
     const std::string out = path(std::string("t") + ext);
@@ -311,6 +311,35 @@ TEST_F(Cli, ErodePresetsAreTheLibrarysAndFlagsOverrideThem) {
   const CliRun nan = run("erode --in " + in + " --preset valleys --erosion-mask " + path("nan.npy") + " --stats");
   EXPECT_NE(nan.code, 0);
   EXPECT_NE(nan.err.find("erosion_mask's values must be in [0, 1]; sample 1, 1"), std::string::npos) << nan.err;
+}
+
+TEST_F(Cli, ErodeInOfATerrainFileIsTerrainErode) {
+  // `erode --in` runs the pipeline's erode stage (preset rule included) as
+  // `terrain --erode` does: a terrain eroded in the one call, or written and
+  // eroded after, gives the same bits, bounded (fBm) and as a torus (a
+  // spectral terrain tiles: the pipeline erodes it periodic, `erode` when
+  // told), with a setting beside the preset and a mask file.
+  Heightfield mask(2, 2);
+  mask.at(0, 0) = mask.at(0, 1) = 1.0f;
+  mask.at(1, 0) = mask.at(1, 1) = 0.25f;
+  io::write_heightfield(mask, path("mask.npy"));
+  const std::string settings = " --strength 0.3 --erosion-mask " + path("mask.npy");
+  const std::pair<std::string, std::string> cases[] = {{"--method fbm --size 65 --seed 3", ""},
+                                                       {"--method spectral --size 64 --seed 5", " --periodic"}};
+  for (const auto& [terrain, erode] : cases) {
+    ASSERT_EQ(run("terrain " + terrain + " --out " + path("t.npy")).code, 0) << terrain;
+    const CliRun one = run("terrain " + terrain + " --erode valleys" + settings + " --out " + path("one.npy"));
+    ASSERT_EQ(one.code, 0) << one.err;
+    const CliRun two = run("erode --in " + path("t.npy") + " --preset valleys" + settings + erode + " --out " +
+                           path("two.npy"));
+    ASSERT_EQ(two.code, 0) << two.err;
+    const Heightfield made = io::read_heightfield(path("t.npy")), a = io::read_heightfield(path("one.npy")),
+                      b = io::read_heightfield(path("two.npy"));
+    ASSERT_EQ(a.width(), b.width());
+    ASSERT_EQ(a.height(), b.height());
+    EXPECT_TRUE(std::equal(a.data(), a.data() + a.size(), b.data())) << terrain;
+    EXPECT_FALSE(std::equal(a.data(), a.data() + a.size(), made.data())) << terrain << ": the preset must erode";
+  }
 }
 
 TEST_F(Cli, SceneHelpSaysWhatTheAutoCameraElevationPicks) {

@@ -38,9 +38,9 @@ double bump(double x, double y, double cx, double cy, double r) {
 }
 
 Heightfield terrain(int levels, double hurst, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.levels = levels, p.hurst = hurst, p.seed = seed;
-  return generate_terrain(p);
+  return terrain::generate_terrain(p);
 }
 
 int count_kind(const PolylineSet& s, contour::ChainKind k) {
@@ -213,9 +213,9 @@ TEST(CoastlineDimension, MedianLevelSetOfMidpointTerrainsHasDimensionTwoMinusH) 
     std::vector<double> d(10);
 #pragma omp parallel for schedule(dynamic, 1)
     for (int k = 0; k < 10; ++k) {
-      ft_terrain_params p = default_terrain_params();
+      ft_terrain_params p = terrain::default_terrain_params();
       p.levels = 10, p.hurst = h, p.seed = uint64_t(k + 1), p.threads = 1;
-      const Heightfield hf = generate_terrain(p);
+      const Heightfield hf = terrain::generate_terrain(p);
       const PolylineSet s = contour::marching_squares(hf, analysis::heightfield_quantile(hf, 0.5));
       d[size_t(k)] = analysis::box_counting_dimension(s, coastline_boxes()).dimension;
     }

@@ -26,7 +26,7 @@ namespace {
 // BLENDER_OVERRIDES): a midpoint mountain, levelled, raised and faded out
 // radially, 10 world units across.
 Heightfield default_mountain(int32_t levels, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = FT_TERRAIN_MIDPOINT;
   p.levels = levels;
   p.width = p.height = (1 << levels) + 1;
@@ -37,7 +37,7 @@ Heightfield default_mountain(int32_t levels, uint64_t seed) {
   p.falloff = FT_FALLOFF_RADIAL;
   p.falloff_width = 0.9;
   p.world_size = 10.0;
-  Heightfield hf = generate_terrain(p);
+  Heightfield hf = terrain::generate_terrain(p);
   hf.set_world_size(10.0);
   return hf;
 }
@@ -45,13 +45,13 @@ Heightfield default_mountain(int32_t levels, uint64_t seed) {
 // fBm: the same terrain at every size (issue 24 measured 0.996 at shared
 // points), so it is the input of the resolution test.
 Heightfield make_fbm(int32_t size, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = FT_TERRAIN_FBM;
   p.width = p.height = size;
   p.seed = seed;
   p.hurst = 0.8;
   p.world_size = 10.0;
-  Heightfield hf = generate_terrain(p);
+  Heightfield hf = terrain::generate_terrain(p);
   hf.set_world_size(10.0);
   return hf;
 }
@@ -385,7 +385,7 @@ TEST_P(EveryPreset, LeavesTheBorderRowsAsSmoothAsTheInterior) {
   // Issue 24's demo (fBm 513^2, seed 7): its top rows' p99 |Laplacian| was
   // about twice the interior's. fBm has no edge of its own (the inputs'
   // ratio is 0.99-1.06), so the eroded borders are held to 1.25. Measured
-  // 0.98-1.05 at 513^2 and 0.6-0.9 at 257^2 for every preset; before the
+  // 1.01-1.18 at 513^2 and 0.5-0.9 at 257^2 for every preset; before the
   // detail run's creep acted on its change only, Rugged Mountains gave
   // 1.65-1.94 at 513^2 (the creep smoothed the interior, and the edge rows
   // are held fixed).
@@ -446,10 +446,12 @@ TEST_P(EveryPreset, KeepsTheFineDetailOfHillslopes) {
   // it) but not erase it. Before the detail run's creep acted on its change
   // only, and before the model's grid sampled the terrain averaged, 0.4-2.2 %
   // of its energy was kept on hillslopes (Rugged Mountains); now, every
-  // preset, 0.60-0.67 at 513^2 and 0.88-0.91 at 1025^2 (seeds 1 and 7). The
-  // measure is nearly the same on every seed (erosion acts on the texture
-  // about linearly, and it sums over 10^5 cells), so the bounds, 0.4 and
-  // 1.5 (no roughening), leave a wide margin on both sides. (At 257^2, the
+  // preset, 0.38-0.54 at 513^2 and 0.35-0.64 at 1025^2 (seeds 1 and 7; 0.60
+  // and 0.88 and more while deposits crept on their change too, which printed
+  // the buried bed's texture onto filled flats). The measure is nearly the
+  // same on every seed (erosion acts on the texture about linearly, and it
+  // sums over 10^5 cells), so the bounds are 0.3 (Scree Slopes, the lowest,
+  // less a margin) and 1.5 (no roughening). (At 257^2, the
   // model's own grid, the finest detail is what the model erodes: 3-13 %
   // is kept there, by design.)
   for (const int32_t size : {513, 1025})
@@ -459,7 +461,7 @@ TEST_P(EveryPreset, KeepsTheFineDetailOfHillslopes) {
       const double kept = hillslope_detail_kept(in, out);
       std::printf("%-16s fbm %d seed %d: hillslope detail energy kept %.3f\n", GetParam().c_str(), size, int(seed),
                   kept);
-      EXPECT_GE(kept, 0.4) << GetParam() << " fbm " << size << " seed " << seed;
+      EXPECT_GE(kept, 0.3) << GetParam() << " fbm " << size << " seed " << seed;
       EXPECT_LE(kept, 1.5) << GetParam() << " fbm " << size << " seed " << seed;
     }
 }

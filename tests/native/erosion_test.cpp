@@ -28,20 +28,12 @@
 #include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
 #include "terrain/terrain.hpp"
+#include "test_terrains.hpp"
 
 namespace ft::erosion {
 namespace {
 
-Heightfield fbm_terrain(int32_t size, uint64_t seed, bool periodic = false) {
-  ft_terrain_params p = default_terrain_params();
-  p.method = periodic ? FT_TERRAIN_SPECTRAL : FT_TERRAIN_FBM;
-  p.width = p.height = size;
-  p.seed = seed;
-  p.hurst = 0.8;
-  Heightfield hf = generate_terrain(p);
-  hf.set_world_size(10.0);
-  return hf;
-}
+using test::fbm_terrain;
 
 // An fBm terrain as the routing sees it: its grid, its heights (a copy to
 // fill or route) and its outlet on a torus (-1 bounded).
@@ -655,7 +647,7 @@ TEST(ErodeCli, RefusesHeightsThatWouldOverflowNamingTheLimit) {
 TEST(ErosionParams, TableDefaultsAreTheConfigDefaults) {
   // ft_erosion_params_init writes the table's defaults; ErosionConfig{} has
   // its own (C++ callers, the CLI). They must be one set of numbers.
-  const ft_erosion_params table = ft::defaults_of<ft_erosion_params>(ft::erosion_param_table());
+  const ft_erosion_params table = ft::defaults_of<ft_erosion_params>(ft::erosion::erosion_param_table());
   const ft_erosion_params config = ft::erosion::to_c(ft::erosion::ErosionConfig{});
   EXPECT_EQ(0, std::memcmp(&table, &config, sizeof table));
   // And the table refuses what validate() refuses, naming the C field.

@@ -76,7 +76,7 @@ class Monitor {
 // edge level: the plain that issue 24's hang wore down to subnormal heights)
 // on the midpoint method, or plain fBm.
 Heightfield terrain(bool landform, int32_t levels, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.seed = seed;
   p.threads = 0;
   if (landform) {
@@ -92,7 +92,7 @@ Heightfield terrain(bool landform, int32_t levels, uint64_t seed) {
     p.width = p.height = (1 << levels) + 1;
     p.hurst = 0.8;
   }
-  Heightfield hf = generate_terrain(p);
+  Heightfield hf = terrain::generate_terrain(p);
   hf.set_world_size(10.0);
   return hf;
 }

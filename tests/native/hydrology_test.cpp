@@ -28,6 +28,7 @@
 #include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
 #include "terrain/terrain.hpp"
+#include "test_terrains.hpp"
 
 namespace ft::hydrology {
 namespace {
@@ -184,13 +185,7 @@ TEST(Sea, IsConnectedToTheEdgeAndAnEnclosedHollowBelowItIsALake) {
 
 // An fBm terrain eroded by the fluvial preset (fitted to the terrain).
 Heightfield eroded_fbm(int32_t size, uint64_t seed, bool periodic = false) {
-  ft_terrain_params p = default_terrain_params();
-  p.method = periodic ? FT_TERRAIN_SPECTRAL : FT_TERRAIN_FBM;
-  p.width = p.height = size;
-  p.seed = seed;
-  p.hurst = 0.8;
-  Heightfield hf = generate_terrain(p);
-  hf.set_world_size(10.0);
+  const Heightfield hf = test::fbm_terrain(size, seed, periodic);
   erosion::ErosionConfig c = erosion::erosion_preset("valleys", hf);
   c.periodic = periodic;
   return erosion::erode(hf, c, nullptr);

@@ -20,7 +20,7 @@ using namespace ft;
 namespace {
 
 ft_terrain_params params(int method, int levels = 7) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = method;
   p.levels = levels;
   p.width = p.height = (1 << levels) + 1;
@@ -31,8 +31,8 @@ ft_terrain_params params(int method, int levels = 7) {
 
 std::string refusal(const ft_terrain_params& p, bool window = false) {
   try {
-    if (window) generate_terrain_window(p, 0, 0, 0, 3, 3);
-    else generate_terrain(p);
+    if (window) terrain::generate_terrain_window(p, 0, 0, 0, 3, 3);
+    else terrain::generate_terrain(p);
   } catch (const Error& e) {
     return e.what();
   }
@@ -47,15 +47,15 @@ TEST(Landform, DefaultsLeaveTheMethodsHeightsUntouched) {
   // The new fields' defaults are neutral, so every terrain made before them is unchanged.
   ft_terrain_params p = params(FT_TERRAIN_MIDPOINT);
   p.falloff_width = 0.5, p.sea_level = 3, p.edge_level = -2, p.sea_fraction = 0.6;  // unused while off
-  const Heightfield a = generate_terrain(p), b = generate_terrain(params(FT_TERRAIN_MIDPOINT));
+  const Heightfield a = terrain::generate_terrain(p), b = terrain::generate_terrain(params(FT_TERRAIN_MIDPOINT));
   ASSERT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0);
 }
 
 TEST(Landform, LevellingRemovesTheCornerPlane) {
   ft_terrain_params p = params(FT_TERRAIN_MIDPOINT);
-  const Heightfield raw = generate_terrain(p);
+  const Heightfield raw = terrain::generate_terrain(p);
   p.levelling = 1;
-  const Heightfield level = generate_terrain(p);
+  const Heightfield level = terrain::generate_terrain(p);
   const int n = raw.width() - 1;
   for (auto [i, j] : {std::pair{0, 0}, {n, 0}, {0, n}, {n, n}}) EXPECT_EQ(at(level, i, j), 0.0) << i << ", " << j;
   // An inside sample: its height minus the bilinear surface through the corners.
@@ -65,22 +65,22 @@ TEST(Landform, LevellingRemovesTheCornerPlane) {
   EXPECT_NEAR(at(level, 37, 90), at(raw, 37, 90) - plane, 1e-5);
   // Half the levelling removes half the plane.
   p.levelling = 0.5;
-  EXPECT_NEAR(at(generate_terrain(p), 37, 90), at(raw, 37, 90) - 0.5 * plane, 1e-5);
+  EXPECT_NEAR(at(terrain::generate_terrain(p), 37, 90), at(raw, 37, 90) - 0.5 * plane, 1e-5);
 }
 
 TEST(Landform, OffsetMovesEverySample) {
   ft_terrain_params p = params(FT_TERRAIN_FBM);
-  const Heightfield raw = generate_terrain(p);
+  const Heightfield raw = terrain::generate_terrain(p);
   p.height_offset = 2.5;
-  const Heightfield up = generate_terrain(p);
+  const Heightfield up = terrain::generate_terrain(p);
   for (size_t k = 0; k < raw.size(); k += 97) EXPECT_NEAR(up.data()[k], raw.data()[k] + 2.5, 1e-6);
 }
 
 TEST(Landform, SquareFalloffReachesTheEdgeLevelOnEveryEdge) {
   ft_terrain_params p = params(FT_TERRAIN_MIDPOINT);
-  const Heightfield raw = generate_terrain(p);
+  const Heightfield raw = terrain::generate_terrain(p);
   p.falloff = FT_FALLOFF_SQUARE, p.falloff_width = 0.25, p.edge_level = -1.5;
-  const Heightfield fall = generate_terrain(p);
+  const Heightfield fall = terrain::generate_terrain(p);
   const int n = raw.width() - 1;
   for (int k = 0; k <= n; ++k) {
     EXPECT_EQ(at(fall, k, 0), float(-1.5));
@@ -99,9 +99,9 @@ TEST(Landform, SquareFalloffReachesTheEdgeLevelOnEveryEdge) {
 
 TEST(Landform, RadialFalloffMakesAnIsland) {
   ft_terrain_params p = params(FT_TERRAIN_FBM);
-  const Heightfield raw = generate_terrain(p);
+  const Heightfield raw = terrain::generate_terrain(p);
   p.falloff = FT_FALLOFF_RADIAL, p.falloff_width = 0.5, p.edge_level = -1;
-  const Heightfield island = generate_terrain(p);
+  const Heightfield island = terrain::generate_terrain(p);
   const int n = raw.width() - 1, c = n / 2;
   // The corners and the edges' midpoints are at the edge level; the centre is untouched.
   for (auto [i, j] : {std::pair{0, 0}, {n, n}, {c, 0}, {0, c}, {n, c}, {c, n}})
@@ -112,10 +112,10 @@ TEST(Landform, RadialFalloffMakesAnIsland) {
 
 TEST(Landform, SeaAtAHeightFlattensTheLowGround) {
   ft_terrain_params p = params(FT_TERRAIN_MIDPOINT);
-  const Heightfield raw = generate_terrain(p);
+  const Heightfield raw = terrain::generate_terrain(p);
   const HeightStats s = raw.stats();
   p.sea = FT_SEA_HEIGHT, p.sea_level = 0.5 * (s.min + s.max);
-  const Heightfield sea = generate_terrain(p);
+  const Heightfield sea = terrain::generate_terrain(p);
   const float level = float(p.sea_level);
   size_t flat = 0;
   for (size_t k = 0; k < raw.size(); ++k) {
@@ -135,7 +135,7 @@ TEST(Landform, SeaAsAFractionCoversThatShareForEverySeed) {
     ft_terrain_params p = params(FT_TERRAIN_MIDPOINT);
     p.seed = seed;
     p.sea = FT_SEA_FRACTION, p.sea_fraction = 0.3;
-    const Heightfield sea = generate_terrain(p);
+    const Heightfield sea = terrain::generate_terrain(p);
     const float level = sea.stats().min;
     const size_t flat = size_t(std::count(sea.data(), sea.data() + sea.size(), level));
     EXPECT_EQ(flat, size_t(0.3 * double(sea.size())) + 1) << "seed " << seed;
@@ -144,13 +144,13 @@ TEST(Landform, SeaAsAFractionCoversThatShareForEverySeed) {
 
 TEST(Landform, CustomMaskIsResampledBilinearlyOverTheWholeTerrain) {
   ft_terrain_params p = params(FT_TERRAIN_MIDPOINT);  // 129 x 129
-  const Heightfield raw = generate_terrain(p);
+  const Heightfield raw = terrain::generate_terrain(p);
   // 3 x 2: columns at u = 0, 0.5, 1; rows at v = 0, 1.
   const std::vector<float> mask = {0.0f, 0.5f, 1.0f,  //
                                    1.0f, 0.25f, 0.0f};
   p.falloff = FT_FALLOFF_CUSTOM, p.edge_level = -1.5;
   p.falloff_mask = mask.data(), p.falloff_mask_width = 3, p.falloff_mask_height = 2;
-  const Heightfield masked = generate_terrain(p);
+  const Heightfield masked = terrain::generate_terrain(p);
   auto expect = [&](int i, int j, double m) {
     EXPECT_NEAR(at(masked, i, j), -1.5 + m * (at(raw, i, j) + 1.5), 1e-5) << i << ", " << j << " mask " << m;
   };
@@ -163,7 +163,7 @@ TEST(Landform, CustomMaskIsResampledBilinearlyOverTheWholeTerrain) {
   // A mask of ones changes nothing.
   const std::vector<float> ones(16, 1.0f);
   p.falloff_mask = ones.data(), p.falloff_mask_width = 4, p.falloff_mask_height = 4;
-  const Heightfield same = generate_terrain(p);
+  const Heightfield same = terrain::generate_terrain(p);
   ASSERT_EQ(std::memcmp(same.data(), raw.data(), raw.size() * sizeof(float)), 0);
 }
 
@@ -204,11 +204,11 @@ TEST(Landform, WindowsWithLandformsEqualTheWholeBitForBit) {
       p.levelling = 0.75, p.height_offset = 0.3, p.falloff = falloff, p.falloff_width = 0.4;
       p.falloff_mask = mask.data(), p.falloff_mask_width = 7, p.falloff_mask_height = 5;
       p.edge_level = -0.7, p.sea = FT_SEA_HEIGHT, p.sea_level = -0.2;
-      const Heightfield whole = generate_terrain(p);
+      const Heightfield whole = terrain::generate_terrain(p);
       const int w = whole.width();
       for (auto [x0, y0, ww, wh] : {std::array<int, 4>{0, 0, 1, 1}, {w - 1, w - 1, 1, 1}, {0, 0, 101, 37},
                                     {w - 77, 3, 77, 150}, {201, w - 65, 99, 65}, {0, 255, w, 3}}) {
-        const Heightfield part = generate_terrain_window(p, 0, x0, y0, ww, wh);
+        const Heightfield part = terrain::generate_terrain_window(p, 0, x0, y0, ww, wh);
         for (int j = 0; j < wh; ++j)
           ASSERT_EQ(std::memcmp(part.data() + size_t(j) * size_t(ww),
                                 whole.data() + size_t(y0 + j) * size_t(w) + size_t(x0), size_t(ww) * sizeof(float)),
@@ -216,7 +216,7 @@ TEST(Landform, WindowsWithLandformsEqualTheWholeBitForBit) {
               << "method " << method << " falloff " << falloff << " window " << x0 << ", " << y0 << " row " << j;
       }
       if (method == FT_TERRAIN_MIDPOINT) {  // a coarser level of detail: every 4th sample of the whole
-        const Heightfield lod = generate_terrain_window(p, 2, 0, 0, 129, 129);
+        const Heightfield lod = terrain::generate_terrain_window(p, 2, 0, 0, 129, 129);
         for (int j = 0; j < 129; j += 7)
           for (int i = 0; i < 129; ++i) ASSERT_EQ(at(lod, i, j), at(whole, 4 * i, 4 * j)) << i << ", " << j;
       }

@@ -23,7 +23,7 @@ namespace ft {
 namespace {
 
 ft_terrain_params params(int method, int size) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = method;
   p.width = p.height = size;
   return p;
@@ -129,7 +129,7 @@ TEST(SpectralSynthesis, RadialSpectrumSlopeIsMinusTwoHPlusTwo) {
     double slope = 0;
     for (uint64_t seed : {11u, 12u}) {
       p.seed = seed;
-      slope += 0.5 * radial_slope(generate_terrain(p), 8, 100);
+      slope += 0.5 * radial_slope(terrain::generate_terrain(p), 8, 100);
     }
     EXPECT_NEAR(slope, -(2 * H + 2), 0.1) << "H = " << H;
   }
@@ -154,7 +154,7 @@ TEST(SpectralSynthesis, RowSpectraSlopeIsMinusTwoHPlusOne) {
     std::vector<double> power;
     for (uint64_t seed = 21; seed < 21 + 32; ++seed) {
       p.seed = seed;
-      const std::vector<double> one = row_power(generate_terrain(p));
+      const std::vector<double> one = row_power(terrain::generate_terrain(p));
       if (power.empty()) power.assign(one.size(), 0.0);
       for (size_t k = 0; k < one.size(); ++k) power[k] += one[k];
     }
@@ -171,7 +171,7 @@ TEST(SpectralSynthesis, HasZeroMeanAndTheRequestedStd) {
   // factor-2 window.
   ft_terrain_params p = params(FT_TERRAIN_SPECTRAL, 256);
   p.sigma = 3.0;
-  const HeightStats s = generate_terrain(p).stats();
+  const HeightStats s = terrain::generate_terrain(p).stats();
   EXPECT_NEAR(s.mean, 0.0, 1e-4);
   EXPECT_GT(s.std, 1.5);
   EXPECT_LT(s.std, 6.0);
@@ -182,11 +182,11 @@ TEST(SpectralSynthesis, SameSeedSameBitsOnAnyThreadCount) {
   p.height = 50;  // odd and even sides both handled by the Hermitian fix-up
   p.width = 81;
   p.threads = 1;
-  const Heightfield one = generate_terrain(p);
+  const Heightfield one = terrain::generate_terrain(p);
   p.threads = 2;
-  EXPECT_TRUE(same_bits(one, generate_terrain(p)));
+  EXPECT_TRUE(same_bits(one, terrain::generate_terrain(p)));
   p.seed = 9;
-  EXPECT_FALSE(same_bits(one, generate_terrain(p)));
+  EXPECT_FALSE(same_bits(one, terrain::generate_terrain(p)));
 }
 
 // ---------------------------------------------------------------------------
@@ -209,7 +209,7 @@ TEST(Fbm, RowSpectraFollowTwoHPlusOne) {
     double slope = 0;
     for (uint64_t seed : {31u, 32u}) {
       p.seed = seed;
-      slope += 0.5 * band_slope(row_power(generate_terrain(p), true), 2, 32);
+      slope += 0.5 * band_slope(row_power(terrain::generate_terrain(p), true), 2, 32);
     }
     EXPECT_NEAR(slope, -(2 * H + 1), 0.25) << "H = " << H;
   }
@@ -235,7 +235,7 @@ TEST(Fbm, BasesStayInTheirRangeAndCentre) {
     p.octaves = 1;
     p.frequency = 128;
     p.basis = c.basis;
-    const HeightStats s = generate_terrain(p).stats();
+    const HeightStats s = terrain::generate_terrain(p).stats();
     EXPECT_GE(s.min, c.lo) << "basis " << c.basis;
     EXPECT_LE(s.max, c.hi) << "basis " << c.basis;
     EXPECT_GT(s.max - s.min, 0.5 * (c.hi - c.lo)) << "basis " << c.basis << " uses its range";
@@ -282,9 +282,9 @@ TEST(Fbm, HasNoAxisAlignedArtefacts) {
     p.basis = basis;
     p.frequency = 8;
     p.octaves = 5;
-    const double rotated = axis_to_diagonal_power(generate_terrain(p), 8, 64);
+    const double rotated = axis_to_diagonal_power(terrain::generate_terrain(p), 8, 64);
     p.octave_rotation = 0;
-    const double aligned = axis_to_diagonal_power(generate_terrain(p), 8, 64);
+    const double aligned = axis_to_diagonal_power(terrain::generate_terrain(p), 8, 64);
     EXPECT_GT(rotated, 0.8) << "basis " << basis;
     EXPECT_LT(rotated, 1.25) << "basis " << basis;
     EXPECT_LT(rotated, aligned) << "basis " << basis << ": the rotation must help";
@@ -301,18 +301,18 @@ TEST(Fbm, SameSeedSameBitsOnAnyThreadCountAndSimdPath) {
       p.warp = variant == FT_FBM_STANDARD ? 1.5 : 0.0;
       p.periodic = basis != FT_BASIS_SIMPLEX && variant == FT_FBM_RIDGED;
       p.threads = 1;
-      const Heightfield one = generate_terrain(p);
+      const Heightfield one = terrain::generate_terrain(p);
       p.threads = 2;
-      const Heightfield two = generate_terrain(p);
+      const Heightfield two = terrain::generate_terrain(p);
       noise::detail::set_simd_path(noise::detail::SimdPath::kBaseline);
       ASSERT_STREQ(noise::detail::active_simd_path(), "baseline");
-      const Heightfield base = generate_terrain(p);
+      const Heightfield base = terrain::generate_terrain(p);
       noise::detail::set_simd_path(noise::detail::SimdPath::kAuto);
       EXPECT_TRUE(same_bits(one, two)) << "basis " << basis << " variant " << variant;
       EXPECT_TRUE(same_bits(one, base)) << "basis " << basis << " variant " << variant << ": "
                                         << noise::detail::active_simd_path() << " vs baseline";
       p.seed = 2;
-      EXPECT_FALSE(same_bits(one, generate_terrain(p))) << "another seed, another terrain";
+      EXPECT_FALSE(same_bits(one, terrain::generate_terrain(p))) << "another seed, another terrain";
     }
 }
 
@@ -323,14 +323,14 @@ TEST(Fbm, VariantsAndWarpChangeTheTerrain) {
   std::vector<Heightfield> made;
   for (int v : {FT_FBM_STANDARD, FT_FBM_RIDGED, FT_FBM_HYBRID, FT_FBM_HETERO}) {
     p.variant = v;
-    made.push_back(generate_terrain(p));
+    made.push_back(terrain::generate_terrain(p));
     const HeightStats s = made.back().stats();
     EXPECT_TRUE(std::isfinite(s.min) && std::isfinite(s.max)) << "variant " << v;
     EXPECT_GT(s.std, 0.0) << "variant " << v;
   }
   p.variant = FT_FBM_STANDARD;
   p.warp = 2.0;
-  made.push_back(generate_terrain(p));
+  made.push_back(terrain::generate_terrain(p));
   for (size_t i = 0; i < made.size(); ++i)
     for (size_t j = i + 1; j < made.size(); ++j)
       EXPECT_FALSE(same_bits(made[i], made[j])) << "terrains " << i << " and " << j << " are the same";
@@ -363,17 +363,17 @@ TEST(Fbm, PeriodicFbmAndSpectralTile) {
   p.periodic = 1;
   for (int basis : {FT_BASIS_VALUE, FT_BASIS_GRADIENT, FT_BASIS_CELLULAR_F1}) {
     p.basis = basis;
-    EXPECT_LT(seam_ratio(generate_terrain(p)), 1.3) << "basis " << basis;
+    EXPECT_LT(seam_ratio(terrain::generate_terrain(p)), 1.3) << "basis " << basis;
   }
   p.basis = FT_BASIS_GRADIENT;
   p.warp = 1.0;
-  EXPECT_LT(seam_ratio(generate_terrain(p)), 1.3) << "warped";
+  EXPECT_LT(seam_ratio(terrain::generate_terrain(p)), 1.3) << "warped";
   p.periodic = 0;
   p.warp = 0;
-  EXPECT_GT(seam_ratio(generate_terrain(p)), 2.0) << "not periodic";
+  EXPECT_GT(seam_ratio(terrain::generate_terrain(p)), 2.0) << "not periodic";
   ft_terrain_params s = params(FT_TERRAIN_SPECTRAL, 200);
   s.height = 160;
-  EXPECT_LT(seam_ratio(generate_terrain(s)), 1.3) << "spectral";
+  EXPECT_LT(seam_ratio(terrain::generate_terrain(s)), 1.3) << "spectral";
 }
 
 // ---------------------------------------------------------------------------
@@ -395,7 +395,7 @@ TEST(Interpolated, IncrementsScaleAsLagToTheH) {
       std::vector<double> acc(6, 0.0);
       for (uint64_t seed : {41u, 42u}) {
         p.seed = seed;
-        const Heightfield hf = generate_terrain(p);
+        const Heightfield hf = terrain::generate_terrain(p);
         for (int li = 0; li < 5; ++li) {
           const int t = 2 << li;
           double s = 0;
@@ -419,11 +419,11 @@ TEST(Interpolated, IsDeterministicAndTilesWhenPeriodic) {
   p.height = 120;
   p.lacunarity = 1.7;
   p.threads = 1;
-  const Heightfield a = generate_terrain(p);
+  const Heightfield a = terrain::generate_terrain(p);
   p.threads = 2;
-  EXPECT_TRUE(same_bits(a, generate_terrain(p)));
+  EXPECT_TRUE(same_bits(a, terrain::generate_terrain(p)));
   p.periodic = 1;
-  EXPECT_LT(seam_ratio(generate_terrain(p)), 1.3);
+  EXPECT_LT(seam_ratio(terrain::generate_terrain(p)), 1.3);
 }
 
 TEST(Fbm, ProgressCallbackCanCancel) {
@@ -431,7 +431,7 @@ TEST(Fbm, ProgressCallbackCanCancel) {
     ft_terrain_params p = params(method, 128);
     p.progress = [](void*, double fraction) { return fraction > 0.2 ? 1 : 0; };
     try {
-      generate_terrain(p);
+      terrain::generate_terrain(p);
       ADD_FAILURE() << "method " << method << " ignored the cancel";
     } catch (const Error& e) {
       EXPECT_EQ(e.status(), FT_ERR_CANCELLED) << e.what();
@@ -444,7 +444,7 @@ TEST(Fbm, ProgressCallbackCanCancel) {
 
 void expect_invalid(const ft_terrain_params& p, const std::string& needle) {
   try {
-    generate_terrain(p);
+    terrain::generate_terrain(p);
     ADD_FAILURE() << "accepted; expected an error mentioning '" << needle << "'";
   } catch (const Error& e) {
     EXPECT_EQ(e.status(), FT_ERR_INVALID_ARGUMENT) << e.what();
@@ -481,7 +481,7 @@ TEST(Fbm, RejectsBadParametersWithClearMessages) {
   expect_invalid(fbm([](auto& p) { p.periodic = 1, p.basis = FT_BASIS_SIMPLEX; }), "simplex");
   // 30 octaves are fine when they stay within float resolution.
   ft_terrain_params ok = fbm([](auto& p) { p.octaves = 30, p.lacunarity = 1.3, p.frequency = 2; });
-  EXPECT_NO_THROW(generate_terrain(ok));
+  EXPECT_NO_THROW(terrain::generate_terrain(ok));
 
   ft_terrain_params i = params(FT_TERRAIN_INTERPOLATED, 64);
   i.lacunarity = 1.0;

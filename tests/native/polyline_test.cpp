@@ -26,7 +26,7 @@ namespace ft {
 namespace {
 
 ft_polyline_params fpl(double spread, int depth, uint64_t seed = 1) {
-  ft_polyline_params p = default_polyline_params();
+  ft_polyline_params p = polyline::default_polyline_params();
   p.spread = spread;
   p.depth = depth;
   p.seed = seed;
@@ -35,7 +35,7 @@ ft_polyline_params fpl(double spread, int depth, uint64_t seed = 1) {
 
 ft_status status_of(const ft_polyline_params& p) {
   try {
-    generate_polylines(p);
+    polyline::generate_polylines(p);
     return FT_OK;
   } catch (const Error& e) {
     return e.status();
@@ -49,18 +49,18 @@ double seg_len(const Vec3& a, const Vec3& b) {
 // ---------------------------------------------------------------- statistics
 
 struct Ensemble {
-  MeanSe eta, chi, gamma, mass;
+  polyline::MeanSe eta, chi, gamma, mass;
 };
 
-Ensemble ensemble(FplRng rng, double s, int r, int count) {
-  FplStudyConfig c;
+Ensemble ensemble(polyline::FplRng rng, double s, int r, int count) {
+  polyline::FplStudyConfig c;
   c.rng = rng;
   c.spreads = {s};
   c.depths = {r};
   c.count = count;
   c.seed = 1000;
   c.box_counting = false;
-  const FplStudyRow row = run_fpl_study(c).front();
+  const polyline::FplStudyRow row = polyline::run_fpl_study(c).front();
   return {row.eta, row.chi, row.gamma, row.mass_dimension};
 }
 
@@ -75,7 +75,7 @@ Ensemble ensemble(FplRng rng, double s, int r, int count) {
 //    paper's fig. 4a shows as close but not exact: 1% of gamma.
 TEST(FplStatistics, UniformMatchesPaperFitsAtDepth8) {
   for (double s : {0.1, 0.2, 0.3}) {
-    const Ensemble e = ensemble(FplRng::kUniform, s, 8, 200);
+    const Ensemble e = ensemble(polyline::FplRng::kUniform, s, 8, 200);
     const double paper_gamma = std::exp2(0.71 * std::pow(s, 1.82) * 8);
     EXPECT_NEAR(e.eta.mean / s, 0.65, 3 * e.eta.se / s + 0.02) << "s = " << s;
     EXPECT_NEAR(e.chi.mean / s, 0.29, 3 * e.chi.se / s + 0.007) << "s = " << s;
@@ -88,7 +88,7 @@ TEST(FplStatistics, UniformMatchesPaperFitsAtDepth8) {
 // plus a drift of our means from 0.506 to 0.510 over sigma = 0.05..0.3).
 TEST(FplStatistics, NormalMeanDeviationIsHalfSigma) {
   for (double sigma : {0.1, 0.2}) {
-    const Ensemble e = ensemble(FplRng::kNormal, sigma, 8, 200);
+    const Ensemble e = ensemble(polyline::FplRng::kNormal, sigma, 8, 200);
     EXPECT_NEAR(e.chi.mean / sigma, 0.5, 3 * e.chi.se / sigma + 0.01) << "sigma = " << sigma;
   }
 }
@@ -99,7 +99,7 @@ TEST(FplStatistics, NormalMeanDeviationIsHalfSigma) {
 // tolerance is 15% of D6 - 1 plus 3 standard errors.
 TEST(FplStatistics, MassDimensionFollowsEquation6) {
   for (double s : {0.1, 0.2, 0.3}) {
-    const Ensemble e = ensemble(FplRng::kUniform, s, 8, 200);
+    const Ensemble e = ensemble(polyline::FplRng::kUniform, s, 8, 200);
     const double d6 = 1.0 / (1.0 - 0.71 * std::pow(s, 1.82));
     EXPECT_NEAR(e.mass.mean, d6, 3 * e.mass.se + 0.15 * (d6 - 1)) << "s = " << s;
   }
@@ -112,7 +112,7 @@ TEST(Fpl, VertexCountIsTwoToTheDepthPlusOnePerSegment) {
   ft_polyline_params p = fpl(0.2, 6);
   p.base = base.data();
   p.base_count = 3;
-  const PolylineSet s = generate_polylines(p);
+  const PolylineSet s = polyline::generate_polylines(p);
   EXPECT_EQ(s.line_count(), 1);
   EXPECT_EQ(s.vertex_count(), 2 * 64 + 1);
   EXPECT_EQ(s.radii.size(), s.points.size());
@@ -123,7 +123,7 @@ TEST(Fpl, BaseNodesSurviveExactly) {
   ft_polyline_params p = fpl(0.3, 7, 42);
   p.base = base.data();
   p.base_count = 4;
-  const PolylineSet s = generate_polylines(p);
+  const PolylineSet s = polyline::generate_polylines(p);
   for (int i = 0; i < 4; ++i) {
     const Vec3& v = s.points[size_t(i * 128)];
     EXPECT_EQ(v, (Vec3{base[3 * i], base[3 * i + 1], base[3 * i + 2]})) << "node " << i;
@@ -131,7 +131,7 @@ TEST(Fpl, BaseNodesSurviveExactly) {
 }
 
 TEST(Fpl, ZeroSpreadGivesTheStraightSubdivision) {
-  const PolylineSet s = generate_polylines(fpl(0.0, 5));
+  const PolylineSet s = polyline::generate_polylines(fpl(0.0, 5));
   for (int i = 0; i <= 32; ++i) {
     EXPECT_DOUBLE_EQ(s.points[size_t(i)][0], i / 32.0);
     EXPECT_EQ(s.points[size_t(i)][1], 0.0);
@@ -142,12 +142,12 @@ TEST(Fpl, MinLengthStopsSplittingShortSegments) {
   // s = 0: lengths 1, 1/2, 1/4; 1/4 < 0.3 stops: 4 segments despite r = 8.
   ft_polyline_params p = fpl(0.0, 8);
   p.min_length = 0.3;
-  EXPECT_EQ(generate_polylines(p).vertex_count(), 5);
+  EXPECT_EQ(polyline::generate_polylines(p).vertex_count(), 5);
   // With displacements every final segment is < delta or at full depth, and
   // each was split from one >= delta.
   p = fpl(0.3, 12, 9);
   p.min_length = 0.01;
-  const PolylineSet s = generate_polylines(p);
+  const PolylineSet s = polyline::generate_polylines(p);
   EXPECT_LT(s.vertex_count(), 4097);
   for (size_t i = 1; i < s.points.size(); ++i) EXPECT_LT(seg_len(s.points[i - 1], s.points[i]), 0.01);
 }
@@ -160,18 +160,18 @@ TEST(Fpl, DepthFirstAndBreadthFirstPathsAgreeBitForBit) {
       ft_polyline_params p = fpl(0.25, 14, 5);  // 14 > 12: the blocked path too
       p.rng = rng;
       p.method = method;
-      const PolylineSet a = generate_polylines(p);
+      const PolylineSet a = polyline::generate_polylines(p);
       p.min_length = 1e-300;
-      const PolylineSet b = generate_polylines(p);
+      const PolylineSet b = polyline::generate_polylines(p);
       ASSERT_EQ(a.points.size(), b.points.size());
       EXPECT_TRUE(a.points == b.points) << "rng " << rng << " method " << method;
     }
 }
 
 TEST(Fpl, SameSeedSameBitsOtherSeedOtherLine) {
-  const PolylineSet a = generate_polylines(fpl(0.2, 10, 77));
-  const PolylineSet b = generate_polylines(fpl(0.2, 10, 77));
-  const PolylineSet c = generate_polylines(fpl(0.2, 10, 78));
+  const PolylineSet a = polyline::generate_polylines(fpl(0.2, 10, 77));
+  const PolylineSet b = polyline::generate_polylines(fpl(0.2, 10, 77));
+  const PolylineSet c = polyline::generate_polylines(fpl(0.2, 10, 78));
   EXPECT_TRUE(a.points == b.points);
   EXPECT_FALSE(a.points == c.points);
 }
@@ -190,7 +190,7 @@ TEST(Fpl, GoldenChecksumsPinTheOutput) {
   for (const Case& c : cases) {
     ft_polyline_params p = fpl(0.2, 10, 2024);
     p.method = c.method, p.rng = c.rng, p.branch_prob = c.branch_prob;
-    const PolylineSet s = generate_polylines(p);
+    const PolylineSet s = polyline::generate_polylines(p);
     uint64_t got = test::fnv1a(s.points.data(), s.points.size() * sizeof(Vec3));
     got = test::fnv1a(s.radii.data(), s.radii.size() * sizeof(double), got);
     got = test::fnv1a(s.offsets.data(), s.offsets.size() * sizeof(int64_t), got);
@@ -205,9 +205,9 @@ TEST(Fpl, OutputDoesNotDependOnTheThreadCount) {
   for (int method : {FT_POLYLINE_FPL, FT_POLYLINE_FPL3D}) {
     p.method = method;
     p.threads = 1;
-    const PolylineSet one = generate_polylines(p);
+    const PolylineSet one = polyline::generate_polylines(p);
     p.threads = 3;
-    const PolylineSet three = generate_polylines(p);
+    const PolylineSet three = polyline::generate_polylines(p);
     EXPECT_TRUE(one.points == three.points) << "method " << method;
   }
 }
@@ -218,17 +218,17 @@ TEST(Fpl, ThreeDimensionalDisplacementIsPerpendicular) {
   std::vector<double> base = {0, 0, 0, 1, 2, 3};
   p.base = base.data();
   p.base_count = 2;
-  const PolylineSet s = generate_polylines(p);
+  const PolylineSet s = polyline::generate_polylines(p);
   ASSERT_EQ(s.vertex_count(), 3);
   const Vec3 v{1, 2, 3}, d{s.points[1][0] - 0.5, s.points[1][1] - 1.0, s.points[1][2] - 1.5};
   EXPECT_NEAR(v[0] * d[0] + v[1] * d[1] + v[2] * d[2], 0.0, 1e-12);
   EXPECT_LE(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 0.3 * std::sqrt(14.0) + 1e-12);
   // In a plane with normal z the 3D rule is the 2D rule.
   p = fpl(0.2, 9, 4);
-  const PolylineSet flat = generate_polylines(p);
+  const PolylineSet flat = polyline::generate_polylines(p);
   p.method = FT_POLYLINE_FPL3D;
   p.plane_normal[2] = 1;
-  const PolylineSet planar = generate_polylines(p);
+  const PolylineSet planar = polyline::generate_polylines(p);
   for (size_t i = 0; i < flat.points.size(); ++i)
     for (int k = 0; k < 3; ++k) ASSERT_NEAR(flat.points[i][size_t(k)], planar.points[i][size_t(k)], 1e-12);
 }
@@ -236,7 +236,7 @@ TEST(Fpl, ThreeDimensionalDisplacementIsPerpendicular) {
 TEST(Fpl, DragonHasEqualSegmentsAtRightAngles) {
   ft_polyline_params p = fpl(0.0, 10);
   p.method = FT_POLYLINE_DRAGON;
-  const PolylineSet s = generate_polylines(p);
+  const PolylineSet s = polyline::generate_polylines(p);
   ASSERT_EQ(s.vertex_count(), 1025);
   const double len = std::exp2(-5.0);  // (1/sqrt 2)^10
   for (size_t i = 1; i < s.points.size(); ++i) ASSERT_NEAR(seg_len(s.points[i - 1], s.points[i]), len, 1e-12);
@@ -250,9 +250,9 @@ TEST(Lightning, BranchesForkFromTheLineAndTaper) {
   ft_polyline_params p = fpl(0.1, 10, 7);
   p.branch_prob = 0.5;
   p.radius = 0.01;
-  const PolylineSet s = generate_polylines(p);
+  const PolylineSet s = polyline::generate_polylines(p);
   ASSERT_GT(s.line_count(), 1);
-  const PolylineSet again = generate_polylines(p);
+  const PolylineSet again = polyline::generate_polylines(p);
   EXPECT_TRUE(s.points == again.points);
   EXPECT_TRUE(s.offsets == again.offsets);
   // Each branch starts exactly on a vertex of an earlier line, thinner.
@@ -274,14 +274,14 @@ TEST(Lightning, BranchesForkFromTheLineAndTaper) {
 TEST(ClassicCurves, KochAndArrowheadHaveTheirCountsLengthsAndEnds) {
   ft_polyline_params p = fpl(0, 5);
   p.method = FT_POLYLINE_KOCH;
-  PolylineSet k = generate_polylines(p);
+  PolylineSet k = polyline::generate_polylines(p);
   EXPECT_EQ(k.vertex_count(), 1025);
   EXPECT_NEAR(analysis::line_stats(k, 0).gamma, std::pow(4.0 / 3.0, 5), 1e-9);
   EXPECT_EQ(k.points.back(), (Vec3{1, 0, 0}));
   p.method = FT_POLYLINE_SIERPINSKI;
   for (int d : {4, 5}) {
     p.depth = d;
-    PolylineSet a = generate_polylines(p);
+    PolylineSet a = polyline::generate_polylines(p);
     EXPECT_EQ(a.vertex_count(), int64_t(std::pow(3, d)) + 1);
     EXPECT_NEAR(analysis::line_stats(a, 0).gamma, std::pow(1.5, d), 1e-9);
     EXPECT_EQ(a.points.back(), (Vec3{1, 0, 0}));
@@ -289,10 +289,10 @@ TEST(ClassicCurves, KochAndArrowheadHaveTheirCountsLengthsAndEnds) {
 }
 
 TEST(Ifs, BarnsleyFernFillsItsKnownBox) {
-  ft_polyline_params p = default_polyline_params();
+  ft_polyline_params p = polyline::default_polyline_params();
   p.method = FT_POLYLINE_IFS;
   p.ifs_points = 20000;
-  const PolylineSet s = generate_polylines(p);
+  const PolylineSet s = polyline::generate_polylines(p);
   EXPECT_EQ(s.line_count(), 20000);
   double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
   for (const Vec3& q : s.points) x0 = std::min(x0, q[0]), x1 = std::max(x1, q[0]), y0 = std::min(y0, q[1]), y1 = std::max(y1, q[1]);
@@ -329,12 +329,12 @@ TEST(Ifs, SierpinskiGasketHasBoxDimensionLog3OverLog2) {
   // triangle's sides and holes add counts of lower order than 3^k whose share
   // shrinks like (2/3)^k, so a fit over finer sizes comes closer (1.606 from
   // 1/8 to 1/256 with 2^20 points, at 5 times the run time).
-  ft_polyline_params p = default_polyline_params();
+  ft_polyline_params p = polyline::default_polyline_params();
   p.method = FT_POLYLINE_IFS;
   p.ifs_preset = FT_IFS_SIERPINSKI_GASKET;
   p.ifs_points = 1 << 18;
   p.seed = 3;
-  const PolylineSet s = generate_polylines(p);
+  const PolylineSet s = polyline::generate_polylines(p);
   ASSERT_EQ(s.line_count(), 1 << 18);
   const double h = std::sqrt(3.0) / 2;
   for (const Vec3& q : s.points) {
@@ -352,12 +352,12 @@ TEST(Ifs, SierpinskiGasketHasBoxDimensionLog3OverLog2) {
 TEST(Ifs, UserTableIsUsedAndBadTablesAreRejected) {
   // Two halvings toward 0 and 1 on the x axis: the attractor is [0, 1].
   std::vector<double> t = {0.5, 0, 0, 0.5, 0, 0, 1, 0.5, 0, 0, 0.5, 0.5, 0, 1};
-  ft_polyline_params p = default_polyline_params();
+  ft_polyline_params p = polyline::default_polyline_params();
   p.method = FT_POLYLINE_IFS;
   p.ifs_table = t.data();
   p.ifs_maps = 2;
   p.ifs_points = 5000;
-  const PolylineSet s = generate_polylines(p);
+  const PolylineSet s = polyline::generate_polylines(p);
   for (const Vec3& q : s.points) ASSERT_TRUE(q[0] >= 0 && q[0] <= 1 && q[1] == 0);
   t[6] = -1;
   EXPECT_EQ(status_of(p), FT_ERR_INVALID_ARGUMENT);
@@ -374,7 +374,7 @@ TEST(Profile, VossProfileKeepsItsNodes) {
   p.method = FT_POLYLINE_PROFILE;
   p.base = base.data();
   p.base_count = 3;
-  const PolylineSet s = generate_polylines(p);
+  const PolylineSet s = polyline::generate_polylines(p);
   EXPECT_EQ(s.vertex_count(), 2 * 128 + 1);
   EXPECT_EQ(s.points[128], (Vec3{2, 1, 0}));
   EXPECT_EQ(s.points.back(), (Vec3{4, 0, 0}));
@@ -400,7 +400,7 @@ TEST(PolylineStats, MatchEquationOneOnAKnownLine) {
 }
 
 TEST(PolylineStats, ReportHasEveryMeasure) {
-  const nlohmann::json j = analysis::polyline_report(generate_polylines(fpl(0.2, 10)));
+  const nlohmann::json j = analysis::polyline_report(polyline::generate_polylines(fpl(0.2, 10)));
   for (const char* k : {"lines", "vertices", "length", "eta", "chi", "gamma", "mass_dimension", "box_counting"})
     EXPECT_TRUE(j.contains(k)) << k;
   EXPECT_GT(j["box_counting"]["dimension"].get<double>(), 1.0);
@@ -429,7 +429,7 @@ TEST(PolylineValidation, RejectsBadInputWithClearErrors) {
   p.base = same.data();
   p.base_count = 3;
   try {
-    generate_polylines(p);
+    polyline::generate_polylines(p);
     ADD_FAILURE() << "coincident nodes accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("coincides"), std::string::npos) << e.what();

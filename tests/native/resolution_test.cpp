@@ -25,7 +25,7 @@ using namespace ft;
 namespace {
 
 ft_terrain_params params(int method, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = method;
   p.hurst = 0.65;
   p.seed = seed;
@@ -85,9 +85,9 @@ const uint64_t kSeeds[] = {1, 1234, 77, 2024};
 template <class Coarse, class Fine>
 std::pair<Heightfield, Heightfield> two_sizes(ft_terrain_params p, Coarse coarse, Fine fine) {
   coarse(p);
-  Heightfield a = generate_terrain(p);
+  Heightfield a = terrain::generate_terrain(p);
   fine(p);
-  return {std::move(a), generate_terrain(p)};
+  return {std::move(a), terrain::generate_terrain(p)};
 }
 
 void levels(ft_terrain_params& p, int l) { p.levels = l; }
@@ -119,20 +119,20 @@ TEST(Resolution, MidpointWindowsOfLevelsLPlus2AreLevelsLAtTheirNodes) {
       p.periodic = periodic;
       if (with_reference) p.reference = ref.data(), p.reference_size = 5;
       p.levels = 9;
-      const Heightfield coarse = generate_terrain(p);
+      const Heightfield coarse = terrain::generate_terrain(p);
       const std::string what = std::string(periodic ? "periodic" : "plain") + (with_reference ? " reference" : "");
       p.levels = 11;
       // lod 0: 401 x 301 samples from (1200, 804): every 4th row and column
       // are the coarse samples from (300, 201).
       const int64_t x0 = 1200, y0 = 804;
-      const Heightfield win = generate_terrain_window(p, 0, x0, y0, 401, 301);
+      const Heightfield win = terrain::generate_terrain_window(p, 0, x0, y0, 401, 301);
       size_t bad = 0;
       for (int j = 0; j < 301; j += 4)
         for (int i = 0; i < 401; i += 4)
           bad += !same_bits(win.at(i, j), coarse.at(int((x0 + i) / 4), int((y0 + j) / 4)));
       EXPECT_EQ(bad, 0u) << what << " lod 0";
       // lod 2: the window (37, 450) 100 x 63 of the levels-9 terrain.
-      const Heightfield lod = generate_terrain_window(p, 2, 37, 450, 100, 63);
+      const Heightfield lod = terrain::generate_terrain_window(p, 2, 37, 450, 100, 63);
       bad = 0;
       for (int j = 0; j < 63; ++j)
         for (int i = 0; i < 100; ++i) bad += !same_bits(lod.at(i, j), coarse.at(37 + i, 450 + j));
@@ -142,14 +142,14 @@ TEST(Resolution, MidpointWindowsOfLevelsLPlus2AreLevelsLAtTheirNodes) {
 
 TEST(Resolution, ProfileLevelsLEqualLevelsLPlus2AtTheirNodesBitForBit) {
   for (uint64_t seed : kSeeds) {
-    ft_profile_params p = default_profile_params();
+    ft_profile_params p = terrain::default_profile_params();
     p.seed = seed;
     p.hurst = 0.65;
     p.levels = 8;
     std::vector<float> coarse(257), fine(1025);
-    generate_profile(p, coarse.data(), coarse.size());
+    terrain::generate_profile(p, coarse.data(), coarse.size());
     p.levels = 10;
-    generate_profile(p, fine.data(), fine.size());
+    terrain::generate_profile(p, fine.data(), fine.size());
     for (size_t i = 0; i < coarse.size(); ++i) ASSERT_EQ(coarse[i], fine[4 * i]) << "seed " << seed << " at " << i;
   }
 }
@@ -160,7 +160,7 @@ TEST(Resolution, MidpointStagesNeverDependOnTheLevelsBelowThem) {
     ft_terrain_params p = params(FT_TERRAIN_MIDPOINT, 1234);
     p.periodic = periodic;
     std::vector<Heightfield> t;
-    for (int levels : {8, 9, 10}) p.levels = levels, t.push_back(generate_terrain(p));
+    for (int levels : {8, 9, 10}) p.levels = levels, t.push_back(terrain::generate_terrain(p));
     EXPECT_EQ(differing_nodes(t[0], t[1], 2), 0u) << periodic;
     EXPECT_EQ(differing_nodes(t[1], t[2], 2), 0u) << periodic;
     EXPECT_EQ(differing_nodes(t[0], t[2], 4), 0u) << periodic;
@@ -263,13 +263,13 @@ TEST(Resolution, FbmAndMandelbrotSampleTheSameField) {
       ft_terrain_params p = params(FT_TERRAIN_FBM, seed);
       p.periodic = periodic;
       p.width = p.height = 256;
-      const Heightfield coarse = generate_terrain(p);
+      const Heightfield coarse = terrain::generate_terrain(p);
       p.width = p.height = 1024;
-      EXPECT_GE(node_correlation(coarse, generate_terrain(p), 4), 0.999) << "seed " << seed << " periodic " << periodic;
+      EXPECT_GE(node_correlation(coarse, terrain::generate_terrain(p), 4), 0.999) << "seed " << seed << " periodic " << periodic;
     }
   ft_terrain_params m = params(FT_TERRAIN_MANDELBROT, 1);
   m.width = m.height = 257;
-  const Heightfield coarse = generate_terrain(m);
+  const Heightfield coarse = terrain::generate_terrain(m);
   m.width = m.height = 1025;
-  EXPECT_GE(node_correlation(coarse, generate_terrain(m), 4), 0.99);
+  EXPECT_GE(node_correlation(coarse, terrain::generate_terrain(m), 4), 0.99);
 }

@@ -26,7 +26,7 @@ namespace ft {
 namespace {
 
 ft_terrain_params terrain(int method, int levels, double hurst, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = method;
   p.levels = levels;
   p.hurst = hurst;
@@ -55,7 +55,7 @@ double aligned_hurst_2d(int method, int levels, double hurst, int count, int jmi
   for (int k = 0; k < count; ++k) {
     ft_terrain_params p = terrain(method, levels, hurst, 1000 + k);
     p.threads = 1;
-    const Heightfield hf = generate_terrain(p);
+    const Heightfield hf = terrain::generate_terrain(p);
     const int n = hf.width() - 1;
     for (int j = jmin; j <= jmax; ++j) {
       const int d = 1 << j;
@@ -92,11 +92,11 @@ TEST_P(ProfileScaling, AlignedIncrementVarianceGrowsAsLagToTheTwoH) {
   std::vector<double> sum(levels + 1, 0.0), num(levels + 1, 0.0);
   std::vector<float> x((1 << levels) + 1);
   for (int k = 0; k < count; ++k) {
-    ft_profile_params p = default_profile_params();
+    ft_profile_params p = terrain::default_profile_params();
     p.levels = levels;
     p.hurst = H;
     p.seed = 77 + k;
-    generate_profile(p, x.data(), x.size());
+    terrain::generate_profile(p, x.data(), x.size());
     for (int j = 0; j <= levels; ++j) {
       const int d = 1 << j;
       for (int i = 0; i + d <= (1 << levels); i += d) {
@@ -153,7 +153,7 @@ TEST_P(ReferencePoints, ValuesSurviveExactlyAtTheirNodes) {
   ft_terrain_params p = terrain(GetParam(), 8, 0.7, 5);
   p.reference = ref.data();
   p.reference_size = side;
-  const Heightfield hf = generate_terrain(p);
+  const Heightfield hf = terrain::generate_terrain(p);
   const int step = 256 >> m;
   for (int j = 0; j < side; ++j)
     for (int i = 0; i < side; ++i)
@@ -175,7 +175,7 @@ TEST(ReferencePoints, ScaleFromMeanOfReferencesScalesTheDetail) {
     p.reference = r.data();
     p.reference_size = side;
     p.reference_scale = FT_REFSCALE_MEAN;
-    const Heightfield hf = generate_terrain(p);
+    const Heightfield hf = terrain::generate_terrain(p);
     return hf.at(1, 1) - 0.25 * (hf.at(0, 0) + hf.at(2, 0) + hf.at(0, 2) + hf.at(2, 2));
   };
   EXPECT_NEAR(detail(ref10), 10.0 * detail(ref), 1e-3 * std::fabs(detail(ref10)) + 1e-5);
@@ -183,12 +183,12 @@ TEST(ReferencePoints, ScaleFromMeanOfReferencesScalesTheDetail) {
 
 TEST(ReferencePoints, ProfileValuesSurviveExactly) {
   std::vector<float> ref = {0.0f, 2.0f, -1.0f, 0.5f, 3.0f};  // 2^2 + 1
-  ft_profile_params p = default_profile_params();
+  ft_profile_params p = terrain::default_profile_params();
   p.levels = 10;
   p.reference = ref.data();
   p.reference_size = 5;
   std::vector<float> x(1025);
-  generate_profile(p, x.data(), x.size());
+  terrain::generate_profile(p, x.data(), x.size());
   for (int i = 0; i < 5; ++i) EXPECT_EQ(x[size_t(i) * 256], ref[size_t(i)]);
 }
 
@@ -198,7 +198,7 @@ TEST(Periodic, OppositeEdgesAreEqualSoTilesMeetWithoutASeam) {
   for (int method : {FT_TERRAIN_MIDPOINT, FT_TERRAIN_ADDITIONS}) {
     ft_terrain_params p = terrain(method, 7, 0.6, 3);
     p.periodic = 1;
-    const Heightfield hf = generate_terrain(p);
+    const Heightfield hf = terrain::generate_terrain(p);
     const int n = hf.width() - 1;
     for (int k = 0; k <= n; ++k) {
       ASSERT_EQ(hf.at(k, 0), hf.at(k, n));
@@ -223,7 +223,7 @@ TEST(Periodic, IncrementsAcrossTheSeamAreLikeThoseInside) {
     for (int k = 0; k < 240; ++k) {
       ft_terrain_params p = terrain(FT_TERRAIN_MIDPOINT, 7, 0.5, 400 + k);
       p.periodic = periodic;
-      const Heightfield hf = generate_terrain(p);
+      const Heightfield hf = terrain::generate_terrain(p);
       const int n = 128, d = 32;
       for (int y = 0; y < n; ++y) {
         const double a = hf.at(d / 2, y) - hf.at(n - d / 2, y);
@@ -244,10 +244,10 @@ TEST(Determinism, SameSeedGivesTheSameBitsOnAnyThreadCount) {
   for (int method : {FT_TERRAIN_MIDPOINT, FT_TERRAIN_ADDITIONS}) {
     ft_terrain_params p = terrain(method, 8, 0.7, 11);
     p.threads = 1;
-    const Heightfield one = generate_terrain(p);
+    const Heightfield one = terrain::generate_terrain(p);
     for (int t : {2, 3, 8}) {
       p.threads = t;
-      const Heightfield many = generate_terrain(p);
+      const Heightfield many = terrain::generate_terrain(p);
       ASSERT_EQ(std::memcmp(one.data(), many.data(), one.size() * sizeof(float)), 0) << t << " threads";
     }
   }
@@ -267,7 +267,7 @@ TEST(Determinism, GoldenChecksumsPinTheOutput) {
   for (const Case& c : cases) {
     ft_terrain_params p = terrain(c.method, 8, 0.8, 2024);
     p.periodic = c.periodic;
-    const Heightfield hf = generate_terrain(p);
+    const Heightfield hf = terrain::generate_terrain(p);
     const uint64_t got = checksum(hf.data(), hf.size());
     std::printf("method %d periodic %d: 0x%016llxULL\n", c.method, c.periodic, (unsigned long long)got);
     EXPECT_EQ(got, c.want);
@@ -293,24 +293,24 @@ TEST(Determinism, GoldenChecksumsPinTheOutput) {
     ft_terrain_params p = terrain(c.method, 8, 0.7, 2024);
     p.width = 150, p.height = 101;
     p.basis = c.basis, p.variant = c.variant, p.warp = c.warp, p.periodic = c.periodic;
-    const Heightfield hf = generate_terrain(p);
+    const Heightfield hf = terrain::generate_terrain(p);
     const uint64_t got = checksum(hf.data(), hf.size());
     std::printf("method %d basis %d variant %d periodic %d: 0x%016llxULL\n", c.method, c.basis, c.variant,
                 c.periodic, (unsigned long long)got);
     EXPECT_EQ(got, c.want) << "method " << c.method << " basis " << c.basis << " variant " << c.variant;
   }
   std::vector<float> x(1025);
-  ft_profile_params pp = default_profile_params();
+  ft_profile_params pp = terrain::default_profile_params();
   pp.seed = 2024;
-  generate_profile(pp, x.data(), x.size());
+  terrain::generate_profile(pp, x.data(), x.size());
   const uint64_t got = checksum(x.data(), x.size());
   std::printf("profile: 0x%016llxULL\n", (unsigned long long)got);
   EXPECT_EQ(got, 0xda88b8ce154ba34dULL);
 }
 
 TEST(Determinism, DifferentSeedsGiveDifferentTerrains) {
-  const Heightfield a = generate_terrain(terrain(FT_TERRAIN_MIDPOINT, 6, 0.5, 1));
-  const Heightfield b = generate_terrain(terrain(FT_TERRAIN_MIDPOINT, 6, 0.5, 2));
+  const Heightfield a = terrain::generate_terrain(terrain(FT_TERRAIN_MIDPOINT, 6, 0.5, 1));
+  const Heightfield b = terrain::generate_terrain(terrain(FT_TERRAIN_MIDPOINT, 6, 0.5, 2));
   EXPECT_NE(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0);
 }
 
@@ -318,7 +318,7 @@ TEST(Determinism, DifferentSeedsGiveDifferentTerrains) {
 
 ft_status status_of(const ft_terrain_params& p, std::string* message = nullptr) {
   try {
-    generate_terrain(p);
+    terrain::generate_terrain(p);
     return FT_OK;
   } catch (const Error& e) {
     if (message) *message = e.what();
@@ -369,7 +369,7 @@ TEST(WorldSize, EveryMethodRecordsTheWorldSizeItWasGiven) {
   // It used to be set by the midpoint and additions branch only.
   for (ft_terrain_params p : every_method()) {
     p.world_size = 40;
-    EXPECT_EQ(generate_terrain(p).world_size(), 40.0) << "method " << p.method;
+    EXPECT_EQ(terrain::generate_terrain(p).world_size(), 40.0) << "method " << p.method;
   }
 }
 
@@ -383,10 +383,10 @@ TEST(BadInput, SigmaThatCouldOverflowFloatIsRefusedBeforeAnyWork) {
       EXPECT_NE(msg.find("float range"), std::string::npos) << msg;
     }
   }
-  ft_profile_params q = default_profile_params();
+  ft_profile_params q = terrain::default_profile_params();
   q.sigma = 1e300;
   std::vector<float> x((size_t(1) << q.levels) + 1);
-  EXPECT_THROW(generate_profile(q, x.data(), x.size()), Error);
+  EXPECT_THROW(terrain::generate_profile(q, x.data(), x.size()), Error);
 }
 
 // The bound is an upper bound: at the largest sigma it allows, every method
@@ -402,7 +402,7 @@ TEST(BadInput, TheLargestAllowedSigmaGivesFiniteHeights) {
     const double largest = std::strtod(msg.c_str() + at + 8, nullptr);
     ASSERT_GT(largest, 1e30) << msg;  // sane sigmas stay far inside
     p.sigma = largest * 0.999;
-    const Heightfield hf = generate_terrain(p);
+    const Heightfield hf = terrain::generate_terrain(p);
     const HeightStats st = hf.stats();
     EXPECT_TRUE(std::isfinite(st.min) && std::isfinite(st.max)) << "method " << p.method;
     EXPECT_TRUE(std::isfinite(float(st.max) - float(st.min))) << "method " << p.method;
@@ -511,7 +511,7 @@ TEST(MidpointSteps, Avx512KernelsGiveThePortableLoopsBits) {
   // random values: strides 2, 4 and 8, several starts x0, counts that end
   // inside a vector group and span several, and nothing written but the
   // points (the other places keep their values, 16 past the end included).
-  if (!detail::steps_avx512()) GTEST_SKIP() << "no AVX-512 on this CPU (or FT_DISPATCH caps it)";
+  if (!terrain::detail::steps_avx512()) GTEST_SKIP() << "no AVX-512 on this CPU (or FT_DISPATCH caps it)";
   std::vector<float> up(400), dn(400), g(40);
   uint32_t state = 12345;
   auto next = [&state] { return float(int32_t(state = state * 1664525u + 1013904223u)) * 0x1p-31f; };
@@ -519,7 +519,7 @@ TEST(MidpointSteps, Avx512KernelsGiveThePortableLoopsBits) {
   for (auto& v : dn) v = next();
   for (auto& v : g) v = next();
   for (const int big : {2, 4, 8}) {
-    ASSERT_TRUE(detail::steps_avx512_stride(big));
+    ASSERT_TRUE(terrain::detail::steps_avx512_stride(big));
     const int half = big / 2;
     for (int x0 = half; x0 <= half + 3; ++x0)
       for (int count = 0; count <= 37; ++count) {
@@ -529,11 +529,11 @@ TEST(MidpointSteps, Avx512KernelsGiveThePortableLoopsBits) {
         for (const bool square : {true, false}) {
           std::vector<float> a = row, b = row;
           if (square) {
-            detail::square_row_avx512(a.data(), up.data(), dn.data(), x0, count, big, 0.3f, g.data());
-            detail::square_row_portable(b.data(), up.data(), dn.data(), x0, count, big, half, 0.3f, g.data());
+            terrain::detail::square_row_avx512(a.data(), up.data(), dn.data(), x0, count, big, 0.3f, g.data());
+            terrain::detail::square_row_portable(b.data(), up.data(), dn.data(), x0, count, big, half, 0.3f, g.data());
           } else {
-            detail::diamond_interior_avx512(a.data(), up.data(), dn.data(), x0, count, big, 0.3f, g.data());
-            detail::diamond_interior_portable(b.data(), up.data(), dn.data(), x0, count, big, half, 0.3f, g.data());
+            terrain::detail::diamond_interior_avx512(a.data(), up.data(), dn.data(), x0, count, big, 0.3f, g.data());
+            terrain::detail::diamond_interior_portable(b.data(), up.data(), dn.data(), x0, count, big, half, 0.3f, g.data());
           }
           ASSERT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0)
               << (square ? "square" : "diamond") << " big " << big << " x0 " << x0 << " count " << count;

@@ -33,7 +33,7 @@ namespace fs = std::filesystem;
 namespace {
 
 ft_terrain_params midpoint(int levels, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.levels = levels;
   p.hurst = 0.7;
   p.seed = seed;
@@ -86,7 +86,7 @@ TEST(Tiles, Png16TilesAreTheQuantisedWholeAndEdgesAgree) {
   const fs::path dir = fresh_dir("png");
   tiles::TileSet set(p, 128, tiles::TileFormat::png16, dir.string());
   EXPECT_EQ(write_all(set, p), 16);
-  const Heightfield whole = generate_terrain(p);
+  const Heightfield whole = terrain::generate_terrain(p);
   const double lo = set.spec().height_min, hi = set.spec().height_max;
   const HeightStats s = whole.stats();
   EXPECT_EQ(lo, s.min);  // levels <= 12: the range pass is the whole terrain, exact
@@ -125,7 +125,7 @@ TEST(Tiles, TiffTilesHoldTheExactWindow) {
   const fs::path dir = fresh_dir("tiff");
   tiles::TileSet set(p, 100, tiles::TileFormat::tiff, dir.string());  // 257: tiles at 0, 100, 200 (the last 57 wide)
   EXPECT_EQ(write_all(set, p), 9);
-  const Heightfield whole = generate_terrain(p);
+  const Heightfield whole = terrain::generate_terrain(p);
   EXPECT_EQ(set.spec().height_min, whole.stats().min);
   EXPECT_EQ(set.spec().height_max, whole.stats().max);
   const Heightfield t = io::read_heightfield((dir / tiles::tile_file_name(set.spec(), 2, 1)).string());
@@ -148,7 +148,7 @@ TEST(Tiles, MidpointBoundHoldsTheWholeAndIsTight) {
     const ft_terrain_params p = midpoint(13, seed);  // 8193^2: the coarse pass is lod 1
     const tiles::HeightRange r = tiles::tileset_height_range(p, tiles::make_tile_grid(8193, 8193, 4096));
     EXPECT_EQ(r.how, "bound");
-    const HeightStats s = generate_terrain(p).stats();
+    const HeightStats s = terrain::generate_terrain(p).stats();
     EXPECT_LE(r.min, s.min);
     EXPECT_GE(r.max, s.max);
     const double margin = tiles::midpoint_bound_margin(13, 12, 0.7, 1.0);
@@ -167,7 +167,7 @@ TEST(Tiles, LandformsTakeTheExactRange) {
   p.levelling = 1, p.height_offset = 1, p.falloff = FT_FALLOFF_RADIAL, p.falloff_width = 0.5, p.edge_level = -2;
   const tiles::HeightRange r = tiles::tileset_height_range(p, tiles::make_tile_grid(513, 513, 256));
   EXPECT_EQ(r.how, "exact");
-  const HeightStats s = generate_terrain(p).stats();
+  const HeightStats s = terrain::generate_terrain(p).stats();
   EXPECT_EQ(r.min, s.min);
   EXPECT_EQ(r.max, s.max);
 }
@@ -333,7 +333,7 @@ TEST(Tiles, CliWritesAMosaicThatGdalinfoOpens) {
 }
 
 TEST(Tiles, SpectralIsRefused) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = FT_TERRAIN_SPECTRAL;
   EXPECT_THROW(tiles::TileSet(p, 128, tiles::TileFormat::png16, fresh_dir("spectral").string()), Error);
 }
@@ -343,7 +343,7 @@ TEST(Tiles, SpectralIsRefused) {
 // aligned pair counted once, only the order of the additions differs.
 TEST(Tiles, HurstFromTileSumsEqualsTheWhole) {
   const ft_terrain_params p = midpoint(10, 21);  // 1025^2; default lags 1..64
-  const Heightfield whole = generate_terrain(p);
+  const Heightfield whole = terrain::generate_terrain(p);
   for (analysis::HurstMethod m : {analysis::HurstMethod::kVariogramAligned, analysis::HurstMethod::kMadogramAligned}) {
     analysis::HurstOptions o;
     o.method = m;
@@ -354,8 +354,8 @@ TEST(Tiles, HurstFromTileSumsEqualsTheWhole) {
     std::vector<double> sum(lags.size(), 0.0), count(lags.size(), 0.0);
     for (int32_t row = 0; row < g.rows(); ++row)
       for (int32_t col = 0; col < g.columns(); ++col) {
-        const Window w = g.window(col, row);
-        const Heightfield t = generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height);
+        const terrain::Window w = g.window(col, row);
+        const Heightfield t = terrain::generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height);
         analysis::add_window_increments(t, m, w.x0, w.y0, 1025, 1025, lags, sum.data(), count.data());
       }
     // Pairs at lag 1: 2 x 1025 x 1024 (rows and columns), each once.
@@ -369,7 +369,7 @@ TEST(Tiles, HurstFromTileSumsEqualsTheWhole) {
   plain.method = analysis::HurstMethod::kVariogram;
   EXPECT_THROW(analysis::surface_lags(plain, 1025, 1025), Error);
   // A lag longer than the tile leaves it: refused.
-  Heightfield t = generate_terrain_window(p, 0, 0, 0, 33, 33);
+  Heightfield t = terrain::generate_terrain_window(p, 0, 0, 0, 33, 33);
   std::vector<double> s(8, 0.0), c(8, 0.0);
   EXPECT_THROW(analysis::add_window_increments(t, analysis::HurstMethod::kVariogramAligned, 0, 0, 1025, 1025, {64}, s.data(), c.data()),
                Error);
@@ -392,7 +392,7 @@ TEST(Tiles, WindowReadBackAtLodIsTheCoarserStage) {
       const int64_t x0 = lod ? 5 : 100, y0 = lod ? 17 : 120;  // across tile edges at both lods
       const int32_t w = lod ? 90 : 200, h = lod ? 70 : 150;
       const Heightfield got = tiles::read_tileset_window(dir.string(), lod, x0, y0, w, h);
-      const Heightfield want = generate_terrain_window(p, lod, x0, y0, w, h);
+      const Heightfield want = terrain::generate_terrain_window(p, lod, x0, y0, w, h);
       const double tol = f == tiles::TileFormat::tiff ? 0.0 : 0.5 * (set.spec().height_max - set.spec().height_min) / 65535 + 1e-6;
       double worst = 0;
       for (int32_t j = 0; j < h; ++j)

@@ -19,7 +19,7 @@ using namespace ft;
 namespace {
 
 ft_terrain_params params(int method, uint64_t seed) {
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = method;
   p.levels = 12;  // 4097^2
   p.width = p.height = 4097;
@@ -40,8 +40,8 @@ std::vector<float> reference_grid() {
 
 // 16 windows of odd sizes at odd offsets inside a w x h terrain, among them
 // 1 x 1 samples, a full row, and windows at every edge and corner.
-std::vector<Window> sixteen_windows(int64_t w, int64_t h) {
-  std::vector<Window> out = {{0, 0, 1, 1},
+std::vector<terrain::Window> sixteen_windows(int64_t w, int64_t h) {
+  std::vector<terrain::Window> out = {{0, 0, 1, 1},
                              {w - 1, h - 1, 1, 1},
                              {0, 0, 257, 131},
                              {w - 333, 0, 333, 95},
@@ -64,9 +64,9 @@ std::vector<Window> sixteen_windows(int64_t w, int64_t h) {
 
 // Every one of the 16 windows equals the whole's samples bit for bit.
 void expect_windows_equal_whole(const ft_terrain_params& p, const char* what) {
-  const Heightfield whole = generate_terrain(p);
-  for (const Window& win : sixteen_windows(whole.width(), whole.height())) {
-    const Heightfield part = generate_terrain_window(p, 0, win.x0, win.y0, win.width, win.height);
+  const Heightfield whole = terrain::generate_terrain(p);
+  for (const terrain::Window& win : sixteen_windows(whole.width(), whole.height())) {
+    const Heightfield part = terrain::generate_terrain_window(p, 0, win.x0, win.y0, win.width, win.height);
     ASSERT_EQ(part.width(), win.width);
     ASSERT_EQ(part.height(), win.height);
     for (int32_t j = 0; j < win.height; ++j) {
@@ -135,13 +135,13 @@ TEST(TerrainWindow, LevelOfDetailIsEveryOtherSampleOfTheWhole) {
   for (int method : {FT_TERRAIN_MIDPOINT, FT_TERRAIN_ADDITIONS}) {
     ft_terrain_params p = params(method, 11);
     p.levels = 9;
-    const Heightfield whole = generate_terrain(p);
+    const Heightfield whole = terrain::generate_terrain(p);
     for (int lod : {1, 3, 9}) {
       int64_t ew = 0, eh = 0;
-      terrain_extent(p, lod, &ew, &eh);
+      terrain::terrain_extent(p, lod, &ew, &eh);
       ASSERT_EQ(ew, (int64_t(1) << (9 - lod)) + 1);
       const int32_t w = int32_t(ew) - 1, h = int32_t(std::min<int64_t>(eh, 7));
-      const Heightfield part = generate_terrain_window(p, lod, 1, 0, w, h);
+      const Heightfield part = terrain::generate_terrain_window(p, lod, 1, 0, w, h);
       for (int32_t j = 0; j < h; ++j)
         for (int32_t i = 0; i < w; ++i)
           ASSERT_EQ(part.data()[size_t(j) * size_t(w) + size_t(i)],
@@ -160,15 +160,15 @@ TEST(TerrainWindow, WindowsOfALevel24TerrainAgreeWhereTheyOverlap) {
     p.levels = 24;
     p.periodic = periodic;
     const int64_t side = (int64_t(1) << 24) + 1;
-    const Heightfield a = generate_terrain_window(p, 0, side - 300, side - 200, 300, 200);
-    const Heightfield b = generate_terrain_window(p, 0, side - 150, side - 120, 150, 120);
+    const Heightfield a = terrain::generate_terrain_window(p, 0, side - 300, side - 200, 300, 200);
+    const Heightfield b = terrain::generate_terrain_window(p, 0, side - 150, side - 120, 150, 120);
     for (int j = 0; j < 120; ++j)
       for (int i = 0; i < 150; ++i) {
         const float va = a.data()[size_t(80 + j) * 300 + size_t(150 + i)];
         ASSERT_TRUE(std::isfinite(va));
         ASSERT_EQ(va, b.data()[size_t(j) * 150 + size_t(i)]) << i << ", " << j;
       }
-    const Heightfield c = generate_terrain_window(p, 2, (side - 1) / 4 - 74, (side - 1) / 4 - 49, 75, 50);
+    const Heightfield c = terrain::generate_terrain_window(p, 2, (side - 1) / 4 - 74, (side - 1) / 4 - 49, 75, 50);
     for (int j = 0; j < 50; ++j)
       for (int i = 0; i < 75; ++i)
         ASSERT_EQ(c.data()[size_t(j) * 75 + size_t(i)], a.data()[size_t(4 * j + 3) * 300 + size_t(4 * i + 3)]);
@@ -178,7 +178,7 @@ TEST(TerrainWindow, WindowsOfALevel24TerrainAgreeWhereTheyOverlap) {
 TEST(TerrainWindow, BadWindowsAndSpectralAreRefusedWithAMessage) {
   auto message = [](const ft_terrain_params& p, int lod, int64_t x0, int64_t y0, int32_t w, int32_t h) {
     try {
-      generate_terrain_window(p, lod, x0, y0, w, h);
+      terrain::generate_terrain_window(p, lod, x0, y0, w, h);
     } catch (const Error& e) {
       return std::string(e.what());
     }

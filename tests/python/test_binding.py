@@ -30,7 +30,7 @@ def test_every_declared_symbol_has_argtypes_and_restype(core):
 def test_binding_declares_every_exported_function_of_its_headers(core, header_dir):
     # Every ft_ function declared in the headers the binding covers has a signature.
     from fracterra.core.binding import SIGNATURES
-    for header in ("core.h", "terrain.h", "mesh.h", "polyline.h", "subdiv.h", "params.h", "raster.h"):
+    for header in ("core.h", "terrain.h", "mesh.h", "polyline.h", "subdiv.h", "params.h", "raster.h", "splat.h"):
         text = (header_dir / header).read_text()
         for name in re.findall(r"FT_API [^(;]*?\b(ft_\w+)\s*\(", text):
             assert name in SIGNATURES, f"{name} from {header} has no ctypes signature"
@@ -58,6 +58,7 @@ def test_ctypes_structs_follow_the_header_field_order(core, header_dir):
                                 ("povray.h", "ft_pov_scene_params", lib.pov_scene_params_type),
                                 ("povray.h", "ft_pov_sweep_params", lib.pov_sweep_params_type),
                                 ("raster.h", "ft_dem_refine_params", lib.dem_refine_params_type),
+                                ("splat.h", "ft_splat_params", lib.splat_params_type),
                                 ("subdiv.h", "ft_fractalize_params", lib.fractalize_params_type)):
         fields = _struct_fields((header_dir / header).read_text(), struct)
         fields = [f.split("[")[0] for f in fields]

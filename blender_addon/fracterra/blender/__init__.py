@@ -18,6 +18,7 @@ from .ops import pov_export
 from .common import preferences as prefs
 from .common import presets
 from .ui import properties as props
+from .ui import erosion_layout
 from .ops import terrain as terrain_ops
 from .ops import tiles_import as tiles_import_op
 from .ui.menus import MENUS
@@ -53,6 +54,7 @@ def on_register():
     bpy.types.Object.fracterra_terrain = bpy.props.PointerProperty(type=props.FRACTERRA_PG_terrain)
     bpy.types.Object.fracterra_measures = bpy.props.PointerProperty(type=props.FRACTERRA_PG_measures)
     bpy.types.Object.fracterra_polyline = bpy.props.PointerProperty(type=props.FRACTERRA_PG_polyline)
+    erosion_layout.register()
     try:
         presets.install_presets()
     except OSError as e:  # a read-only user folder must not stop the add-on
@@ -65,6 +67,7 @@ def on_unregister():
             handlers.remove(restore_after_undo)
     if final_for_render in bpy.app.handlers.render_pre:
         bpy.app.handlers.render_pre.remove(final_for_render)
+    erosion_layout.unregister()
     del bpy.types.Object.fracterra_polyline
     del bpy.types.Object.fracterra_measures
     del bpy.types.Object.fracterra_terrain

@@ -11,13 +11,13 @@ import ctypes
 import os
 import threading
 from ctypes import (CFUNCTYPE, POINTER, Structure, c_char_p, c_double, c_float, c_int32, c_int64,
-                    c_size_t, c_uint32, c_uint64, c_void_p)
+                    c_size_t, c_uint16, c_uint32, c_uint64, c_void_p)
 from pathlib import Path
 
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 2
-ABI_MINOR_MIN = 13  # 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library); 2.12: ft_erosion_preset_fitted, uplift_follows_terrain; 2.13: ft_terrain_build (pipeline.h)
+ABI_MINOR_MIN = 19  # 2.19: splat.h, ft_drainage_statistics bound; 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library); 2.12: ft_erosion_preset_fitted, uplift_follows_terrain; 2.13: ft_terrain_build (pipeline.h)
 ENV_VAR = "FRACTERRA_LIBRARY"
 LIBRARY_NAME = "libfracterra.so"
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
@@ -52,7 +52,8 @@ class ParamInfo(Structure):
 
 # fracterra/params.h: the described structs and field types.
 PARAMS_KINDS = {"terrain": 0, "profile": 1, "polyline": 2, "fractalize": 3, "pov_scene": 4, "pov_sweep": 5,
-                "hurst": 6, "clouds": 7, "dem_refine": 8, "erosion": 9, "build": 10, "hydrology": 11}
+                "hurst": 6, "clouds": 7, "dem_refine": 8, "erosion": 9, "build": 10, "hydrology": 11,
+                "splat": 13}
 FT_PARAM = ("uint32", "int32", "int64", "uint64", "float", "double", "bool", "enum", "pointer", "string",
             "callback", "opaque")
 FLAG_STRUCT_SIZE, FLAG_DATA, FLAG_MIN_EXCLUSIVE, FLAG_MAX_EXCLUSIVE, FLAG_ZERO_IS_AUTO = 1, 2, 4, 8, 16
@@ -148,6 +149,12 @@ class HurstResult(Structure):
     ]
 
 
+class DrainageStats(Structure):
+    """ft_drainage_stats (fracterra/erosion.h)."""
+    _fields_ = [("hack_h", c_double), ("hack_h_stderr", c_double), ("theta", c_double),
+                ("theta_stderr", c_double), ("hack_bins", c_int32), ("theta_bins", c_int32)]
+
+
 class PovSceneLines(Structure):
     """ft_pov_scene_lines (fracterra/povray.h): an array of them is the data that
     ft_pov_scene_params.lines points to (described as an opaque pointer)."""
@@ -241,6 +248,13 @@ SIGNATURES = {
     "ft_erosion_preset": (c_int32, [c_char_p, _Described("erosion")]),
     "ft_erosion_preset_fitted": (c_int32, [c_char_p, _HF, _Described("erosion")]),
     "ft_erode": (c_int32, [_HF, _Described("erosion"), POINTER(_HF), POINTER(_HF)]),
+    "ft_drainage_statistics": (c_int32, [_HF, c_int32, c_double, POINTER(DrainageStats)]),
+    # splat.h (ABI 2.19): splat (weight) and colour maps by layer rules (ft_splat_params, described).
+    "ft_splat_params_init": (c_int32, [_Described("splat")]),
+    "ft_splat_default_layers": (c_int32, [_Described("splat"), c_int32, POINTER(c_int32)]),
+    "ft_splat_weights": (c_int32, [_HF, _HF, _HF, _Described("splat"), c_int32, c_int32, POINTER(c_uint16),
+                                   c_size_t]),
+    "ft_splat_colors": (c_int32, [_HF, _HF, _HF, _Described("splat"), c_int32, _F32P, c_size_t]),
     # pipeline.h (ABI 2.13): the whole terrain in one call; maps NULL or FT_MAP_COUNT handles.
     "ft_build_params_init": (c_int32, [_Described("build")]),
     "ft_terrain_build": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF)]),

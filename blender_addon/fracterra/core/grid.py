@@ -49,12 +49,16 @@ def vertices(hf, world_size_x, world_size_y, z_floor=NO_FLOOR, out=None):
     return out
 
 
-def grid_arrays(hf, world_size, z_floor=NO_FLOOR, uvs=True):
-    """Everything needed to build the mesh of heightfield `hf` in one pass."""
+def grid_arrays(hf, world_size, z_floor=NO_FLOOR, uvs=True, progress=None):
+    """Everything needed to build the mesh of heightfield `hf` in one pass.
+    progress: None or callable(fraction) after each array (a 4097^2 grid's
+    take seconds together)."""
     lib = library()
+    report = progress or (lambda _fraction: None)
     g = GridArrays(hf.width, hf.height)
     world_size_x, world_size_y = grid_size(world_size, g.nx, g.ny)
     g.co = vertices(hf, world_size_x, world_size_y, z_floor)
+    report(0.2)
     g.loop_vertices, g.loop_edges = index_array(g.loop_count), index_array(g.loop_count)
     g.edge_vertices = index_array(2 * g.edge_count)
     g.loop_starts, g.loop_totals = index_array(g.face_count), index_array(g.face_count)
@@ -62,7 +66,9 @@ def grid_arrays(hf, world_size, z_floor=NO_FLOOR, uvs=True):
         g.nx, g.ny, as_pointer(g.loop_vertices, c_int32), as_pointer(g.loop_edges, c_int32), g.loop_count,
         as_pointer(g.edge_vertices, c_int32), len(g.edge_vertices),
         as_pointer(g.loop_starts, c_int32), as_pointer(g.loop_totals, c_int32), g.face_count))
+    report(0.7)
     if uvs:
         g.uv = float_array(2 * g.loop_count)
         lib.check(lib.ft_grid_uvs(g.nx, g.ny, as_pointer(g.uv, c_float), len(g.uv)))
+    report(1.0)
     return g

@@ -99,7 +99,8 @@ _BY_UNIT = {"scene units": {"subtype": "DISTANCE", "unit": "LENGTH"},
             "world units": {"subtype": "DISTANCE", "unit": "LENGTH"},
             "radians": {"subtype": "ANGLE", "unit": "ROTATION"}}
 _PRECISION = {"hurst": 3, "center_x": 6, "center_y": 6,
-              "erodibility": 6, "uplift": 6}  # their defaults (2e-4, ~1e-5) are 0.000 at 3 digits
+              "erodibility": 6, "uplift": 6,  # their defaults (2e-4, ~1e-5) are 0.000 at 3 digits
+              "duration": 0}  # whole years: "100000.00" cut the label to "Dur" in the sidebar
 # Blender shows at most 6 decimals: a float whose default is under 1e-4 (the
 # diffusion's 1e-7 read 0.000000) is shown times the power of ten that brings
 # its default to 1..10, the power in its label (props.display_property). The
@@ -312,17 +313,42 @@ def _blender_terrain_params(dyadic):
 # draws it): its own table, ft_erosion_params as the library describes it, after
 # the preset that fills it. A terrain object stores it beside the terrain's
 # settings, so Regenerate reruns generation then erosion.
-ERODE_PRESETS = (
-    ("NONE", "None", "No erosion: the fractal terrain as generated", 0),
-    ("VALLEYS", "Valleys", "Fluvial: stream power with uplift carves dendritic valley networks", 1),
-    ("RAIN", "Rain", "Hydraulic: water, sediment, erosion and deposition on the grid", 2),
-    ("SCREE", "Scree", "Thermal: slopes above the talus angle shed material", 3),
-    ("LAND", "Land", "All three: valleys, then rain, then scree", 4),
-    ("CUSTOM", "Custom", "The passes and rates below as set", 5),
+# The presets are the library's (ft_build_params.erosion_preset: ids, labels,
+# tooltips); Custom is Blender's own. Blender stores an enum's number in the
+# .blend: Custom keeps the 5 it had before Badlands came, Badlands takes 6.
+_CUSTOM_PRESET = ("CUSTOM", "Custom", "Your own erosion: the settings below as set (a preset's, once you "
+                  "change one)", 5)
+_PRESET_NUMBER = {"BADLANDS": 6}
+
+
+def _erode_preset(build_rows):
+    """The erode_preset Param: the library's presets, then Custom."""
+    row = next(r for r in build_rows if r["name"] == "erosion_preset")
+    items = tuple((i["name"], i["label"], i["doc"], _PRESET_NUMBER.get(i["name"], i["value"])) for i in row["items"])
+    return Param("erode_preset", "enum", "NONE", "Erosion",
+                 "Erode after generating: a preset sets Duration and the Advanced settings; changing one of "
+                 "them makes it Custom", items=items + (_CUSTOM_PRESET,))
+
+
+# Where erosion acts and where rain falls (ft_erosion_params' erosion_mask and
+# rain_map, sampled by blender/build/erosion_masks.py): Blender's own settings,
+# kept on the terrain object with the rest, so Regenerate reruns them.
+MAP_SOURCES = (
+    ("NONE", "Everywhere", "No map: everywhere alike", 0),
+    ("VERTEX_GROUP", "Vertex Group", "The weights of a vertex group painted on the terrain (Weight Paint)", 1),
+    ("IMAGE", "Image", "The brightness of an image spanning the terrain", 2),
 )
-ERODE_PRESET = Param("erode_preset", "enum", "NONE", "Erosion",
-                     "Erode after generating: picking a preset sets the passes and rates below (then edit them)",
-                     items=ERODE_PRESETS)
+EROSION_MAP_PARAMS = (
+    Param("erosion_mask_source", "enum", "NONE", "Mask",
+          "Where erosion acts: weight or brightness 1 erodes fully, 0 leaves the ground untouched (material "
+          "worn away inside may still settle outside)", items=MAP_SOURCES),
+    Param("erosion_mask_group", "string", "", "Vertex Group", "The vertex group whose weights say where erosion acts"),
+    Param("erosion_mask_image", "string", "", "Image", "The image whose brightness says where erosion acts"),
+    Param("rain_map_source", "enum", "NONE", "Rain Map",
+          "Where rain falls: weight or brightness 1 gets the full rainfall, 0 none", items=MAP_SOURCES),
+    Param("rain_map_group", "string", "", "Vertex Group", "The vertex group whose weights say where rain falls"),
+    Param("rain_map_image", "string", "", "Image", "The image whose brightness says where rain falls"),
+)
 
 # Polylines (fracterra/polyline.h): Blender's own settings after the library's
 # (where the base comes from, the curve's bevel).
@@ -356,7 +382,7 @@ def _tables():
     dyadic = next(p for p in library_terrain if p.name == "levels").methods
     terrain = library_terrain + _blender_terrain_params(dyadic)
     erosion = library_params("erosion")
-    erode = (ERODE_PRESET,) + erosion
+    erode = (_erode_preset(_description()["build"]),) + erosion + EROSION_MAP_PARAMS
     return {
         "DYADIC_METHODS": dyadic,
         "TERRAIN_PARAMS": terrain,  # ft_terrain_params' settings and Blender's own for a terrain

@@ -11,28 +11,32 @@ from ctypes import byref, c_void_p
 from .binding import enum_values, library
 from .erosion import MAPS, erosion_struct
 from .errors import InvalidArgumentError
-from .terrain import Heightfield, _ProgressBridge, attach_falloff_mask, attach_reference, terrain_struct
+from .terrain import Heightfield, _ProgressBridge, attach_falloff_mask, attach_map, attach_reference, terrain_struct
 
 
 def build_terrain(values, reference=None, falloff_mask=None, erosion=None, preset="NONE", maps=False, threads=0,
-                  progress=None):
+                  progress=None, erosion_mask=None, rain_map=None):
     """Builds the terrain of `values` (settings by name, as generate_terrain
     takes them, with its reference and falloff mask); returns (Heightfield,
     {map name: array.array('f')} or None). Close the Heightfield (or use `with`).
 
     erosion: None (no erosion unless a preset) or {setting: value} of
     ft_erosion_params (core.params.EROSION_PARAMS); the library decides
-    whether the terrain erodes as a torus (when it tiles). preset: "NONE",
-    "VALLEYS", "RAIN", "SCREE" or "LAND": fitted to the generated terrain, it
+    whether the terrain erodes as a torus (when it tiles). preset: "NONE"
+    or a preset id of ft_build_params.erosion_preset ("VALLEYS", ..., "BADLANDS"): fitted to the generated terrain, it
     sets the pass counts and what it changes from the defaults; the rest comes
-    from `erosion`. maps: also return the six maps (ft_erosion_map order, names
+    from `erosion`. erosion_mask, rain_map: None or (width, height, values in
+    [0, 1]) spanning the terrain (terrain.attach_map): where erosion acts and
+    where rain falls. maps: also return the six maps (ft_erosion_map order, names
     in core.erosion.MAPS). progress: None or callable(fraction) -> True to
     cancel (raises CancelledError)."""
     lib = library()
     t = terrain_struct(values)
     _ref_buf = attach_reference(t, reference)
     _mask_buf = attach_falloff_mask(t, falloff_mask)
-    e = erosion_struct(erosion) if erosion is not None else None
+    e = erosion_struct(erosion) if erosion is not None or erosion_mask or rain_map else None
+    _maps_bufs = (attach_map(e, "erosion_mask", erosion_mask, "the erosion mask"),
+                  attach_map(e, "rain_map", rain_map, "the rain map"))
     p = lib.build_params_type()
     lib.check(lib.ft_build_params_init(byref(p)))
     p.terrain = ctypes.pointer(t)

@@ -13,11 +13,13 @@ def dyadic_levels(size):
     return n.bit_length() - 1 if size >= 3 and n & (n - 1) == 0 else -1
 
 
-def resample_bilinear(image, size):
-    """`image` (h, w) resampled bilinearly to size x size points spanning it corner to corner."""
+def resample_bilinear(image, size, rows=None):
+    """`image` (h, w) resampled bilinearly to `rows` (default `size`) x `size`
+    points spanning it corner to corner."""
     h, w = image.shape
-    t = np.arange(size, dtype=np.float64) / (size - 1)
-    fx, fy = t * (w - 1), t * (h - 1)
+    rows = size if rows is None else rows
+    fx = np.arange(size, dtype=np.float64) / (size - 1) * (w - 1)
+    fy = np.arange(rows, dtype=np.float64) / (rows - 1) * (h - 1)
     x0, y0 = fx.astype(np.int64), fy.astype(np.int64)
     x1, y1 = np.minimum(x0 + 1, w - 1), np.minimum(y0 + 1, h - 1)
     tx, ty = (fx - x0)[None, :], (fy - y0)[:, None]

@@ -58,7 +58,10 @@ extern "C" {
 /// 2.17: a given camera, terrain colours and scene light at the end of ft_pov_scene_params
 ///      (camera_given, camera_location/direction/right/up, terrain_colors, has_scene_light,
 ///      sky_color, sun_color): the add-on's export shows Blender's view and material.
-#define FT_ABI_VERSION_MINOR 17
+/// 2.19: splat.h: splat (weight) maps and colour maps by layer rules (ft_splat_params, described:
+///      FT_PARAMS_SPLAT; ft_splat_params_init, ft_splat_default_layers, ft_splat_weights,
+///      ft_splat_colors).
+#define FT_ABI_VERSION_MINOR 19
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

@@ -20,5 +20,6 @@
 #include "raster.h"
 #include "tiles.h"
 #include "pipeline.h"
+#include "splat.h"
 
 #endif

@@ -17,7 +17,7 @@ extern "C" {
 FT_API ft_status ft_erosion_params_init(ft_erosion_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = ft::defaults_of<ft_erosion_params>(ft::erosion_param_table());
+    *p = ft::defaults_of<ft_erosion_params>(ft::erosion::erosion_param_table());
   });
 }
 

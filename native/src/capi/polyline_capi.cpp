@@ -15,7 +15,7 @@ extern "C" {
 FT_API ft_status ft_polyline_params_init(ft_polyline_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = ft::default_polyline_params();
+    *p = ft::polyline::default_polyline_params();
   });
 }
 
@@ -24,7 +24,7 @@ FT_API ft_status ft_polyline_generate(const ft_polyline_params* p, ft_polylines*
     ft::capi::reset_out(out);
     ft::check_not_null("params", p);
     auto h = std::make_unique<ft_polylines>();
-    h->set = ft::generate_polylines(ft::upgraded(ft::polyline_param_table(), *p));
+    h->set = ft::polyline::generate_polylines(ft::upgraded(ft::polyline::polyline_param_table(), *p));
     *out = h.release();
   });
 }

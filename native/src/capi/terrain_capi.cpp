@@ -15,7 +15,7 @@ extern "C" {
 FT_API ft_status ft_terrain_params_init(ft_terrain_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = ft::default_terrain_params();
+    *p = ft::terrain::default_terrain_params();
   });
 }
 
@@ -24,7 +24,7 @@ FT_API ft_status ft_terrain_generate(const ft_terrain_params* p, ft_heightfield*
     ft::capi::reset_out(out);
     ft::check_not_null("params", p);
     auto h = std::make_unique<ft_heightfield>();
-    h->hf = ft::generate_terrain(ft::upgraded(ft::terrain_param_table(), *p));
+    h->hf = ft::terrain::generate_terrain(ft::upgraded(ft::terrain::terrain_param_table(), *p));
     *out = h.release();
   });
 }
@@ -35,7 +35,7 @@ FT_API ft_status ft_terrain_extent(const ft_terrain_params* p, int32_t lod, int6
     ft::check_not_null("width", width);
     ft::check_not_null("height", height);
     *width = *height = 0;
-    ft::terrain_extent(ft::upgraded(ft::terrain_param_table(), *p), lod, width, height);
+    ft::terrain::terrain_extent(ft::upgraded(ft::terrain::terrain_param_table(), *p), lod, width, height);
   });
 }
 
@@ -45,7 +45,7 @@ FT_API ft_status ft_terrain_generate_window_lod(const ft_terrain_params* p, int3
     ft::capi::reset_out(out);
     ft::check_not_null("params", p);
     auto h = std::make_unique<ft_heightfield>();
-    h->hf = ft::generate_terrain_window(ft::upgraded(ft::terrain_param_table(), *p), lod, x0, y0, width, height);
+    h->hf = ft::terrain::generate_terrain_window(ft::upgraded(ft::terrain::terrain_param_table(), *p), lod, x0, y0, width, height);
     *out = h.release();
   });
 }
@@ -62,30 +62,30 @@ FT_API ft_status ft_mandelbrot_level_height(const ft_terrain_params* p, double i
     *height = 0.0;
     ft::check_positive("sigma", p->sigma);
     ft::check_finite("iterations", iterations);
-    *height = ft::mandelbrot_height(iterations, p->sigma);
+    *height = ft::terrain::mandelbrot_height(iterations, p->sigma);
   });
 }
 
 FT_API int32_t ft_terrain_side(int32_t levels) {
-  return levels >= 1 && levels <= ft::kMaxLevels ? (1 << levels) + 1 : -1;
+  return levels >= 1 && levels <= ft::terrain::kMaxLevels ? (1 << levels) + 1 : -1;
 }
 
 FT_API ft_status ft_profile_params_init(ft_profile_params* p) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    *p = ft::default_profile_params();
+    *p = ft::terrain::default_profile_params();
   });
 }
 
 FT_API ft_status ft_profile_generate(const ft_profile_params* p, float* dst, size_t count) {
   return guarded([&] {
     ft::check_not_null("params", p);
-    ft::generate_profile(ft::upgraded(ft::profile_param_table(), *p), dst, count);
+    ft::terrain::generate_profile(ft::upgraded(ft::terrain::profile_param_table(), *p), dst, count);
   });
 }
 
 FT_API int64_t ft_profile_length(int32_t levels) {
-  return levels >= 1 && levels <= ft::kMaxProfileLevels ? (int64_t(1) << levels) + 1 : -1;
+  return levels >= 1 && levels <= ft::terrain::kMaxProfileLevels ? (int64_t(1) << levels) + 1 : -1;
 }
 
 }  // extern "C"

@@ -37,7 +37,7 @@ FT_API ft_status ft_tileset_open(const ft_terrain_params* p, int32_t tile, int32
     ft::check_not_null("params", p);
     ft::check_not_null("dir", dir);
     auto s = std::make_unique<ft_tileset>();
-    s->set = std::make_unique<ft::tiles::TileSet>(ft::upgraded(ft::terrain_param_table(), *p), tile, format_of(format), dir);
+    s->set = std::make_unique<ft::tiles::TileSet>(ft::upgraded(ft::terrain::terrain_param_table(), *p), tile, format_of(format), dir);
     *out = s.release();
   });
 }
@@ -51,7 +51,7 @@ FT_API ft_status ft_tileset_open_deferred(const ft_terrain_params* p, int32_t ti
     ft::check_not_null("range_pending", range_pending);
     *range_pending = 0;
     auto s = std::make_unique<ft_tileset>();
-    s->set = std::make_unique<ft::tiles::TileSet>(ft::upgraded(ft::terrain_param_table(), *p), tile, format_of(format), dir,
+    s->set = std::make_unique<ft::tiles::TileSet>(ft::upgraded(ft::terrain::terrain_param_table(), *p), tile, format_of(format), dir,
                                            true);
     *range_pending = s->set->range_pending() ? 1 : 0;
     *out = s.release();
@@ -72,7 +72,7 @@ FT_API ft_status ft_tile_height_range(const ft_terrain_params* p, int32_t tile, 
     ft::check_not_null("min", min);
     ft::check_not_null("max", max);
     *min = *max = 0;
-    const ft_terrain_params q = ft::upgraded(ft::terrain_param_table(), *p);
+    const ft_terrain_params q = ft::upgraded(ft::terrain::terrain_param_table(), *p);
     const ft::tiles::TileSpec spec = ft::tiles::make_tile_spec(q, tile, ft::tiles::TileFormat::tiff);
     const ft::tiles::HeightRange r = ft::tiles::tile_height_range(q, spec.grid, column, row);
     *min = r.min, *max = r.max;
@@ -129,7 +129,7 @@ FT_API ft_status ft_tile_write(const ft_terrain_params* p, int32_t tile, int32_t
     ft::check_not_null("dir", dir);
     ft::check_not_null("crc32", crc32);
     *crc32 = 0;
-    const ft_terrain_params q = ft::upgraded(ft::terrain_param_table(), *p);
+    const ft_terrain_params q = ft::upgraded(ft::terrain::terrain_param_table(), *p);
     const ft::tiles::TileSpec spec = ft::tiles::make_tile_spec(q, tile, format_of(format), height_min, height_max);
     *crc32 = ft::tiles::write_tile(q, spec, dir, column, row);
   });

@@ -66,6 +66,11 @@ constexpr ft_param_info progress_user_row() {
           .element_type = FT_PARAM_OPAQUE, .element_kind = -1, .unit = "", .label = "Progress Data",
           .doc = "Passed to the progress callback", .methods = FT_PARAM_ALL_METHODS};
 }
+// A shared row in a table whose struct came with ABI minor `abi` (0x2000F: 2.15).
+constexpr ft_param_info since(uint32_t abi, ft_param_info row) {
+  row.since = abi;
+  return row;
+}
 FT_PARAM_TABLE_END
 
 const ft_param_info* find_row(const ParamTable& t, const char* name);

@@ -1,16 +1,16 @@
 #include "erosion/erosion_params.hpp"
 
 #include <cfloat>
+#include <type_traits>
 
-namespace ft {
+namespace ft::erosion {
 namespace {
 
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
-constexpr double kMaxSteps = erosion::kMaxErosionSteps;
+constexpr double kMaxSteps = kMaxErosionSteps;
 constexpr uint32_t kAbi212 = 0x2000C;  // uplift_follows_terrain
 constexpr uint32_t kAbi214 = 0x2000E;  // the landscape model and its maps
-constexpr double kMaxMapSide = erosion::kMaxMapSide;
 // The defaults are ErosionConfig's (erosion.hpp); the test
 // ErosionParams.TableDefaultsAreTheConfigDefaults holds them together.
 
@@ -84,13 +84,9 @@ constexpr ft_param_info kRows[] = {
     {ROW(periodic, FT_PARAM_BOOL), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = 1,
      .soft_min = 0, .soft_max = 1, .unit = "", .label = "Tiles",
      .doc = "The terrain tiles: eroded as a torus, it stays seamless", .methods = kAll},
-    {ROW(threads, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = 1024,
-     .soft_min = 0, .soft_max = 64, .unit = "threads", .label = "Threads",
-     .doc = "Worker threads, 0: all cores; the output never depends on it", .methods = kAll},
-    {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .element_kind = -1, .unit = "", .label = "Progress",
-     .doc = "Called as erosion advances; may cancel; NULL: none", .methods = kAll},
-    {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .element_type = FT_PARAM_OPAQUE, .element_kind = -1,
-     .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback", .methods = kAll},
+    threads_row<ft_erosion_params>(),
+    progress_row<ft_erosion_params>("Called as erosion advances; may cancel; NULL: none"),
+    progress_user_row<ft_erosion_params>(),
     {ROW(uplift_follows_terrain, FT_PARAM_BOOL), .since = kAbi212, .element_kind = -1, .default_value = 0, .hard_min = 0,
      .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Uplift Follows Land",
      .doc = "Each cell rises at Uplift x its input height above the lowest over the input's relief, so a "
@@ -148,39 +144,46 @@ const ParamTable& erosion_param_table() {
   return table;
 }
 
-namespace erosion {
+// Every field of ft_erosion_params beside the ErosionConfig field it stands
+// for, once, for both directions: f(struct_field, config_field). (The
+// config's min_tilt and max_erosion have no field and keep their defaults;
+// the progress callback is wrapped by from_c.)
+template <class Params, class Config, class F>
+void for_each_field_pair(Params& p, Config& c, F f) {
+  f(p.strength, c.model.strength);
+  f(p.duration, c.model.duration);
+  f(p.deposition, c.model.deposition);
+  f(p.rainfall, c.model.rainfall);
+  f(p.erosion_mask, c.erosion_mask.values);
+  f(p.erosion_mask_width, c.erosion_mask.width);
+  f(p.erosion_mask_height, c.erosion_mask.height);
+  f(p.rain_map, c.rain_map.values);
+  f(p.rain_map_width, c.rain_map.width);
+  f(p.rain_map_height, c.rain_map.height);
+  f(p.fluvial_steps, c.fluvial.steps);
+  f(p.fluvial_dt, c.fluvial.dt);
+  f(p.erodibility, c.fluvial.erodibility);
+  f(p.area_exponent, c.fluvial.area_exponent);
+  f(p.diffusion, c.fluvial.diffusion);
+  f(p.uplift, c.fluvial.uplift);
+  f(p.uplift_follows_terrain, c.fluvial.uplift_follows_terrain);
+  f(p.hydraulic_iterations, c.hydraulic.iterations);
+  f(p.hydraulic_dt, c.hydraulic.dt);
+  f(p.rain, c.hydraulic.rain);
+  f(p.evaporation, c.hydraulic.evaporation);
+  f(p.capacity, c.hydraulic.capacity);
+  f(p.dissolve, c.hydraulic.dissolve);
+  f(p.deposit, c.hydraulic.deposit);
+  f(p.thermal_iterations, c.thermal.iterations);
+  f(p.talus_degrees, c.thermal.talus_degrees);
+  f(p.thermal_rate, c.thermal.rate);
+  f(p.periodic, c.periodic);
+  f(p.threads, c.threads);
+}
 
 ft_erosion_params to_c(const ErosionConfig& c) {
   ft_erosion_params p = defaults_of<ft_erosion_params>(erosion_param_table());
-  p.strength = c.model.strength;
-  p.duration = c.model.duration;
-  p.deposition = c.model.deposition;
-  p.rainfall = c.model.rainfall;
-  p.erosion_mask = c.erosion_mask.values;
-  p.erosion_mask_width = c.erosion_mask.width;
-  p.erosion_mask_height = c.erosion_mask.height;
-  p.rain_map = c.rain_map.values;
-  p.rain_map_width = c.rain_map.width;
-  p.rain_map_height = c.rain_map.height;
-  p.fluvial_steps = c.fluvial.steps;
-  p.fluvial_dt = c.fluvial.dt;
-  p.erodibility = c.fluvial.erodibility;
-  p.area_exponent = c.fluvial.area_exponent;
-  p.diffusion = c.fluvial.diffusion;
-  p.uplift = c.fluvial.uplift;
-  p.uplift_follows_terrain = c.fluvial.uplift_follows_terrain;
-  p.hydraulic_iterations = c.hydraulic.iterations;
-  p.hydraulic_dt = c.hydraulic.dt;
-  p.rain = c.hydraulic.rain;
-  p.evaporation = c.hydraulic.evaporation;
-  p.capacity = c.hydraulic.capacity;
-  p.dissolve = c.hydraulic.dissolve;
-  p.deposit = c.hydraulic.deposit;
-  p.thermal_iterations = c.thermal.iterations;
-  p.talus_degrees = c.thermal.talus_degrees;
-  p.thermal_rate = c.thermal.rate;
-  p.periodic = c.periodic;
-  p.threads = c.threads;
+  for_each_field_pair(p, c, [](auto& to, const auto& from) { to = static_cast<std::decay_t<decltype(to)>>(from); });
   return p;
 }
 
@@ -188,18 +191,10 @@ ErosionConfig from_c(const ft_erosion_params& given) {
   const ft_erosion_params p = upgraded(erosion_param_table(), given);
   check_ranges(erosion_param_table(), &p);
   ErosionConfig c;
-  c.model = {p.strength, p.duration, p.deposition, p.rainfall};
-  c.erosion_mask = {p.erosion_mask, p.erosion_mask_width, p.erosion_mask_height};
-  c.rain_map = {p.rain_map, p.rain_map_width, p.rain_map_height};
-  c.fluvial = {p.fluvial_steps, p.fluvial_dt, p.erodibility, p.area_exponent, p.diffusion, p.uplift,
-               p.uplift_follows_terrain != 0};
-  c.hydraulic = {p.hydraulic_iterations, p.hydraulic_dt, p.rain, p.evaporation, p.capacity, p.dissolve, p.deposit};
-  c.thermal = {p.thermal_iterations, p.talus_degrees, p.thermal_rate};
-  c.periodic = p.periodic != 0;
-  c.threads = p.threads;
+  // (int32_t -> bool is `!= 0`.)
+  for_each_field_pair(p, c, [](const auto& from, auto& to) { to = static_cast<std::decay_t<decltype(to)>>(from); });
   c.progress = Progress(p.progress, p.progress_user);
   return c;
 }
 
-}  // namespace erosion
-}  // namespace ft
+}  // namespace ft::erosion

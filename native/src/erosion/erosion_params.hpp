@@ -7,16 +7,13 @@
 #include "erosion/erosion.hpp"
 #include "fracterra/erosion.h"
 
-namespace ft {
+namespace ft::erosion {
 
 const ParamTable& erosion_param_table();
-
-namespace erosion {
 
 // Between the C struct and the configuration (fields the struct lacks keep
 // their defaults).
 ft_erosion_params to_c(const ErosionConfig& c);
 ErosionConfig from_c(const ft_erosion_params& p);
 
-}  // namespace erosion
-}  // namespace ft
+}  // namespace ft::erosion

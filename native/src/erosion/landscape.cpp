@@ -166,6 +166,9 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
     }
     draw_rho8(g, sink, level * uint32_t(kMaxSteps) + uint32_t(step), graph);
     route_filled(g, filled.data(), sink, graph);
+    // A step of a 4097^2 detail run takes seconds: the bar moves (and a
+    // cancel is seen) within it too, at its phases' rough shares of the time.
+    progress.report((step + 0.5) / steps);
     // Runs of whole trees are independent: each is walked in stack order
     // (receivers first) or against it (donors first), so the result does
     // not depend on the thread count.
@@ -209,6 +212,7 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
       }
     }
     carried += carried_step, detached += detached_step, deposited += deposited_step;
+    progress.report((step + 0.85) / steps);
     if (creep) {
       if (run.mask || run.texture) {
         // With a texture, a deposit (above it) creeps as it lies: sediment

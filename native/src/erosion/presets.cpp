@@ -90,6 +90,24 @@ ErosionConfig erosion_preset(const std::string& name, const Heightfield& terrain
   return erosion_preset(name);
 }
 
+Heightfield read_erosion_map(const std::string& dir, const std::string& name) {
+  const std::string index_path = dir + "/maps.json";
+  nlohmann::json index;
+  try {
+    index = nlohmann::json::parse(io::read_file(index_path));
+  } catch (const nlohmann::json::exception& e) {
+    fail(FT_ERR_FORMAT, "'" + index_path + "' is not the maps.json of fracterra erode --maps: " + e.what());
+  }
+  if (!index.contains(name) || !index[name].is_object() || !index[name].contains("file"))
+    fail(FT_ERR_FORMAT, "'" + index_path + "' lists no map '" + name + "' (written by fracterra erode --maps)");
+  const nlohmann::json& entry = index[name];
+  if (entry.contains("float_file")) return io::read_heightfield(dir + "/" + entry["float_file"].get<std::string>());
+  Heightfield hf = io::read_heightfield(dir + "/" + entry["file"].get<std::string>());
+  if (entry.value("scale", "linear") == "log10")
+    for (size_t i = 0; i < hf.size(); ++i) hf.data()[i] = float(std::pow(10.0, double(hf.data()[i])));
+  return hf;
+}
+
 void write_erosion_maps(const ErosionMaps& maps, const std::string& dir, const std::string& float_format) {
   if (!float_format.empty() && float_format != ".tif" && float_format != ".exr")
     invalid("the maps' float format must be .tif or .exr, got '" + float_format + "'");

@@ -37,5 +37,9 @@ ErosionConfig erosion_preset(const std::string& name, const Heightfield& terrain
 // its linear values (float_file in maps.json). Every file is written
 // atomically.
 void write_erosion_maps(const ErosionMaps& maps, const std::string& dir, const std::string& float_format = "");
+// One map of such a folder with its linear values: the float file when
+// maps.json lists one, else the PNG (10^v for a log10 map). `name` is a
+// key of maps.json ("deposited", "drainage_area", ...).
+Heightfield read_erosion_map(const std::string& dir, const std::string& name);
 
 }  // namespace ft::erosion

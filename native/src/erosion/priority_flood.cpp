@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "erosion/flow_graph.hpp"
+#include "erosion/priority_flood.hpp"
 #include "erosion/radix_heap.hpp"
 
 namespace ft::erosion {
@@ -55,53 +56,13 @@ inline float raised(float z, const float* random, int32_t j) {
 }  // namespace
 
 int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* random) {
-  const size_t n = g.size();
-  std::vector<uint8_t> closed(n, 0);
-  RadixHeap open;
-  std::vector<int32_t> pit;  // a FIFO: cells are taken from `pit_head`
-  size_t pit_head = 0;
-  auto seed = [&](int32_t i) {
-    if (!closed[i]) {
-      closed[i] = 1;
-      open.push(z[i], i);
-    }
-  };
-  if (g.periodic) {
-    seed(sink);
-  } else {
-    for (int32_t x = 0; x < g.width; ++x) {
-      seed(x);
-      seed(int32_t((g.height - 1) * size_t(g.width) + x));
-    }
-    for (int32_t y = 0; y < g.height; ++y) {
-      seed(int32_t(y * size_t(g.width)));
-      seed(int32_t(y * size_t(g.width) + g.width - 1));
-    }
-  }
   int64_t raised_cells = 0;
-  while (!open.empty() || pit_head < pit.size()) {
-    int32_t c;
-    if (pit_head < pit.size()) {
-      c = pit[pit_head++];
-      if (pit_head == pit.size()) pit.clear(), pit_head = 0;
-    } else {
-      c = open.pop();
-    }
-    const int32_t cx = c % g.width, cy = c / g.width;
-    for (int k = 0; k < 8; ++k) {
-      const int64_t j = g.neighbour(cx, cy, k);
-      if (j < 0 || closed[j]) continue;
-      closed[j] = 1;
-      if (z[j] <= z[c]) {
-        z[j] = raised(z[c], random, int32_t(j));
-        ++raised_cells;
-        if (random) open.push(z[j], int32_t(j));
-        else pit.push_back(int32_t(j));
-      } else {
-        open.push(z[j], int32_t(j));
-      }
-    }
-  }
+  priority_flood(g, g.periodic ? std::vector<int32_t>{sink} : edge_cells(g), z, [&](int32_t c, int32_t j) {
+    if (z[j] > z[c]) return false;
+    z[j] = raised(z[c], random, j);
+    ++raised_cells;
+    return !random;  // graded by random steps: through the heap
+  });
   return raised_cells;
 }
 

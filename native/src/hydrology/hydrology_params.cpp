@@ -1,6 +1,7 @@
 #include "hydrology/hydrology_params.hpp"
 
 #include <cfloat>
+#include <type_traits>
 
 namespace ft::hydrology {
 namespace {
@@ -81,9 +82,7 @@ constexpr ft_param_info kRows[] = {
      .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Tiles",
      .doc = "The terrain tiles: rivers run across its edges (and drain to its lowest sample without a sea)",
      .methods = kAll},
-    {ROW(threads, FT_PARAM_INT32), .since = kAbi215, .element_kind = -1, .default_value = 0, .hard_min = 0,
-     .hard_max = 1024, .soft_min = 0, .soft_max = 64, .unit = "threads", .label = "Threads",
-     .doc = "Worker threads, 0: all cores; the output never depends on it", .methods = kAll},
+    since(kAbi215, threads_row<ft_hydrology_params>()),
     {ROW(sinks, FT_PARAM_POINTER), .flags = kData, .since = kAbi215, .element_type = FT_PARAM_DOUBLE,
      .element_kind = -1, .unit = "world units", .label = "Sinks",
      .doc = "sink_count (x, y) points where water leaves the terrain (a swallow hole, a well); may be NULL",
@@ -91,11 +90,8 @@ constexpr ft_param_info kRows[] = {
     {ROW(sink_count, FT_PARAM_INT32), .flags = kData, .since = kAbi215, .element_kind = -1, .default_value = 0,
      .hard_min = 0, .hard_max = 1000000, .unit = "", .label = "Sink Count", .doc = "Number of sinks",
      .methods = kAll},
-    {ROW(progress, FT_PARAM_CALLBACK), .flags = kData, .since = kAbi215, .element_kind = -1, .unit = "",
-     .label = "Progress", .doc = "Called as the rivers are traced; may cancel; NULL: none", .methods = kAll},
-    {ROW(progress_user, FT_PARAM_POINTER), .flags = kData, .since = kAbi215, .element_type = FT_PARAM_OPAQUE,
-     .element_kind = -1, .unit = "", .label = "Progress Data", .doc = "Passed to the progress callback",
-     .methods = kAll},
+    since(kAbi215, progress_row<ft_hydrology_params>("Called as the rivers are traced; may cancel; NULL: none")),
+    since(kAbi215, progress_user_row<ft_hydrology_params>()),
 };
 FT_PARAM_TABLE_END
 #undef ROW
@@ -107,25 +103,34 @@ const ParamTable& hydrology_param_table() {
   return table;
 }
 
+// Every field of ft_hydrology_params beside the HydrologyConfig field it
+// stands for, once, for both directions: f(struct_field, config_field). The
+// sinks (a pointer and a count against a vector) and the progress callback
+// are converted by to_c and from_c.
+template <class Params, class Config, class F>
+void for_each_field_pair(Params& p, Config& c, F f) {
+  f(p.min_area, c.min_area);
+  f(p.sea, c.sea);
+  f(p.sea_level, c.sea_level);
+  f(p.sea_fraction, c.sea_fraction);
+  f(p.min_lake_area, c.min_lake_area);
+  f(p.rain, c.rain);
+  f(p.width_coefficient, c.width_coefficient);
+  f(p.width_exponent, c.width_exponent);
+  f(p.depth_coefficient, c.depth_coefficient);
+  f(p.depth_exponent, c.depth_exponent);
+  f(p.smoothing, c.smoothing);
+  f(p.meander_depth, c.meander_depth);
+  f(p.meander_spread, c.meander_spread);
+  f(p.seed, c.seed);
+  f(p.tolerance, c.tolerance);
+  f(p.periodic, c.periodic);
+  f(p.threads, c.threads);
+}
+
 ft_hydrology_params to_c(const HydrologyConfig& c) {
   ft_hydrology_params p = defaults_of<ft_hydrology_params>(hydrology_param_table());
-  p.min_area = c.min_area;
-  p.sea = int32_t(c.sea);
-  p.sea_level = c.sea_level;
-  p.sea_fraction = c.sea_fraction;
-  p.min_lake_area = c.min_lake_area;
-  p.rain = c.rain;
-  p.width_coefficient = c.width_coefficient;
-  p.width_exponent = c.width_exponent;
-  p.depth_coefficient = c.depth_coefficient;
-  p.depth_exponent = c.depth_exponent;
-  p.smoothing = c.smoothing;
-  p.meander_depth = c.meander_depth;
-  p.meander_spread = c.meander_spread;
-  p.seed = c.seed;
-  p.tolerance = c.tolerance;
-  p.periodic = c.periodic;
-  p.threads = c.threads;
+  for_each_field_pair(p, c, [](auto& to, const auto& from) { to = static_cast<std::decay_t<decltype(to)>>(from); });
   p.sinks = c.sinks.empty() ? nullptr : c.sinks.data();
   p.sink_count = int32_t(c.sinks.size() / 2);
   return p;
@@ -136,23 +141,8 @@ HydrologyConfig from_c(const ft_hydrology_params& given) {
   check_ranges(hydrology_param_table(), &p);
   if (p.sink_count > 0 && !p.sinks) invalid("sinks is NULL but sink_count is " + std::to_string(p.sink_count));
   HydrologyConfig c;
-  c.min_area = p.min_area;
-  c.sea = Sea(p.sea);
-  c.sea_level = p.sea_level;
-  c.sea_fraction = p.sea_fraction;
-  c.min_lake_area = p.min_lake_area;
-  c.rain = p.rain;
-  c.width_coefficient = p.width_coefficient;
-  c.width_exponent = p.width_exponent;
-  c.depth_coefficient = p.depth_coefficient;
-  c.depth_exponent = p.depth_exponent;
-  c.smoothing = p.smoothing;
-  c.meander_depth = p.meander_depth;
-  c.meander_spread = p.meander_spread;
-  c.seed = p.seed;
-  c.tolerance = p.tolerance;
-  c.periodic = p.periodic != 0;
-  c.threads = p.threads;
+  // (int32_t -> bool is `!= 0`; the sea's int32_t -> Sea is its enum value.)
+  for_each_field_pair(p, c, [](const auto& from, auto& to) { to = static_cast<std::decay_t<decltype(to)>>(from); });
   if (p.sink_count > 0) c.sinks.assign(p.sinks, p.sinks + 2 * size_t(p.sink_count));
   c.progress = Progress(p.progress, p.progress_user);
   return c;

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "erosion/radix_heap.hpp"
+#include "erosion/priority_flood.hpp"
 #include "hydrology/hydrology.hpp"
 
 namespace ft::hydrology {
@@ -21,51 +21,23 @@ Water fill_lakes(const erosion::D8Grid& g, const float* z, const std::vector<uin
   w.graded.assign(z, z + n);
   w.label.assign(n, kLand);
   w.base.assign(n, 0);
-  std::vector<uint8_t> closed(n, 0);
-  erosion::RadixHeap open;
-  std::vector<int32_t> fifo;  // raised cells, first in first out (Algorithm 3's pit queue)
-  size_t head = 0;
-  auto seed = [&](size_t i) {
-    w.base[i] = 1;
-    if (!closed[i]) {
-      closed[i] = 1;
-      open.push(z[i], int32_t(i));
-    }
-  };
   std::vector<int32_t> seeds;
   for (size_t i = 0; i < n; ++i)
     if (sea[i]) seeds.push_back(int32_t(i));
   if (!g.periodic) {
-    for (int32_t x = 0; x < g.width; ++x)
-      seeds.push_back(x), seeds.push_back(int32_t(size_t(g.height - 1) * g.width + x));
-    for (int32_t y = 0; y < g.height; ++y)
-      seeds.push_back(int32_t(size_t(y) * g.width)), seeds.push_back(int32_t(size_t(y) * g.width + g.width - 1));
+    const std::vector<int32_t> edges = erosion::edge_cells(g);
+    seeds.insert(seeds.end(), edges.begin(), edges.end());
   }
   for (const int32_t s : sinks) seeds.push_back(s);
   if (seeds.empty()) seeds.push_back(int32_t(std::min_element(z, z + n) - z));  // a torus drains to its lowest
-  for (const int32_t s : seeds) seed(size_t(s));
-  while (!open.empty() || head < fifo.size()) {
-    int32_t c;
-    if (head < fifo.size()) {
-      c = fifo[head++];
-      if (head == fifo.size()) fifo.clear(), head = 0;
-    } else {
-      c = open.pop();
-    }
-    const int32_t cx = c % g.width, cy = c / g.width;
-    for (int k = 0; k < 8; ++k) {
-      const int64_t j = g.neighbour(cx, cy, k);
-      if (j < 0 || closed[j]) continue;
-      closed[j] = 1;
-      w.level[j] = std::max(z[j], w.level[c]);
-      if (w.graded[j] <= w.graded[c]) {
-        w.graded[j] = std::nextafter(w.graded[c], INFINITY);
-        fifo.push_back(int32_t(j));
-      } else {
-        open.push(w.graded[j], int32_t(j));
-      }
-    }
-  }
+  for (const int32_t s : seeds) w.base[s] = 1;
+  // Keyed by the graded surface (the seeds' graded heights are their own).
+  erosion::priority_flood(g, seeds, w.graded.data(), [&](int32_t c, int32_t j) {
+    w.level[j] = std::max(z[j], w.level[c]);
+    if (w.graded[j] > w.graded[c]) return false;
+    w.graded[j] = std::nextafter(w.graded[c], INFINITY);
+    return true;
+  });
   // Label the flooded cells, 8-connected, in index order.
   const double cell_area = g.spacing * g.spacing;
   std::vector<int32_t> todo, members;

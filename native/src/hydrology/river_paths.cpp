@@ -81,7 +81,7 @@ PathVertices river_path(const erosion::D8Grid& g, const Water& w, const std::vec
   //    excursion scaled to at most the river's width there; a vertex that
   //    would climb out of the valley is dropped.
   PathVertices meandered;
-  FplConfig f;
+  polyline::FplConfig f;
   f.spread = c.meander_spread;
   f.depth = c.meander_depth;
   f.seed = c.seed;
@@ -92,8 +92,8 @@ PathVertices river_path(const erosion::D8Grid& g, const Water& w, const std::vec
     meandered.points.push_back(a);
     meandered.source.push_back(out.source[k]);
     const uint32_t id = line_id * 2654435761u + uint32_t(k);
-    fpl.resize(size_t(fpl_vertex_count(f, {a[0], a[1], 0}, {b[0], b[1], 0}, id)));
-    fpl_segment(f, {a[0], a[1], 0}, {b[0], b[1], 0}, id, fpl.data());
+    fpl.resize(size_t(polyline::fpl_vertex_count(f, {a[0], a[1], 0}, {b[0], b[1], 0}, id)));
+    polyline::fpl_segment(f, {a[0], a[1], 0}, {b[0], b[1], 0}, id, fpl.data());
     const double dx = b[0] - a[0], dy = b[1] - a[1], len = std::hypot(dx, dy);
     if (len <= 0) continue;
     double largest = 0;

@@ -114,19 +114,19 @@ Heightfield decode(const std::string& bytes, const std::string& name) {
 Heightfield read_exr(const std::string& path) { return decode(read_file(path), path); }
 Heightfield decode_exr(const std::string& bytes) { return decode(bytes, "<memory>"); }
 
-void write_exr(const Heightfield& hf, const std::string& path) {
+void write_exr(const Heightfield& hf, const std::string& path, const char* channel) {
   check_allocation(checked_bytes(hf.size(), sizeof(float)), "the OpenEXR file in memory");
   std::string bytes;
   try {
     Imf::Header header(hf.width(), hf.height());
     header.compression() = Imf::ZIP_COMPRESSION;
-    header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
+    header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
     if (hf.world_size() > 0) header.insert(kWorldSize, Imf::DoubleAttribute(hf.world_size()));
     MemoryOStream stream;
     {
       Imf::OutputFile out(stream, header);
       Imf::FrameBuffer fb;
-      fb.insert("Y", Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(hf.data())), sizeof(float),
+      fb.insert(channel, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(hf.data())), sizeof(float),
                                 sizeof(float) * size_t(hf.width())));
       out.setFrameBuffer(fb);
       out.writePixels(hf.height());

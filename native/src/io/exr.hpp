@@ -11,7 +11,9 @@
 
 namespace ft::io {
 
-void write_exr(const Heightfield& hf, const std::string& path);  // atomic
+// Atomic. `channel` names the one channel: "Y" by default; Godot's EXR loader
+// takes a single "R" channel as a one-channel float image (FORMAT_RF).
+void write_exr(const Heightfield& hf, const std::string& path, const char* channel = "Y");
 Heightfield read_exr(const std::string& path);
 Heightfield decode_exr(const std::string& bytes);
 

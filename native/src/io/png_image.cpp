@@ -138,6 +138,69 @@ void write_png_rgb(const std::string& path, int32_t width, int32_t height, const
                  [&](int32_t y) { return rgb + size_t(y) * size_t(width) * 3; });
 }
 
+void write_png_channels(const std::string& path, const ChannelImage& im) {
+  static constexpr int kTypes[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
+                                   PNG_COLOR_TYPE_RGB_ALPHA};
+  if (im.channels < 1 || im.channels > 4) invalid("a PNG holds 1 to 4 channels, got " + std::to_string(im.channels));
+  if (im.bit_depth != 8 && im.bit_depth != 16) invalid("PNG bit depth must be 8 or 16");
+  const size_t per_row = size_t(im.width) * size_t(im.channels);
+  if (im.width <= 0 || im.height <= 0 || im.samples.size() != per_row * size_t(im.height))
+    invalid("PNG image size does not match its sample count");
+  std::vector<uint8_t> row(per_row * size_t(im.bit_depth / 8));
+  write_png_rows(path, im.width, im.height, kTypes[im.channels - 1], im.bit_depth, {}, [&](int32_t y) {
+    const uint16_t* src = im.samples.data() + size_t(y) * per_row;
+    for (size_t i = 0; i < per_row; ++i) {
+      if (im.bit_depth == 16) {  // big-endian in the file
+        row[2 * i] = uint8_t(src[i] >> 8);
+        row[2 * i + 1] = uint8_t(src[i]);
+      } else {
+        row[i] = uint8_t(src[i] > 255 ? 255 : src[i]);
+      }
+    }
+    return static_cast<const uint8_t*>(row.data());
+  });
+}
+
+ChannelImage read_png_channels(const std::string& path) {
+  const std::string bytes = read_file(path);
+  if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0)
+    fail(FT_ERR_FORMAT, "'" + path + "' is not a PNG file");
+  check_chunk_lengths(bytes, path);
+  ReadStructs rs;
+  std::string reason;
+  rs.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reason, on_error, on_warning);
+  if (rs.png) rs.info = png_create_info_struct(rs.png);
+  if (!rs.info) fail(FT_ERR_OUT_OF_MEMORY, "libpng could not start a reader");
+  png_structp png = rs.png;
+  png_infop info = rs.info;
+  ChannelImage im;
+  std::vector<uint8_t> raw;
+  std::vector<png_bytep> rows;
+  MemoryReader reader{&bytes, 0};
+  if (setjmp(png_jmpbuf(png))) fail(FT_ERR_FORMAT, "'" + path + "' is a damaged PNG file: " + reason);
+  png_set_read_fn(png, &reader, read_from_memory);
+  png_set_user_limits(png, 1 << 20, 1 << 20);
+  png_read_info(png, info);
+  const uint32_t w = png_get_image_width(png, info), h = png_get_image_height(png, info);
+  const int depth = png_get_bit_depth(png, info);
+  if (png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE || depth < 8)
+    fail(FT_ERR_FORMAT, "'" + path + "': a palette or sub-byte PNG is not a map of channels");
+  const int channels = png_get_channels(png, info);
+  const size_t rowbytes = png_get_rowbytes(png, info);
+  check_allocation(checked_bytes(rowbytes, h, 3), "reading '" + path + "'");
+  raw.resize(rowbytes * h);
+  rows.resize(h);
+  for (uint32_t y = 0; y < h; ++y) rows[y] = raw.data() + y * rowbytes;
+  png_read_image(png, rows.data());
+  png_read_end(png, info);
+  im.width = int32_t(w), im.height = int32_t(h), im.channels = channels, im.bit_depth = depth;
+  const size_t n = size_t(w) * h * size_t(channels);
+  im.samples.resize(n);
+  for (size_t i = 0; i < n; ++i)
+    im.samples[i] = depth == 16 ? uint16_t((raw[2 * i] << 8) | raw[2 * i + 1]) : raw[i];
+  return im;
+}
+
 GrayImage decode_png(const std::string& bytes, const std::string& name) {
   if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0)
     fail(FT_ERR_FORMAT, "'" + name + "' is not a PNG file");

@@ -34,21 +34,14 @@ struct Span {
 
 bool erodes(const ft_build_params& p) { return p.erosion || p.erosion_preset != FT_EROSION_PRESET_NONE; }
 
-// The given erosion settings over the table's defaults (upgraded from an
-// older caller's struct).
-ft_erosion_params given_erosion(const ft_build_params& p) {
-  if (!p.erosion) return defaults_of<ft_erosion_params>(erosion_param_table());
-  return upgraded(erosion_param_table(), *p.erosion);
-}
-
 // A preset sets which processes run (its pass counts, all three) and every
 // setting it changes from the defaults (the uplift fitted to the terrain):
 // what `fracterra erode --preset` gives without further flags, and what the
 // add-on's presets always did. The other settings stay as given.
 ft_erosion_params apply_preset(const ft_erosion_params& given, const ft_erosion_params& preset) {
-  static const ft_erosion_params defaults = defaults_of<ft_erosion_params>(erosion_param_table());
+  static const ft_erosion_params defaults = defaults_of<ft_erosion_params>(erosion::erosion_param_table());
   ft_erosion_params out = given;
-  for (const ft_param_info& row : erosion_param_table().rows) {
+  for (const ft_param_info& row : erosion::erosion_param_table().rows) {
     if (row.flags & (FT_PARAM_FLAG_STRUCT_SIZE | FT_PARAM_FLAG_DATA)) continue;
     const auto* from = reinterpret_cast<const char*>(&preset) + row.offset;
     if (std::memcmp(from, reinterpret_cast<const char*>(&defaults) + row.offset, row.size) != 0)
@@ -83,50 +76,52 @@ Heightfield untorus(const Heightfield& t, int overlap, double world_size) {
 
 }  // namespace
 
-erosion::ErosionConfig build_erosion_config(const ft_build_params& p, const Heightfield& terrain) {
-  ft_erosion_params e = given_erosion(p);
-  if (p.erosion_preset != FT_EROSION_PRESET_NONE)
-    e = apply_preset(e, erosion::to_c(erosion::erosion_preset(erosion_preset_name(p.erosion_preset), terrain)));
-  e.progress = nullptr, e.progress_user = nullptr;
-  erosion::ErosionConfig c = erosion::from_c(e);
-  // One rule for every front end: a terrain that tiles erodes as a torus.
-  c.periodic = tiles_periodically(*p.terrain);
-  c.threads = p.threads;
-  return c;
+ft_erosion_params erosion_settings(const ft_erosion_params* given, const std::string& preset,
+                                    const Heightfield& terrain) {
+  const ft_erosion_params e = given ? upgraded(erosion::erosion_param_table(), *given)
+                                    : defaults_of<ft_erosion_params>(erosion::erosion_param_table());
+  if (preset.empty()) return e;
+  return apply_preset(e, erosion::to_c(erosion::erosion_preset(preset, terrain)));
+}
+
+Heightfield erode_terrain(const Heightfield& hf, const ft_erosion_params& e, int overlap, erosion::ErosionMaps* maps,
+                          erosion::MassBudget* budget) {
+  const erosion::ErosionConfig c = erosion::from_c(e);
+  if (!c.periodic || overlap == 0) return erosion::erode(hf, c, maps, budget);
+  const double world_size = hf.world_size();
+  const Heightfield eroded = erosion::erode(torus_of(hf, overlap), c, maps, budget);
+  if (maps)
+    for (Heightfield* m : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth, &maps->eroded,
+                           &maps->deposited})
+      *m = untorus(*m, overlap, world_size);
+  return untorus(eroded, overlap, world_size);
 }
 
 Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* maps) {
   const ft_build_params p = upgraded(build_param_table(), given);
   check_ranges(build_param_table(), &p);
   check_not_null("terrain", p.terrain);
-  ft_terrain_params t = upgraded(terrain_param_table(), *p.terrain);
+  ft_terrain_params t = upgraded(terrain::terrain_param_table(), *p.terrain);
   t.threads = p.threads;
   // Everything is checked before any work: the terrain, then the erosion
   // settings (their ranges; the preset's name is the table's).
-  validate_terrain_params(t);
+  terrain::validate_terrain_params(t);
   const bool erode = erodes(p) || maps;
-  if (erode) erosion::from_c(given_erosion(p));
+  if (erode) erosion::from_c(erosion_settings(p.erosion, "", Heightfield()));  // (no preset: no terrain read)
 
   const Progress progress(p.progress, p.progress_user);
   Span generation{progress, 0.0, erode ? kGenerationShare : 1.0};
   t.progress = &Span::call, t.progress_user = &generation;
-  Heightfield hf = generate_terrain(t);  // with its landform
+  Heightfield hf = terrain::generate_terrain(t);  // with its landform
   if (!erode) return hf;
 
-  ft_build_params q = p;
-  q.terrain = &t;
-  erosion::ErosionConfig c = build_erosion_config(q, hf);
+  ft_erosion_params e = erosion_settings(p.erosion, erosion_preset_name(p.erosion_preset), hf);
+  // One rule for every front end: a terrain that tiles erodes as a torus.
+  e.periodic = terrain::tiles_periodically(t);
+  e.threads = p.threads;
   Span erosion_span{progress, kGenerationShare, 1.0 - kGenerationShare};
-  c.progress = Progress(&Span::call, &erosion_span);
-  const int overlap = c.periodic ? terrain_method(t.method).period_overlap : 0;
-  const double world_size = hf.world_size();
-  if (overlap == 0) return erosion::erode(hf, c, maps);
-  const Heightfield eroded = erosion::erode(torus_of(hf, overlap), c, maps);
-  if (maps)
-    for (Heightfield* m : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth, &maps->eroded,
-                           &maps->deposited})
-      *m = untorus(*m, overlap, world_size);
-  return untorus(eroded, overlap, world_size);
+  e.progress = &Span::call, e.progress_user = &erosion_span;
+  return erode_terrain(hf, e, e.periodic ? terrain::terrain_method(t.method).period_overlap : 0, maps);
 }
 
 }  // namespace ft::pipeline

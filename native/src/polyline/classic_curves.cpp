@@ -4,7 +4,7 @@
 
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::polyline {
 namespace {
 
 // A turtle in the local frame of the base segment: unit steps in the
@@ -99,4 +99,4 @@ void arrowhead_curve(const Vec3& a, const Vec3& b, int depth, Vec3* out) {
   map_to_segment(a, b, out, n);
 }
 
-}  // namespace ft
+}  // namespace ft::polyline

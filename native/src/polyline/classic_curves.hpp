@@ -12,7 +12,7 @@
 
 #include "core/polyline_set.hpp"
 
-namespace ft {
+namespace ft::polyline {
 
 inline constexpr int kMaxKochDepth = 15;        // 4^15 = 1.07e9 segments
 inline constexpr int kMaxArrowheadDepth = 19;   // 3^19 = 1.16e9 segments
@@ -27,4 +27,4 @@ int64_t arrowhead_vertex_count(int depth);
 void koch_curve(const Vec3& a, const Vec3& b, int depth, Vec3* out);
 void arrowhead_curve(const Vec3& a, const Vec3& b, int depth, Vec3* out);
 
-}  // namespace ft
+}  // namespace ft::polyline

@@ -9,7 +9,7 @@
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
 
-namespace ft {
+namespace ft::polyline {
 namespace {
 
 constexpr uint32_t kAngleLevel = 64;  // Counter.level offset of the 3D angles
@@ -215,4 +215,4 @@ void fpl_segment(const FplConfig& c, const Vec3& a, const Vec3& b, uint32_t line
   }
 }
 
-}  // namespace ft
+}  // namespace ft::polyline

@@ -26,7 +26,7 @@
 #include "core/polyline_set.hpp"
 #include "core/progress.hpp"
 
-namespace ft {
+namespace ft::polyline {
 
 enum class FplRng : int { kUniform = 0, kNormal = 1 };
 enum class FplRule : int { kRandom = 0, kDragon = 1 };
@@ -63,4 +63,4 @@ int64_t fpl_vertex_count(const FplConfig& c, const Vec3& a, const Vec3& b, uint3
 void fpl_segment(const FplConfig& c, const Vec3& a, const Vec3& b, uint32_t line_id, Vec3* out,
                  const FplSplitVisitor* visitor = nullptr, int visit_levels = 0);
 
-}  // namespace ft
+}  // namespace ft::polyline

@@ -6,7 +6,7 @@
 #include "analysis/polyline_stats.hpp"
 #include "core/error.hpp"
 
-namespace ft {
+namespace ft::polyline {
 namespace {
 
 MeanSe mean_se(const std::vector<double>& v) {
@@ -87,4 +87,4 @@ std::vector<FplStudyRow> run_fpl_study(const FplStudyConfig& c) {
   return rows;
 }
 
-}  // namespace ft
+}  // namespace ft::polyline

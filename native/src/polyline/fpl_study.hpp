@@ -19,7 +19,7 @@
 #include "core/progress.hpp"
 #include "polyline/fpl.hpp"
 
-namespace ft {
+namespace ft::polyline {
 
 struct FplStudyConfig {
   FplRng rng = FplRng::kUniform;
@@ -52,4 +52,4 @@ PaperFit paper_fit(FplRng rng);
 // Output does not depend on the thread count.
 std::vector<FplStudyRow> run_fpl_study(const FplStudyConfig& c);
 
-}  // namespace ft
+}  // namespace ft::polyline

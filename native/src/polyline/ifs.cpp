@@ -6,7 +6,7 @@
 #include "core/memory.hpp"
 #include "core/rng.hpp"
 
-namespace ft {
+namespace ft::polyline {
 
 std::vector<IfsMap> ifs_preset(int preset) {
   switch (preset) {
@@ -90,4 +90,4 @@ PolylineSet ifs_points(const std::vector<IfsMap>& maps, int64_t count, uint64_t 
   return s;
 }
 
-}  // namespace ft
+}  // namespace ft::polyline

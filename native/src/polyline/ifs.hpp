@@ -12,7 +12,7 @@
 #include "core/polyline_set.hpp"
 #include "core/progress.hpp"
 
-namespace ft {
+namespace ft::polyline {
 
 struct IfsMap {
   double a, b, c, d, e, f, p;
@@ -35,4 +35,4 @@ void validate_ifs(const std::vector<IfsMap>& maps);
 PolylineSet ifs_points(const std::vector<IfsMap>& maps, int64_t count, uint64_t seed,
                        const Progress& progress = {});
 
-}  // namespace ft
+}  // namespace ft::polyline

@@ -9,7 +9,7 @@
 #include "core/memory.hpp"
 #include "core/rng.hpp"
 
-namespace ft {
+namespace ft::polyline {
 namespace {
 
 struct Fork {
@@ -172,4 +172,4 @@ PolylineSet fpl_lightning(const FplConfig& c, const std::vector<Vec3>& base, con
   return Builder(c, b).run(base);
 }
 
-}  // namespace ft
+}  // namespace ft::polyline

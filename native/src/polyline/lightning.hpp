@@ -21,7 +21,7 @@
 #include "core/polyline_set.hpp"
 #include "polyline/fpl.hpp"
 
-namespace ft {
+namespace ft::polyline {
 
 struct BranchConfig {
   double prob = 0.0;
@@ -33,4 +33,4 @@ struct BranchConfig {
 // The main line through `base` followed by its branches (prob may be 0).
 PolylineSet fpl_lightning(const FplConfig& c, const std::vector<Vec3>& base, const BranchConfig& b);
 
-}  // namespace ft
+}  // namespace ft::polyline

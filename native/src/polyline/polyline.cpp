@@ -13,7 +13,7 @@
 #include "polyline/profile_curve.hpp"
 #include "terrain/profile.hpp"
 
-namespace ft {
+namespace ft::polyline {
 namespace {
 
 // Concatenates one curve per base segment (each from a to b) into one line;
@@ -108,4 +108,4 @@ PolylineSet generate_polylines(const ft_polyline_params& p) {
   }
 }
 
-}  // namespace ft
+}  // namespace ft::polyline

@@ -10,7 +10,7 @@
 #include "fracterra/polyline.h"
 #include "polyline/fpl.hpp"
 
-namespace ft {
+namespace ft::polyline {
 
 ft_polyline_params default_polyline_params();
 // Throws ft::Error (FT_ERR_INVALID_ARGUMENT / FT_ERR_TOO_LARGE) naming the
@@ -23,4 +23,4 @@ std::vector<Vec3> base_points(const ft_polyline_params& p);
 // The FPL engine configuration of p (FPL, FPL3D and dragon).
 FplConfig fpl_config(const ft_polyline_params& p);
 
-}  // namespace ft
+}  // namespace ft::polyline

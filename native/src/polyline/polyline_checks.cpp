@@ -10,7 +10,7 @@
 #include "polyline/polyline.hpp"
 #include "terrain/profile.hpp"
 
-namespace ft {
+namespace ft::polyline {
 namespace {
 
 std::string point_name(size_t i) { return "base point " + std::to_string(i + 1); }
@@ -64,7 +64,7 @@ void check_polyline_cross_fields(const ft_polyline_params& p) {
     case FT_POLYLINE_KOCH: check_int_range("depth", p.depth, 0, kMaxKochDepth); break;
     case FT_POLYLINE_SIERPINSKI: check_int_range("depth", p.depth, 0, kMaxArrowheadDepth); break;
     case FT_POLYLINE_PROFILE:
-      check_int_range("depth", p.depth, 1, kMaxProfileLevels);
+      check_int_range("depth", p.depth, 1, terrain::kMaxProfileLevels);
       check_positive("spread (the profile's sigma)", p.spread);
       break;
     default: break;
@@ -83,4 +83,4 @@ void check_polyline_cross_fields(const ft_polyline_params& p) {
   }
 }
 
-}  // namespace ft
+}  // namespace ft::polyline

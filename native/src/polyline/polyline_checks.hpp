@@ -6,8 +6,8 @@
 
 #include "fracterra/polyline.h"
 
-namespace ft {
+namespace ft::polyline {
 
 void check_polyline_cross_fields(const ft_polyline_params& p);
 
-}  // namespace ft
+}  // namespace ft::polyline

@@ -6,7 +6,7 @@
 #include "polyline/classic_curves.hpp"
 #include "polyline/fpl.hpp"
 
-namespace ft {
+namespace ft::polyline {
 namespace {
 
 constexpr uint64_t kFpl = method_bit(FT_POLYLINE_FPL) | method_bit(FT_POLYLINE_FPL3D);
@@ -131,4 +131,4 @@ const ParamTable& polyline_param_table() {
   return table;
 }
 
-}  // namespace ft
+}  // namespace ft::polyline

@@ -3,8 +3,8 @@
 
 #include "core/param_table.hpp"
 
-namespace ft {
+namespace ft::polyline {
 
 const ParamTable& polyline_param_table();
 
-}  // namespace ft
+}  // namespace ft::polyline

@@ -4,7 +4,7 @@
 
 #include "terrain/profile.hpp"
 
-namespace ft {
+namespace ft::polyline {
 namespace {
 
 // A well-mixed seed per base segment (splitmix64's finaliser), so that the
@@ -22,12 +22,12 @@ int64_t profile_vertex_count(int depth) { return (int64_t(1) << depth) + 1; }
 void profile_curve(const Vec3& a, const Vec3& b, const ProfileCurve& c, uint64_t segment, Vec3* out) {
   const int64_t n = int64_t(1) << c.depth;
   std::vector<float> x(size_t(n) + 1);
-  ProfileConfig pc;
+  terrain::ProfileConfig pc;
   pc.levels = c.depth;
   pc.hurst = c.hurst;
   pc.sigma = c.sigma;
   pc.seed = segment_seed(c.seed, segment);
-  midpoint_profile(pc, x.data());
+  terrain::midpoint_profile(pc, x.data());
   const double vx = b[0] - a[0], vy = b[1] - a[1], vz = b[2] - a[2];
   for (int64_t k = 0; k <= n; ++k) {
     const double t = double(k) / double(n);
@@ -38,4 +38,4 @@ void profile_curve(const Vec3& a, const Vec3& b, const ProfileCurve& c, uint64_t
   out[n] = b;
 }
 
-}  // namespace ft
+}  // namespace ft::polyline

@@ -9,7 +9,7 @@
 
 #include "core/polyline_set.hpp"
 
-namespace ft {
+namespace ft::polyline {
 
 struct ProfileCurve {
   int depth = 10;      // 2^depth segments
@@ -25,4 +25,4 @@ int64_t profile_vertex_count(int depth);
 // profile_vertex_count(c.depth) entries.
 void profile_curve(const Vec3& a, const Vec3& b, const ProfileCurve& c, uint64_t segment, Vec3* out);
 
-}  // namespace ft
+}  // namespace ft::polyline

@@ -48,7 +48,7 @@ void place_window(const Heightfield& dem, const DemRefineConfig& c, DemRefineRes
   const HoleCounter holes(dem);
   const int most = std::min(dem.width(), dem.height());
   if (c.window_side != 0) {
-    if (dyadic_levels(c.window_side) < 1 || c.window_side > most)
+    if (terrain::dyadic_levels(c.window_side) < 1 || c.window_side > most)
       invalid("window side must be 2^m + 1 (3, 5, 9, 17, 33, ...) and at most " + std::to_string(most) +
               " (the DEM is " + std::to_string(dem.width()) + " x " + std::to_string(dem.height()) + "), got " +
               std::to_string(c.window_side));
@@ -133,11 +133,11 @@ DemRefineResult refine_dem(const Heightfield& dem, const DemRefineConfig& c) {
   DemRefineResult r;
   place_window(dem, c, r);
   const Heightfield window = cut(dem, r.window_x, r.window_y, r.window_side);
-  const int m = dyadic_levels(r.window_side);
+  const int m = terrain::dyadic_levels(r.window_side);
   const int levels = m + c.levels_added;
-  if (levels > kMaxLevels)
+  if (levels > terrain::kMaxLevels)
     invalid("a window of side " + std::to_string(r.window_side) + " refined by " + std::to_string(c.levels_added) +
-            " levels would need " + std::to_string(levels) + " levels; at most " + std::to_string(kMaxLevels));
+            " levels would need " + std::to_string(levels) + " levels; at most " + std::to_string(terrain::kMaxLevels));
 
   r.v1 = finest_increment_variance(window);
   r.hurst_measured = c.hurst < 0;
@@ -162,7 +162,7 @@ DemRefineResult refine_dem(const Heightfield& dem, const DemRefineConfig& c) {
     r.sigma = c.sigma;
   }
 
-  ft_terrain_params p = default_terrain_params();
+  ft_terrain_params p = terrain::default_terrain_params();
   p.method = c.additions ? FT_TERRAIN_ADDITIONS : FT_TERRAIN_MIDPOINT;
   p.levels = levels;
   p.hurst = r.hurst;
@@ -175,7 +175,7 @@ DemRefineResult refine_dem(const Heightfield& dem, const DemRefineConfig& c) {
   p.progress = c.progress;
   p.progress_user = c.progress_user;
   p.world_size = dem.world_size() > 0 ? dem.world_size() * (r.window_side - 1) / (dem.width() - 1) : 1.0;
-  r.terrain = generate_terrain(p);
+  r.terrain = terrain::generate_terrain(p);
   r.terrain.set_georef(refined_georef(dem.georef(), r.window_x, r.window_y, c.levels_added));
   return r;
 }

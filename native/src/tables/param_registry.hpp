@@ -9,5 +9,8 @@ namespace ft::tables {
 
 // The table of `kind` (FT_PARAMS_*); throws ft::Error for an unknown kind.
 const ParamTable& param_table(int32_t kind);
+// Whether this build has `kind`: the kinds are numbered across branches, and
+// one may be missing until its branch is merged.
+bool has_param_table(int32_t kind);
 
 }  // namespace ft::tables

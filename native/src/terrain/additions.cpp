@@ -5,7 +5,7 @@
 
 #include "terrain/refiner.hpp"
 
-namespace ft::detail {
+namespace ft::terrain::detail {
 
 void Refiner::additions_stage(int s, int big, int half, float square_delta, float diamond_delta) {
   square_step(s, big, half, square_delta);
@@ -73,4 +73,4 @@ void Refiner::add_to_grid(int level, int origin, int step, float delta, Stream s
   if (c_.periodic) wrap_edges();
 }
 
-}  // namespace ft::detail
+}  // namespace ft::terrain::detail

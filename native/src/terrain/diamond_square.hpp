@@ -11,7 +11,7 @@
 #include "core/heightfield.hpp"
 #include "core/progress.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 struct DiamondSquareConfig {
   int levels = 9;          // side = 2^levels + 1
@@ -31,4 +31,4 @@ struct DiamondSquareConfig {
 // The refiner behind it is in refiner.hpp.
 Heightfield diamond_square(const DiamondSquareConfig& config);
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -8,7 +8,7 @@
 #include "terrain/diamond_square.hpp"
 #include "terrain/terrain_methods.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace {
 
 const DiamondSquareConfig& config_of(const std::any& c) { return std::any_cast<const DiamondSquareConfig&>(c); }
@@ -64,4 +64,4 @@ uint64_t additions_window_work_bytes(int lod, int32_t w, int32_t h) {
   return checked_bytes(fw, fh, sizeof(float) * (k > 1 ? 3 : 2));
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -4,7 +4,7 @@
 #include "noise/fbm.hpp"
 #include "terrain/terrain_methods.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace {
 
 const noise::FbmConfig& config_of(const std::any& c) { return std::any_cast<const noise::FbmConfig&>(c); }
@@ -47,4 +47,4 @@ Heightfield fbm_window(const std::any& config, const Window& w, int) {
   return noise::fbm_window(config_of(config), w.x0, w.y0, w.width, w.height);
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

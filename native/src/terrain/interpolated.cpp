@@ -12,7 +12,7 @@
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace {
 
 // A grid of nx x ny nodes over the terrain. Non-periodic: nodes at
@@ -200,4 +200,4 @@ Heightfield interpolated_window(const InterpolatedConfig& c, int64_t x0, int64_t
   return hf;
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

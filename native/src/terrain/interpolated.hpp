@@ -14,7 +14,7 @@
 #include "core/heightfield.hpp"
 #include "core/progress.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 inline constexpr double kMaxInterpolatedLacunarity = 16.0;
 
@@ -38,4 +38,4 @@ Heightfield interpolated_fm(const InterpolatedConfig& c);
 // interpolation taps. Callers validate.
 Heightfield interpolated_window(const InterpolatedConfig& c, int64_t x0, int64_t y0, int32_t w, int32_t h);
 
-}  // namespace ft
+}  // namespace ft::terrain

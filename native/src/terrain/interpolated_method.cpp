@@ -6,7 +6,7 @@
 #include "terrain/interpolated.hpp"
 #include "terrain/terrain_methods.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace {
 
 const InterpolatedConfig& config_of(const std::any& c) { return std::any_cast<const InterpolatedConfig&>(c); }
@@ -39,4 +39,4 @@ Heightfield interpolated_window(const std::any& config, const Window& w, int) {
   return interpolated_window(config_of(config), w.x0, w.y0, w.width, w.height);
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

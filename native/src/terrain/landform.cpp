@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace {
 
 // 0 at the edge, 1 well inside: the falloff's weight of a sample at (u, v)
@@ -121,4 +121,4 @@ double apply_sea(const ft_terrain_params& p, Heightfield& hf) {
   return double(level);
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -11,7 +11,7 @@
 #include "core/heightfield.hpp"
 #include "fracterra/terrain.h"
 
-namespace ft {
+namespace ft::terrain {
 
 // Bound of |height_offset|, |edge_level| and |sea_level|: far inside float
 // range, so adding them keeps the generators' height bound valid.
@@ -44,4 +44,4 @@ void apply_landforms(const ft_terrain_params& p, const Corners& corners, const P
 // below it become it. Returns the sea's height (NaN without a sea).
 double apply_sea(const ft_terrain_params& p, Heightfield& hf);
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace {
 
 // |z|^2 beyond which the smooth count is read: |z| > 2^16, where the
@@ -184,4 +184,4 @@ Heightfield mandelbrot_window(const MandelbrotConfig& c, int64_t x0, int64_t y0,
   return hf;
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -44,7 +44,7 @@
 #include "core/heightfield.hpp"
 #include "core/progress.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 inline constexpr int32_t kMaxMandelbrotIterations = 1 << 24;
 inline constexpr double kMandelbrotCenterLimit = 4.0;  // |center_x|, |center_y| <= 4
@@ -97,4 +97,4 @@ void validate_mandelbrot(const MandelbrotConfig& c, int64_t max_side = 65536);
 Heightfield mandelbrot(const MandelbrotConfig& c);
 Heightfield mandelbrot_window(const MandelbrotConfig& c, int64_t x0, int64_t y0, int32_t w, int32_t h);
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -3,7 +3,7 @@
 #include "terrain/mandelbrot.hpp"
 #include "terrain/terrain_methods.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace {
 
 const MandelbrotConfig& config_of(const std::any& c) { return std::any_cast<const MandelbrotConfig&>(c); }
@@ -34,4 +34,4 @@ Heightfield mandelbrot_window(const std::any& config, const Window& w, int) {
 
 void mandelbrot_height_range(const ft_terrain_params& p, double* lo, double* hi) { *lo = 0.0, *hi = p.sigma; }
 
-}  // namespace ft
+}  // namespace ft::terrain

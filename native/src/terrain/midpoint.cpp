@@ -7,7 +7,7 @@
 
 #include "terrain/refiner.hpp"
 
-namespace ft::detail {
+namespace ft::terrain::detail {
 
 // The square and diamond steps fused row by row: square row j, then the
 // diamond points of that centre row, then those of the grid row above it,
@@ -67,4 +67,4 @@ void Refiner::fused_stage(int s, int big, int half, float square_delta, float di
   }
 }
 
-}  // namespace ft::detail
+}  // namespace ft::terrain::detail

@@ -4,7 +4,7 @@
 
 #include "core/rng.hpp"
 
-namespace ft::detail {
+namespace ft::terrain::detail {
 namespace {
 
 // The hot loops. The last stage (stride 2) holds three quarters of all
@@ -50,7 +50,7 @@ void diamond_interior_portable(float* row, const float* up, const float* dn, int
 // The AVX-512 kernels where the Gaussians take the AVX-512 path too: one
 // switch (FT_DISPATCH=avx2 or baseline turns both off).
 bool steps_avx512() {
-  static const bool yes = std::string_view(dispatch_path()) == "avx512";
+  static const bool yes = std::string_view(ft::detail::dispatch_path()) == "avx512";
   return yes;
 }
 
@@ -66,4 +66,4 @@ void diamond_interior(float* row, const float* up, const float* dn, int x0, int 
   else diamond_interior_portable(row, up, dn, x0, count, big, half, delta, g);
 }
 
-}  // namespace ft::detail
+}  // namespace ft::terrain::detail

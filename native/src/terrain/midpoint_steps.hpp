@@ -10,7 +10,7 @@
 
 #include <cstdint>
 
-namespace ft::detail {
+namespace ft::terrain::detail {
 
 // Centres row[x0 + i big] for i < count, from the rows `up` and `dn` half a
 // cell above and below: 0.25 ((up[x-h] + up[x+h]) + (dn[x-h] + dn[x+h])) + delta g[i].
@@ -65,4 +65,4 @@ inline float interior_mean(float left, float right, float up, float down) {
   return 0.25f * ((left + right) + (up + down));
 }
 
-}  // namespace ft::detail
+}  // namespace ft::terrain::detail

@@ -12,7 +12,7 @@
 #include "core/avx512.hpp"
 #include "terrain/midpoint_steps.hpp"
 
-namespace ft::detail {
+namespace ft::terrain::detail {
 namespace {
 
 // Lanes 0, S, 2 S, ...: the first `points` (<= 16 / S) points of a group.
@@ -93,4 +93,4 @@ void diamond_interior_avx512(float* row, const float* up, const float* dn, int x
   else points<8, true>(row, up, dn, x0, count, delta, g);
 }
 
-}  // namespace ft::detail
+}  // namespace ft::terrain::detail

@@ -6,7 +6,7 @@
 
 #include "core/rng.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 void midpoint_profile(const ProfileConfig& c, float* x) {
   const int64_t n = int64_t(1) << c.levels;
@@ -46,4 +46,4 @@ void midpoint_profile(const ProfileConfig& c, float* x) {
   c.progress.report(1.0);
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

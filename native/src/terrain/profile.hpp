@@ -8,7 +8,7 @@
 
 #include "core/progress.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 inline constexpr int kMaxProfileLevels = 28;  // 2^28 + 1 floats = 1 GiB
 
@@ -25,4 +25,4 @@ struct ProfileConfig {
 // Writes 2^levels + 1 samples into dst.
 void midpoint_profile(const ProfileConfig& config, float* dst);
 
-}  // namespace ft
+}  // namespace ft::terrain

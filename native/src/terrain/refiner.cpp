@@ -5,7 +5,7 @@
 #include "core/parallel.hpp"
 #include "terrain/midpoint_steps.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace detail {
 
 Refiner::Refiner(const DiamondSquareConfig& c, Heightfield& hf)
@@ -155,4 +155,4 @@ Heightfield diamond_square(const DiamondSquareConfig& config) {
   return hf;
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -18,7 +18,7 @@
 #include "core/rng.hpp"
 #include "terrain/diamond_square.hpp"
 
-namespace ft::detail {
+namespace ft::terrain::detail {
 
 class Refiner {
  public:
@@ -87,4 +87,4 @@ void Refiner::in_bands(int rows, int per_row, RowsFn&& rows_fn) {
   }
 }
 
-}  // namespace ft::detail
+}  // namespace ft::terrain::detail

@@ -5,7 +5,7 @@
 #include "terrain/spectral_synthesis.hpp"
 #include "terrain/terrain_methods.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 std::any spectral_configure(const ft_terrain_params& p) {
   SpectralConfig c;
@@ -29,4 +29,4 @@ Heightfield spectral_generate(const std::any& config) {
   return spectral_synthesis(std::any_cast<const SpectralConfig&>(config));
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -13,7 +13,7 @@
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace {
 
 // FFTW's planner is not thread-safe; execution of a plan is.
@@ -151,4 +151,4 @@ Heightfield spectral_synthesis(const SpectralConfig& c) {
   return hf;
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

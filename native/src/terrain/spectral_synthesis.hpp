@@ -15,7 +15,7 @@
 #include "core/heightfield.hpp"
 #include "core/progress.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 // sigma is the standard deviation of the waves up to this many cycles
 // across the longer side (all those of a 512-sample-wide terrain), at every
@@ -41,4 +41,4 @@ Heightfield spectral_synthesis(const SpectralConfig& c);
 // check of terrain.cpp.
 double spectral_power_ratio_bound(int32_t width, int32_t height, double hurst);
 
-}  // namespace ft
+}  // namespace ft::terrain

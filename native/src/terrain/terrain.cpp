@@ -13,7 +13,7 @@
 #include "terrain/terrain_methods.hpp"
 #include "terrain/terrain_params.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 double reference_scale(int mode, double sigma, const float* ref, size_t n) {
   if (mode == FT_REFSCALE_SIGMA) return sigma;
@@ -288,4 +288,4 @@ void generate_profile(const ft_profile_params& p, float* dst, size_t count) {
   midpoint_profile(c, dst);
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -8,7 +8,7 @@
 #include "terrain/profile.hpp"
 #include "terrain/terrain_method.hpp"  // dyadic_levels
 
-namespace ft {
+namespace ft::terrain {
 
 inline constexpr int kMaxLevels = 15;         // 32769^2 floats = 4 GiB
 // Windows never hold the whole terrain: midpoint and additions reach 24
@@ -38,4 +38,4 @@ void validate_profile_params(const ft_profile_params& p);
 // dst holds `count` floats, at least 2^levels + 1.
 void generate_profile(const ft_profile_params& p, float* dst, size_t count);
 
-}  // namespace ft
+}  // namespace ft::terrain

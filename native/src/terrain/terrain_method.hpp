@@ -15,7 +15,7 @@
 #include "fracterra/terrain.h"
 #include "terrain/window.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 // How a method's terrain tiles.
 enum class Tiling {
@@ -109,4 +109,4 @@ void set_reference(Config& c, const Params& p, size_t count) {
 void dyadic_extent(const ft_terrain_params& p, int lod, int64_t* width, int64_t* height);
 void sized_extent(const ft_terrain_params& p, int lod, int64_t* width, int64_t* height);
 
-}  // namespace ft
+}  // namespace ft::terrain

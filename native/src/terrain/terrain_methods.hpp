@@ -16,7 +16,7 @@
   Heightfield name##_generate(const std::any& config);                                   \
   Heightfield name##_window(const std::any& config, const Window& w, int lod)
 
-namespace ft {
+namespace ft::terrain {
 
 FT_TERRAIN_METHOD_FUNCTIONS(diamond_square);  // midpoint and additions (diamond_square_method.cpp)
 FT_TERRAIN_METHOD_FUNCTIONS(fbm);             // fbm_method.cpp
@@ -75,4 +75,4 @@ constexpr uint64_t method_mask(Has has) {
   return mask;
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -12,7 +12,7 @@
 #include "terrain/terrain.hpp"
 #include "terrain/terrain_methods.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace {
 
 // The masks of capabilities come from the method table (terrain_methods.hpp);
@@ -303,4 +303,4 @@ const ParamTable& terrain_param_table() {
   return table;
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

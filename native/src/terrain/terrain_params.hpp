@@ -4,9 +4,9 @@
 
 #include "core/param_table.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 const ParamTable& terrain_param_table();
 const ParamTable& profile_param_table();
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -12,7 +12,7 @@
 #include "core/rng.hpp"
 #include "terrain/midpoint_steps.hpp"
 
-namespace ft {
+namespace ft::terrain {
 namespace {
 
 int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
@@ -399,4 +399,4 @@ Heightfield diamond_square_window(const DiamondSquareConfig& config, const Windo
   return hf;
 }
 
-}  // namespace ft
+}  // namespace ft::terrain

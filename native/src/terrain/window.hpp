@@ -17,7 +17,7 @@
 #include "core/heightfield.hpp"
 #include "terrain/diamond_square.hpp"
 
-namespace ft {
+namespace ft::terrain {
 
 // A rectangle of samples in the whole terrain's coordinates.
 struct Window {
@@ -35,4 +35,4 @@ struct Window {
 // Callers validate (terrain.cpp): the window lies inside the terrain.
 Heightfield diamond_square_window(const DiamondSquareConfig& config, const Window& window, int lod = 0);
 
-}  // namespace ft
+}  // namespace ft::terrain

@@ -16,12 +16,12 @@ constexpr double kGaussianBound = 5.9;  // |g| <= sqrt(50 ln 2) = 5.888 (see the
 // Methods whose coarser stages keep their samples (plain midpoint): the
 // coarse pass plus a margin for the finer displacements bounds the heights.
 bool has_midpoint_bound(const ft_terrain_params& p) {
-  if (!terrain_method(p.method).stages_keep_samples) return false;
+  if (!terrain::terrain_method(p.method).stages_keep_samples) return false;
   // The margin bounds the raw method's finer displacements; the landforms
   // (levelling, falloff, sea) reshape them, so such terrains take the exact pass.
-  if (has_landforms(p)) return false;
+  if (terrain::has_landforms(p)) return false;
   if (p.reference == nullptr) return true;
-  const int m = dyadic_levels(p.reference_size);
+  const int m = terrain::dyadic_levels(p.reference_size);
   return p.reference_scale == FT_REFSCALE_SIGMA && m >= 1 && m <= std::min(p.levels, kCoarseLevels);
 }
 
@@ -35,7 +35,7 @@ double midpoint_bound_margin(int levels, int m, double hurst, double sigma) {
 
 HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& grid) {
   HeightRange r;
-  if (const auto formula = terrain_method(p.method).height_range) {
+  if (const auto formula = terrain::terrain_method(p.method).height_range) {
     r.how = "formula";
     formula(p, &r.min, &r.max);
     return r;
@@ -43,7 +43,7 @@ HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& gri
   if (has_midpoint_bound(p)) {
     const int m = std::min(p.levels, kCoarseLevels), lod = p.levels - m;
     const int32_t side = int32_t((int64_t(1) << m) + 1);
-    const HeightStats s = generate_terrain_window(p, lod, 0, 0, side, side).stats();
+    const HeightStats s = terrain::generate_terrain_window(p, lod, 0, 0, side, side).stats();
     const double margin = midpoint_bound_margin(p.levels, m, p.hurst, p.sigma);
     const double slack = 1e-5 * (std::max(std::abs(s.min), std::abs(s.max)) + margin);
     r = {s.min - margin - (lod ? slack : 0.0), s.max + margin + (lod ? slack : 0.0), lod ? "bound" : "exact"};
@@ -60,13 +60,13 @@ HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& gri
 }
 
 bool needs_exact_pass(const ft_terrain_params& p) {
-  return !terrain_method(p.method).height_range && !has_midpoint_bound(p);
+  return !terrain::terrain_method(p.method).height_range && !has_midpoint_bound(p);
 }
 
 HeightRange tile_height_range(const ft_terrain_params& p, const TileGrid& grid, int32_t col, int32_t row) {
   grid.check_tile(col, row);
-  const Window w = grid.window(col, row);
-  const HeightStats s = generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height).stats();
+  const terrain::Window w = grid.window(col, row);
+  const HeightStats s = terrain::generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height).stats();
   return {s.min, s.max, "exact"};
 }
 

@@ -47,7 +47,7 @@ std::string path_in(const std::string& dir, const char* name) { return (std::fil
 
 nlohmann::json terrain_identity(const ft_terrain_params& p) {
   nlohmann::json j = nlohmann::json::object();
-  for (const ft_param_info& row : terrain_param_table().rows) {
+  for (const ft_param_info& row : terrain::terrain_param_table().rows) {
     if ((row.flags & (FT_PARAM_FLAG_STRUCT_SIZE | FT_PARAM_FLAG_DATA)) || row.count != 1 ||
         row.type == FT_PARAM_POINTER || row.type == FT_PARAM_STRING || row.type == FT_PARAM_CALLBACK)
       continue;

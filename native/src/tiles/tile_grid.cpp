@@ -6,8 +6,8 @@
 
 namespace ft::tiles {
 
-Window TileGrid::window(int32_t col, int32_t row) const {
-  Window w;
+terrain::Window TileGrid::window(int32_t col, int32_t row) const {
+  terrain::Window w;
   w.x0 = int64_t(col) * tile;
   w.y0 = int64_t(row) * tile;
   w.width = int32_t(std::min<int64_t>(tile + 1, width - w.x0));

@@ -21,7 +21,7 @@ struct TileGrid {
   int32_t rows() const noexcept { return int32_t((height - 2) / tile + 1); }
   int64_t count() const noexcept { return int64_t(columns()) * rows(); }
   // The samples of tile (col, row); callers check the indices (check_tile).
-  Window window(int32_t col, int32_t row) const;
+  terrain::Window window(int32_t col, int32_t row) const;
   // Throws naming the tile and the grid when (col, row) is outside.
   void check_tile(int32_t col, int32_t row) const;
 };

@@ -54,7 +54,7 @@ GrayImage quantise(const Heightfield& hf, const TileSpec& s, int32_t col, int32_
 TileSpec make_tile_spec(const ft_terrain_params& p, int64_t tile, TileFormat format, double height_min,
                         double height_max) {
   int64_t width = 0, height = 0;
-  terrain_extent(p, 0, &width, &height);
+  terrain::terrain_extent(p, 0, &width, &height);
   check_finite("height_min", height_min);
   check_finite("height_max", height_max);
   if (!(height_max >= height_min)) invalid("the height range's max must not be below its min");
@@ -85,7 +85,7 @@ std::string tile_file_name(const TileSpec& spec, int32_t col, int32_t row) {
 }
 
 void tile_geotransform(const TileSpec& spec, int32_t col, int32_t row, double t[6]) {
-  const Window w = spec.grid.window(col, row);
+  const terrain::Window w = spec.grid.window(col, row);
   const double s = spec.spacing;
   t[0] = (double(w.x0) - 0.5) * s;
   t[1] = s;
@@ -109,8 +109,8 @@ uint32_t file_crc32(const std::string& path) {
 uint32_t write_tile(const ft_terrain_params& p, const TileSpec& spec, const std::string& dir, int32_t col,
                     int32_t row) {
   spec.grid.check_tile(col, row);
-  const Window w = spec.grid.window(col, row);
-  Heightfield hf = generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height);
+  const terrain::Window w = spec.grid.window(col, row);
+  Heightfield hf = terrain::generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height);
   double t[6];
   tile_geotransform(spec, col, row, t);
   const std::string path = path_in(dir, tile_file_name(spec, col, row));

@@ -37,7 +37,7 @@ nlohmann::json new_manifest(const nlohmann::json& terrain, const TileSpec& s, co
   nlohmann::json tiles = nlohmann::json::array();
   for (int32_t row = 0; row < s.grid.rows(); ++row)
     for (int32_t col = 0; col < s.grid.columns(); ++col) {
-      const Window w = s.grid.window(col, row);
+      const terrain::Window w = s.grid.window(col, row);
       tiles.push_back({{"column", col},
                        {"row", row},
                        {"file", tile_file_name(s, col, row)},

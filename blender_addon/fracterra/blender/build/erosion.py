@@ -25,26 +25,43 @@ CHANNELS, DEPOSITS, STEEP = (0.45, 0.7), (0.05, 0.4), (0.3, 0.45)
 
 # --- in the job's worker thread (no bpy here)
 
-def generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=None):
+# The library's share of the work's bar; the mesh arrays and the maps the rest.
+LIBRARY_SHARE = 0.85
+
+def generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=None, maps=None):
     """Builds the terrain of `values` (with its reference and falloff mask, as
     core.generate_terrain takes them) in one library call, eroded when its
-    settings ask for it (a preset: its passes and the uplift fitted to the
-    terrain, the rates as set; Custom: everything as set); returns
-    grid_of(heightfield) with `.erosion_maps` ({attribute: float32 array} or
-    None). Runs in the worker thread."""
+    settings ask for it (a preset: its run and rates, Strength and the rest as
+    set; Custom: everything as set), where `maps` say (erosion_masks.maps_for:
+    the erosion mask and the rain map, or None); returns grid_of(heightfield)
+    with `.erosion_maps` ({attribute: float32 array} or None). Runs in the
+    worker thread."""
     preset = values.get("erode_preset", "NONE")
     eroded = preset not in ("NONE", "CUSTOM") or (preset == "CUSTOM" and erosion.requested(values))
+    # The bar: the library's pipeline, then the mesh arrays (seconds at 4097^2).
+    cancelled = [False]
+
+    def part(start, span):
+        def report(fraction):
+            cancelled[0] = bool(progress(start + span * fraction)) or cancelled[0]
+            return cancelled[0]
+        return report
+
     hf, maps = core.build_terrain(values, reference=reference, falloff_mask=falloff_mask,
                                   erosion=values if eroded else None,
                                   preset="NONE" if preset == "CUSTOM" else preset, maps=eroded,
-                                  threads=threads, progress=progress)
+                                  threads=threads, progress=part(0.0, LIBRARY_SHARE),
+                                  **(maps if eroded and maps else {}))
     with hf:
-        g = grid_of(hf)
+        g = grid_of(hf, part(LIBRARY_SHARE, 0.95 - LIBRARY_SHARE))
         spacing = values["world_size"] / (hf.width - 1)
     g.erosion_maps = None
     if eroded:
         g.erosion_maps = attribute_maps({k: np.frombuffer(v, dtype=np.float32) for k, v in maps.items()},
                                         spacing * spacing)
+    part(0.95, 0.05)(1.0)
+    if cancelled[0]:
+        raise core.CancelledError("Generating terrain: cancelled", core.errors.FT_ERR_CANCELLED)
     return g
 
 

@@ -45,6 +45,19 @@ def mesh_level(obj):
     return None
 
 
+def mesh_grid(obj):
+    """(nx, ny) of the grid a terrain object's mesh holds, by the settings it was
+    built from (its Final or its Preview), or None (edited, or older): the
+    settings shown may already ask for another size."""
+    built = built_settings(obj.data) or params.values_of(obj.fracterra_terrain)
+    n = len(obj.data.vertices)
+    for values in (built, params.preview_values(built)):
+        nx, ny = grid_shape(values)
+        if nx * ny == n:
+            return nx, ny
+    return None
+
+
 def terrain_grid_size(obj):
     """(nx, ny) of a fracterra terrain object whose mesh is still its grid (its Final or its Preview)."""
     level = mesh_level(obj)

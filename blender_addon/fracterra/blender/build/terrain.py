@@ -15,6 +15,7 @@ from ...core.mesh_limits import check_grid
 from ...core.params import grid_shape
 from ...core.resample import dyadic_levels, resample_bilinear
 from . import erosion as erosion_ui
+from . import erosion_masks
 from . import falloff_mask
 from . import mesh as mesh_build
 from .objects import mesh_level, remember_settings
@@ -102,26 +103,31 @@ def terrain_work(values, context, topology=True, frame=None, terrain_name=None):
     reference and the falloff mask are read (a mask object is projected on
     the terrain's footprint at `frame`, its world matrix; `terrain_name`: the
     terrain object, refused as its own mask). `topology`: False when only the
-    vertex positions are needed (an in-place rewrite).
+    vertex positions are needed (an in-place rewrite). The erosion mask and
+    the rain map are read too (from the terrain's own vertex groups, or
+    images); `work.maps` holds them (erosion_masks.maps_for).
     """
     check_grid(*grid_shape(values))
     reference = reference_for(values)
     mask = falloff_mask.mask_for(values, frame if frame is not None else Matrix.Identity(4),
                                  context.evaluated_depsgraph_get(), terrain_name)
+    maps = erosion_masks.maps_for(values, bpy.data.objects.get(terrain_name) if terrain_name else None)
     threads = library_threads(context)
     # The library flattens the sea itself (ft_terrain_params.sea): no floor here.
     world_size, floor = values["world_size"], NO_FLOOR
 
-    def grid_of(hf):
+    def grid_of(hf, progress=None):
         if topology:
-            return grid_arrays(hf, world_size, floor, uvs=values["uvs"])
+            return grid_arrays(hf, world_size, floor, uvs=values["uvs"], progress=progress)
         g = GridArrays(hf.width, hf.height)
         g.co = vertices(hf, *grid_size(world_size, g.nx, g.ny), floor)
         return g
 
     def work(progress):
         # Generation, then the Erode step when the settings ask for it.
-        return erosion_ui.generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=mask)
+        return erosion_ui.generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=mask,
+                                             maps=maps)
+    work.maps = maps
     return work
 
 
@@ -170,10 +176,11 @@ def _swap_mesh(obj, new):
         new.name = name
 
 
-def _build_in_place(obj, g, values, settings):
+def _build_in_place(obj, g, values, settings, groups=None):
     """Build steps of a regenerated terrain. The same grid: its positions are
     rewritten in one step. Another grid: a new mesh is built aside and swapped
-    in at the end, so a cancel never leaves the object half-built."""
+    in at the end, so a cancel never leaves the object half-built; `groups`
+    ({name: weights}, erosion_masks.carried_groups) are painted onto it."""
     mesh = obj.data
     if len(mesh.vertices) == g.vertex_count and len(mesh.polygons) == g.face_count:
         mesh_build.rewrite_positions(mesh, g.co)
@@ -186,6 +193,7 @@ def _build_in_place(obj, g, values, settings):
         return f"{g.nx} x {g.ny} terrain heights rewritten"
     new, _summary = yield from _build_new_mesh(g, values, mesh.name, settings)
     _swap_mesh(obj, new)
+    erosion_masks.carry_groups(obj, groups or {}, g.nx, g.ny)
     return f"{g.nx} x {g.ny} terrain mesh rebuilt"
 
 
@@ -202,7 +210,8 @@ def regenerate_job(obj, context, preview=False):
     work = terrain_work(values, context, topology=not same_grid or adds_uvs, frame=obj.matrix_world.copy(),
                         terrain_name=obj.name)
     label = "Regenerating terrain (Preview)" if values is not settings else "Regenerating terrain"
-    return Job(label, work, lambda g: _build_in_place(obj, g, values, settings))
+    groups = erosion_masks.carried_groups(values, work.maps)
+    return Job(label, work, lambda g: _build_in_place(obj, g, values, settings, groups))
 
 
 def regenerate_object(obj, context, preview=False):

@@ -15,7 +15,9 @@ A Job is split where Blender needs it split:
 JobOperator gives an operator both ways to run a job: invoke() runs it in
 the background (modal, status-bar progress, Esc cancels); execute() runs the
 same job to the end in the calling thread (the redo panel, scripts,
-background Blender). Subclasses define make_job(context) and
+background Blender). The redo panel blocks the window and can show no bar:
+work that outlasts REDO_BUDGET there is cancelled and handed over to the
+modal job, started again with the same settings as the menu starts it. Subclasses define make_job(context) and
 job_done(context, value); errors in REPORTED become reports, never
 tracebacks.
 
@@ -138,6 +140,15 @@ class Runner:
             raise
         return RUNNING
 
+    def finish(self, on_progress=None):
+        """Runs the build steps once the work is done; FINISHED or CANCELLED like step()."""
+        while True:
+            state = self.step()
+            if on_progress is not None:
+                on_progress(self.fraction)
+            if state != RUNNING:
+                return state
+
     def run_blocking(self, on_progress=None):
         """Runs the whole job in this thread (no cancel but the callback's).
         Returns FINISHED or CANCELLED like step()."""
@@ -151,12 +162,7 @@ class Runner:
         except BaseException as e:  # noqa: B036 - re-raised by step() below, like the thread's
             self._error = e
         self._work_done.set()
-        while True:
-            state = self.step()
-            if on_progress is not None:
-                on_progress(self.fraction)
-            if state != RUNNING:
-                return state
+        return self.finish(on_progress)
 
     @property
     def seconds(self):
@@ -202,6 +208,22 @@ class StatusBar:
             self.workspace.status_text_set(None)
 
 
+# Seconds the redo panel may block the window before its work is handed over
+# to the modal job (a drag in the redo panel reruns the operator each time).
+REDO_BUDGET = 0.5
+
+
+def operator_arguments(op):
+    """{name: value} of every property of operator `op`: what starts it again alike."""
+    out = {}
+    for name, prop in op.properties.bl_rna.properties.items():
+        if name == "rna_type" or prop.is_readonly:
+            continue
+        value = getattr(op.properties, name)
+        out[name] = tuple(value) if getattr(prop, "is_array", False) else value
+    return out
+
+
 class JobOperator:
     """Mixin for bpy.types.Operator: define make_job(context) -> Job (raise a
     REPORTED error to refuse) and job_done(context, value) -> {'FINISHED'}
@@ -225,19 +247,48 @@ class JobOperator:
         self.report({"ERROR"}, str(e))
         return {"CANCELLED"}
 
+    def _redo_in_window(self, context):
+        return self.options.is_repeat and getattr(context, "window", None) is not None and not bpy.app.background
+
+    def _hand_over(self, context, runner):
+        """Stops the redo's work and starts the operator again as its menu does
+        (a modal job: status-bar progress, Esc cancels), once this redo is over."""
+        runner.cancel()
+        runner._work_done.wait()
+        window, area = context.window, context.area
+        category, name = self.bl_idname.lower().split("_ot_") if "_OT_" in self.bl_idname else \
+            self.bl_idname.split(".")  # MESH_OT_x at run time, mesh.x in the class
+        start_again = getattr(getattr(bpy.ops, category), name)
+        arguments = operator_arguments(self)
+
+        def start():
+            region = next((r for r in area.regions if r.type == "WINDOW"), None) if area else None
+            with bpy.context.temp_override(window=window, area=area, region=region):
+                start_again("INVOKE_DEFAULT", True, **arguments)
+        bpy.app.timers.register(start, first_interval=0.01)
+        self.report({"INFO"}, f"{runner.job.label}: longer than {REDO_BUDGET} s, continues with a progress bar "
+                              "(Esc cancels)")
+        return {"FINISHED"}
+
     def execute(self, context):
         try:
             job = self.make_job(context)
-            wm = getattr(context, "window_manager", None)
-            if wm is not None:
-                wm.progress_begin(0, 1000)
-            try:
-                runner = Runner(job)
-                state = runner.run_blocking(
-                    (lambda f: wm.progress_update(int(f * 1000))) if wm is not None else None)
-            finally:
+            runner = Runner(job)
+            if self._redo_in_window(context):
+                runner.start()
+                if not runner._work_done.wait(REDO_BUDGET):
+                    return self._hand_over(context, runner)
+                state = runner.finish()
+            else:
+                wm = getattr(context, "window_manager", None)
                 if wm is not None:
-                    wm.progress_end()
+                    wm.progress_begin(0, 1000)
+                try:
+                    state = runner.run_blocking(
+                        (lambda f: wm.progress_update(int(f * 1000))) if wm is not None else None)
+                finally:
+                    if wm is not None:
+                        wm.progress_end()
         except REPORTED as e:
             return self._refuse(e)
         if state == CANCELLED:

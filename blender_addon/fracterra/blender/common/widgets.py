@@ -55,3 +55,12 @@ def draw_setting(layout, data, name, p=None):
     col = layout.column(align=True)
     draw_wrapped(col, unit_label(p), width=30)
     col.prop(data, shown, text="")
+
+
+def draw_placement(layout, op):
+    """Where an Add operator puts its object (AddObjectHelper's Align, Location, Rotation)."""
+    col = layout.column()
+    col.use_property_split = True
+    col.prop(op, "align")
+    col.prop(op, "location")
+    col.prop(op, "rotation")

@@ -14,6 +14,7 @@ from ..build.curve import LineArrays, fill_curve_steps, link_new_object, new_cur
 from ..build.polyline import default_radius, polyline_job, regenerate_job
 from ..common.jobs import Job, JobOperator
 from ..common.reporting import SettingsError
+from ..common.widgets import draw_placement
 from ..ui.settings_layout import draw_polyline_settings
 from ..build.objects import heightfield_of, is_polyline, is_terrain, sea_height
 
@@ -79,11 +80,7 @@ class FRACTERRA_OT_polyline_add(JobOperator, bpy.types.Operator, object_utils.Ad
     def draw(self, context):
         draw_polyline_settings(self.layout, self)
         if self.base_source == "POINTS":
-            col = self.layout.column()
-            col.use_property_split = True
-            col.prop(self, "align")
-            col.prop(self, "location")
-            col.prop(self, "rotation")
+            draw_placement(self.layout, self)
 
     # From the menu it runs in the background with a progress bar (Esc cancels);
     # the redo panel and scripts run execute() (progress.JobOperator).

@@ -11,7 +11,7 @@ from ..common.jobs import JobOperator
 from ..ui.settings_layout import draw_settings
 from ..build.objects import is_terrain, restore_settings
 from ..build.terrain import new_terrain_job, regenerate_job
-from ..common.widgets import draw_size
+from ..common.widgets import draw_placement, draw_size
 
 
 class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.AddObjectHelper):
@@ -23,11 +23,7 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
     def draw(self, context):
         draw_settings(self.layout, self)
         draw_size(self.layout, params.values_of(self))
-        col = self.layout.column()
-        col.use_property_split = True
-        col.prop(self, "align")
-        col.prop(self, "location")
-        col.prop(self, "rotation")
+        draw_placement(self.layout, self)
 
     # From the menu it runs in the background with a progress bar (Esc
     # cancels); the redo panel and scripts run execute() (progress.JobOperator).
@@ -36,6 +32,9 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
         # and no Esc: a terrain over its Preview size is built there at its
         # Preview level, and the sidebar's Build Final (a cancellable job with
         # progress) builds the rest. The menu and scripts build the Final.
+        # A preset given as an argument (a script, a saved operator preset) shows
+        # its own settings, as picking it in the menu does.
+        erosion_layout.settle_preset(self)
         values = params.values_of(self)
         self._preview = self.options.is_repeat and params.preview_values(values) is not values
         # Where the object will stand: a mask object is seen over that footprint.
@@ -62,7 +61,7 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
 # the last object's (the redo panel keeps it while adjusting this Add).
 FRACTERRA_OT_terrain_add.__annotations__ = {
     **props.terrain_annotations(),
-    **props.terrain_annotations(param_list=params.EROSION_PARAMS, options={"SKIP_SAVE"}),
+    **props.terrain_annotations(param_list=params.EROSION_PARAMS + params.EROSION_MAP_PARAMS, options={"SKIP_SAVE"}),
     "erode_preset": erosion_layout.preset_property(options={"SKIP_SAVE"})}
 
 
@@ -106,7 +105,7 @@ class FRACTERRA_OT_terrain_regenerate(JobOperator, bpy.types.Operator):
 
 
 class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
-    """Open an image file for the active terrain: its reference (brightness becomes the heights) or its falloff mask"""
+    """Open an image file for the active terrain: its reference (brightness becomes the heights), its falloff mask, where it erodes or where rain falls"""
     bl_idname = "object.fracterra_reference_image_open"
     bl_label = "Open Image"
     bl_options = {"REGISTER", "UNDO"}
@@ -115,7 +114,9 @@ class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
         default="*.png;*.jpg;*.jpeg;*.tif;*.tiff;*.exr;*.hdr;*.bmp;*.tga;*.webp", options={"HIDDEN"})
     target: bpy.props.EnumProperty(
         name="For", items=(("REFERENCE", "Reference", "The reference heights (Reference: Image)"),
-                           ("FALLOFF_MASK", "Falloff Mask", "The custom falloff's mask (Mask From: Image)")),
+                           ("FALLOFF_MASK", "Falloff Mask", "The custom falloff's mask (Mask From: Image)"),
+                           ("EROSION_MASK", "Erosion Mask", "Where erosion acts (Mask: Image)"),
+                           ("RAIN_MAP", "Rain Map", "Where rain falls (Rain Map: Image)")),
         default="REFERENCE", options={"HIDDEN", "SKIP_SAVE"})
 
     @classmethod
@@ -134,6 +135,11 @@ class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
             settings.falloff_mask_image = image.name
             settings.falloff_mask_source = "IMAGE"
             what = "Falloff mask"
+        elif self.target in ("EROSION_MASK", "RAIN_MAP"):
+            prefix = self.target.lower()
+            setattr(settings, prefix + "_image", image.name)
+            setattr(settings, prefix + "_source", "IMAGE")
+            what = "Erosion mask" if self.target == "EROSION_MASK" else "Rain map"
         else:
             settings.reference_image = image.name
             settings.reference_source = "IMAGE"

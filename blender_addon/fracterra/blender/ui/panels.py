@@ -42,15 +42,24 @@ def draw_mesh_level(layout, settings, level):
         col.label(text=f"Final: {fx} x {fy}", icon="RENDER_STILL")
 
 
-class FRACTERRA_PT_terrain(bpy.types.Panel):
-    bl_label = "Fractal Terrain"
+class _SidebarPanel:
+    """Where every panel of the add-on stands: View3D > Sidebar > Fracterra;
+    shown when the active object is one `shows(obj)` accepts."""
     bl_space_type = "VIEW_3D"
     bl_region_type = "UI"
     bl_category = "Fracterra"
 
     @classmethod
     def poll(cls, context):
-        return not is_polyline(context.active_object)  # a polyline has its own panel
+        return cls.shows(context.active_object)
+
+
+class FRACTERRA_PT_terrain(_SidebarPanel, bpy.types.Panel):
+    bl_label = "Fractal Terrain"
+
+    @staticmethod
+    def shows(obj):
+        return not is_polyline(obj)  # a polyline has its own panel
 
     def draw(self, context):
         layout = self.layout
@@ -69,15 +78,9 @@ class FRACTERRA_PT_terrain(bpy.types.Panel):
         draw_size(layout, params.values_of(settings))
 
 
-class FRACTERRA_PT_polyline(bpy.types.Panel):
+class FRACTERRA_PT_polyline(_SidebarPanel, bpy.types.Panel):
     bl_label = "Fractal Polyline"
-    bl_space_type = "VIEW_3D"
-    bl_region_type = "UI"
-    bl_category = "Fracterra"
-
-    @classmethod
-    def poll(cls, context):
-        return is_polyline(context.active_object)
+    shows = staticmethod(is_polyline)
 
     def draw(self, context):
         layout = self.layout
@@ -87,15 +90,9 @@ class FRACTERRA_PT_polyline(bpy.types.Panel):
         draw_polyline_settings(layout, settings, compact=True)
 
 
-class FRACTERRA_PT_measures(bpy.types.Panel):
+class FRACTERRA_PT_measures(_SidebarPanel, bpy.types.Panel):
     bl_label = "Fractal Measures"
-    bl_space_type = "VIEW_3D"
-    bl_region_type = "UI"
-    bl_category = "Fracterra"
-
-    @classmethod
-    def poll(cls, context):
-        return is_measurable(context.active_object)
+    shows = staticmethod(is_measurable)
 
     def draw(self, context):
         layout = self.layout

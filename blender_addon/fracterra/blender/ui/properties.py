@@ -115,17 +115,29 @@ def falloff_mask_image_picker(update=None):
                         "Use this image as the falloff mask", update)
 
 
+def map_image_picker(what, update=None):
+    """The image picker of the erosion mask or the rain map (`what`: the setting's prefix)."""
+    role = "erosion acts" if what == "erosion_mask" else "rain falls"
+    return image_picker(f"{what}_image", f"Image whose brightness says where {role}: white fully, black not at all "
+                                         "(Open loads a file)", f"Use this image for where {role}", update)
+
+
 def terrain_annotations(update=None, param_list=None, options=None):
-    """{name: property} for every setting (terrain unless another list is given)."""
+    """{name: property} for every setting (terrain unless another list is given).
+    A setting an erosion preset sets makes the preset Custom when changed by hand."""
     out = {}
     for p in param_list or params.TERRAIN_OBJECT_PARAMS:
-        out[p.name] = bpy_property(p, update, options)
+        own = erosion_layout.leaves_preset(update) if p.name in erosion_layout.SET_BY_PRESET else update
+        out[p.name] = bpy_property(p, own, options)
         if p.display_scale is not None:
             out[params.shown_name(p.name)] = display_property(p)
     if "reference_image" in out:
         out["reference_image_pick"] = reference_image_picker(update)
     if "falloff_mask_image" in out:
         out["falloff_mask_image_pick"] = falloff_mask_image_picker(update)
+    for what in ("erosion_mask", "rain_map"):
+        if what + "_image" in out:
+            out[what + "_image_pick"] = map_image_picker(what, update)
     return out
 
 

@@ -1,0 +1,73 @@
+/* fracterra splat: weight maps (splat maps) and colour maps of a terrain for
+ * game engines, Blender and POV-Ray, from one set of layer rules (ABI 2.19).
+ *
+ * Each layer (rock, grass, ...) has a rule: a weight times a band in height
+ * (as a fraction of the terrain's height range, 0 lowest, 1 highest), a band
+ * in slope (degrees) and, optionally, a "wet" condition on the erosion maps
+ * (deposited thickness as a fraction of the height range, drainage area as
+ * a fraction of the terrain's area). A band [min, max] with blend b rises
+ * linearly from 0 at min - b/2 to 1 at min + b/2 (and falls likewise about
+ * max); blend 0 is a hard edge (1 inside [min, max]). A layer whose rule
+ * uses both deposit and flow takes the larger of the two (sediment lies
+ * where it was laid down or where water runs). At each sample the layers'
+ * weights are divided by their sum; where no rule gives any weight the first
+ * layer takes it all. The integer maps are rounded by largest remainder so
+ * that every sample's weights sum to exactly `total` (255 or 65535). */
+#ifndef FRACTERRA_SPLAT_H
+#define FRACTERRA_SPLAT_H
+
+#include "core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// The rule of one layer. Fill with ft_splat_params_init; ranges in params.h
+/// (FT_PARAMS_SPLAT).
+typedef struct ft_splat_params {
+  uint32_t struct_size;   ///< sizeof(ft_splat_params)
+  const char* name;       ///< the layer's name ("rock"); unique within a rule set; may be NULL
+  double height_min;      ///< band in height, fraction of the height range; default 0
+  double height_max;      ///< default 1
+  double height_blend;    ///< width of the band's soft edges (fraction); default 0
+  double slope_min;       ///< band in slope, degrees; default 0
+  double slope_max;       ///< default 90
+  double slope_blend;     ///< degrees; default 0
+  double deposit_min;     ///< deposited thickness / height range at which the layer starts; 0: unused
+  double deposit_blend;   ///< its soft edge (same unit); default 0
+  double flow_min;        ///< drainage area / terrain area at which the layer starts; 0: unused
+  double flow_blend;      ///< its soft edge in decades of drainage area; default 0
+  double weight;          ///< the layer's strength against the others; default 1
+  double color[3];        ///< sRGB 0..1 for colour maps and materials; default mid grey
+} ft_splat_params;
+
+FT_API ft_status ft_splat_params_init(ft_splat_params* layer);
+
+/// The built-in rule set: grass (by height), rock (by slope), sediment (by
+/// deposit and flow), snow (by height and slope), in that order (R, G, B, A
+/// of the first splat map). `*count` gets the number of layers; `layers`
+/// (may be NULL to ask the count) holds `capacity` structs whose struct_size
+/// the caller set. Names point to static storage.
+FT_API ft_status ft_splat_default_layers(ft_splat_params* layers, int32_t capacity, int32_t* count);
+
+/// The weights of `layer_count` (1..64) layers over `terrain`, as integers
+/// that sum to exactly `total` (255 or 65535) at every sample: `out` holds
+/// width * height * layer_count uint16 values, sample-major (sample i's
+/// layers at out[i * layer_count ...]). `deposited` (world units) and
+/// `drainage_area` (world units^2) are the erosion maps of the same size, or
+/// NULL (their conditions then see 0). The slope is the terrain's own, with
+/// its world size (1 per sample when unknown).
+FT_API ft_status ft_splat_weights(const ft_heightfield* terrain, const ft_heightfield* deposited,
+                                  const ft_heightfield* drainage_area, const ft_splat_params* layers,
+                                  int32_t layer_count, int32_t total, uint16_t* out, size_t out_count);
+
+/// The colour map by the same rules: sRGB 0..1, width * height * 3 floats,
+/// the layers' colours mixed by their (unrounded) weights.
+FT_API ft_status ft_splat_colors(const ft_heightfield* terrain, const ft_heightfield* deposited,
+                                 const ft_heightfield* drainage_area, const ft_splat_params* layers,
+                                 int32_t layer_count, float* rgb, size_t rgb_count);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
