@@ -51,6 +51,7 @@ cworst = max(cgaps) if cgaps else (0, 0, 0)
 print(f"RESULT levels {levels} {preset}: {state}, {end:.1f} s, {len(calls)} library callbacks, "
       f"largest callback gap {cworst[0]:.2f} s at {cworst[1]:.1f} s (fraction {cworst[2]:.3f}); "
       f"bar: {len(samples)} changes, largest gap {worst[0]:.2f} s at {worst[1]:.1f} s (bar {worst[2]:.3f})", flush=True)
+print("LARGEST BAR GAPS", ", ".join(f"{g:.1f} s from {t:.1f} s (bar {f:.3f})" for g, t, f in sorted(gaps)[-5:][::-1]))
 # the bar over time, every ~5%
 last = -1
 for t, f in samples:

@@ -16,6 +16,8 @@ a layer of lower rank, never one of the same rank (sideways) or higher
        tiles/                                  tile sets of terrains larger than memory
                                                (windows of terrain/, files through io/)
     3  refine/                                 DEM refinement (uses terrain/)
+    3  planet/                                 fractal planets: spherical fBm (noise/), cube-sphere
+                                               and equirectangular layouts (terrain/'s tables)
        engines/                                game-engine sizes, formats and sidecars
                                                (io/, splat/)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
@@ -75,6 +77,7 @@ RANK = {
     "refine": 3,  # a real DEM refined by terrain/'s midpoint method
     "erosion": 4,  # fluvial, hydraulic, thermal; uses analysis/
     "tiles": 3,  # tile sets: windows of terrain/ written through io/
+    "planet": 3,  # fractal planets: noise/ in 3D on the sphere; terrain/'s enum tables
     "splat": 2,  # splat (weight) and colour maps by layer rules (PNGs through io/)
     "engines": 3,  # game-engine presets: sizes, formats, sidecars (io/, splat/)
     "pipeline": 5,  # the terrain pipeline: terrain/ then erosion/

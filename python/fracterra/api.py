@@ -19,13 +19,13 @@ import numpy as np
 
 from .core.binding import library
 from .core.errors import InvalidArgumentError
-from .core.erosion import MAPS
+from .core.erosion import erode_struct
 from .core.errors import LibraryNotFoundError
 from .core.polylines import hurst_of_heightfield
 from .core.raster import read_heightfield, write_heightfield
-from .core.terrain import Heightfield, _ProgressBridge
+from .core.terrain import Heightfield, generate_from_struct
 
-PathLike = Union[str, "os.PathLike[str]"]
+PathLike = Union[str, os.PathLike]
 
 
 class Terrain(np.ndarray):
@@ -152,13 +152,7 @@ def terrain(*, threads: int = 0, progress=None, **settings) -> Terrain:
     lib.check(lib.ft_terrain_params_init(byref(p)))
     _set_fields(p, "terrain", _strip_none(settings), skip=("threads",))
     p.threads = threads
-    bridge = _ProgressBridge(progress)
-    p.progress = bridge.c_fn
-    out = c_void_p()
-    status = lib.ft_terrain_generate(byref(p), byref(out))
-    bridge.reraise()
-    lib.check(status)
-    with Heightfield(out) as hf:
+    with generate_from_struct(p, progress) as hf:
         return _from_library(hf)
 
 
@@ -183,21 +177,13 @@ def erode(z, preset: Optional[str] = None, *, maps: bool = True, threads: int = 
             lib.check(lib.ft_erosion_params_init(byref(p)))
         _set_fields(p, "erosion", _strip_none(settings), skip=("threads",))
         p.threads = threads
-        bridge = _ProgressBridge(progress)
-        p.progress = bridge.c_fn
-        out = c_void_p()
-        handles = (c_void_p * len(MAPS))()
-        status = lib.ft_erode(hf.handle, byref(p), byref(out),
-                              ctypes.cast(handles, POINTER(c_void_p)) if maps else None)
-        bridge.reraise()
-        lib.check(status)
-        made = {}
-        for name, h in zip(MAPS, handles):
-            if h:
-                with Heightfield(c_void_p(h)) as m:
-                    made[name] = _from_library(m)
-        with Heightfield(out) as e:
-            return _from_library(e), made
+        eroded, made = erode_struct(hf, p, progress, maps)
+        arrays = {}
+        for name, m in made.items():
+            with m:
+                arrays[name] = _from_library(m)
+        with eroded:
+            return _from_library(eroded), arrays
 
 
 def analyze(z, method: str = "auto", *, drainage: bool = True, periodic: bool = False,

@@ -48,6 +48,7 @@ if(FT_BLENDER)
   ft_blender_example(mandelbrot 21_blender_mandelbrot.py 120 --samples-x 65 --resolution 64x48 --samples 1)
   # The presets and the default beside A.N.T.'s default: every preset builds and renders (tiny).
   ft_blender_example(presets 22_blender_presets.py 180 --max-levels 5 --resolution 48x30 --samples 1)
+  set_tests_properties(blender_example_presets PROPERTIES COST 20)
 endif()
 
 # Undo needs a window (background Blender keeps no undo stack): run it under Xvfb.
@@ -60,7 +61,7 @@ if(FT_BLENDER AND FT_XVFB_RUN)
             ${FT_BLENDER} --factory-startup --python-exit-code 1
             --python ${CMAKE_CURRENT_LIST_DIR}/test_undo.py -- --zip ${FT_BLENDER_ZIP})
   # 300: the redo hand-over builds a 2049^2 terrain (about 20 s idle, 60 s at load 15).
-  set_tests_properties(blender_undo PROPERTIES LABELS blender TIMEOUT 300)
+  set_tests_properties(blender_undo PROPERTIES LABELS blender TIMEOUT 300 COST 20)
 endif()
 
 # The zip needs nothing beyond glibc, the C++ runtime and what it bundles.
@@ -76,7 +77,8 @@ endif()
 # no host Blender, libraries or environment variables. Skipped (77) without root.
 add_test(NAME blender4_extension
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/blender4_extension.sh ${PROJECT_SOURCE_DIR} ${FT_BLENDER_ADDON_ZIP})
-set_tests_properties(blender4_extension PROPERTIES LABELS blender TIMEOUT 600 SKIP_RETURN_CODE 77)
+# (COST: it and blender_gui take over a minute each, so ctest starts them early.)
+set_tests_properties(blender4_extension PROPERTIES LABELS blender TIMEOUT 600 SKIP_RETURN_CODE 77 COST 75)
 
 # The add-on in the real GUI under Xvfb, driven through the event loop with
 # xdotool: menus, redo panels, sidebar panels, preferences, undo, redo; the
@@ -91,6 +93,6 @@ if(FT_BLENDER AND FT_XVFB_RUN AND FT_XDOTOOL)
             ${FT_BLENDER} --factory-startup --window-geometry 0 0 1280 800
             --python ${CMAKE_CURRENT_LIST_DIR}/test_gui.py
             -- --zip ${FT_BLENDER_ZIP} --out ${CMAKE_CURRENT_BINARY_DIR}/blender_gui_shots)
-  set_tests_properties(blender_gui PROPERTIES LABELS blender TIMEOUT 180
+  set_tests_properties(blender_gui PROPERTIES LABELS blender TIMEOUT 180 COST 65
     FAIL_REGULAR_EXPRESSION "Traceback|GUI test FAILED")
 endif()

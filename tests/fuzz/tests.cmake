@@ -4,6 +4,10 @@
 #    replays tests/fuzz/corpus/<name>/ and tests/fuzz/regressions/<name>/;
 #    ctest runs it (label "native", so the sanitizer build runs it too).
 file(GLOB FT_FUZZ_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/fuzz_*.cpp)
+if(NOT FT_FUZZ)
+  # The replay driver, compiled once for all the harnesses.
+  add_library(fuzz_replay_main OBJECT ${CMAKE_CURRENT_LIST_DIR}/regression_main.cpp)
+endif()
 foreach(src ${FT_FUZZ_SOURCES})
   get_filename_component(name ${src} NAME_WE)
   string(REGEX REPLACE "^fuzz_" "" harness ${name})
@@ -18,7 +22,7 @@ foreach(src ${FT_FUZZ_SOURCES})
     target_link_options(${name} PRIVATE -fsanitize=fuzzer)
   else()
     set(name ${name}_replay)
-    add_executable(${name} ${src} ${CMAKE_CURRENT_LIST_DIR}/regression_main.cpp)
+    add_executable(${name} ${src} $<TARGET_OBJECTS:fuzz_replay_main>)
     add_test(NAME fuzz_replay_${harness}
              COMMAND ${name} ${CMAKE_CURRENT_LIST_DIR}/corpus/${harness}
                      ${CMAKE_CURRENT_LIST_DIR}/regressions/${harness})

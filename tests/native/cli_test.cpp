@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_run.hpp"
 #include "tables/param_registry.hpp"
 #include "io/atomic_file.hpp"
 #include "erosion/erosion.hpp"
@@ -28,25 +29,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun run(const std::string& args) {
-  const fs::path err = fs::temp_directory_path() / ("ft_cli_err_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(FT_CLI_PATH) + " " + args + " 2>" + err.string();
-  CliRun r{};
-  FILE* p = ::popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = ::pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = io::read_file(err.string());
-  fs::remove(err);
-  return r;
-}
+using test::CliRun;
+CliRun run(const std::string& args) { return test::run_cli(args); }
 
 class Cli : public ::testing::Test {
  protected:

@@ -76,6 +76,9 @@ const std::vector<Field> kHydrologyFields = {
     FT_FIELD(ft_hydrology_params, sinks),             FT_FIELD(ft_hydrology_params, sink_count),
     FT_FIELD(ft_hydrology_params, progress),          FT_FIELD(ft_hydrology_params, progress_user),
 };
+const std::vector<Field> kPlanetFields = {
+    FT_FIELDS(ft_planet_params, struct_size, method, radius, sigma, hurst, octaves, lacunarity, frequency, basis,
+              variant, offset, seed, sea, sea_level, sea_fraction, threads, progress, progress_user)};
 
 const std::vector<Field> kPovSceneFields = {
     FT_FIELDS(ft_pov_scene_params, struct_size, terrain, world_size_x, world_size_y, vertical_scale, has_sea,
@@ -139,6 +142,8 @@ const Kind kKinds[] = {
      init_of<ft_build_params, ft_build_params_init>},
     {FT_PARAMS_HYDROLOGY, "ft_hydrology_params", sizeof(ft_hydrology_params), &kHydrologyFields,
      init_of<ft_hydrology_params, ft_hydrology_params_init>},
+    {FT_PARAMS_PLANET, "ft_planet_params", sizeof(ft_planet_params), &kPlanetFields,
+     init_of<ft_planet_params, ft_planet_params_init>},
     {FT_PARAMS_SPLAT, "ft_splat_params", sizeof(ft_splat_params), &kSplatFields,
      init_of<ft_splat_params, ft_splat_params_init>},
 };

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "cli_run.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
@@ -286,25 +287,8 @@ TEST_F(SplatFiles, SixLayersGoToTwoRgbaFilesThatSumToTheTotal) {
   }
 }
 
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun run_cli(const std::string& args) {
-  const fs::path err = fs::temp_directory_path() / ("ft_splat_err_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(FT_CLI_PATH) + " " + args + " 2>" + err.string();
-  CliRun r{};
-  FILE* p = ::popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf;
-  size_t k;
-  while ((k = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), k);
-  const int status = ::pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = io::read_file(err.string());
-  fs::remove(err);
-  return r;
-}
+using test::CliRun;
+using test::run_cli;
 
 TEST_F(SplatFiles, CliWritesSplatAndColourFromAnErodedTerrain) {
   const std::string t = path("t.png"), e = path("e.png"), maps = path("maps");

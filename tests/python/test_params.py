@@ -152,6 +152,7 @@ CLI_COMMANDS = {
                               "window_x": "--window", "window_y": "--window", "window_side": "--window"}),
     "erosion": ("erode", {}),
     "hydrology": ("rivers", {}),
+    "planet": ("planet", {}),
     # The pipeline's settings go with the terrain's; the terrain's --threads serves every stage.
     "build": ("terrain", {"threads": "--threads"}),
     # A splat rule set is a list of layers: their fields are a rules file's, not flags.

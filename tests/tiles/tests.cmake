@@ -10,4 +10,4 @@ add_test(NAME tiles_dask
 set_tests_properties(tiles_dask PROPERTIES
   LABELS "python;dask"
   ENVIRONMENT "FRACTERRA_LIBRARY=$<TARGET_FILE:fracterra>;FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>;PYTHONDONTWRITEBYTECODE=1"
-  TIMEOUT 300)
+  TIMEOUT 300 COST 15)

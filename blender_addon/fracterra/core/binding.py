@@ -53,7 +53,7 @@ class ParamInfo(Structure):
 # fracterra/params.h: the described structs and field types.
 PARAMS_KINDS = {"terrain": 0, "profile": 1, "polyline": 2, "fractalize": 3, "pov_scene": 4, "pov_sweep": 5,
                 "hurst": 6, "clouds": 7, "dem_refine": 8, "erosion": 9, "build": 10, "hydrology": 11,
-                "splat": 13}
+                "planet": 12, "splat": 13}
 FT_PARAM = ("uint32", "int32", "int64", "uint64", "float", "double", "bool", "enum", "pointer", "string",
             "callback", "opaque")
 FLAG_STRUCT_SIZE, FLAG_DATA, FLAG_MIN_EXCLUSIVE, FLAG_MAX_EXCLUSIVE, FLAG_ZERO_IS_AUTO = 1, 2, 4, 8, 16
@@ -271,6 +271,16 @@ SIGNATURES = {
     "ft_river_network_lake_rings": (c_int32, [c_void_p, POINTER(c_void_p)]),
     "ft_river_network_water_mask": (c_int32, [c_void_p, POINTER(c_int32), c_int64]),
     "ft_rivers_carve": (c_int32, [_HF, c_void_p, POINTER(_HF)]),
+    # planet.h (ABI 2.18): fractal planets; heightfields, or meshes into caller-allocated arrays.
+    "ft_planet_params_init": (c_int32, [_Described("planet")]),
+    "ft_planet_face": (c_int32, [_Described("planet"), c_int32, c_int32, c_int64, c_int64, c_int32, c_int32,
+                                 POINTER(_HF)]),
+    "ft_planet_equirect": (c_int32, [_Described("planet"), c_int32, c_int32, POINTER(_HF)]),
+    "ft_planet_heights": (c_int32, [_Described("planet"), _F64P, c_int64, _F32P]),
+    "ft_planet_sea_height": (c_int32, [_Described("planet"), _F64P]),
+    "ft_planet_mesh_counts": (c_int32, [c_int32, POINTER(c_int64), POINTER(c_int64)]),
+    "ft_planet_mesh": (c_int32, [_Described("planet"), c_int32, c_double, _F32P, c_size_t, _I32P, c_size_t,
+                                 _F32P, c_size_t]),
     # raster.h (ABI 1.4); its structs are in core/raster.py.
     "ft_heightfield_read": (c_int32, [c_char_p, c_int32, POINTER(_HF)]),
     "ft_heightfield_write": (c_int32, [_HF, c_char_p]),

@@ -85,12 +85,18 @@ def erode(hf, values=None, preset=None, periodic=False, threads=0, progress=None
     or use erode_arrays). erosion_mask, rain_map: None or (width, height, values in
     [0, 1]) spanning the terrain (see terrain.attach_map). progress: None or
     callable(fraction) -> True to cancel (raises CancelledError)."""
-    lib = library()
     p = erosion_struct(values, preset, terrain=hf)  # as `fracterra erode --preset`
     _keep = (attach_map(p, "erosion_mask", erosion_mask, "the erosion mask"),
              attach_map(p, "rain_map", rain_map, "the rain map"))
     p.periodic = 1 if periodic else 0
     p.threads = threads
+    return erode_struct(hf, p, progress, maps)
+
+
+def erode_struct(hf, p, progress=None, maps=True):
+    """ft_erode of Heightfield `hf` with a filled ft_erosion_params `p` (the Python
+    package fills it from keyword arguments): as erode()."""
+    lib = library()
     bridge = _ProgressBridge(progress)
     p.progress = bridge.c_fn
     out = c_void_p()
@@ -113,4 +119,4 @@ def erode_arrays(hf, **kw):
     return eroded, arrays
 
 
-__all__ = ["MAPS", "PRESETS", "PRESET_FIELDS", "FITTED", "erosion_struct", "fitted_uplift", "preset_values", "requested", "erode", "erode_arrays"]
+__all__ = ["MAPS", "PRESETS", "PRESET_FIELDS", "FITTED", "erosion_struct", "erode_struct", "fitted_uplift", "preset_values", "requested", "erode", "erode_arrays"]

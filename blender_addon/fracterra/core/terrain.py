@@ -174,11 +174,17 @@ def generate_terrain(values=None, reference=None, progress=None, threads=0, fall
     (see attach_falloff_mask). progress: None or a callable(fraction) returning
     True to cancel (raises CancelledError).
     """
-    lib = library()
     p = terrain_struct(values, **overrides)
     p.threads = threads
     _ref_buf = attach_reference(p, reference)
     _mask_buf = attach_falloff_mask(p, falloff_mask)
+    return generate_from_struct(p, progress)
+
+
+def generate_from_struct(p, progress=None):
+    """ft_terrain_generate of a filled ft_terrain_params `p` (the Python package
+    fills it from keyword arguments); returns a Heightfield."""
+    lib = library()
     bridge = _ProgressBridge(progress)
     p.progress = bridge.c_fn
     out = c_void_p()
@@ -218,5 +224,5 @@ def generate_profile(levels=10, hurst=0.8, sigma=1.0, seed=1, reference=None, pr
     return out
 
 
-__all__ = ["Heightfield", "generate_terrain", "generate_profile", "terrain_struct", "terrain_side",
+__all__ = ["Heightfield", "generate_terrain", "generate_from_struct", "generate_profile", "terrain_struct", "terrain_side",
            "float_array", "index_array", "as_pointer", "CancelledError"]

@@ -58,6 +58,8 @@ extern "C" {
 /// 2.17: a given camera, terrain colours and scene light at the end of ft_pov_scene_params
 ///      (camera_given, camera_location/direction/right/up, terrain_colors, has_scene_light,
 ///      sky_color, sun_color): the add-on's export shows Blender's view and material.
+/// 2.18: planet.h: fractal planets (ft_planet_face, ft_planet_equirect, ft_planet_heights,
+///      ft_planet_sea_height, ft_planet_mesh(_counts)); ft_planet_params (FT_PARAMS_PLANET).
 /// 2.19: splat.h: splat (weight) maps and colour maps by layer rules (ft_splat_params, described:
 ///      FT_PARAMS_SPLAT; ft_splat_params_init, ft_splat_default_layers, ft_splat_weights,
 ///      ft_splat_colors).

@@ -20,6 +20,7 @@
 #include "raster.h"
 #include "tiles.h"
 #include "pipeline.h"
+#include "planet.h"
 #include "splat.h"
 
 #endif

@@ -31,6 +31,7 @@ enum {
   FT_PARAMS_EROSION = 9,         ///< ft_erosion_params (erosion.h; ABI 2.8)
   FT_PARAMS_BUILD = 10,          ///< ft_build_params (pipeline.h; ABI 2.13)
   FT_PARAMS_HYDROLOGY = 11,      ///< ft_hydrology_params (hydrology.h; ABI 2.15)
+  FT_PARAMS_PLANET = 12,         ///< ft_planet_params (planet.h; ABI 2.18)
   FT_PARAMS_SPLAT = 13,          ///< ft_splat_params, one splat layer's rule (splat.h; ABI 2.19)
   FT_PARAMS_KIND_COUNT = 14      ///< number of kinds; kinds are 0 .. count - 1
 };

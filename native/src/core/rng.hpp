@@ -31,6 +31,7 @@ enum class Stream : uint32_t {
   kNoiseWarpX = 15,         // domain warp, x field: level = octave
   kNoiseWarpY = 16,         // domain warp, y field: level = octave
   kFluvialRouting = 17,     // Rho8 receivers of the fluvial eroder: level = time step
+  kPlanetNoise = 30,        // spherical fbm (planet/): level = octave
   kPolyline = 10,
   kPolylineBranch = 11,
   kIfs = 12,

@@ -8,7 +8,6 @@ namespace {
 
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
-constexpr double kMaxSteps = kMaxErosionSteps;
 constexpr uint32_t kAbi212 = 0x2000C;  // uplift_follows_terrain
 constexpr uint32_t kAbi214 = 0x2000E;  // the landscape model and its maps
 // The defaults are ErosionConfig's (erosion.hpp); the test
@@ -20,7 +19,8 @@ constexpr ft_param_info kRows[] = {
     {ROW(struct_size, FT_PARAM_UINT32), .flags = FT_PARAM_FLAG_STRUCT_SIZE, .element_kind = -1,
      .default_value = sizeof(ft_erosion_params), .hard_min = 0, .hard_max = 4294967295.0, .unit = "bytes",
      .label = "Struct Size", .doc = "sizeof(ft_erosion_params), set by ft_erosion_params_init", .methods = kAll},
-    {ROW(fluvial_steps, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0, .hard_max = kMaxSteps,
+    {ROW(fluvial_steps, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = kMaxErosionSteps,
      .soft_min = 0, .soft_max = 200, .unit = "steps", .label = "Extra River Steps",
      .doc = "Expert: extra time steps of river incision after the run, in grid steps (so a finer grid "
             "changes more): stream power dz/dt = U - K A^m S with hillslope diffusion, solved implicitly "
@@ -47,7 +47,7 @@ constexpr ft_param_info kRows[] = {
      .doc = "Expert, extra river steps only: uplift rate U of every cell; bounded edges erode towards the "
             "lowest input height", .methods = kAll},
     {ROW(hydraulic_iterations, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0,
-     .hard_max = kMaxSteps, .soft_min = 0, .soft_max = 300, .unit = "passes", .label = "Extra Rain Passes",
+     .hard_max = kMaxErosionSteps, .soft_min = 0, .soft_max = 300, .unit = "passes", .label = "Extra Rain Passes",
      .doc = "Expert: water-flow passes after the run, in grid steps (so a finer grid changes less): water, "
             "sediment capacity, erosion, deposition, evaporation on the grid (virtual pipes, Mei, Decaudin & "
             "Hu 2007); 0: off",
@@ -71,7 +71,7 @@ constexpr ft_param_info kRows[] = {
      .soft_min = 0, .soft_max = 1, .unit = "", .label = "Drop",
      .doc = "Fraction of the sediment above capacity laid down per extra rain pass", .methods = kAll},
     {ROW(thermal_iterations, FT_PARAM_INT32), .element_kind = -1, .default_value = 0, .hard_min = 0,
-     .hard_max = kMaxSteps, .soft_min = 0, .soft_max = 100, .unit = "passes", .label = "Extra Scree",
+     .hard_max = kMaxErosionSteps, .soft_min = 0, .soft_max = 100, .unit = "passes", .label = "Extra Scree",
      .doc = "Expert: scree passes after the run, in grid steps: material above the talus angle slides down "
             "(thermal erosion, Musgrave, Kolb & Mace 1989); 0: off",
      .methods = kAll},

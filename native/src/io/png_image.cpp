@@ -161,47 +161,13 @@ void write_png_channels(const std::string& path, const ChannelImage& im) {
   });
 }
 
-ChannelImage read_png_channels(const std::string& path) {
-  const std::string bytes = read_file(path);
-  if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0)
-    fail(FT_ERR_FORMAT, "'" + path + "' is not a PNG file");
-  check_chunk_lengths(bytes, path);
-  ReadStructs rs;
-  std::string reason;
-  rs.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reason, on_error, on_warning);
-  if (rs.png) rs.info = png_create_info_struct(rs.png);
-  if (!rs.info) fail(FT_ERR_OUT_OF_MEMORY, "libpng could not start a reader");
-  png_structp png = rs.png;
-  png_infop info = rs.info;
-  ChannelImage im;
-  std::vector<uint8_t> raw;
-  std::vector<png_bytep> rows;
-  MemoryReader reader{&bytes, 0};
-  if (setjmp(png_jmpbuf(png))) fail(FT_ERR_FORMAT, "'" + path + "' is a damaged PNG file: " + reason);
-  png_set_read_fn(png, &reader, read_from_memory);
-  png_set_user_limits(png, 1 << 20, 1 << 20);
-  png_read_info(png, info);
-  const uint32_t w = png_get_image_width(png, info), h = png_get_image_height(png, info);
-  const int depth = png_get_bit_depth(png, info);
-  if (png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE || depth < 8)
-    fail(FT_ERR_FORMAT, "'" + path + "': a palette or sub-byte PNG is not a map of channels");
-  const int channels = png_get_channels(png, info);
-  const size_t rowbytes = png_get_rowbytes(png, info);
-  check_allocation(checked_bytes(rowbytes, h, 3), "reading '" + path + "'");
-  raw.resize(rowbytes * h);
-  rows.resize(h);
-  for (uint32_t y = 0; y < h; ++y) rows[y] = raw.data() + y * rowbytes;
-  png_read_image(png, rows.data());
-  png_read_end(png, info);
-  im.width = int32_t(w), im.height = int32_t(h), im.channels = channels, im.bit_depth = depth;
-  const size_t n = size_t(w) * h * size_t(channels);
-  im.samples.resize(n);
-  for (size_t i = 0; i < n; ++i)
-    im.samples[i] = depth == 16 ? uint16_t((raw[2 * i] << 8) | raw[2 * i + 1]) : raw[i];
-  return im;
-}
+namespace {
 
-GrayImage decode_png(const std::string& bytes, const std::string& name) {
+// The one libpng reader. `gray`: every kind of PNG normalised to one 8- or
+// 16-bit gray channel (colour as luma, alpha stripped), its text chunks into
+// `text`; otherwise the channels as stored (palette and sub-byte refused).
+ChannelImage decode_samples(const std::string& bytes, const std::string& name, bool gray,
+                            std::map<std::string, std::string>* text) {
   if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0)
     fail(FT_ERR_FORMAT, "'" + name + "' is not a PNG file");
   check_chunk_lengths(bytes, name);
@@ -212,7 +178,7 @@ GrayImage decode_png(const std::string& bytes, const std::string& name) {
   if (!rs.info) fail(FT_ERR_OUT_OF_MEMORY, "libpng could not start a reader");
   png_structp png = rs.png;
   png_infop info = rs.info;
-  GrayImage img;
+  ChannelImage im;
   std::vector<png_bytep> rows;
   std::vector<uint8_t> raw;
   MemoryReader reader{&bytes, 0};
@@ -223,38 +189,56 @@ GrayImage decode_png(const std::string& bytes, const std::string& name) {
   const uint32_t w = png_get_image_width(png, info), h = png_get_image_height(png, info);
   const int color = png_get_color_type(png, info);
   int depth = png_get_bit_depth(png, info);
-  // Normalise every kind of PNG to 8- or 16-bit gray.
-  if (color == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
-  if (color == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
-  if (color & PNG_COLOR_MASK_ALPHA) png_set_strip_alpha(png);
-  if (color == PNG_COLOR_TYPE_RGB || color == PNG_COLOR_TYPE_RGB_ALPHA || color == PNG_COLOR_TYPE_PALETTE)
-    png_set_rgb_to_gray_fixed(png, 1, -1, -1);
-  if (png_get_valid(png, info, PNG_INFO_tRNS)) png_set_strip_alpha(png);
-  if (depth < 8) depth = 8;
-  png_read_update_info(png, info);
-  depth = png_get_bit_depth(png, info);
+  if (gray) {
+    // Normalise every kind of PNG to 8- or 16-bit gray.
+    if (color == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+    if (color == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+    if (color & PNG_COLOR_MASK_ALPHA) png_set_strip_alpha(png);
+    if (color == PNG_COLOR_TYPE_RGB || color == PNG_COLOR_TYPE_RGB_ALPHA || color == PNG_COLOR_TYPE_PALETTE)
+      png_set_rgb_to_gray_fixed(png, 1, -1, -1);
+    if (png_get_valid(png, info, PNG_INFO_tRNS)) png_set_strip_alpha(png);
+    png_read_update_info(png, info);
+    depth = png_get_bit_depth(png, info);
+    if (png_get_channels(png, info) != 1) fail(FT_ERR_FORMAT, "'" + name + "': unsupported PNG channel layout");
+  } else if (color == PNG_COLOR_TYPE_PALETTE || depth < 8) {
+    fail(FT_ERR_FORMAT, "'" + name + "': a palette or sub-byte PNG is not a map of channels");
+  }
+  const int channels = png_get_channels(png, info);
   const size_t rowbytes = png_get_rowbytes(png, info);
-  if (png_get_channels(png, info) != 1) fail(FT_ERR_FORMAT, "'" + name + "': unsupported PNG channel layout");
   check_allocation(checked_bytes(rowbytes, h, 3), "reading '" + name + "'");
   raw.resize(rowbytes * h);
   rows.resize(h);
   for (uint32_t y = 0; y < h; ++y) rows[y] = raw.data() + y * rowbytes;
   png_read_image(png, rows.data());
   png_read_end(png, info);
-  png_textp text = nullptr;
-  int ntext = 0;
-  png_get_text(png, info, &text, &ntext);
-  for (int i = 0; i < ntext; ++i)
-    if (text[i].key && text[i].text) img.text[text[i].key] = text[i].text;
+  if (text) {
+    png_textp chunks = nullptr;
+    int count = 0;
+    png_get_text(png, info, &chunks, &count);
+    for (int i = 0; i < count; ++i)
+      if (chunks[i].key && chunks[i].text) (*text)[chunks[i].key] = chunks[i].text;
+  }
+  im.width = int32_t(w), im.height = int32_t(h), im.channels = channels, im.bit_depth = depth == 16 ? 16 : 8;
+  const size_t n = size_t(w) * h * size_t(channels);  // rows are contiguous: rowbytes = w x channels x bytes
+  im.samples.resize(n);
+  for (size_t i = 0; i < n; ++i)
+    im.samples[i] = depth == 16 ? uint16_t((raw[2 * i] << 8) | raw[2 * i + 1]) : raw[i];
+  return im;
+}
 
-  img.width = int32_t(w);
-  img.height = int32_t(h);
-  img.bit_depth = depth == 16 ? 16 : 8;
-  img.pixels.resize(size_t(w) * h);
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x)
-      img.pixels[size_t(y) * w + x] =
-          depth == 16 ? uint16_t((rows[y][2 * x] << 8) | rows[y][2 * x + 1]) : rows[y][x];
+}  // namespace
+
+ChannelImage read_png_channels(const std::string& path) {
+  return decode_samples(read_file(path), path, false, nullptr);
+}
+
+GrayImage decode_png(const std::string& bytes, const std::string& name) {
+  GrayImage img;
+  ChannelImage im = decode_samples(bytes, name, true, &img.text);
+  img.width = im.width;
+  img.height = im.height;
+  img.bit_depth = im.bit_depth;
+  img.pixels = std::move(im.samples);
   return img;
 }
 

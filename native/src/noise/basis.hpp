@@ -12,6 +12,7 @@
 #pragma once
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 
 namespace ft::noise::detail {
@@ -168,6 +169,20 @@ inline constexpr float kJitter = 0.65f;
 struct F12 {
   float f1, f2;  // squared
 };
+// Keeps the nearest two squared distances f1 <= f2 after seeing d (selects only).
+FT_INLINE void keep_nearest_two(float d, float& f1, float& f2) {
+  const float m = d < f2 ? d : f2;
+  f2 = d < f1 ? f1 : m;
+  f1 = d < f1 ? d : f1;
+}
+// F1 (kF1) or F2 - F1, as distances, from the squared ones; `out` may be `f1`.
+template <bool kF1>
+FT_INLINE void cellular_distances(int n, const float* f1, const float* f2, float* out) {
+  for (int i = 0; i < n; ++i) {
+    const float d1 = std::sqrt(f1[i]);
+    out[i] = kF1 ? d1 : std::sqrt(f2[i]) - d1;
+  }
+}
 template <bool kPeriodic>
 FT_INLINE F12 cellular_noise(uint32_t key, float x, float y, int32_t px, int32_t py, float ipx, float ipy) {
   const int32_t i = floor_int(x), j = floor_int(y);
@@ -189,10 +204,7 @@ FT_INLINE F12 cellular_noise(uint32_t key, float x, float y, int32_t px, int32_t
       const float jy = float((h >> 4) & 0xffffu) * (1.0f / 65536.0f) - 0.5f;
       const float dx = float(di) + 0.5f + kJitter * jx - fx;
       const float dy = float(dj) + 0.5f + kJitter * jy - fy;
-      const float d = dx * dx + dy * dy;
-      const float m = d < f2 ? d : f2;
-      f2 = d < f1 ? f1 : m;
-      f1 = d < f1 ? d : f1;
+      keep_nearest_two(dx * dx + dy * dy, f1, f2);
     }
   }
   return {f1, f2};

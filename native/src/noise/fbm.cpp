@@ -11,6 +11,7 @@
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
 #include "noise/basis.hpp"
+#include "noise/octave_sum.hpp"
 
 namespace ft::noise {
 namespace {
@@ -137,10 +138,7 @@ FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v,
       out[i] = f.f1;
       f2[i] = f.f2;
     }
-    for (int i = 0; i < n; ++i) {
-      const float d1 = std::sqrt(out[i]);
-      out[i] = kBasis == kBasisCellularF1 ? d1 : std::sqrt(f2[i]) - d1;
-    }
+    cellular_distances<kBasis == kBasisCellularF1>(n, out, f2, out);
   } else {
     for (int i = 0; i < n; ++i) {
       if constexpr (kBasis == kBasisValue)
@@ -176,40 +174,7 @@ FT_INLINE void octave_loop(const std::vector<Octave>& octs, int basis, int varia
     noise_row<kPeriodic>(basis, o, n, u, v, noise);
     const float a = o.amp;
     const bool first = k == 0;
-    switch (variant) {
-      case kFbmStandard:
-        for (int i = 0; i < n; ++i) sum[i] = first ? a * noise[i] : sum[i] + a * noise[i];
-        break;
-      case kFbmRidged:  // ridges where the noise crosses zero, sharpened by the octave below
-        for (int i = 0; i < n; ++i) {
-          const float ab = noise[i] < 0.0f ? -noise[i] : noise[i];
-          float s = offset - ab;
-          s = s * s;
-          s = first ? s : s * weight[i];
-          float w = s * 2.0f;
-          w = w > 1.0f ? 1.0f : (w < 0.0f ? 0.0f : w);
-          weight[i] = w;
-          sum[i] = first ? a * s : sum[i] + a * s;
-        }
-        break;
-      case kFbmHybrid:  // detail grows where the terrain is already high
-        for (int i = 0; i < n; ++i) {
-          const float s = (noise[i] + offset) * a;
-          if (first) {
-            sum[i] = s;
-            weight[i] = s;
-          } else {
-            const float w = weight[i] > 1.0f ? 1.0f : weight[i];
-            sum[i] = sum[i] + w * s;
-            weight[i] = w * s;
-          }
-        }
-        break;
-      default:  // kFbmHetero: increments scaled by the height so far
-        for (int i = 0; i < n; ++i)
-          sum[i] = first ? offset + noise[i] : sum[i] + ((noise[i] + offset) * a) * sum[i];
-        break;
-    }
+    add_octave(variant, first, a, offset, n, noise, weight, sum);
   }
 }
 

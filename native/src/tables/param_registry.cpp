@@ -7,6 +7,7 @@
 #include "erosion/erosion_params.hpp"
 #include "hydrology/hydrology_params.hpp"
 #include "pipeline/build_params.hpp"
+#include "planet/planet_params.hpp"
 #include "polyline/polyline_params.hpp"
 #include "povray/pov_params.hpp"
 #include "refine/dem_refine_params.hpp"
@@ -30,6 +31,7 @@ const ParamTable& param_table(int32_t kind) {
     case FT_PARAMS_EROSION: return erosion::erosion_param_table();
     case FT_PARAMS_HYDROLOGY: return hydrology::hydrology_param_table();
     case FT_PARAMS_BUILD: return pipeline::build_param_table();
+    case FT_PARAMS_PLANET: return planet::planet_param_table();
     case FT_PARAMS_SPLAT: return splat::splat_param_table();
     default:
       invalid("params kind must be in 0.." + std::to_string(FT_PARAMS_KIND_COUNT - 1) + ", got " +

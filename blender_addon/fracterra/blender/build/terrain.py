@@ -138,7 +138,11 @@ def _build_new_mesh(g, values, name, settings=None):
     mesh = bpy.data.meshes.new(name)
     try:
         yield from mesh_build.fill_grid_mesh_steps(mesh, g, smooth=values["smooth"])
+        # Steps of their own: at 4097^2 the mesh's update, the attributes and
+        # the maps took 12 s in one step, the bar standing still.
+        yield 0.9
         mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
+        yield 0.95
         erosion_ui.set_maps(mesh, g.erosion_maps)
         remember_settings(mesh, settings if settings is not None else values)
     except BaseException:  # GeneratorExit too: a cancel leaves nothing behind

@@ -1,0 +1,111 @@
+/// @file fracterra/planet.h
+/// Fractal planets (ABI 2.18): fBm on the sphere, sampled as a cube-sphere,
+/// a patch of one cube face at any level, an equirectangular map, or a
+/// closed cube-sphere mesh. The height is a function of the 3D point on the
+/// unit sphere (the noise bases of terrain.h in three dimensions), so there
+/// are no seams and no poles, and every layout and patch gives the bits of
+/// the same planet. Heights are in metres above the radius (float32).
+///
+/// Cube faces follow the OpenGL cube-map convention. Face f in 0..5 is
+/// +X, -X, +Y, -Y, +Z, -Z. At level n a face has (2^n + 1)^2 samples;
+/// sample (i, j) (column i, row j, 0..2^n) with s = (2i - 2^n) / 2^n and
+/// t = (2j - 2^n) / 2^n lies on the cube at
+///   +X: ( 1, -t, -s)   -X: (-1, -t,  s)   +Y: ( s,  1,  t)
+///   -Y: ( s, -1, -t)   +Z: ( s, -t,  1)   -Z: (-s, -t, -1)
+/// and on the sphere at that point divided by its length. Samples on the
+/// cube's edges and corners belong to two or three faces and are equal bit
+/// for bit on each (they are computed from the same integer cube point).
+///
+/// Equirectangular maps: pixel (i, j) of W x H is the centre of its cell,
+/// longitude -180 + (i + 0.5) 360 / W degrees, latitude 90 - (j + 0.5) 180 / H;
+/// the point is (cos lat cos lon, cos lat sin lon, sin lat). Row 0 is north.
+#ifndef FRACTERRA_PLANET_H
+#define FRACTERRA_PLANET_H
+
+#include "core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// How a planet is made (ft_planet_params.method).
+enum {
+  FT_PLANET_FBM = 0         ///< octave noise on the sphere (Quilez; the bases of terrain.h in 3D)
+};
+
+/// Where a planet's sea is (ft_planet_params.sea); heights below it are
+/// raised to it, as for terrains (the values of terrain.h's FT_SEA_*).
+enum {
+  FT_PLANET_SEA_NONE = 0,
+  FT_PLANET_SEA_HEIGHT = 1,   ///< at sea_level, metres
+  FT_PLANET_SEA_FRACTION = 2  ///< at the height with sea_fraction of the planet's area below it
+};
+
+/// Fill with ft_planet_params_init; ranges in params.h (FT_PARAMS_PLANET).
+typedef struct ft_planet_params {
+  uint32_t struct_size;     ///< sizeof(ft_planet_params)
+  int32_t method;           ///< FT_PLANET_*; default FT_PLANET_FBM
+  double radius;            ///< metres (> 0); default 6371000 (the Earth)
+  double sigma;             ///< height scale, metres (> 0); default 4000
+  double hurst;             ///< H in 0..1; the octave gain is lacunarity^-H; default 0.8
+  int32_t octaves;          ///< 1..30; default 12
+  double lacunarity;        ///< frequency ratio between octaves (> 1); default 2
+  double frequency;         ///< base-octave noise cells per radius (> 0); default 1.5
+  int32_t basis;            ///< FT_BASIS_* of terrain.h; default FT_BASIS_GRADIENT
+  int32_t variant;          ///< FT_FBM_* of terrain.h; default FT_FBM_STANDARD
+  double offset;            ///< ridged / hybrid / hetero offset; default 1
+  uint64_t seed;
+  int32_t sea;              ///< FT_PLANET_SEA_*; default FT_PLANET_SEA_NONE
+  double sea_level;         ///< FT_PLANET_SEA_HEIGHT: metres above the radius
+  double sea_fraction;      ///< FT_PLANET_SEA_FRACTION: share of the area under the sea, [0, 1); default 0.7
+  int32_t threads;          ///< 0: all cores; the output never depends on it
+  ft_progress_fn progress;  ///< may be NULL; return non-zero to cancel
+  void* progress_user;
+} ft_planet_params;
+
+FT_API ft_status ft_planet_params_init(ft_planet_params* p);
+
+/// The largest cube-face level (a patch's; whole faces are limited by the memory cap).
+#define FT_PLANET_MAX_LEVEL 26
+
+/// Samples (x0 .. x0 + width - 1, y0 .. y0 + height - 1) of face `face`
+/// (0..5) at level `level` (0..FT_PLANET_MAX_LEVEL): a new heightfield whose
+/// world size is the patch's width along the face's middle, in metres. The
+/// patch must lie inside the face's (2^level + 1)^2 samples. The whole face is
+/// the patch (0, 0, 2^level + 1, 2^level + 1).
+FT_API ft_status ft_planet_face(const ft_planet_params* p, int32_t level, int32_t face, int64_t x0, int64_t y0,
+                                int32_t width, int32_t height, ft_heightfield** out);
+
+/// An equirectangular map of width x height (2..65536 each), georeferenced
+/// in EPSG:4326 (written so by the GeoTIFF writer of raster.h).
+FT_API ft_status ft_planet_equirect(const ft_planet_params* p, int32_t width, int32_t height,
+                                    ft_heightfield** out);
+
+/// Heights at `count` unit vectors xyz (3 * count doubles; they are
+/// normalised first) into `heights` (count floats).
+FT_API ft_status ft_planet_heights(const ft_planet_params* p, const double* xyz, int64_t count, float* heights);
+
+/// The sea's height in metres (NaN without a sea). A sea given as a fraction
+/// is the area-weighted quantile of the planet's heights over 2^16 points of
+/// a Fibonacci sphere, the same for every layout and patch.
+FT_API ft_status ft_planet_sea_height(const ft_planet_params* p, double* out);
+
+/// Counts of the closed cube-sphere mesh of level `level`: 6 4^level + 2
+/// vertices and 6 4^level quads.
+FT_API ft_status ft_planet_mesh_counts(int32_t level, int64_t* vertices, int64_t* faces);
+
+/// The closed cube-sphere mesh of level `level` (0..12 and within the memory
+/// cap): every cube-face sample once (no duplicates at edges and corners),
+/// at radius + vertical_scale x height along its direction, in metres.
+/// `xyz` holds `xyz_count` floats (at least 3 x vertices), `quads` holds
+/// `quad_count` int32 (at least 4 x faces, counter-clockwise seen from
+/// outside); either may be NULL to skip it. `heights` (NULL to skip) gets one
+/// float per vertex (metres, before the vertical scale).
+FT_API ft_status ft_planet_mesh(const ft_planet_params* p, int32_t level, double vertical_scale, float* xyz,
+                                size_t xyz_count, int32_t* quads, size_t quad_count, float* heights,
+                                size_t height_count);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,122 @@
+// The C ABI of the planet layer (fracterra/planet.h).
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "capi/guard.hpp"
+#include "capi/handles.hpp"
+#include "core/memory.hpp"
+#include "fracterra/fracterra.h"
+#include "planet/cube_sphere.hpp"
+#include "planet/equirect.hpp"
+#include "planet/planet_params.hpp"
+
+using ft::capi::guarded;
+
+namespace {
+
+ft::planet::Planet make_planet(const ft_planet_params* p) {
+  ft::check_not_null("params", p);
+  return ft::planet::Planet(ft::planet::from_c(*p));
+}
+
+ft_heightfield* handle(ft::Heightfield hf) {
+  auto h = std::make_unique<ft_heightfield>();
+  h->hf = std::move(hf);
+  return h.release();
+}
+
+void check_capacity(const char* what, size_t given, uint64_t want) {
+  if (given < want)
+    ft::invalid(std::string(what) + " holds " + std::to_string(given) + " elements, needs at least " +
+                std::to_string(want));
+}
+
+}  // namespace
+
+extern "C" {
+
+FT_API ft_status ft_planet_params_init(ft_planet_params* p) {
+  return guarded([&] {
+    ft::check_not_null("params", p);
+    *p = ft::defaults_of<ft_planet_params>(ft::planet::planet_param_table());
+  });
+}
+
+FT_API ft_status ft_planet_face(const ft_planet_params* p, int32_t level, int32_t face, int64_t x0, int64_t y0,
+                                int32_t width, int32_t height, ft_heightfield** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::planet::validate_patch(level, face, x0, y0, width, height);
+    const ft::planet::Planet planet = make_planet(p);
+    *out = handle(ft::planet::face_patch(planet, level, face, x0, y0, width, height));
+  });
+}
+
+FT_API ft_status ft_planet_equirect(const ft_planet_params* p, int32_t width, int32_t height,
+                                    ft_heightfield** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_int_range("width", width, 2, 65536);
+    ft::check_int_range("height", height, 2, 65536);
+    const ft::planet::Planet planet = make_planet(p);
+    *out = handle(ft::planet::equirect(planet, width, height));
+  });
+}
+
+FT_API ft_status ft_planet_heights(const ft_planet_params* p, const double* xyz, int64_t count, float* heights) {
+  return guarded([&] {
+    ft::check_int_range("count", count, 0, int64_t(1) << 40);
+    if (count == 0) return;
+    ft::check_not_null("xyz", xyz);
+    ft::check_not_null("heights", heights);
+    const ft::planet::Planet planet = make_planet(p);
+    ft::check_allocation(ft::checked_bytes(uint64_t(count), 24), "the points");
+    ft::planet::Directions d{size_t(count)};
+    for (int64_t i = 0; i < count; ++i) {
+      const double a = xyz[3 * i], b = xyz[3 * i + 1], c = xyz[3 * i + 2];
+      const double len = std::sqrt(a * a + b * b + c * c);
+      if (!(len > 0) || !std::isfinite(len))
+        ft::invalid("point " + std::to_string(i) + " has no direction (zero, infinite or NaN)");
+      d.set(size_t(i), {a / len, b / len, c / len});
+    }
+    planet.heights(d, heights);
+  });
+}
+
+FT_API ft_status ft_planet_sea_height(const ft_planet_params* p, double* out) {
+  return guarded([&] {
+    ft::check_not_null("out", out);
+    *out = make_planet(p).sea_height();
+  });
+}
+
+FT_API ft_status ft_planet_mesh_counts(int32_t level, int64_t* vertices, int64_t* faces) {
+  return guarded([&] {
+    ft::check_int_range("level", level, 0, ft::planet::kMaxMeshLevel);
+    if (vertices) *vertices = ft::planet::mesh_vertex_count(level);
+    if (faces) *faces = ft::planet::mesh_face_count(level);
+  });
+}
+
+FT_API ft_status ft_planet_mesh(const ft_planet_params* p, int32_t level, double vertical_scale, float* xyz,
+                                size_t xyz_count, int32_t* quads, size_t quad_count, float* heights,
+                                size_t height_count) {
+  return guarded([&] {
+    ft::check_int_range("level", level, 0, ft::planet::kMaxMeshLevel);
+    const uint64_t nv = uint64_t(ft::planet::mesh_vertex_count(level));
+    const uint64_t nf = uint64_t(ft::planet::mesh_face_count(level));
+    if (xyz) check_capacity("xyz", xyz_count, 3 * nv);
+    if (quads) check_capacity("quads", quad_count, 4 * nf);
+    if (heights) check_capacity("heights", height_count, nv);
+    const ft::planet::Planet planet = make_planet(p);
+    std::vector<float> h;
+    const ft::Mesh mesh = ft::planet::cube_sphere_mesh(planet, level, vertical_scale, &h);
+    if (xyz) std::copy(mesh.positions.begin(), mesh.positions.end(), xyz);
+    if (quads) std::copy(mesh.face_indices.begin(), mesh.face_indices.end(), quads);
+    if (heights) std::copy(h.begin(), h.end(), heights);
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,48 @@
+// The cube-sphere layout (fracterra/planet.h documents the face convention):
+// six faces of (2^n + 1)^2 samples, sample (i, j) of face f standing for the
+// integer cube point N n_f + (2i - N) s_f + (2j - N) t_f (N = 2^n). A sample
+// shared by two or three faces is the same integer point on each, and its
+// unit vector is computed from that point alone (integer sums of squares are
+// exact in double up to level 26), so shared samples are equal bit for bit.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "core/heightfield.hpp"
+#include "core/mesh.hpp"
+#include "planet/planet.hpp"
+
+namespace ft::planet {
+
+inline constexpr int kMaxLevel = 26;
+inline constexpr int kMaxMeshLevel = 12;
+
+struct CubePoint {
+  int64_t x, y, z;
+  bool operator==(const CubePoint&) const = default;
+};
+
+// Sample (i, j) of face `face` (0..5: +X, -X, +Y, -Y, +Z, -Z) at N = 2^level.
+CubePoint cube_point(int face, int64_t i, int64_t j, int64_t n);
+// Its direction, normalised in double.
+std::array<double, 3> unit_vector(const CubePoint& p);
+// (i, j) of `p` on face `face` if it lies on that face, else false.
+bool face_sample(const CubePoint& p, int face, int64_t n, int64_t* i, int64_t* j);
+// The outward normal of face `face` (a unit axis).
+std::array<int, 3> face_normal(int face);
+
+// Validates level, face and the patch (inside the face's samples).
+void validate_patch(int level, int face, int64_t x0, int64_t y0, int64_t w, int64_t h);
+// The samples (x0 .. x0 + w - 1, y0 .. y0 + h - 1) of face `face` at `level`.
+Heightfield face_patch(const Planet& planet, int level, int face, int64_t x0, int64_t y0, int32_t w, int32_t h);
+
+// Vertex and quad counts of the closed mesh: 6 N^2 + 2 and 6 N^2.
+int64_t mesh_vertex_count(int level);
+int64_t mesh_face_count(int level);
+// The closed cube-sphere mesh: every sample once, at radius + scale x height
+// along its direction; quads counter-clockwise seen from outside. `heights`
+// (if not null) gets each vertex's height.
+Mesh cube_sphere_mesh(const Planet& planet, int level, double vertical_scale, std::vector<float>* heights = nullptr);
+
+}  // namespace ft::planet

@@ -1,0 +1,92 @@
+// The planet C ABI (fracterra/planet.h) as ctypes sees it: bad input gets a
+// status and a message naming what is allowed; layouts agree through the ABI.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "fracterra/fracterra.h"
+
+namespace {
+
+ft_planet_params params() {
+  ft_planet_params p;
+  EXPECT_EQ(ft_planet_params_init(&p), FT_OK);
+  p.octaves = 8;
+  return p;
+}
+
+void expect_error(ft_status got, ft_status want, const char* words) {
+  EXPECT_EQ(got, want) << ft_last_error();
+  EXPECT_NE(std::string(ft_last_error()).find(words), std::string::npos) << ft_last_error();
+}
+
+TEST(PlanetAbi, RejectsBadInputWithClearMessages) {
+  ft_heightfield* hf = reinterpret_cast<ft_heightfield*>(1);
+  ft_planet_params p = params();
+  p.radius = 0;
+  expect_error(ft_planet_face(&p, 4, 0, 0, 0, 17, 17, &hf), FT_ERR_INVALID_ARGUMENT, "radius");
+  EXPECT_EQ(hf, nullptr);
+  p.radius = -5;
+  expect_error(ft_planet_equirect(&p, 64, 32, &hf), FT_ERR_INVALID_ARGUMENT, "radius");
+  p = params();
+  expect_error(ft_planet_face(&p, 4, 0, 10, 0, 8, 8, &hf), FT_ERR_INVALID_ARGUMENT, "lies outside face 0");
+  expect_error(ft_planet_face(&p, 4, 0, -1, 0, 8, 8, &hf), FT_ERR_INVALID_ARGUMENT, "lies outside face 0");
+  expect_error(ft_planet_face(&p, 4, 7, 0, 0, 8, 8, &hf), FT_ERR_INVALID_ARGUMENT, "face must be in 0..5");
+  expect_error(ft_planet_face(&p, 27, 0, 0, 0, 8, 8, &hf), FT_ERR_INVALID_ARGUMENT, "level must be in 0..26");
+  // A whole face past the memory cap: refused before anything is allocated.
+  ft_set_memory_cap(uint64_t(1) << 28);
+  expect_error(ft_planet_face(&p, 14, 0, 0, 0, 16385, 16385, &hf), FT_ERR_TOO_LARGE, "GiB");
+  float xyz[3];
+  expect_error(ft_planet_mesh(&p, 12, 1.0, xyz, 3, nullptr, 0, nullptr, 0), FT_ERR_INVALID_ARGUMENT, "xyz holds 3");
+  ft_set_memory_cap(0);
+  p.octaves = 31;
+  expect_error(ft_planet_equirect(&p, 64, 32, &hf), FT_ERR_INVALID_ARGUMENT, "octaves");
+  p = params();
+  p.sea = FT_PLANET_SEA_FRACTION;
+  p.sea_fraction = 1.0;
+  expect_error(ft_planet_equirect(&p, 64, 32, &hf), FT_ERR_INVALID_ARGUMENT, "sea_fraction");
+  p = params();
+  p.struct_size = 12;
+  expect_error(ft_planet_equirect(&p, 64, 32, &hf), FT_ERR_INVALID_ARGUMENT, "ft_planet_params.struct_size");
+  p = params();
+  const double zero[3] = {0, 0, 0};
+  float h = 0;
+  expect_error(ft_planet_heights(&p, zero, 1, &h), FT_ERR_INVALID_ARGUMENT, "no direction");
+  expect_error(ft_planet_face(nullptr, 4, 0, 0, 0, 8, 8, &hf), FT_ERR_INVALID_ARGUMENT, "params");
+}
+
+int32_t cancel_at_half(void*, double f) { return f >= 0.5; }
+
+TEST(PlanetAbi, LayoutsAgreeAndProgressCancels) {
+  ft_planet_params p = params();
+  // The +Z face's centre sample is the point (0, 0, 1); the equirect map's
+  // nearest pixels approach the north pole.
+  ft_heightfield* face = nullptr;
+  ASSERT_EQ(ft_planet_face(&p, 4, 4, 8, 8, 1, 1, &face), FT_OK) << ft_last_error();
+  const double pole[3] = {0, 0, 2};
+  float h = 0;
+  ASSERT_EQ(ft_planet_heights(&p, pole, 1, &h), FT_OK);
+  EXPECT_EQ(ft_heightfield_data(face)[0], h);
+  ft_heightfield_free(face);
+  int64_t nv = 0, nf = 0;
+  ASSERT_EQ(ft_planet_mesh_counts(3, &nv, &nf), FT_OK);
+  EXPECT_EQ(nv, 6 * 64 + 2);
+  EXPECT_EQ(nf, 6 * 64);
+  std::vector<float> xyz(static_cast<size_t>(3 * nv)), heights(static_cast<size_t>(nv));
+  std::vector<int32_t> quads(size_t(4 * nf));
+  ASSERT_EQ(ft_planet_mesh(&p, 3, 1.0, xyz.data(), xyz.size(), quads.data(), quads.size(), heights.data(),
+                           heights.size()),
+            FT_OK);
+  double sea = 0;
+  ASSERT_EQ(ft_planet_sea_height(&p, &sea), FT_OK);
+  EXPECT_TRUE(std::isnan(sea));
+  p.progress = cancel_at_half;
+  p.threads = 1;
+  ft_heightfield* map = nullptr;
+  EXPECT_EQ(ft_planet_equirect(&p, 256, 128, &map), FT_ERR_CANCELLED);
+  EXPECT_EQ(map, nullptr);
+}
+
+}  // namespace
