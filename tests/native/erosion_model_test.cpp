@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,7 @@ Heightfield default_mountain(int32_t levels, uint64_t seed) {
 
 // fBm: the same terrain at every size (issue 24 measured 0.996 at shared
 // points), so it is the input of the resolution test.
-Heightfield fbm(int32_t size, uint64_t seed) {
+Heightfield make_fbm(int32_t size, uint64_t seed) {
   ft_terrain_params p = terrain::default_terrain_params();
   p.method = FT_TERRAIN_FBM;
   p.width = p.height = size;
@@ -53,6 +54,15 @@ Heightfield fbm(int32_t size, uint64_t seed) {
   Heightfield hf = terrain::generate_terrain(p);
   hf.set_world_size(10.0);
   return hf;
+}
+
+// fBm terrains are made once per test program (a 2049^2 one takes a good
+// part of a second, and several tests erode the same seeds).
+const Heightfield& fbm(int32_t size, uint64_t seed) {
+  static std::map<std::pair<int32_t, uint64_t>, Heightfield> made;
+  auto it = made.find({size, seed});
+  if (it == made.end()) it = made.emplace(std::pair{size, seed}, make_fbm(size, seed)).first;
+  return it->second;
 }
 
 std::vector<float> values(const Heightfield& hf) { return {hf.data(), hf.data() + hf.size()}; }
@@ -151,32 +161,33 @@ void expect_landform_survives(const Heightfield& in, const std::string& id, cons
   EXPECT_LE(f.laplacian_growth, 1.5) << id << " " << what;
 }
 
-TEST(ErosionModel, EveryPresetKeepsTheDefaultMountainWithoutSpikes) {
+// Each preset is its own test (its own ctest entry: ctest -j spreads the
+// ensembles over the cores): ErosionModel/EveryPreset.NAME/PRESET.
+class EveryPreset : public ::testing::TestWithParam<std::string> {};
+INSTANTIATE_TEST_SUITE_P(ErosionModel, EveryPreset, ::testing::ValuesIn(erosion_preset_names()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+TEST_P(EveryPreset, KeepsTheDefaultMountainWithoutSpikes) {
 #ifdef FT_UNDER_ASAN
   // Ensembles of large erosions take minutes under ASan; the smaller
   // ErosionModel and Erosion tests run the same code paths under it.
   GTEST_SKIP() << "statistical ensemble: Release only";
 #endif
-  for (const auto& preset : erosion_presets())
-    for (uint64_t seed = 1; seed <= 5; ++seed) {
-      expect_landform_survives(default_mountain(8, seed), preset.id, "levels 8 seed " + std::to_string(seed));
-      expect_landform_survives(default_mountain(9, seed), preset.id, "levels 9 seed " + std::to_string(seed));
-    }
+  for (uint64_t seed = 1; seed <= 5; ++seed) {
+    expect_landform_survives(default_mountain(8, seed), GetParam(), "levels 8 seed " + std::to_string(seed));
+    expect_landform_survives(default_mountain(9, seed), GetParam(), "levels 9 seed " + std::to_string(seed));
+  }
   // Levels 10 (where the old Valleys grew its spire) on two seeds: 1025^2
   // runs cost a second each.
-  for (const auto& preset : erosion_presets())
-    for (uint64_t seed : {1, 5}) expect_landform_survives(default_mountain(10, seed), preset.id, "levels 10");
+  for (uint64_t seed : {1, 5}) expect_landform_survives(default_mountain(10, seed), GetParam(), "levels 10");
 }
 
-TEST(ErosionModel, EveryPresetKeepsFbmTerrainsWithoutSpikes) {
+TEST_P(EveryPreset, KeepsFbmTerrainsWithoutSpikes) {
 #ifdef FT_UNDER_ASAN
-  // Ensembles of large erosions take minutes under ASan; the smaller
-  // ErosionModel and Erosion tests run the same code paths under it.
   GTEST_SKIP() << "statistical ensemble: Release only";
 #endif
-  for (const auto& preset : erosion_presets())
-    for (uint64_t seed = 1; seed <= 3; ++seed)
-      expect_landform_survives(fbm(257, seed), preset.id, "fbm 257 seed " + std::to_string(seed));
+  for (uint64_t seed = 1; seed <= 3; ++seed)
+    expect_landform_survives(fbm(257, seed), GetParam(), "fbm 257 seed " + std::to_string(seed));
 }
 
 TEST(ErosionModel, SedimentWhereTheFalloffEndsIsAsSmoothAsTheRest) {
@@ -268,7 +279,7 @@ double shared(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, int3
   return in_a ? double(matched) / double(in_a) : 1.0;
 }
 
-TEST(ErosionModel, EveryPresetErodesTheSameTerrainAlikeAt257And2049) {
+TEST_P(EveryPreset, ErodesTheSameTerrainAlikeAt257And2049) {
 #ifdef FT_UNDER_ASAN
   // Ensembles of large erosions take minutes under ASan; the smaller
   // ErosionModel and Erosion tests run the same code paths under it.
@@ -282,21 +293,25 @@ TEST(ErosionModel, EveryPresetErodesTheSameTerrainAlikeAt257And2049) {
   // over each 257^2 cell's footprint; the channels of both are routed on
   // those 257^2 grids, and a channel cell counts as shared when the other
   // has a channel within one cell (both ways).
-  // Channels: issue 24 asks 70% per seed. Measured 0.74-0.95 on seeds 1-2
-  // but 0.58-0.80 on seed 3, whose inputs already share only 0.87 / 0.89
-  // (erosion on their slightly different flats sends some channels into the
-  // neighbouring valley; without the detail run it is the same, 0.63-0.67).
-  // So this holds each preset's mean over the seeds to the issue's 0.70 and
-  // every seed to 0.55 (the worst measured less its spread between
-  // presets): a regression fails, and the per-seed bound stays open.
-  for (const auto& preset : erosion_presets()) {
+  // Channels: issue 24 asks 70% per seed. Seed 3 gave 0.58-0.80 while the
+  // model's grid point-sampled a finer terrain (the 2049^2 run then started
+  // from its nodes with every finer octave on them as noise; the 257^2 run
+  // and this test see the terrain averaged). With the average: seeds 1-2
+  // 0.78-0.96, seed 3 0.64-0.87. Seed 3's inputs themselves share only
+  // 0.87 / 0.89 of their channels, and on Badlands (least creep and
+  // deposition, the densest gullies) some channels on their slightly
+  // different flats take the neighbouring valley: 0.64 / 0.65. So each
+  // preset's mean over the seeds is held to the issue's 0.70 and every seed
+  // to 0.60 (the worst measured less a margin): an empirical bound.
+  const std::string id = GetParam();
+  {
     double shared_mean = 0;
     const int seeds = 3;
     for (uint64_t seed = 1; seed <= uint64_t(seeds); ++seed) {
-      const std::string what = preset.id + " seed " + std::to_string(seed);
-      const Heightfield small_in = fbm(257, seed), big_in = fbm(2049, seed);
-      const Heightfield small = erode(small_in, preset_for(preset.id), nullptr);
-      const Heightfield big = erode(big_in, preset_for(preset.id), nullptr);
+      const std::string what = id + " seed " + std::to_string(seed);
+      const Heightfield &small_in = fbm(257, seed), &big_in = fbm(2049, seed);
+      const Heightfield small = erode(small_in, preset_for(id), nullptr);
+      const Heightfield big = erode(big_in, preset_for(id), nullptr);
       const std::vector<float> big_down = downsample(values(big), 2049, 8);
       const std::vector<float> big_in_down = downsample(values(big_in), 2049, 8);
       EXPECT_GE(correlation(values(small), big_down), 0.98) << what;
@@ -318,11 +333,137 @@ TEST(ErosionModel, EveryPresetErodesTheSameTerrainAlikeAt257And2049) {
       std::printf("%-22s heights %.4f depth %.4f relief %.4f channels %.3f / %.3f\n", what.c_str(), heights, depth,
                   relief_big / relief_small, shared(c_small, c_big, 257), shared(c_big, c_small, 257));
       const double both = std::min(shared(c_small, c_big, 257), shared(c_big, c_small, 257));
-      EXPECT_GE(both, 0.55) << what;
+      EXPECT_GE(both, 0.60) << what;
       shared_mean += both / seeds;
     }
-    EXPECT_GE(shared_mean, 0.70) << preset.id;
+    EXPECT_GE(shared_mean, 0.70) << id;
   }
+}
+
+// --- What the demo's reliefs showed ------------------------------------
+
+// The p-th quantile of |5-point Laplacian| over the cells (x, y), 1 <= x <
+// w - 1 and 1 <= y < h - 1, that `pick(x, y)` takes.
+template <class Pick>
+double laplacian_quantile(const float* z, int32_t w, int32_t h, double p, Pick pick) {
+  std::vector<float> l;
+  for (int32_t y = 1; y < h - 1; ++y)
+    for (int32_t x = 1; x < w - 1; ++x) {
+      if (!pick(x, y)) continue;
+      const size_t i = size_t(y) * w + x;
+      l.push_back(std::fabs(z[i - 1] + z[i + 1] + z[i - w] + z[i + w] - 4 * z[i]));
+    }
+  const size_t k = size_t(p * double(l.size() - 1));
+  std::nth_element(l.begin(), l.begin() + k, l.end());
+  return l[k];
+}
+
+// The roughest of the four borders (the 4 rows or columns next to the edge)
+// against the interior (16 cells and more from the edge): p99 of
+// |Laplacian|, as a ratio.
+double border_roughness(const Heightfield& hf) {
+  const int32_t w = hf.width(), h = hf.height(), band = 4, inner = 16;
+  const float* z = hf.data();
+  const double interior = laplacian_quantile(z, w, h, 0.99, [&](int32_t x, int32_t y) {
+    return std::min({x, y, w - 1 - x, h - 1 - y}) >= inner;
+  });
+  double worst = 0;
+  for (int side = 0; side < 4; ++side) {
+    const double border = laplacian_quantile(z, w, h, 0.99, [&](int32_t x, int32_t y) {
+      const int32_t d[4] = {y, h - 1 - y, x, w - 1 - x};
+      return d[side] <= band && std::min({x, y, w - 1 - x, h - 1 - y}) >= 1;
+    });
+    worst = std::max(worst, border / interior);
+  }
+  return worst;
+}
+
+TEST_P(EveryPreset, LeavesTheBorderRowsAsSmoothAsTheInterior) {
+#ifdef FT_UNDER_ASAN
+  GTEST_SKIP() << "statistical ensemble: Release only";
+#endif
+  // Issue 24's demo (fBm 513^2, seed 7): its top rows' p99 |Laplacian| was
+  // about twice the interior's. fBm has no edge of its own (the inputs'
+  // ratio is 0.99-1.06), so the eroded borders are held to 1.25. Measured
+  // 1.01-1.18 at 513^2 and 0.5-0.9 at 257^2 for every preset; before the
+  // detail run's creep acted on its change only, Rugged Mountains gave
+  // 1.65-1.94 at 513^2 (the creep smoothed the interior, and the edge rows
+  // are held fixed).
+  for (const int32_t size : {257, 513})
+    for (uint64_t seed : {1, 7}) {
+      const Heightfield& in = fbm(size, seed);
+      const Heightfield out = erode(in, preset_for(GetParam()), nullptr);
+      const double before = border_roughness(in), after = border_roughness(out);
+      std::printf("%-16s fbm %d seed %d: border / interior p99 |laplacian| %.3f -> %.3f\n", GetParam().c_str(),
+                  size, int(seed), before, after);
+      EXPECT_LE(after, 1.25) << GetParam() << " fbm " << size << " seed " << seed;
+    }
+}
+
+// The energy of the finest detail (the terrain less its 5 x 5 smoothing),
+// eroded against input, on hillslopes: cells more than 3 cells from any
+// cell whose multiple-flow area (on the eroded terrain) exceeds 0.1% of the
+// map, and 4 cells from the edge.
+double hillslope_detail_kept(const Heightfield& in, const Heightfield& out) {
+  const int32_t w = in.width(), h = in.height();
+  const D8Grid g = grid_of(out, false);
+  std::vector<float> z = values(out);
+  FlowGraph graph;
+  route_and_fill(g, z.data(), -1, graph);
+  std::vector<double> area;
+  multiple_flow_area(g, z.data(), -1, area);
+  const double map = double(w - 1) * (h - 1) * g.spacing * g.spacing;
+  std::vector<uint8_t> near(in.size(), 0);
+  for (int32_t y = 0; y < h; ++y)
+    for (int32_t x = 0; x < w; ++x) {
+      if (!(area[size_t(y) * w + x] > 1e-3 * map)) continue;
+      for (int32_t dy = -3; dy <= 3; ++dy)
+        for (int32_t dx = -3; dx <= 3; ++dx) {
+          const int32_t nx = x + dx, ny = y + dy;
+          if (nx >= 0 && ny >= 0 && nx < w && ny < h) near[size_t(ny) * w + nx] = 1;
+        }
+    }
+  const std::vector<float> a = values(in), b = values(out);
+  const std::vector<float> sa = smooth(a, w, h, 1), sb = smooth(b, w, h, 1);
+  double ea = 0, eb = 0;
+  for (int32_t y = 4; y < h - 4; ++y)
+    for (int32_t x = 4; x < w - 4; ++x) {
+      const size_t i = size_t(y) * w + x;
+      if (near[i]) continue;
+      ea += double(a[i] - sa[i]) * (a[i] - sa[i]);
+      eb += double(b[i] - sb[i]) * (b[i] - sb[i]);
+    }
+  return eb / ea;
+}
+
+TEST_P(EveryPreset, KeepsTheFineDetailOfHillslopes) {
+#ifdef FT_UNDER_ASAN
+  GTEST_SKIP() << "statistical ensemble: Release only";
+#endif
+  // Issue 24's demo (fBm 513^2) lost its finest detail. On a terrain finer
+  // than the model's grid that detail is the rock's texture: erosion may
+  // wear it (the stream-power law erodes every cell, gullies may add to
+  // it) but not erase it. Before the detail run's creep acted on its change
+  // only, and before the model's grid sampled the terrain averaged, 0.4-2.2 %
+  // of its energy was kept on hillslopes (Rugged Mountains); now, every
+  // preset, 0.38-0.54 at 513^2 and 0.35-0.64 at 1025^2 (seeds 1 and 7; 0.60
+  // and 0.88 and more while deposits crept on their change too, which printed
+  // the buried bed's texture onto filled flats). The measure is nearly the
+  // same on every seed (erosion acts on the texture about linearly, and it
+  // sums over 10^5 cells), so the bounds are 0.3 (Scree Slopes, the lowest,
+  // less a margin) and 1.5 (no roughening). (At 257^2, the
+  // model's own grid, the finest detail is what the model erodes: 3-13 %
+  // is kept there, by design.)
+  for (const int32_t size : {513, 1025})
+    for (uint64_t seed : {1, 7}) {
+      const Heightfield& in = fbm(size, seed);
+      const Heightfield out = erode(in, preset_for(GetParam()), nullptr);
+      const double kept = hillslope_detail_kept(in, out);
+      std::printf("%-16s fbm %d seed %d: hillslope detail energy kept %.3f\n", GetParam().c_str(), size, int(seed),
+                  kept);
+      EXPECT_GE(kept, 0.3) << GetParam() << " fbm " << size << " seed " << seed;
+      EXPECT_LE(kept, 1.5) << GetParam() << " fbm " << size << " seed " << seed;
+    }
 }
 
 // --- Strength and masks -------------------------------------------------

@@ -97,30 +97,28 @@ Heightfield terrain(bool landform, int32_t levels, uint64_t seed) {
   return hf;
 }
 
-void erode_under_watchdog(bool landform, int32_t levels, uint64_t seed) {
+void erode_under_watchdog(const std::string& preset, bool landform, int32_t levels, uint64_t seed) {
   const Heightfield hf = terrain(landform, levels, seed);
-  for (const std::string& preset : erosion_preset_names()) {
-    const std::string what = "preset " + preset + " on the " + (landform ? "default landform" : "fBm terrain") +
-                             " of " + std::to_string(hf.width()) + "^2 samples, seed " + std::to_string(seed);
-    ErosionConfig c = erosion_preset(preset, hf);
-    Deadline deadline{Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                         std::chrono::duration<double>(kDeadlineSeconds))};
-    c.progress = Progress(&Deadline::check, &deadline);
-    Monitor monitor(what);
-    try {
-      const Heightfield out = erode(hf, c, nullptr);
-      ASSERT_EQ(out.size(), hf.size()) << what;
-    } catch (const Error& e) {
-      if (e.status() == FT_ERR_CANCELLED)
-        ADD_FAILURE() << "HANG: " << what << " ran past the watchdog's " << kDeadlineSeconds << " s";
-      else
-        ADD_FAILURE() << what << ": " << e.what();
-    }
+  const std::string what = "preset " + preset + " on the " + (landform ? "default landform" : "fBm terrain") +
+                           " of " + std::to_string(hf.width()) + "^2 samples, seed " + std::to_string(seed);
+  ErosionConfig c = erosion_preset(preset, hf);
+  Deadline deadline{Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                       std::chrono::duration<double>(kDeadlineSeconds))};
+  c.progress = Progress(&Deadline::check, &deadline);
+  Monitor monitor(what);
+  try {
+    const Heightfield out = erode(hf, c, nullptr);
+    ASSERT_EQ(out.size(), hf.size()) << what;
+  } catch (const Error& e) {
+    if (e.status() == FT_ERR_CANCELLED)
+      ADD_FAILURE() << "HANG: " << what << " ran past the watchdog's " << kDeadlineSeconds << " s";
+    else
+      ADD_FAILURE() << what << ": " << e.what();
   }
 }
 
-// 33^2 to 257^2, more seeds where runs are cheap: 4 presets x (16 + 12 + 8 +
-// 3) seeds x 2 terrains, about 10 s in Release on one core.
+// 33^2 to 257^2, more seeds where runs are cheap: (16 + 12 + 8 + 3) seeds
+// x 2 terrains for each preset.
 struct SizeSeeds {
   int32_t levels, seeds;
 };
@@ -131,14 +129,20 @@ constexpr SizeSeeds kRuns[] = {{5, 6}, {6, 3}};
 constexpr SizeSeeds kRuns[] = {{5, 16}, {6, 12}, {7, 8}, {8, 3}};
 #endif
 
-TEST(ErosionWatchdog, EveryPresetFinishesOnTheDefaultLandformOverSeedsAndSizes) {
+// One test per preset (its own ctest entry, so ctest -j spreads them):
+// ErosionWatchdog/EveryPreset.NAME/PRESET.
+class EveryPreset : public ::testing::TestWithParam<std::string> {};
+INSTANTIATE_TEST_SUITE_P(ErosionWatchdog, EveryPreset, ::testing::ValuesIn(erosion_preset_names()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+TEST_P(EveryPreset, FinishesOnTheDefaultLandformOverSeedsAndSizes) {
   for (const auto [levels, seeds] : kRuns)
-    for (int s = 1; s <= seeds; ++s) erode_under_watchdog(true, levels, uint64_t(s));
+    for (int s = 1; s <= seeds; ++s) erode_under_watchdog(GetParam(), true, levels, uint64_t(s));
 }
 
-TEST(ErosionWatchdog, EveryPresetFinishesOnFbmTerrainsOverSeedsAndSizes) {
+TEST_P(EveryPreset, FinishesOnFbmTerrainsOverSeedsAndSizes) {
   for (const auto [levels, seeds] : kRuns)
-    for (int s = 1; s <= seeds; ++s) erode_under_watchdog(false, levels, uint64_t(s));
+    for (int s = 1; s <= seeds; ++s) erode_under_watchdog(GetParam(), false, levels, uint64_t(s));
 }
 
 }  // namespace

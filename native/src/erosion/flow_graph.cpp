@@ -158,11 +158,15 @@ void build_stack(const D8Grid& g, FlowGraph& graph) {
   const int32_t nb = int32_t(graph.bases.size());
   const int32_t chunks = std::min<int32_t>(kStackChunks, nb);
   graph.chunk_start.assign(size_t(chunks) + 1, 0);
-  std::vector<std::vector<int32_t>> parts(chunks);
+  auto& parts = graph.parts;
+  parts.resize(size_t(chunks));
+  graph.todo.resize(size_t(chunks));
 #pragma omp parallel for schedule(dynamic, 1)
   for (int32_t c = 0; c < chunks; ++c) {
     auto& part = parts[c];
-    std::vector<int32_t> todo;
+    auto& todo = graph.todo[c];
+    part.clear();
+    todo.clear();
     for (int32_t q = int32_t(int64_t(nb) * c / chunks); q < int32_t(int64_t(nb) * (c + 1) / chunks); ++q) {
       todo.push_back(graph.bases[q]);
       while (!todo.empty()) {

@@ -26,6 +26,9 @@ struct FlowGraph {
   // The stack in runs of whole trees (independent: they go to threads):
   // run c is stack[chunk_start[c] .. chunk_start[c + 1]).
   std::vector<int32_t> bases, chunk_start;
+  // Scratch of build_stack: each run's part of the stack and its search
+  // stack (kept, so that a step allocates nothing).
+  std::vector<std::vector<int32_t>> parts, todo;
   int64_t pits = 0;                // interior cells without a lower neighbour at the last routing
   // Scratch of fill_pits_locally: visit stamps (one number per search, so
   // nothing is cleared between searches) and the cells of one depression.

@@ -23,10 +23,12 @@
 //
 // Resolution: D8 channels are one cell wide, so the incision of a grid of any
 // size depends on its cell size. The model therefore runs at one cell size,
-// width / kModelCells, for the whole duration; a finer terrain gets that
-// run's change resampled bilinearly onto its own detail, then a short run on
-// its own grid (for the same share of the duration as its cell is of the
-// model's) that wears channels into the detail. A preview and a
+// width / kModelCells, for the whole duration, on the terrain averaged over
+// its cells; a finer terrain gets that run's change resampled bilinearly
+// onto its own detail, then a short run on its own grid (for the same share
+// of the duration as its cell is of the model's) that wears channels into
+// the detail, its creep rounding what that run cuts but not the detail
+// itself (the rock's texture, below the model's cell). A preview and a
 // final then share their landform and erosion, and the cost of the long run
 // does not grow with the terrain.
 #include <algorithm>
@@ -96,6 +98,34 @@ std::vector<float> resample(const float* from, const D8Grid& a, const D8Grid& b)
   return out;
 }
 
+// z averaged over (2r + 1)^2 cells around each cell (clamped at a bounded
+// grid's edges, wrapped on a periodic one). The model's grid samples this,
+// not z: point samples of a finer terrain carry its detail as noise on the
+// model's cells, which the model's run then smooths away, and that change,
+// resampled, wore the detail down at the model's nodes only (a pattern of
+// the model's grid, and half the detail's energy at 513^2).
+std::vector<float> box_mean(const float* z, const D8Grid& g, int32_t r) {
+  const int32_t w = g.width, h = g.height;
+  std::vector<float> rows(g.size()), out(g.size());
+  auto at = [&](int32_t k, int32_t n) { return g.periodic ? (k % n + n) % n : std::clamp(k, 0, n - 1); };
+  const float inv = 1.0f / float(2 * r + 1);
+#pragma omp parallel for schedule(static)
+  for (int32_t y = 0; y < h; ++y)
+    for (int32_t x = 0; x < w; ++x) {
+      double sum = 0;
+      for (int32_t d = -r; d <= r; ++d) sum += z[size_t(y) * w + at(x + d, w)];
+      rows[size_t(y) * w + x] = float(sum) * inv;
+    }
+#pragma omp parallel for schedule(static)
+  for (int32_t y = 0; y < h; ++y)
+    for (int32_t x = 0; x < w; ++x) {
+      double sum = 0;
+      for (int32_t d = -r; d <= r; ++d) sum += rows[size_t(at(y + d, h)) * w + x];
+      out[size_t(y) * w + x] = float(sum) * inv;
+    }
+  return out;
+}
+
 struct Run {
   const D8Grid& g;
   const ErosionConfig& c;
@@ -103,6 +133,9 @@ struct Run {
   const float* rain;  // null: 1
   MassBudget* budget;
   bool talus;         // limit slopes to the talus angle
+  // Null: creep acts on z. Else creep acts on z - texture only: what the
+  // run did, not the texture it started from (the detail run, see landscape()).
+  const float* texture;
 };
 
 // Evolves z for `years` in `steps` implicit steps (see the file comment).
@@ -117,7 +150,9 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
   const double own_rain = c.model.rainfall * cell;  // water a cell gathers itself (x the rain map)
   const double shed = -std::expm1(-dt / kScreeYears);  // share of the excess over the talus shed per step
   FlowGraph graph;
-  std::vector<float> filled(n), start(n), cap(n), diffused(run.mask && c.fluvial.diffusion > 0 ? n : 0);
+  const bool creep = c.fluvial.diffusion > 0;
+  std::vector<float> filled(n), start(n), cap(n), diffused((run.mask || run.texture) && creep ? n : 0),
+      plain(run.texture && creep ? n : 0);
   std::vector<double> discharge(n), sediment(n);
   const int32_t sink = g.periodic ? periodic_sink(g, z) : -1;
   auto mask = [&](int32_t i) { return run.mask ? double(run.mask[i]) : 1.0; };
@@ -178,14 +213,23 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
     }
     carried += carried_step, detached += detached_step, deposited += deposited_step;
     progress.report((step + 0.85) / steps);
-    if (c.fluvial.diffusion > 0) {
-      if (run.mask) {
-        std::copy(z, z + n, diffused.begin());
-        hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt);
+    if (creep) {
+      if (run.mask || run.texture) {
+        // With a texture, a deposit (above it) creeps as it lies: sediment
+        // has no rock texture, and creep on its change would print the
+        // texture of the bed it buried onto a filled lake's flat.
 #pragma omp parallel for schedule(static)
         for (int64_t i = 0; i < int64_t(n); ++i) {
-          const float change = diffused[i] - z[i];
-          z[i] += change < 0 ? float(run.mask[i]) * change : change;
+          diffused[i] = run.texture ? z[i] - run.texture[i] : z[i];
+          if (run.texture) plain[i] = z[i];
+        }
+        hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt);
+        if (run.texture) hillslope_diffusion(g, plain.data(), c.fluvial.diffusion * dt);
+#pragma omp parallel for schedule(static)
+        for (int64_t i = 0; i < int64_t(n); ++i) {
+          const float next = !run.texture ? diffused[i] : z[i] > run.texture[i] ? plain[i] : diffused[i] + run.texture[i];
+          const float change = next - z[i];
+          z[i] += change < 0 && run.mask ? float(run.mask[i]) * change : change;
         }
       } else {
         hillslope_diffusion(g, z, c.fluvial.diffusion * dt);
@@ -224,7 +268,7 @@ void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* bu
   const float* mask_or_null = mask.empty() ? nullptr : mask.data();
   const float* rain_or_null = rain.empty() ? nullptr : rain.data();
   if (side <= kModelCells) {
-    evolve({g, c, mask_or_null, rain_or_null, budget, true}, z, years, steps_for(g, c, years, kMaxSteps), 0, progress);
+    evolve({g, c, mask_or_null, rain_or_null, budget, true, nullptr}, z, years, steps_for(g, c, years, kMaxSteps), 0, progress);
     return;
   }
   // The model's grid: kModelCells across the longer side, the same extent.
@@ -233,13 +277,13 @@ void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* bu
   coarse.width = std::max(3, int32_t(std::lround((g.width - edge) / factor)) + edge);
   coarse.height = std::max(3, int32_t(std::lround((g.height - edge) / factor)) + edge);
   coarse.spacing = g.spacing * double(g.width - edge) / (coarse.width - edge);
-  std::vector<float> before = resample(z, g, coarse), after = before;
+  std::vector<float> before = resample(box_mean(z, g, int32_t(factor / 2)).data(), g, coarse), after = before;
   const std::vector<float> coarse_mask = resample_map(c.erosion_mask, coarse.width, coarse.height);
   const std::vector<float> coarse_rain = resample_map(c.rain_map, coarse.width, coarse.height);
   // Shares of the bar: the model's run and the detail run cost about alike.
   const ProgressPart model_part(progress, 0.0, 0.5), detail_part(progress, 0.5, 0.5);
   evolve({coarse, c, coarse_mask.empty() ? nullptr : coarse_mask.data(),
-          coarse_rain.empty() ? nullptr : coarse_rain.data(), budget, true},
+          coarse_rain.empty() ? nullptr : coarse_rain.data(), budget, true, nullptr},
          after.data(), years, steps_for(coarse, c, years, kMaxSteps), 0, model_part.progress());
   for (size_t i = 0; i < after.size(); ++i) after[i] -= before[i];
   const std::vector<float> change = resample(after.data(), coarse, g);
@@ -254,7 +298,16 @@ void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* bu
   // No talus here: a fractal's slopes steepen as its cell shrinks, so the
   // talus angle at this cell size would wear the whole landform down (the
   // model's run has set the slopes at its own cell size).
-  evolve({g, c, mask_or_null, rain_or_null, nullptr, false}, z, detail_years,
+  // Creep acts on what the detail run does, not on the detail itself: the
+  // detail below the model's cell stands for the rock's texture, which the
+  // model does not resolve. Creep on z at the preset's D over the run
+  // (sqrt(D t): 4 cells at 513^2, 5 at 2049^2) wiped it out: issue 24's
+  // demo lost its finest detail (its energy on hillslopes fell to 0.4-2 %
+  // of the input's), and the smoothed interior left the edge rows (held
+  // fixed) twice as rough as it. The channels the run cuts are still
+  // rounded by creep at its full rate.
+  const std::vector<float> texture(z, z + n);
+  evolve({g, c, mask_or_null, rain_or_null, nullptr, false, texture.data()}, z, detail_years,
          steps_for(g, c, detail_years, kMaxDetailSteps), 1, detail_part.progress());
 }
 
