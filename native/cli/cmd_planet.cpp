@@ -205,8 +205,10 @@ Registration reg({"planet", "A fractal planet: cube-sphere faces or mesh, a face
                         ->capture_default_str();
                     app.add_option("--view-longitude", o->scene.view_longitude_deg, "the point the camera faces")
                         ->capture_default_str();
-                    app.add_option("--width", o->r.width, "render width in pixels")->check(CLI::Range(1, 16384));
-                    app.add_option("--height", o->r.height, "render height in pixels")->check(CLI::Range(1, 16384));
+                    app.add_option("--width", o->r.width, "render width in pixels")->check(CLI::Range(1, 16384))
+                        ->capture_default_str();
+                    app.add_option("--height", o->r.height, "render height in pixels")->check(CLI::Range(1, 16384))
+                        ->capture_default_str();
                     add_param_flags(app, planet::planet_param_table(), &o->flags);
                     return [o, &app] { return run(app, *o); };
                   },

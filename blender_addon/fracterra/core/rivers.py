@@ -9,8 +9,6 @@ arrays (WaterArrays) in the job's worker thread, and the handle is freed.
 import ctypes
 from ctypes import Structure, byref, c_double, c_int32, c_int64, c_void_p
 
-import numpy as np
-
 from .handle import LibraryHandle
 from .polylines import Polylines
 
@@ -72,6 +70,7 @@ class RiverNetwork(LibraryHandle):
 
     def water_mask(self):
         """(height, width) int32 over the network's grid: a lake's index, LAND or SEA."""
+        import numpy as np  # numpy only where water is asked for: core imports without it
         width, height = self.grid()
         out = np.empty(width * height, dtype=np.int32)
         self._lib.check(self._lib.ft_river_network_water_mask(
@@ -90,6 +89,7 @@ class WaterArrays:
     LAND or SEA; levels (lakes,) each lake's water level; spacing."""
 
     def __init__(self, net, nx, ny, spacing):
+        import numpy as np  # as in water_mask
         with net.polylines() as pl:
             self.xyz = np.asarray(pl.xyz(), dtype=np.float64).reshape(-1, 3)
             self.radii = np.asarray(pl.radii(), dtype=np.float64)
