@@ -16,8 +16,6 @@ constexpr uint32_t kAngleLevel = 64;  // Counter.level offset of the 3D angles
 constexpr int kBlockLevels = 12;      // subtrees of 2^12 vertices (96 KiB) stay in L2
 enum { kFlat = 0, kPlanar = 1, kRandom3d = 2 };  // displacement modes
 
-inline double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
 inline Vec3 unit(const Vec3& v) {
   const double n = norm(v);
   return {v[0] / n, v[1] / n, v[2] / n};

@@ -40,8 +40,6 @@ Vec3 rotate(const Vec3& v, const Vec3& axis, double angle) {  // Rodrigues, axis
   return {v[0] * c + x[0] * s + axis[0] * k, v[1] * c + x[1] * s + axis[1] * k, v[2] * c + x[2] * s + axis[2] * k};
 }
 
-double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
 // Tapers the radii of vertices [begin, end) from r0 to r0 * decay.
 void taper(PolylineSet& s, int64_t begin, int64_t end, double r0, double decay) {
   const double n = double(std::max<int64_t>(end - begin - 1, 1));
