@@ -282,20 +282,9 @@ double effective_gain(const FbmConfig& c) {
 void validate_fbm(const FbmConfig& c, int64_t max_side) {
   check_int_range("width", c.width, 2, max_side);
   check_int_range("height", c.height, 2, max_side);
-  check_int_range("octaves", c.octaves, 1, kMaxOctaves);
-  if (!(c.lacunarity > 1.0) || !std::isfinite(c.lacunarity))
-    invalid("lacunarity must be a finite number > 1 (2 doubles the frequency per octave; 2.01 is a "
-            "common choice), got " + format_number(c.lacunarity));
-  if (std::isnan(c.gain) || c.gain > 1.0)
-    invalid("gain must be in (0, 1] (or <= 0 to use lacunarity^-H), got " + format_number(c.gain));
-  check_range("hurst", c.hurst, 0.0, 1.0);
-  check_int_range("basis", c.basis, kBasisValue, kBasisCellularF2F1);
-  check_int_range("variant", c.variant, kFbmStandard, kFbmHetero);
-  check_positive("frequency", c.frequency);
-  check_finite("offset", c.offset);
+  detail::validate_octave_fields(c);
   check_finite("rotation", c.rotation);
   check_range("warp", c.warp, 0.0, kMaxWarp);
-  check_positive("sigma", c.sigma);
   if (c.periodic && c.basis == kBasisSimplex)
     invalid("periodic fbm is available for the value, gradient and cellular bases, not simplex "
             "(its skewed lattice does not tile a rectangle)");

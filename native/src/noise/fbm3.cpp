@@ -130,18 +130,7 @@ FbmConfig as_flat(const Fbm3Config& c) {
 }  // namespace
 
 void validate_fbm3(const Fbm3Config& c) {
-  check_int_range("octaves", c.octaves, 1, kMaxOctaves);
-  if (!(c.lacunarity > 1.0) || !std::isfinite(c.lacunarity))
-    invalid("lacunarity must be a finite number > 1 (2 doubles the frequency per octave), got " +
-            format_number(c.lacunarity));
-  if (std::isnan(c.gain) || c.gain > 1.0)
-    invalid("gain must be in (0, 1] (or <= 0 to use lacunarity^-H), got " + format_number(c.gain));
-  check_range("hurst", c.hurst, 0.0, 1.0);
-  check_int_range("basis", c.basis, kBasisValue, kBasisCellularF2F1);
-  check_int_range("variant", c.variant, kFbmStandard, kFbmHetero);
-  check_positive("frequency", c.frequency);
-  check_finite("offset", c.offset);
-  check_positive("sigma", c.sigma);
+  detail::validate_octave_fields(c);
   const double finest = c.frequency * std::pow(c.lacunarity, c.octaves - 1) + 256.0 + 1.0;
   if (!(finest <= kMaxLatticeCoordinate3))
     invalid("the finest octave is beyond the noise lattice's range: frequency " + format_number(c.frequency) +

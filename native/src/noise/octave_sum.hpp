@@ -4,11 +4,31 @@
 // of f_i^-H). always_inline, so it is compiled inside each caller's target.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
+#include "core/error.hpp"
 #include "noise/fbm.hpp"
 
 namespace ft::noise::detail {
+
+// The octave fields FbmConfig and Fbm3Config share, checked alike (each
+// config then checks its own fields: grid size, warp, the lattice's range).
+template <class Config>
+void validate_octave_fields(const Config& c) {
+  check_int_range("octaves", c.octaves, 1, kMaxOctaves);
+  if (!(c.lacunarity > 1.0) || !std::isfinite(c.lacunarity))
+    invalid("lacunarity must be a finite number > 1 (2 doubles the frequency per octave; 2.01 is a "
+            "common choice), got " + format_number(c.lacunarity));
+  if (std::isnan(c.gain) || c.gain > 1.0)
+    invalid("gain must be in (0, 1] (or <= 0 to use lacunarity^-H), got " + format_number(c.gain));
+  check_range("hurst", c.hurst, 0.0, 1.0);
+  check_int_range("basis", c.basis, kBasisValue, kBasisCellularF2F1);
+  check_int_range("variant", c.variant, kFbmStandard, kFbmHetero);
+  check_positive("frequency", c.frequency);
+  check_finite("offset", c.offset);
+  check_positive("sigma", c.sigma);
+}
 
 // sum[i] (and the variant's weight[i]) after adding an octave of amplitude `a`;
 // `first` for octave 0.
