@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
 # The fracterra demo, end to end: a Voss midpoint terrain (16-bit heightmap
 # and shaded relief), its coastline, a lightning bolt striking its highest
-# peak, all rendered by POV-Ray; an eroded terrain and its maps; a fractal
-# rock from a cube (OpenSubdiv); and
-# a .blend built by headless Blender with the add-on. Outputs go to
-# ${1:-demo-out}/.
+# peak, all rendered by POV-Ray; an eroded archipelago, its maps, rivers and
+# lakes (POV-Ray); a fractal rock from a cube (OpenSubdiv); and a .blend built
+# by headless Blender with the add-on. Outputs go to ${1:-demo-out}/.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="$(mkdir -p "${1:-demo-out}" && cd "${1:-demo-out}" && pwd)"
@@ -43,13 +42,24 @@ step "the Mandelbrot set as a terrain (seed 002) and its curves of equal escape 
   --out "$out/mandelbrot.png" --curves 2,3,4,6,8 --curves-out "$out/mandelbrot-curves.csv" --stats
 "$ft" relief --in "$out/mandelbrot.png" --out "$out/mandelbrot-relief.png"
 
-step "erosion: an fBm terrain (513^2) eroded by the land preset (Rugged Mountains), with its maps"
-"$ft" terrain --method fbm --size 513 --hurst 0.8 --seed 7 --world-size 10 --out "$out/uneroded.png"
-# Without the preset's uplift: the eroded/deposited maps are height differences,
-# so uplift would show as deposit everywhere (docs/erosion.md).
-"$ft" erode --in "$out/uneroded.png" --preset land --uplift 0 --out "$out/eroded.png" --maps "$out/erosion-maps"
-"$ft" relief --in "$out/uneroded.png" --out "$out/uneroded-relief.png"
-"$ft" relief --in "$out/eroded.png" --out "$out/eroded-relief.png"
+step "erosion: an fBm archipelago (513^2, 30% sea) eroded by the land preset (Rugged Mountains), with its maps"
+"$ft" terrain --method fbm --size 513 --hurst 0.8 --seed 7 --world-size 10 --sea fraction --sea-fraction 0.3 \
+  --out "$out/uneroded.png"
+# The sea is the erosion's base level: rivers end there and its floor stays.
+# Without the preset's uplift: the eroded/deposited maps are height
+# differences, so uplift would show as deposit everywhere (docs/erosion.md).
+"$ft" erode --in "$out/uneroded.png" --preset land --uplift 0 --sea fraction --sea-fraction 0.3 \
+  --out "$out/eroded.png" --maps "$out/erosion-maps"
+# Water below 0.1% of the relief: the flat sea, not the lowlands.
+"$ft" relief --in "$out/uneroded.png" --sea-fraction 0.001 --out "$out/uneroded-relief.png"
+"$ft" relief --in "$out/eroded.png" --sea-fraction 0.001 --out "$out/eroded-relief.png"
+
+step "rivers and lakes of the eroded archipelago, rendered by POV-Ray"
+"$ft" rivers --in "$out/eroded.png" --sea fraction --sea-fraction 0.3 --min-area 0.02 --width-coefficient 0.05 \
+  --depth-coefficient 0.01 --out "$out/rivers.json" --stats
+"$ft" scene --terrain "$out/eroded.png" --vertical-scale 0.12 --sea-fraction 0.3 --rivers "$out/rivers.json" \
+  --camera-elevation-deg 55 --camera-distance-scale 0.6 --pov "$out/rivers.pov" --render "$out/rivers.png" \
+  --width 800 --height 600
 
 step "OpenSubdiv: a fractal rock from a cube"
 "$ft" fractalize --in "$root/examples/meshes/cube.obj" --levels 6 --hurst 0.75 --sigma 0.25 \

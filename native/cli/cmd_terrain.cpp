@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <set>
 #include <vector>
 #include <nlohmann/json.hpp>
 
@@ -27,6 +28,11 @@
 
 namespace ft::cli {
 namespace {
+
+// Erosion settings that are the terrain's here, not flags of their own: its
+// threads serve every stage, a terrain that tiles erodes as a torus, and its
+// landform's sea is the erosion's (the library's rules, terrain_build.cpp).
+const std::set<std::string> kTerrainsOwn = {"periodic", "threads", "sea", "sea_level", "sea_fraction"};
 
 // "--size N" (square) or "--size WxH".
 void parse_size(const std::string& text, ft_terrain_params& p) {
@@ -186,7 +192,7 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     // erodes as a torus (the library's rule, not a flag).
                     add_param_flags(app, pipeline::build_param_table(), &o->build, {"threads"},
                                     {{"erosion_preset", "--erode"}});
-                    add_param_flags(app, erosion::erosion_param_table(), &o->erosion, {"periodic", "threads"});
+                    add_param_flags(app, erosion::erosion_param_table(), &o->erosion, kTerrainsOwn);
                     o->erosion_maps.add_to(app);
                     app.add_option("--rivers", o->rivers,
                                    "also trace its rivers and lakes (after --erode) with fracterra rivers' defaults "
@@ -200,8 +206,8 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     return [o, &app] {
                       if (o->out.empty() && o->pov.empty() && o->rivers.empty() && !o->stats)
                         invalid("give --out FILE, --pov FILE, --rivers FILE and/or --stats");
-                      for (const ft_param_info& row : erosion::erosion_param_table().rows)  // --periodic, --threads: the terrain's
-                        if (std::string(row.name) != "periodic" && std::string(row.name) != "threads")
+                      for (const ft_param_info& row : erosion::erosion_param_table().rows)
+                        if (!kTerrainsOwn.count(row.name))
                           o->erosion_given = o->erosion_given || flag_given(app, row.name);
                       return run(*o);
                     };

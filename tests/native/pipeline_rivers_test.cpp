@@ -52,5 +52,39 @@ TEST(PipelineRivers, TheCliWritesTheLibrarysRivers) {
   fs::remove_all(dir);
 }
 
+// Issue 24: the landform's sea is erosion's base level in the pipeline (so
+// in the CLI and Blender alike). An eroded island keeps its sea floor to the
+// bit, no land sinks below it, and its rivers end in it. Before, the
+// sediment built the sea floor up into sand flats and specks.
+TEST(PipelineRivers, AnErodedIslandKeepsItsSeaAndItsRiversEndInIt) {
+  ft_terrain_params t = terrain::default_terrain_params();
+  t.method = FT_TERRAIN_FBM;
+  t.width = t.height = 257;
+  t.seed = 7;
+  t.hurst = 0.8;
+  t.world_size = 10;
+  t.sea = FT_SEA_FRACTION;
+  t.sea_fraction = 0.3;
+  const Heightfield before = terrain::generate_terrain(t);
+  const float level = before.stats().min;
+  ft_build_params b = defaults_of<ft_build_params>(build_param_table());
+  b.terrain = &t;
+  b.erosion_preset = FT_EROSION_PRESET_LAND;
+  b.threads = 2;
+  hydrology::RiverNetwork net;
+  const Heightfield after = build_terrain(b, nullptr, &net);
+  size_t sea = 0, changed = 0, sunk = 0;
+  for (size_t i = 0; i < before.size(); ++i) {
+    if (before.data()[i] <= level) ++sea, changed += after.data()[i] != before.data()[i];
+    else sunk += after.data()[i] < level;
+  }
+  EXPECT_GT(sea, before.size() / 4);
+  EXPECT_EQ(changed, 0u);
+  EXPECT_EQ(sunk, 0u);
+  size_t to_sea = 0;
+  for (const auto& s : net.segments) to_sea += s.end == hydrology::RiverEnd::kSea;
+  EXPECT_GT(to_sea, 10u) << "of " << net.segments.size() << " segments";
+}
+
 }  // namespace
 }  // namespace ft::pipeline

@@ -86,14 +86,15 @@ BLENDER_LIMITS = {
     },
 }
 # Library fields that are not Blender properties, and why.
-_SEA = "the terrain's own sea (its Sea setting) is the rivers' sea, in the library's pipeline"
+_SEA = "the terrain's own sea (its Sea setting) is the rivers' and the erosion's sea, in the library's pipeline"
 _THREADS = "set from the add-on preferences (Threads) for every operator"
 NOT_PROPERTIES = {
     "terrain": {"threads": _THREADS},
     "polyline": {"threads": _THREADS},
     "fractalize": {"threads": _THREADS},
     "erosion": {"threads": _THREADS,
-                "periodic": "the terrain's own Periodic setting: a tiling terrain is eroded as a torus"},
+                "periodic": "the terrain's own Periodic setting: a tiling terrain is eroded as a torus",
+                "sea": _SEA, "sea_level": _SEA, "sea_fraction": _SEA},
     "hydrology": {"threads": _THREADS,
                   "periodic": "the library's pipeline: a terrain that tiles gives rivers that wrap",
                   "sea": _SEA, "sea_level": _SEA, "sea_fraction": _SEA,

@@ -66,7 +66,8 @@ extern "C" {
 /// 2.20: rivers as the pipeline's last stage: ft_terrain_build_rivers (pipeline.h) and
 ///      ft_build_params.rivers; a terrain that tiles gives rivers that wrap, in every front end;
 ///      ft_river_network_grid (the grid a network was traced on).
-#define FT_ABI_VERSION_MINOR 20
+/// 2.21: the sea as erosion's base level: ft_erosion_params.sea, sea_level and sea_fraction.
+#define FT_ABI_VERSION_MINOR 21
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

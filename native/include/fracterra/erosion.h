@@ -62,6 +62,12 @@ typedef struct ft_erosion_params {
   const float* rain_map;         ///< as erosion_mask: where rain falls (x rainfall); NULL: everywhere
   int32_t rain_map_width;        ///< 2..65536 with a map
   int32_t rain_map_height;       ///< 2..65536 with a map
+  /* ABI 2.21: the sea, a base level like the map's edge (erosion/sea.hpp). */
+  int32_t sea;                   ///< FT_WATER_SEA_* (hydrology.h): every cell at or below the sea's level is sea:
+                                 ///< rivers end there and cut no lower, what reaches it is carried away, the sea
+                                 ///< floor stays; default FT_WATER_SEA_NONE
+  double sea_level;              ///< FT_WATER_SEA_HEIGHT: the sea's height, world units; default 0
+  double sea_fraction;           ///< FT_WATER_SEA_FRACTION: share of the samples below the sea, [0, 1); default 0.3
 } ft_erosion_params;
 
 FT_API ft_status ft_erosion_params_init(ft_erosion_params* p);

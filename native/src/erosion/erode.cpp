@@ -95,13 +95,35 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     ~Restore() { omp_set_num_threads(n); }
   } restore{saved};
 
-  const D8Grid g = grid_of(in, c.periodic);
+  D8Grid g = grid_of(in, c.periodic);
+  // The sea of the input, every cell at or below its level (an inland sea
+  // of the landform too, or sediment fills it into a plain): base levels
+  // for the whole run.
+  const double level = sea_height(c.sea, c.sea_level, c.sea_fraction, in);
+  std::vector<uint8_t> sea;
+  if (c.sea != Sea::kNone) {
+    sea.resize(in.size());
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(in.size()); ++i) sea[i] = double(in.data()[i]) <= level;
+    g.sea = sea.data();
+  }
   // Fresh grids are set by the team (their pages are zeroed by the kernel
   // on first touch: serial work otherwise).
   const int64_t cells = int64_t(in.size());
   Heightfield out = like(in);
 #pragma omp parallel for schedule(static)
   for (int64_t i = 0; i < cells; ++i) out.data()[i] = in.data()[i];
+  // The expert rain and scree passes move material cell to cell: what they
+  // lay on the sea floor, the sea carries away. And no land is cut below
+  // the sea, its base level (the model's change, resampled from its coarser
+  // grid, and creep on the detail could take a coastal cell a little below).
+  auto keep_sea = [&] {
+    if (!g.sea) return;
+    const float floor = float(level);
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(in.size()); ++i)
+      out.data()[i] = sea[i] ? in.data()[i] : std::max(out.data()[i], floor);
+  };
   // Progress: the processes share the bar by their cost, in grid passes
   // (a fluvial step or a model step costs about 20 hydraulic passes).
   const double model = c.model.strength * c.model.duration > 0 ? 20.0 * 24 : 0.0;
@@ -138,6 +160,7 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     });
   if (c.thermal.iterations > 0)
     run(c.thermal.iterations, [&](const Progress& p) { thermal(g, out.data(), c.thermal, p); });
+  keep_sea();
   if (maps) {
     // The area on the surface as it would drain with its pits filled (a
     // lake's cells all carry what flows through it), by multiple flow

@@ -21,6 +21,7 @@
 #include "core/heightfield.hpp"
 #include "core/progress.hpp"
 #include "erosion/d8_grid.hpp"
+#include "erosion/sea.hpp"
 
 namespace ft::erosion {
 
@@ -95,6 +96,10 @@ struct ErosionConfig {
   FluvialConfig fluvial;
   HydraulicConfig hydraulic;
   ThermalConfig thermal;
+  // The sea (sea.hpp): its cells are base levels that no process changes.
+  Sea sea = Sea::kNone;
+  double sea_level = 0.0;
+  double sea_fraction = 0.3;
   bool periodic = false;
   int threads = 0;
   Progress progress;

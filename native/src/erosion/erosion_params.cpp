@@ -10,6 +10,7 @@ constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbi212 = 0x2000C;  // uplift_follows_terrain
 constexpr uint32_t kAbi214 = 0x2000E;  // the landscape model and its maps
+constexpr uint32_t kAbi221 = 0x20015;  // the sea
 // The defaults are ErosionConfig's (erosion.hpp); the test
 // ErosionParams.TableDefaultsAreTheConfigDefaults holds them together.
 
@@ -133,6 +134,19 @@ constexpr ft_param_info kRows[] = {
     {ROW(rain_map_height, FT_PARAM_INT32), .flags = kData, .since = kAbi214, .element_kind = -1, .default_value = 0,
      .hard_min = 0, .hard_max = kMaxMapSide, .unit = "samples", .label = "Rain Map Height",
      .doc = "Rows of the rain map, 2..65536 with a map", .methods = kAll},
+    {ROW(sea, FT_PARAM_ENUM), .since = kAbi221, .element_kind = -1, .default_value = FT_WATER_SEA_NONE,
+     .hard_min = FT_WATER_SEA_NONE, .hard_max = FT_WATER_SEA_FRACTION, .soft_min = FT_WATER_SEA_NONE,
+     .soft_max = FT_WATER_SEA_FRACTION, .unit = "", .label = "Sea",
+     .doc = "The sea is a base level like the map's edge: rivers end there and cut no lower, the sediment they "
+            "bring is carried away and the sea floor stays as it is (none, below a height, or below a fraction "
+            "of the samples; every cell at or below it, so a landform's inland sea stays water too)",
+     .methods = kAll, .enum_count = 3, .enum_items = kSeaItems},
+    {ROW(sea_level, FT_PARAM_DOUBLE), .since = kAbi221, .element_kind = -1, .default_value = 0,
+     .hard_min = -kMaxErosionHeight, .hard_max = kMaxErosionHeight, .soft_min = -100, .soft_max = 100,
+     .unit = "world units", .label = "Sea Level", .doc = "Height of the sea (sea 'height')", .methods = kAll},
+    {ROW(sea_fraction, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MAX_EXCLUSIVE, .since = kAbi221, .element_kind = -1,
+     .default_value = 0.3, .hard_min = 0, .hard_max = 1, .soft_min = 0, .soft_max = 0.95, .unit = "",
+     .label = "Sea Fraction", .doc = "Share of the samples under the sea (sea 'fraction')", .methods = kAll},
 };
 FT_PARAM_TABLE_END
 #undef ROW
@@ -177,6 +191,9 @@ void for_each_field_pair(Params& p, Config& c, F f) {
   f(p.thermal_iterations, c.thermal.iterations);
   f(p.talus_degrees, c.thermal.talus_degrees);
   f(p.thermal_rate, c.thermal.rate);
+  f(p.sea, c.sea);
+  f(p.sea_level, c.sea_level);
+  f(p.sea_fraction, c.sea_fraction);
   f(p.periodic, c.periodic);
   f(p.threads, c.threads);
 }

@@ -81,7 +81,7 @@ int route_cell(const D8Grid& g, const float* z, int32_t sink, FlowGraph& graph, 
   int32_t best = int32_t(i);
   int best_k = -1;
   float best_slope = 0.0f;  // drop per unit of spacing
-  const bool base = g.periodic ? int32_t(i) == sink : g.on_edge(x, y);
+  const bool base = g.is_base(int32_t(i), x, y, sink);
   if (!base) {
     for (int k = 0; k < 8; ++k) {
       const int64_t j = g.neighbour(x, y, k);
@@ -122,13 +122,19 @@ void route_steepest(const D8Grid& g, const float* z, int32_t sink, FlowGraph& gr
                                            g.width - 1, off, straight, diag)
                 : steepest_interior<true>(z, graph.random.data(), graph.receiver.data(),
                                           graph.length.data(), row, 1, g.width - 1, off, straight, diag);
-    // A periodic grid's sink is a base level wherever it is: the interior
-    // path routed it like any cell (and counted it if it had no lower
-    // neighbour).
+    // A periodic grid's sink and the sea are base levels wherever they are:
+    // the interior path routed them like any cell (and counted them if they
+    // had no lower neighbour).
     if (g.periodic && sink / g.width == y) {
       pits -= graph.receiver[sink] == sink;
       pits += route_cell(g, z, sink, graph, sink % g.width, y);
     }
+    if (g.sea)
+      for (int32_t x = 1; x < g.width - 1; ++x)
+        if (g.sea[row + x] && int64_t(sink) != row + x) {
+          pits -= graph.receiver[row + x] == int32_t(row + x);
+          route_cell(g, z, sink, graph, x, y);
+        }
   }
   graph.pits = pits;
 }
@@ -200,7 +206,6 @@ void accumulate_area(const D8Grid& g, const FlowGraph& graph, std::vector<double
 
 void reroute_changed(const D8Grid& g, const float* z, int32_t sink, FlowGraph& graph) {
   int64_t pits = graph.pits;
-  auto is_base = [&](int32_t i, int32_t x, int32_t y) { return g.periodic ? i == sink : g.on_edge(x, y); };
   for (const int32_t c : graph.changed) {
     const int32_t cx = c % g.width, cy = c / g.width;
     for (int k = -1; k < 8; ++k) {
@@ -209,7 +214,7 @@ void reroute_changed(const D8Grid& g, const float* z, int32_t sink, FlowGraph& g
       const int32_t x = int32_t(j % g.width), y = int32_t(j / g.width);
       // A cell may be routed more than once (neighbour of several raised
       // cells): count its pit only by the change.
-      pits -= graph.receiver[j] == j && !is_base(int32_t(j), x, y);
+      pits -= graph.receiver[j] == j && !g.is_base(int32_t(j), x, y, sink);
       pits += route_cell(g, z, sink, graph, x, y);
     }
   }

@@ -67,6 +67,7 @@ void draw_rho8(const D8Grid& g, int32_t origin, uint32_t step, FlowGraph& graph)
 // diagonal drops over a run of 2 - r spacings when graph.random is drawn
 // (Rho8), else sqrt 2 (D8).
 // Bounded grids: every edge cell is a base level. Periodic grids: `sink` is.
+// Either way, so is every sea cell (g.sea).
 // An interior cell with no lower neighbour becomes its own receiver and is
 // counted in graph.pits. Rows in parallel: the result does not depend on the
 // thread count.

@@ -16,8 +16,9 @@
 //               spill level, and a deposit never rises above the cell it came
 //               from (less a fan slope): fans and valley fills, never a
 //               spike; what reaches a base level (a bounded grid's edge, a
-//               periodic grid's sink) is carried out;
-//   diffusion   hillslope creep D laplacian(z), implicit.
+//               periodic grid's sink, the sea) is carried out;
+//   diffusion   hillslope creep D laplacian(z), implicit; the sea floor
+//               stays as it is.
 // The erosion mask scales detachment, talus and diffusion's lowering; the
 // deposit goes wherever the sediment flows.
 //
@@ -234,6 +235,11 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
       } else {
         hillslope_diffusion(g, z, c.fluvial.diffusion * dt);
       }
+      if (g.sea) {  // the sea floor stays (creep would spread the coast over it)
+#pragma omp parallel for schedule(static)
+        for (int64_t i = 0; i < int64_t(n); ++i)
+          if (g.sea[i]) z[i] = start[i];
+      }
     }
     progress.report(double(step + 1) / steps);
   }
@@ -278,6 +284,20 @@ void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* bu
   coarse.height = std::max(3, int32_t(std::lround((g.height - edge) / factor)) + edge);
   coarse.spacing = g.spacing * double(g.width - edge) / (coarse.width - edge);
   std::vector<float> before = resample(box_mean(z, g, int32_t(factor / 2)).data(), g, coarse), after = before;
+  // The model's sea: its cells whose nearest terrain sample is sea (their
+  // averaged heights mix in the coast, so the level would miss them).
+  std::vector<uint8_t> coarse_sea;
+  if (g.sea) {
+    coarse_sea.resize(coarse.size());
+    const double sx = double(g.width - edge) / (coarse.width - edge), sy = double(g.height - edge) / (coarse.height - edge);
+    for (int32_t y = 0; y < coarse.height; ++y)
+      for (int32_t x = 0; x < coarse.width; ++x) {
+        const int32_t fx = std::min(int32_t(std::lround(x * sx)), g.width - 1);
+        const int32_t fy = std::min(int32_t(std::lround(y * sy)), g.height - 1);
+        coarse_sea[size_t(y) * coarse.width + x] = g.sea[size_t(fy) * g.width + fx];
+      }
+    coarse.sea = coarse_sea.data();
+  }
   const std::vector<float> coarse_mask = resample_map(c.erosion_mask, coarse.width, coarse.height);
   const std::vector<float> coarse_rain = resample_map(c.rain_map, coarse.width, coarse.height);
   // Shares of the bar: the model's run and the detail run cost about alike.
@@ -288,9 +308,11 @@ void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* bu
   for (size_t i = 0; i < after.size(); ++i) after[i] -= before[i];
   const std::vector<float> change = resample(after.data(), coarse, g);
   // The resampled change lowers only inside the mask (it blurs across the
-  // mask's edge), and never lifts a cell above the input's highest.
+  // mask's edge), never lifts a cell above the input's highest, and leaves
+  // the sea as it is (it blurs across the coast too).
 #pragma omp parallel for schedule(static)
   for (int64_t i = 0; i < int64_t(n); ++i) {
+    if (g.in_sea(size_t(i))) continue;
     const float d = change[i] < 0 && mask_or_null ? change[i] * mask_or_null[i] : change[i];
     z[i] = std::min(top, z[i] + d);
   }

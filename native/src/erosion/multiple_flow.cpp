@@ -45,7 +45,9 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
   auto inner = [&](int32_t x, int32_t y) { return x > 0 && y > 0 && x < w - 1 && y < h - 1; };
   auto nbr = [&](int64_t i, int32_t x, int32_t y, bool in, int k) { return in ? i + offset[k] : g.neighbour(x, y, k); };
   // A base level keeps what reaches it; every other cell gives.
-  auto gives = [&](int64_t i, int32_t x, int32_t y) { return g.periodic ? i != sink : inner(x, y); };
+  auto gives = [&](int64_t i, int32_t x, int32_t y) {
+    return (g.periodic ? i != sink : inner(x, y)) && !g.in_sea(size_t(i));
+  };
 
   // Per cell, in parallel rows (each writes only its own): its higher
   // givers and its lower neighbours as bit masks by direction (the loops

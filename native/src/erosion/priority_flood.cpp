@@ -57,7 +57,7 @@ inline float raised(float z, const float* random, int32_t j) {
 
 int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* random) {
   int64_t raised_cells = 0;
-  priority_flood(g, g.periodic ? std::vector<int32_t>{sink} : edge_cells(g), z, [&](int32_t c, int32_t j) {
+  priority_flood(g, outlet_cells(g, sink), z, [&](int32_t c, int32_t j) {
     if (z[j] > z[c]) return false;
     z[j] = raised(z[c], random, j);
     ++raised_cells;
@@ -73,9 +73,7 @@ void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph
     graph.closed.assign(n, 0);
     graph.stamp = 0;
   }
-  auto is_outlet = [&](int32_t c) {
-    return g.periodic ? c == sink : g.on_edge(c % g.width, c / g.width);
-  };
+  auto is_outlet = [&](int32_t c) { return g.is_base(c, sink); };
   std::vector<int32_t> pits;
   for (size_t i = 0; i < n; ++i)
     if (graph.receiver[i] == int32_t(i) && !is_outlet(int32_t(i))) pits.push_back(int32_t(i));

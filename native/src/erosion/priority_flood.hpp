@@ -28,6 +28,16 @@ inline std::vector<int32_t> edge_cells(const D8Grid& g) {
   return cells;
 }
 
+// Every base level, in seeding order: the edge (bounded) or `sink`
+// (periodic), then the sea's cells in index order.
+inline std::vector<int32_t> outlet_cells(const D8Grid& g, int32_t sink) {
+  std::vector<int32_t> cells = g.periodic ? std::vector<int32_t>{sink} : edge_cells(g);
+  if (g.sea)
+    for (size_t i = 0; i < g.size(); ++i)
+      if (g.sea[i]) cells.push_back(int32_t(i));
+  return cells;
+}
+
 // Floods the grid from `seeds` (a cell listed twice counts once), keyed by
 // `key` (the seeds' keys are read as they are seeded). Every other reachable
 // cell j is reached once, from the neighbour c taken out first:

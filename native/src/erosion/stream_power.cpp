@@ -40,6 +40,9 @@ std::vector<float> uplift_per_step(const D8Grid& g, const float* z0, const Fluvi
   for (int64_t i = 0; i < int64_t(n); ++i)
     lift[i] = float(c.uplift_follows_terrain ? scale * (double(z0[i]) - base) : u);
   if (g.periodic) lift[size_t(periodic_sink(g, z0))] = 0.0f;  // the torus's outlet stays
+  if (g.sea)
+    for (size_t i = 0; i < n; ++i)
+      if (g.sea[i]) lift[i] = 0.0f;  // and so does the sea
   return lift;
 }
 
@@ -81,7 +84,8 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
           // An outlet drains to the sea beyond the edge, at the base level one
           // spacing away: edges wear down with the land instead of standing
           // as walls at their fractal heights.
-          if (!g.periodic && z[i] > base) z[i] = (z[i] + edge_f(i) * base) / (1.0f + edge_f(i));
+          if (!g.periodic && !g.in_sea(size_t(i)) && z[i] > base)
+            z[i] = (z[i] + edge_f(i) * base) / (1.0f + edge_f(i));
           continue;
         }
         if (lake_floor(z[i], z[r])) continue;
@@ -90,11 +94,11 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
       }
     if (c.diffusion > 0.0) {
       // Lake floors keep their height (refilling the dents would cost more
-      // than the rest of the step).
+      // than the rest of the step), and so does the sea floor.
 #pragma omp parallel for schedule(static)
       for (int64_t i = 0; i < int64_t(n); ++i) {
         const int32_t r = graph.receiver[i];
-        saved[i] = r != i && lake_floor(z[i], z[r]) ? z[i] : NAN;
+        saved[i] = (r != i && lake_floor(z[i], z[r])) || g.in_sea(size_t(i)) ? z[i] : NAN;
       }
       hillslope_diffusion(g, z, c.diffusion * c.dt);
 #pragma omp parallel for schedule(static)

@@ -1,7 +1,6 @@
 // Hydrology: the water of a terrain as objects. Above erosion/ (whose flow
-// graph and Priority-Flood it reuses) and polyline/ (Nikulin's FPL for
+// graph, Priority-Flood and sea it reuses) and polyline/ (Nikulin's FPL for
 // meanders):
-//   sea.cpp       cells below a sea level connected to the map's edge;
 //   lakes.cpp     depressions filled to their spill level, labelled, measured;
 //   lake_rings.cpp shorelines by marching squares;
 //   rivers.cpp    channel heads, segments, Strahler orders, hydraulic geometry;
@@ -18,10 +17,11 @@
 #include "core/polyline_set.hpp"
 #include "core/progress.hpp"
 #include "erosion/d8_grid.hpp"
+#include "erosion/sea.hpp"
 
 namespace ft::hydrology {
 
-enum class Sea : int32_t { kNone = 0, kHeight = 1, kFraction = 2 };
+using erosion::Sea;  // erosion/sea.hpp: the sea is a base level of erosion too
 enum class RiverEnd : int32_t { kConfluence = 0, kSea = 1, kLake = 2, kEdge = 3, kSink = 4 };
 
 struct HydrologyConfig {
@@ -87,11 +87,10 @@ struct RiverNetwork {
 // by from_c; these are the ones that depend on the terrain).
 void validate(const HydrologyConfig& c, const Heightfield& hf);
 
-// The sea's height (NaN without a sea) and the sea cells: below it and
-// connected to the map's edge (periodic: to the lowest sample) through cells
-// below it. An enclosed depression below the sea level is not sea.
-double sea_level_of(const HydrologyConfig& c, const Heightfield& hf);
-std::vector<uint8_t> sea_cells(const erosion::D8Grid& g, const float* z, double level);
+// The sea's height (NaN without a sea); its cells are erosion::sea_cells.
+inline double sea_level_of(const HydrologyConfig& c, const Heightfield& hf) {
+  return erosion::sea_height(c.sea, c.sea_level, c.sea_fraction, hf);
+}
 
 // Fills every depression to its spill level (Priority-Flood from the base
 // levels: the bounded map's edge, the sea, the declared sinks, or a periodic

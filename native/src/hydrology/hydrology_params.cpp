@@ -1,5 +1,7 @@
 #include "hydrology/hydrology_params.hpp"
 
+#include "erosion/erosion_params.hpp"
+
 #include <cfloat>
 #include <type_traits>
 
@@ -10,13 +12,6 @@ constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbi215 = 0x2000F;
 constexpr double kBig = 1e12;  // areas and heights: any sane world
-
-constexpr ft_param_enum_item kSeas[] = {
-    {FT_WATER_SEA_NONE, "NONE", "None", "No sea: rivers end at the map's edge, in lakes or at sinks"},
-    {FT_WATER_SEA_HEIGHT, "HEIGHT", "Height", "The sea is below a height (connected to the map's edge)"},
-    {FT_WATER_SEA_FRACTION, "FRACTION", "Fraction",
-     "The sea is below the height with that fraction of the samples below it (connected to the map's edge)"},
-};
 
 // The defaults are HydrologyConfig's (hydrology.hpp); the test
 // HydrologyParams.TableDefaultsAreTheConfigDefaults holds them together.
@@ -33,8 +28,10 @@ constexpr ft_param_info kRows[] = {
     {ROW(sea, FT_PARAM_ENUM), .since = kAbi215, .element_kind = -1, .default_value = FT_WATER_SEA_NONE,
      .hard_min = FT_WATER_SEA_NONE, .hard_max = FT_WATER_SEA_FRACTION, .soft_min = FT_WATER_SEA_NONE,
      .soft_max = FT_WATER_SEA_FRACTION, .unit = "", .label = "Sea",
-     .doc = "Where the sea is: none, below a height, or below a fraction of the samples", .methods = kAll,
-     .enum_count = 3, .enum_items = kSeas},
+     .doc = "Where the sea is: none (rivers end at the map's edge, in lakes or at sinks), below a height, or "
+            "below a fraction of the samples; connected to the map's edge (an enclosed basin below it is a lake)",
+     .methods = kAll,
+     .enum_count = 3, .enum_items = erosion::kSeaItems},
     {ROW(sea_level, FT_PARAM_DOUBLE), .since = kAbi215, .element_kind = -1, .default_value = 0, .hard_min = -kBig,
      .hard_max = kBig, .soft_min = -100, .soft_max = 100, .unit = "world units", .label = "Sea Level",
      .doc = "Height of the sea (sea 'height'); must lie within the terrain's heights", .methods = kAll},

@@ -76,7 +76,7 @@ RiverNetwork extract_rivers(const Heightfield& hf, const HydrologyConfig& c) {
 
   // 1. The sea and the lakes.
   const double sea_level = sea_level_of(c, hf);
-  const std::vector<uint8_t> sea = sea_cells(g, z, sea_level);
+  const std::vector<uint8_t> sea = erosion::sea_cells(g, z, sea_level);
   std::vector<int32_t> sinks;
   for (size_t k = 0; k < c.sinks.size(); k += 2)
     sinks.push_back(int32_t(std::lround(c.sinks[k + 1] / g.spacing)) * g.width +

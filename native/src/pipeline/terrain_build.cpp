@@ -148,6 +148,13 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
     // One rule for every front end: a terrain that tiles erodes as a torus.
     e.periodic = terrain::tiles_periodically(t);
     e.threads = p.threads;
+    if (t.sea != FT_SEA_NONE) {
+      // The landform's sea is erosion's base level: rivers end in it and its
+      // floor stays flat (before, the rivers' sediment built it up into sand
+      // flats and specks, and the rivers' sea had to be lifted to find it).
+      e.sea = FT_WATER_SEA_HEIGHT;
+      e.sea_level = sea_z;
+    }
     Span erosion_span = span(kErosionWeight);
     e.progress = &Span::call, e.progress_user = &erosion_span;
     hf = erode_terrain(hf, e, e.periodic ? overlap : 0, maps);
@@ -155,15 +162,11 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
   if (rivers) {
     // The rivers of what was made, on the torus it was eroded on.
     if (t.sea != FT_SEA_NONE) {
-      // The rivers' sea is the landform's flat sea, as a height: erosion lays
-      // sediment on its floor (an eroded island, 69% of its cells flattened at
-      // 0: half of them within 1e-9 of it, 80% within 2e-4 of the relief, 95%
-      // within 5e-3), so the level takes 1e-3 of the relief above it; at the
-      // bare level (or a fraction of the eroded heights) most of the sea was
-      // land and the rivers ran on across its floor into hundreds of lakes.
+      // The rivers' sea is the landform's flat sea, as a height (a fraction
+      // of the eroded heights would move it), which erosion left as it was.
       const HeightStats st = hf.stats();
       rc.sea = hydrology::Sea::kHeight;
-      rc.sea_level = std::clamp(sea_z + 1e-3 * (st.max - st.min), double(st.min), double(st.max));
+      rc.sea_level = std::clamp(sea_z, double(st.min), double(st.max));
     }
     Span rivers_span = span(kRiversWeight);
     rc.progress = Progress(&Span::call, &rivers_span);

@@ -1,34 +1,26 @@
-// The sea: cells below a sea level that reach the map's edge through cells
-// below it (a flood from the edge). An enclosed depression below the sea
-// level is left to the lakes.
+// The sea (see sea.hpp): a flood from the map's edge through the cells at or
+// below its level.
+#include "erosion/sea.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 
-#include "core/error.hpp"
-#include "hydrology/hydrology.hpp"
+namespace ft::erosion {
 
-namespace ft::hydrology {
-
-double sea_level_of(const HydrologyConfig& c, const Heightfield& hf) {
-  if (c.sea == Sea::kNone || hf.size() == 0) return std::numeric_limits<double>::quiet_NaN();
-  if (c.sea == Sea::kHeight) return c.sea_level;
-  // The sample with sea_fraction of the samples below it: the landform's
-  // convention (terrain/landform.cpp apply_sea), so a terrain made with
-  // --sea-fraction F and its rivers with --sea-fraction F agree.
+double sea_height(Sea sea, double level, double fraction, const Heightfield& hf) {
+  if (sea == Sea::kNone || hf.size() == 0) return std::numeric_limits<double>::quiet_NaN();
+  if (sea == Sea::kHeight) return level;
   std::vector<float> z(hf.data(), hf.data() + hf.size());
-  const size_t k = std::min(z.size() - 1, size_t(c.sea_fraction * double(z.size())));
+  const size_t k = std::min(z.size() - 1, size_t(fraction * double(z.size())));
   std::nth_element(z.begin(), z.begin() + std::ptrdiff_t(k), z.end());
   return double(z[k]);
 }
 
-std::vector<uint8_t> sea_cells(const erosion::D8Grid& g, const float* z, double level) {
+std::vector<uint8_t> sea_cells(const D8Grid& g, const float* z, double level) {
   const size_t n = g.size();
   std::vector<uint8_t> sea(n, 0);
   if (!std::isfinite(level)) return sea;
-  // Below the level, or at it: a sea made by a landform is flat at exactly
-  // its level.
   auto wet = [&](size_t i) { return double(z[i]) <= level; };
   std::vector<int32_t> todo;
   auto seed = [&](size_t i) {
@@ -54,4 +46,4 @@ std::vector<uint8_t> sea_cells(const erosion::D8Grid& g, const float* z, double 
   return sea;
 }
 
-}  // namespace ft::hydrology
+}  // namespace ft::erosion
