@@ -4,7 +4,8 @@
 
 Builds a terrain with the fracterra add-on (installed, or straight from this
 source tree with the library from build/native), gives it a
-material by height and slope (the add-on's point attributes), a sea plane, a
+material by height and slope (the add-on's point attributes), eroded, with its
+rivers and lakes (Rivers and Lakes), a sea plane, a
 sun, a sky graded from zenith to haze and a camera, adds a branching fractal
 lightning bolt and a river-like fractal polyline over it, saves scene.blend,
 renders preview.png with Cycles (small and few samples: seconds on a CPU) and
@@ -57,6 +58,9 @@ def parse_args():
     p.add_argument("--size", type=float, default=20.0, help="terrain extent in metres (default 20)")
     p.add_argument("--sea-level", type=float, default=0.3,
                    help="flatten below this height and add water (default 0.3: the plain is under the sea)")
+    p.add_argument("--erode", default="VALLEYS", choices=["NONE", "VALLEYS", "RAIN", "SCREE", "LAND", "BADLANDS"],
+                   help="erosion preset after generating (default VALLEYS: Gentle Valleys; the sea is its base level)")
+    p.add_argument("--no-rivers", action="store_true", help="no Rivers and Lakes on the terrain")
     p.add_argument("--engine", default="CYCLES", choices=["CYCLES", "BLENDER_EEVEE"],
                    help="renderer (default CYCLES: works without a GPU)")
     p.add_argument("--no-polylines", action="store_true", help="terrain only")
@@ -219,8 +223,16 @@ def main():
     # to a plain), with the sea over the plain: an island, as in the POV-Ray demo.
     if args.sea_level is not None:
         kw.update(sea="HEIGHT", sea_level=args.sea_level)
-    bpy.ops.mesh.fracterra_terrain_add(**kw)
+    bpy.ops.mesh.fracterra_terrain_add(erode_preset=args.erode, **kw)
     terrain = bpy.context.active_object
+    if not args.no_rivers:
+        # Rivers as curves as wide as their discharge, lakes as water at their
+        # levels, all parented to the terrain (stored with it: Regenerate
+        # retraces them).
+        result = bpy.ops.object.fracterra_rivers()
+        if result != {"FINISHED"}:
+            raise RuntimeError(f"Rivers and Lakes: {result}")
+        bpy.context.view_layer.objects.active = terrain
     print(f"20_blender_scene: terrain {len(terrain.data.vertices)} vertices in {time.perf_counter() - t0:.2f} s")
     mat = terrain_material()
     zs = [v.co.z for v in terrain.data.vertices]

@@ -134,9 +134,9 @@ constexpr ft_param_info kRows[] = {
     {ROW(rain_map_height, FT_PARAM_INT32), .flags = kData, .since = kAbi214, .element_kind = -1, .default_value = 0,
      .hard_min = 0, .hard_max = kMaxMapSide, .unit = "samples", .label = "Rain Map Height",
      .doc = "Rows of the rain map, 2..65536 with a map", .methods = kAll},
-    {ROW(sea, FT_PARAM_ENUM), .since = kAbi221, .element_kind = -1, .default_value = FT_WATER_SEA_NONE,
-     .hard_min = FT_WATER_SEA_NONE, .hard_max = FT_WATER_SEA_FRACTION, .soft_min = FT_WATER_SEA_NONE,
-     .soft_max = FT_WATER_SEA_FRACTION, .unit = "", .label = "Sea",
+    {ROW(sea, FT_PARAM_ENUM), .since = kAbi221, .element_kind = -1, .default_value = int32_t(Sea::kNone),
+     .hard_min = int32_t(Sea::kNone), .hard_max = int32_t(Sea::kFraction), .soft_min = int32_t(Sea::kNone),
+     .soft_max = int32_t(Sea::kFraction), .unit = "", .label = "Sea",
      .doc = "The sea is a base level like the map's edge: rivers end there and cut no lower, the sediment they "
             "bring is carried away and the sea floor stays as it is (none, below a height, or below a fraction "
             "of the samples; every cell at or below it, so a landform's inland sea stays water too)",

@@ -6,18 +6,18 @@
 #include "core/param_table.hpp"
 #include "erosion/erosion.hpp"
 #include "fracterra/erosion.h"
-#include "fracterra/hydrology.h"
 
 namespace ft::erosion {
 
 const ParamTable& erosion_param_table();
 
-// The sea's choices, for erosion's table and the rivers' (hydrology/).
+// The sea's choices, for erosion's table and the rivers' (hydrology/): the
+// values of Sea (sea.hpp), which are those of FT_WATER_SEA_* (hydrology.h).
 inline constexpr ft_param_enum_item kSeaItems[] = {
-    {FT_WATER_SEA_NONE, "NONE", "None", "No sea"},
-    {FT_WATER_SEA_HEIGHT, "HEIGHT", "Height", "The sea is below a height"},
-    {FT_WATER_SEA_FRACTION, "FRACTION", "Fraction", "The sea is below the height with that fraction of the "
-                                                    "samples below it"},
+    {int32_t(Sea::kNone), "NONE", "None", "No sea"},
+    {int32_t(Sea::kHeight), "HEIGHT", "Height", "The sea is below a height"},
+    {int32_t(Sea::kFraction), "FRACTION", "Fraction", "The sea is below the height with that fraction of the "
+                                                      "samples below it"},
 };
 
 // Between the C struct and the configuration (fields the struct lacks keep

@@ -12,6 +12,8 @@ constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbi215 = 0x2000F;
 constexpr double kBig = 1e12;  // areas and heights: any sane world
+static_assert(int32_t(Sea::kNone) == FT_WATER_SEA_NONE && int32_t(Sea::kHeight) == FT_WATER_SEA_HEIGHT &&
+              int32_t(Sea::kFraction) == FT_WATER_SEA_FRACTION, "erosion's Sea is the C ABI's ft_water_sea");
 
 // The defaults are HydrologyConfig's (hydrology.hpp); the test
 // HydrologyParams.TableDefaultsAreTheConfigDefaults holds them together.
