@@ -228,7 +228,9 @@ def main():
     if not args.no_rivers:
         # Rivers as curves as wide as their discharge, lakes as water at their
         # levels, all parented to the terrain (stored with it: Regenerate
-        # retraces them).
+        # retraces them). Wider than the library's default width coefficient
+        # (0.03 world units), so that they read at the preview's size.
+        terrain.fracterra_terrain.rivers_width_coefficient = 0.08
         result = bpy.ops.object.fracterra_rivers()
         if result != {"FINISHED"}:
             raise RuntimeError(f"Rivers and Lakes: {result}")
