@@ -11,8 +11,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${FT_ASAN_BUILD_DIR:-build-asan}
-# Which unit-test programs: FT_ASAN_UNIT_TESTS="all" for every one (about
-# 6 minutes more on 2 cores); by default the C ABI suites (always), the fuzz
+# Which unit-test programs: FT_ASAN_UNIT_TESTS="all" for every one (19
+# minutes for the whole script on a loaded machine, 2026-11-26); by default the C ABI suites (always), the fuzz
 # replays (always), and the programs below: bad input, the erosion watchdog
 # and the raster readers, where memory errors would hide. The Release build
 # runs every test without the sanitizers.
