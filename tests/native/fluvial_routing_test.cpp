@@ -154,3 +154,63 @@ TEST(FluvialRouting, AFilledFlatDrainsAlongWanderingPaths) {
 
 }  // namespace
 }  // namespace ft::erosion
+
+namespace ft::erosion {
+namespace {
+
+// The erosion fuzzer's crash of 2026-11-27 (tests/fuzz/regressions/
+// capi_erosion/periodic_13x3_diffusion_8e13): a flat 13 x 3 torus whose
+// diffusion factor was 8e13 became NaN in the cyclic solve (Sherman-Morrison
+// in float), and NaN cells are pits no fill removes: FT_ERR_INTERNAL.
+TEST(FluvialRouting, AFlatNarrowTorusDrainsToItsSink) {
+  for (int32_t h : {3, 4, 5})
+    for (int32_t w : {3, 13}) {
+      D8Grid g;
+      g.width = w, g.height = h, g.periodic = true;
+      std::vector<float> z(g.size(), 0.0f);
+      FlowGraph graph;
+      draw_rho8(g, 0, 0, graph);
+      const int32_t sink = periodic_sink(g, z.data());
+      ASSERT_NO_THROW(route_and_fill(g, z.data(), sink, graph)) << w << " x " << h;
+      EXPECT_EQ(graph.pits, 0) << w << " x " << h;
+    }
+  // The fuzzer's settings: 19 steps whose diffusion factor D dt / spacing^2
+  // is 8e13 (a world 2.4e-15 across).
+  D8Grid g;
+  g.width = 13, g.height = 3, g.periodic = true, g.spacing = std::pow(10.0, -14.625) / 12;
+  std::vector<float> z(g.size(), 0.0f);
+  FluvialConfig c;
+  c.steps = 19;
+  c.dt = 1e-3;
+  c.erodibility = 2e-4 * std::pow(10.0, -7.5);
+  c.diffusion = 1e-7 * std::pow(10.0, -7.5);
+  c.uplift = 1e-6 * std::pow(10.0, -7.125);
+  c.uplift_follows_terrain = true;
+  EXPECT_NO_THROW(fluvial(g, z.data(), c, Progress()));
+}
+
+// Creep on a torus conserves the volume and stays finite at any factor:
+// the cyclic solve in float lost 1e-4 of a 4097-sample line's mean at
+// r = 1e4 and gave NaN at 1e14 (hillslope_diffusion.cpp).
+TEST(FluvialRouting, CreepOnATorusKeepsItsMeanAtAnyRate) {
+  for (int32_t len : {3, 4, 13, 64, 513, 4097})
+    for (double r : {1e-2, 1.0, 1e2, 1e4, 1e6, 1e8, 1e10, 1e14, 1e20}) {
+      D8Grid g;
+      g.width = len, g.height = len % 2 ? 5 : 64, g.periodic = true;
+      std::vector<float> z(g.size());
+      for (size_t i = 0; i < z.size(); ++i) z[i] = float(std::sin(double(i) * 0.7) + 0.01 * double(i));
+      double before = 0, after = 0;
+      for (float v : z) before += v;
+      hillslope_diffusion(g, z.data(), r);
+      for (float v : z) {
+        ASSERT_TRUE(std::isfinite(v)) << len << " x " << g.height << " at r " << r;
+        after += v;
+      }
+      // Float storage of each sample: ~6e-8 of the largest, summed.
+      EXPECT_NEAR(after / double(z.size()), before / double(z.size()), 1e-6 * std::max(1.0, std::fabs(before) / double(z.size())))
+          << len << " x " << g.height << " at r " << r;
+    }
+}
+
+}  // namespace
+}  // namespace ft::erosion
