@@ -11,6 +11,7 @@ constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbi212 = 0x2000C;  // uplift_follows_terrain
 constexpr uint32_t kAbi214 = 0x2000E;  // the landscape model and its maps
 constexpr uint32_t kAbi221 = 0x20015;  // the sea
+constexpr double kMaxRainPassValue = 1e6;
 // The defaults are ErosionConfig's (erosion.hpp); the test
 // ErosionParams.TableDefaultsAreTheConfigDefaults holds them together.
 
@@ -56,13 +57,17 @@ constexpr ft_param_info kRows[] = {
     {ROW(hydraulic_dt, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.02, .hard_min = 1e-6, .hard_max = 1,
      .soft_min = 0.005, .soft_max = 0.05, .unit = "seconds", .label = "Rain Pass Length",
      .doc = "Seconds per extra rain pass", .methods = kAll},
-    {ROW(rain, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.01, .hard_min = 0, .hard_max = DBL_MAX,
+    // Rain and Water Load end at 1e6: the rain passes compute in float, where
+    // a larger value (the fuzzer's capacity of 1.6e270) became inf and the
+    // heights NaN; far below that, every pass already fills and cuts at its
+    // limits (max_erosion).
+    {ROW(rain, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.01, .hard_min = 0, .hard_max = kMaxRainPassValue,
      .soft_min = 0, .soft_max = 0.05, .unit = "world units", .label = "Rain per Pass",
      .doc = "Water depth added to every cell per extra rain pass", .methods = kAll},
     {ROW(evaporation, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.02, .hard_min = 0, .hard_max = 1,
      .soft_min = 0, .soft_max = 0.2, .unit = "", .label = "Evaporation",
      .doc = "Fraction of the water evaporated per extra rain pass", .methods = kAll},
-    {ROW(capacity, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 1, .hard_min = 0, .hard_max = DBL_MAX,
+    {ROW(capacity, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 1, .hard_min = 0, .hard_max = kMaxRainPassValue,
      .soft_min = 0, .soft_max = 5, .unit = "", .label = "Water Load",
      .doc = "How much sediment the rain passes' water carries: capacity constant Kc in C = Kc sin(tilt) |v|", .methods = kAll},
     {ROW(dissolve, FT_PARAM_DOUBLE), .element_kind = -1, .default_value = 0.3, .hard_min = 0, .hard_max = 1,
