@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "core/parallel.hpp"
 
 namespace ft {
 
@@ -21,7 +22,11 @@ HeightStats Heightfield::stats() const {
   const size_t n = size();
   if (n == 0) return s;
   double lo = samples_[0], hi = samples_[0], sum = 0;
-#pragma omp parallel for reduction(min : lo) reduction(max : hi) reduction(+ : sum)
+  // At most the cores other processes leave free (core/parallel.hpp): the
+  // CLI and Blender call this outside any stage that sets its threads, and
+  // on a busy machine a full team spin-waits at each of its barriers.
+  const int team = resolve_threads(0);
+#pragma omp parallel for num_threads(team) reduction(min : lo) reduction(max : hi) reduction(+ : sum)
   for (size_t i = 0; i < n; ++i) {
     const double v = samples_[i];
     lo = std::min(lo, v);
@@ -30,7 +35,7 @@ HeightStats Heightfield::stats() const {
   }
   const double mean = sum / double(n);
   double ss = 0;
-#pragma omp parallel for reduction(+ : ss)
+#pragma omp parallel for num_threads(team) reduction(+ : ss)
   for (size_t i = 0; i < n; ++i) {
     const double d = samples_[i] - mean;
     ss += d * d;
