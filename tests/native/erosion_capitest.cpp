@@ -169,6 +169,42 @@ TEST(ErosionCapi, MapsOfTheWrongSizeOrWithNaNAreRefused) {
   ft_heightfield_free(hf);
 }
 
+// ABI 2.21's sea and the rain passes' limits: each bad value is refused at
+// the C boundary with the field and its range named.
+TEST(ErosionCapi, BadSeaAndRainPassValuesAreRefusedWithTheirRange) {
+  ft_heightfield* hf = terrain(33);
+  struct Case {
+    void (*set)(ft_erosion_params&);
+    const char* words;
+  };
+  const Case cases[] = {
+      {[](ft_erosion_params& p) { p.sea = 3; }, "sea must be one of"},
+      {[](ft_erosion_params& p) { p.sea_fraction = 1.0; }, "sea_fraction must be"},
+      {[](ft_erosion_params& p) { p.sea_level = 1e16; }, "sea_level must be"},
+      {[](ft_erosion_params& p) { p.sea_level = NAN; }, "sea_level must be"},
+      {[](ft_erosion_params& p) { p.capacity = 1e7; }, "capacity must be"},
+      {[](ft_erosion_params& p) { p.rain = 1e7; }, "rain must be"},
+  };
+  for (const Case& c : cases) {
+    ft_erosion_params p;
+    ft_erosion_params_init(&p);
+    c.set(p);
+    ft_heightfield* out = nullptr;
+    EXPECT_EQ(ft_erode(hf, &p, &out, nullptr), FT_ERR_INVALID_ARGUMENT) << c.words;
+    EXPECT_NE(std::string(ft_last_error()).find(c.words), std::string::npos) << ft_last_error();
+    EXPECT_EQ(out, nullptr);
+  }
+  ft_erosion_params p;  // the limits themselves are accepted
+  ft_erosion_params_init(&p);
+  p.sea = FT_WATER_SEA_FRACTION;
+  p.sea_fraction = 0.3;
+  p.capacity = 1e6;
+  ft_heightfield* out = nullptr;
+  EXPECT_EQ(ft_erode(hf, &p, &out, nullptr), FT_OK) << ft_last_error();
+  ft_heightfield_free(out);
+  ft_heightfield_free(hf);
+}
+
 TEST(ErosionCapi, CancelFromTheProgressCallback) {
   ft_heightfield* hf = terrain(65);
   ft_erosion_params p;
