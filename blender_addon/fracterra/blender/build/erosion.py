@@ -10,6 +10,7 @@ import numpy as np
 from ... import core
 from ...core import erosion, params
 from .mesh import SLOPE_ATTRIBUTE
+from .shader_nodes import NodeMaterial
 
 # Point attributes (0..1) beside fracterra_height and fracterra_slope.
 FLOW_ATTRIBUTE = "fracterra_flow"  # log drainage area: 0 on ridges, 1 at the main outlet
@@ -117,50 +118,15 @@ def eroded_material():
     mat = bpy.data.materials.get(MATERIAL_NAME)
     if mat is not None:
         return mat
-    mat = bpy.data.materials.new(MATERIAL_NAME)
-    mat.use_nodes = True
-    nodes, links = mat.node_tree.nodes, mat.node_tree.links
-    bsdf = nodes.get("Principled BSDF")
-    bsdf.inputs["Roughness"].default_value = 0.85
-
-    def attribute(name, y):
-        node = nodes.new("ShaderNodeAttribute")
-        node.attribute_name = name
-        node.location = (-1000, y)
-        return node.outputs["Fac"]
-
-    def ramp(fac, lo, hi, y):
-        """0 below lo, 1 above hi, smooth between (a Map Range, smoothstep)."""
-        node = nodes.new("ShaderNodeMapRange")
-        node.interpolation_type = "SMOOTHSTEP"
-        node.inputs["From Min"].default_value, node.inputs["From Max"].default_value = lo, hi
-        node.location = (-800, y)
-        links.new(fac, node.inputs["Value"])
-        return node.outputs["Result"]
-
-    def mix(fac, a, b, y):
-        node = nodes.new("ShaderNodeMixRGB")
-        node.location = (-500, y)
-        links.new(fac, node.inputs["Fac"])
-        for socket, value in ((node.inputs["Color1"], a), (node.inputs["Color2"], b)):
-            if isinstance(value, tuple):
-                socket.default_value = value
-            else:
-                links.new(value, socket)
-        return node.outputs["Color"]
-
+    m = NodeMaterial(MATERIAL_NAME)
     grass, sediment, rock = (*GRASS, 1.0), (*SEDIMENT, 1.0), (*ROCK, 1.0)
-    channels = ramp(attribute(FLOW_ATTRIBUTE, 200), *CHANNELS, 200)
-    deposits = ramp(attribute(DEPOSIT_ATTRIBUTE, 0), *DEPOSITS, 0)
-    math_max = nodes.new("ShaderNodeMath")
-    math_max.operation = "MAXIMUM"
-    math_max.location = (-650, 100)
-    links.new(channels, math_max.inputs[0])
-    links.new(deposits, math_max.inputs[1])
-    steep = ramp(attribute(SLOPE_ATTRIBUTE, -200), *STEEP, -200)
-    ground = mix(math_max.outputs["Value"], grass, sediment, 100)
-    colour = mix(steep, ground, rock, -100)
-    links.new(colour, bsdf.inputs["Base Color"])
+    channels = m.ramp(m.attribute(FLOW_ATTRIBUTE, 200), *CHANNELS, 200)
+    deposits = m.ramp(m.attribute(DEPOSIT_ATTRIBUTE, 0), *DEPOSITS, 0)
+    wet = m.math("MAXIMUM", channels, deposits, 100)
+    steep = m.ramp(m.attribute(SLOPE_ATTRIBUTE, -200), *STEEP, -200)
+    ground = m.mix(wet, grass, sediment, 100)
+    m.base_color(m.mix(steep, ground, rock, -100))
+    mat = m.material
     return mat
 
 

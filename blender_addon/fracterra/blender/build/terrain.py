@@ -18,6 +18,7 @@ from . import erosion as erosion_ui
 from . import erosion_masks
 from . import falloff_mask
 from . import mesh as mesh_build
+from . import planet as planet_build
 from . import water as water_build
 from .objects import mesh_level, remember_settings
 from ..common.images import image_luminance
@@ -182,19 +183,6 @@ def new_terrain_mesh(values, context, name="Fractal Terrain", frame=None):
     return mesh, f"{summary} in {time.perf_counter() - t0:.2f} s"
 
 
-def _swap_mesh(obj, new):
-    """Gives `obj` the mesh `new` in place of its old one (materials kept; the
-    old mesh goes when nothing else uses it)."""
-    old = obj.data
-    for material in old.materials:
-        new.materials.append(material)
-    obj.data = new
-    if old.users == 0:
-        name = old.name
-        bpy.data.meshes.remove(old)
-        new.name = name
-
-
 def _build_in_place(obj, g, values, settings, groups=None):
     """Build steps of a regenerated terrain. The same grid: its positions are
     rewritten in one step. Another grid: a new mesh is built aside and swapped
@@ -211,7 +199,7 @@ def _build_in_place(obj, g, values, settings, groups=None):
         remember_settings(mesh, settings)
         return _with_water(f"{g.nx} x {g.ny} terrain heights rewritten", build_water(obj, _water_of(g)))
     new, _summary = yield from _build_new_mesh(g, values, mesh.name, settings)
-    _swap_mesh(obj, new)
+    mesh_build.swap_mesh(obj, new)
     erosion_masks.carry_groups(obj, groups or {}, g.nx, g.ny)
     return _with_water(f"{g.nx} x {g.ny} terrain mesh rebuilt", build_water(obj, water_build.take(new)))
 
@@ -252,7 +240,7 @@ def preview_regenerate(obj, context):
 @bpy.app.handlers.persistent
 def final_for_render(*_args):
     """render_pre: a command-line render (blender -b -f) renders each terrain at
-    its Final level, rebuilt here when its mesh holds the Preview. Only in
+    its Final level, rebuilt here when its mesh holds the Preview (and each planet). Only in
     background Blender: there render_pre runs in the main thread before the
     scene is read. In the window, F12 calls it from the render job's own thread,
     where rebuilding a mesh is not safe; the sidebar says Preview then."""
@@ -264,3 +252,6 @@ def final_for_render(*_args):
             if level is not None and level[0] == "Preview":
                 print(f"fracterra: {obj.name}: building the Final level for the render", flush=True)
                 regenerate_object(obj, bpy.context)
+    for obj in planet_build.planets_at_preview():  # planets alike
+        print(f"fracterra: {obj.name}: building the Final level for the render", flush=True)
+        planet_build.regenerate_object(obj, bpy.context)

@@ -12,6 +12,7 @@ from . import erosion_layout
 from ..build.polyline import regenerate_polyline
 from ..build.objects import restore_settings, restoring
 from ..build.terrain import preview_regenerate
+from ..build import planet as planet_build
 
 
 def bpy_property(p, update=None, options=None):
@@ -183,6 +184,24 @@ def copy_settings(src, dst, param_list=None):
     """Copies every setting (terrain unless another list is given) between operators and PropertyGroups."""
     for p in param_list or params.TERRAIN_OBJECT_PARAMS:
         setattr(dst, p.name, getattr(src, p.name))
+
+
+_on_planet_setting_changed = live_update("is_planet", planet_build.preview_regenerate, restore_settings)
+
+
+class FRACTERRA_PG_planet(bpy.types.PropertyGroup):
+    """The settings of a fractal planet, kept on its object for re-editing."""
+
+
+FRACTERRA_PG_planet.__annotations__ = {
+    "is_planet": BoolProperty(name="Fractal Planet", default=False,
+                              description="This object was made by Add > Mesh > Fractal Planet"),
+    "auto_update": BoolProperty(name="Auto Update", default=False,
+                                description="Regenerate the planet at its Preview level whenever a setting "
+                                            "changes (Regenerate builds the Final level)"),
+    "last_error": StringProperty(name="Last Error", default="", options={"SKIP_SAVE"}),
+    **terrain_annotations(_on_planet_setting_changed, params.PLANET_OBJECT_PARAMS),
+}
 
 
 _on_polyline_setting_changed = live_update("is_polyline", regenerate_polyline)
