@@ -184,9 +184,9 @@ class PlanetBadInput(unittest.TestCase):
             lib.ft_set_memory_cap(0)
 
     def test_a_level_blender_cannot_hold_is_refused_before_any_work(self):
-        planet = addon_harness.submodule("core.planet")
-        self.assertIsNone(planet.too_large(11))
-        self.assertIn("a Blender mesh can hold", planet.too_large(12))
+        limits = addon_harness.submodule("core.mesh_limits")
+        self.assertIsNone(limits.cube_sphere_too_large(11))
+        self.assertIn("a Blender mesh can hold", limits.cube_sphere_too_large(12))
 
     def test_settings_out_of_the_library_range_are_reported(self):
         obj = add_planet(level=3, seed=11)

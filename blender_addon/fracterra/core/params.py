@@ -23,7 +23,7 @@ from pathlib import Path
 
 from .binding import PARAMS_KINDS, library
 from .errors import LibraryNotFoundError
-from .mesh_limits import too_large
+from .mesh_limits import cube_sphere_too_large, too_large
 
 # Where the add-on's default differs from the library's, and why: the only
 # place such a difference may be stated (tests/python/test_params.py checks
@@ -405,8 +405,7 @@ _BLENDER_FRACTALIZE_PARAMS = (
 # the library's: the mesh's levels (ft_planet_mesh's argument, not a field) and
 # how the planet stands in the scene.
 def _largest_planet_level():
-    from .planet import too_large as planet_too_large
-    return max(n for n in range(0, 13) if planet_too_large(n) is None)
+    return max(n for n in range(0, 13) if cube_sphere_too_large(n) is None)
 
 
 def _blender_planet_params():

@@ -8,7 +8,7 @@ from ctypes import byref, c_double, c_float, c_int32, c_int64
 from . import params as params_mod
 from .binding import library
 from .errors import TooLargeError
-from .mesh_limits import INT_MAX, RECORD_BYTES
+from .mesh_limits import cube_sphere_too_large
 from .terrain import _ProgressBridge, as_pointer, float_array
 
 
@@ -31,18 +31,6 @@ def mesh_counts(level):
     return v.value, f.value
 
 
-def too_large(level):
-    """None when a Blender mesh can hold the cube-sphere of `level`, else why not
-    (the same 2 GiB-per-array rule as grids, core/mesh_limits.py)."""
-    vertices, quads = 6 * 4 ** level + 2, 6 * 4 ** level
-    counts = {"vertices": vertices, "edges": 2 * quads, "face corners": 4 * quads, "faces": quads}
-    for element, count in counts.items():
-        if count * RECORD_BYTES[element] > INT_MAX:
-            return (f"level {level} has {count:,} {element}, more than the {INT_MAX // RECORD_BYTES[element]:,} "
-                    f"a Blender mesh can hold; use level {level - 1} or less")
-    return None
-
-
 class PlanetMesh:
     """co: 3 floats per vertex (metres, radius + vertical_scale x height);
     loop_vertices: 4 per quad (counter-clockwise from outside); heights: 1 per
@@ -59,7 +47,7 @@ def planet_mesh(values, level, vertical_scale, threads=0, progress=None, topolog
     """The closed cube-sphere of `level` for settings `values` (raises
     TooLargeError when Blender could not hold it; the library refuses a level
     past its memory cap). `topology`: False skips the quads (an in-place rewrite)."""
-    reason = too_large(level)
+    reason = cube_sphere_too_large(level)
     if reason:
         raise TooLargeError(f"Refused before generating: {reason}")
     lib = library()
