@@ -55,6 +55,8 @@ if(FT_BLENDER)
   # The presets and the default beside A.N.T.'s default: every preset builds and renders (tiny).
   ft_blender_example(presets 22_blender_presets.py 180 --max-levels 5 --resolution 48x30 --samples 1)
   set_tests_properties(blender_example_presets PROPERTIES COST 20)
+  # The planet example: Add Fractal Planet (level 5), sun, camera, a tiny render.
+  ft_blender_example(planet 25_blender_planet.py 120 --level 5 --resolution 48x48 --samples 1)
 endif()
 
 # Undo needs a window (background Blender keeps no undo stack): run it under Xvfb.
