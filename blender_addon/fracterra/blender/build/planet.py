@@ -4,7 +4,6 @@ its material by height, slope and latitude, as progress.Jobs (a new mesh, or
 an object's regenerated in place, as terrains are)."""
 
 import math
-import time
 
 import bpy
 import numpy as np
@@ -16,7 +15,7 @@ from . import water as water_build
 from .erosion import GRASS, ROCK, SEDIMENT, STEEP
 from .objects import is_planet, mesh_level, remember_settings
 from .shader_nodes import NodeMaterial
-from ..common.jobs import Job, run_job
+from ..common.jobs import Job, run_timed
 from ..common.preferences import library_threads
 
 MATERIAL_NAME = "Fracterra Planet"
@@ -174,9 +173,7 @@ def regenerate_job(obj, context, preview=False):
 
 def regenerate_object(obj, context, preview=False):
     """Regenerates a planet object here and now (Auto Update, scripts); returns a summary."""
-    t0 = time.perf_counter()
-    summary = run_job(regenerate_job(obj, context, preview))
-    return f"{summary} in {time.perf_counter() - t0:.2f} s"
+    return run_timed(regenerate_job(obj, context, preview))
 
 
 def preview_regenerate(obj, context):

@@ -23,7 +23,7 @@ from . import water as water_build
 from .objects import mesh_level, remember_settings
 from ..common.images import image_luminance
 from ..common.preferences import library_threads
-from ..common.jobs import Job, run_job
+from ..common.jobs import Job, run_job, run_timed
 from ..common.reporting import SettingsError
 
 
@@ -227,9 +227,7 @@ def regenerate_job(obj, context, preview=False):
 
 def regenerate_object(obj, context, preview=False):
     """Regenerates a terrain object here and now (auto-update, scripts); returns a summary."""
-    t0 = time.perf_counter()
-    summary = run_job(regenerate_job(obj, context, preview))
-    return f"{summary} in {time.perf_counter() - t0:.2f} s"
+    return run_timed(regenerate_job(obj, context, preview))
 
 
 def preview_regenerate(obj, context):
