@@ -4,7 +4,7 @@ closed manifold cube-sphere, the sea sphere sits at the library's sea height
 Preview and Final levels, and bad input is reported, never a traceback. Undo
 needs a window: test_undo.py checks the planet's.
 
-Cheap: levels 3 to 5 (386 to 6146 vertices); about 3 s in all."""
+Cheap: levels 2 to 5 (98 to 6146 vertices); about 5 s in all."""
 
 import json
 import math
@@ -154,6 +154,19 @@ class PlanetRegenerate(unittest.TestCase):
         s.auto_update = False
         self.assertEqual(bpy.ops.object.fracterra_planet_regenerate(), {"FINISHED"})  # Build Final
         self.assertEqual(objects.mesh_level(obj), ("Final", 5))
+
+    def test_a_command_line_render_builds_the_final(self):
+        obj = add_planet(level=4, preview_level=2, seed=8)
+        objects = addon_harness.submodule("blender.build.objects")
+        planet_build().regenerate_object(obj, bpy.context, preview=True)
+        self.assertEqual(objects.mesh_level(obj), ("Preview", 2))
+        scene = bpy.context.scene
+        bpy.ops.object.camera_add(location=(0, -5, 0), rotation=(1.5708, 0, 0))
+        scene.camera = bpy.context.active_object
+        scene.render.engine = "BLENDER_WORKBENCH"
+        scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = 16, 16, 100
+        bpy.ops.render.render()
+        self.assertEqual(objects.mesh_level(bpy.data.objects[obj.name]), ("Final", 4))
 
 
 class PlanetBadInput(unittest.TestCase):

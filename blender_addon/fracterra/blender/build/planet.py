@@ -60,15 +60,18 @@ def planet_work(values, context, topology=True):
     level = values["level"]
 
     def work(progress):
-        m = planet_core.planet_mesh(values, level, values["vertical_scale"], threads,
-                                    lambda f: progress(0.85 * f), topology)
-        k = scene_scale(values)
         r = PlanetArrays()
         r.level = level
+        # A sea given as a fraction is a quantile over 2^16 points: found once
+        # here, then given to the mesh as its height (the same flattening).
+        r.sea_height = planet_core.sea_height(values)
+        sea = {"sea": "HEIGHT", "sea_level": r.sea_height} if r.sea_height is not None else {}
+        m = planet_core.planet_mesh({**values, **sea}, level, values["vertical_scale"], threads,
+                                    lambda f: progress(0.85 * f), topology)
+        k = scene_scale(values)
         r.co = (np.frombuffer(m.co, dtype=np.float32) * k).astype(np.float32)
         r.loop_vertices = m.loop_vertices
         heights = np.frombuffer(m.heights, dtype=np.float32).astype(np.float64)
-        r.sea_height = planet_core.sea_height(values)
         base = r.sea_height if r.sea_height is not None else float(heights.min())
         span = float(heights.max()) - base
         r.height = np.clip((heights - base) / span, 0.0, 1.0) if span > 0 else np.zeros_like(heights)
