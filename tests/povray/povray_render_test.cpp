@@ -325,10 +325,11 @@ TEST_F(PovTest, SceneCommandWritesAndRendersTerrainWithPolylines) {
 
 // `fracterra planet --pov`: the isosurface over the equirectangular map and
 // the exact cube-sphere as a mesh2 (--pov-geometry mesh2) are the same globe
-// from the same camera. Inside the disc (both brighter than the background)
-// the two lumas correlate; the mesh2 mirrored (x -> -x in pov_globe_mesh, a
-// wrong axis map) gave r = 0.19 and the isosurface's own map shifted by 90
-// degrees 0.2, against 0.95 here. Both render with no warning. ~4 s.
+// from the same camera. Inside the disc (luma above 0.15 in both: the
+// background is 0.067) the two lumas correlate, r = 0.93; the isosurface
+// mirrored left-right gave 0.34 and seen from 90 degrees further east 0.14,
+// and pov_globe_mesh without its x -> -x (a mirrored globe) 0.58.
+// Both render with no warning. ~5 s.
 TEST_F(PovTest, PlanetMesh2AndIsosurfaceRenderTheSameGlobe) {
   std::string out;
   const std::string planet = "planet --octaves 7 --seed 7 --sea-fraction 0.6 --exaggeration 30 ";
@@ -350,12 +351,13 @@ TEST_F(PovTest, PlanetMesh2AndIsosurfaceRenderTheSameGlobe) {
   for (int y = 0; y < 96; ++y)
     for (int x = 0; x < 96; ++x) {
       const double a = luma(iso, x, y), b = luma(mesh, x, y);
-      if (a < 0.03 || b < 0.03) continue;  // the background, or the limb of one only
+      if (a < 0.15 || b < 0.15) continue;  // the background, or the limb of one only
       sa += a, sb += b, saa += a * a, sbb += b * b, sab += a * b, ++n;
     }
   ASSERT_GT(n, 96 * 96 / 3) << "the globe fills about half the picture";
   const double cov = sab / n - sa / n * sb / n;
   const double r = cov / std::sqrt((saa / n - sa / n * sa / n) * (sbb / n - sb / n * sb / n));
+  std::printf("mesh2 against isosurface: r = %.3f over %d pixels\n", r, n);
   EXPECT_GT(r, 0.8) << "the mesh2 and the isosurface show different globes";
 }
 
