@@ -378,9 +378,11 @@ class DrawTest(unittest.TestCase):
         panels.FRACTERRA_PT_terrain.draw(fake, bpy.context)  # a terrain: Regenerate
         obj.fracterra_measures.kind = ""
         panels.FRACTERRA_PT_measures.draw(fake, bpy.context)
+        self.assertEqual(bpy.ops.mesh.fracterra_planet_add(level=2), {"FINISHED"})
+        panels.FRACTERRA_PT_planet.draw(fake, bpy.context)  # a planet: its Regenerate
         for _, draw in menus.MENUS:
             draw(fake, bpy.context)
-        self.assertEqual(len(operators), 11)
+        self.assertEqual(len(operators), 13)
         for idname in operators:
             self.assertTrue(operator_exists(idname), idname)
         self.assertFalse(operator_exists("mesh.fracterra_no_such_operator"))
