@@ -373,7 +373,7 @@ class DrawTest(unittest.TestCase):
         clear_scene()
         operators = []
         fake = type("P", (), {"layout": RecordingLayout([], operators)})()
-        panels.FRACTERRA_PT_terrain.draw(fake, bpy.context)  # no terrain: the Add button
+        panels.FRACTERRA_PT_terrain.draw(fake, bpy.context)  # no terrain: the Add buttons
         obj = add_terrain(levels=3)
         panels.FRACTERRA_PT_terrain.draw(fake, bpy.context)  # a terrain: Regenerate
         obj.fracterra_measures.kind = ""
@@ -382,7 +382,7 @@ class DrawTest(unittest.TestCase):
         panels.FRACTERRA_PT_planet.draw(fake, bpy.context)  # a planet: its Regenerate
         for _, draw in menus.MENUS:
             draw(fake, bpy.context)
-        self.assertEqual(len(operators), 13)
+        self.assertEqual(len(operators), 14)
         for idname in operators:
             self.assertTrue(operator_exists(idname), idname)
         self.assertFalse(operator_exists("mesh.fracterra_no_such_operator"))

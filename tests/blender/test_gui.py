@@ -160,13 +160,24 @@ def run_from_script(idname):
 
 
 def planet_steps(shot):
-    """Add > Mesh > Fractal Planet from its defaults, as a new user would: its
-    redo panel, the sidebar, a new seed and sea fraction, a higher level
-    cancelled with Esc (the sidebar then shows the level that is there)."""
+    """Add > Mesh > Fractal Planet as a new user would: its redo panel, the
+    sidebar, a new seed and sea fraction, a higher level cancelled with Esc
+    (the sidebar then shows the level that is there)."""
     for obj in list(bpy.data.objects):
         bpy.data.objects.remove(obj)
     bpy.context.scene.cursor.location = (0.0, 0.0, 0.0)
-    yield from choose_from_menu("VIEW3D_MT_mesh_add", 1, shot)
+    # The menu (Fractal Planet under Fractal Terrain) is shot; the
+    # entry is then run as the menu runs it (Return in a second menu is
+    # ignored under Xvfb, see run_from_script).
+    yield from open_menu("VIEW3D_MT_mesh_add", shot)
+    xdotool("key", "Escape")
+    yield STEP
+    # Level 5, not the default 8: Xvfb's software OpenGL redraws a 393 218-vertex
+    # planet in seconds, at every step (the defaults took 88 s here, level 5 a
+    # fraction); docs/planets.md shows the defaults' screenshots.
+    with in_view3d():
+        result = bpy.ops.mesh.fracterra_planet_add("INVOKE_DEFAULT", True, level=5)
+    check(result & {"FINISHED", "RUNNING_MODAL"}, f"Add Fractal Planet: {result}")
     yield from wait_for_jobs()
     planet = bpy.context.active_object
     check(planet is not None and planet.fracterra_planet.is_planet, "Add > Mesh > Fractal Planet added no planet")
@@ -189,11 +200,11 @@ def planet_steps(shot):
     check(vertex_hash(planet) != before, "Regenerate with seed 12 did not change the planet")
     shot("planet-seed-12-sea-half")
     before, level = vertex_hash(planet), settings.level
-    settings.level = 11  # 25 M vertices: long enough to cancel
+    settings.level = 10  # 6.3 M vertices: long enough to cancel
     with in_view3d():
         bpy.ops.object.fracterra_planet_regenerate("INVOKE_DEFAULT", True)
     yield 0.5
-    check(addon_harness.submodule("blender.common.jobs").busy(), "the level 11 planet finished before Esc")
+    check(addon_harness.submodule("blender.common.jobs").busy(), "the level 10 planet finished before Esc")
     shot("planet-progress")
     pointer_to(view3d()[2])
     xdotool("key", "Escape")

@@ -101,6 +101,6 @@ if(FT_BLENDER AND FT_XVFB_RUN AND FT_XDOTOOL)
             ${FT_BLENDER} --factory-startup --window-geometry 0 0 1280 800
             --python ${CMAKE_CURRENT_LIST_DIR}/test_gui.py
             -- --zip ${FT_BLENDER_ZIP} --out ${CMAKE_CURRENT_BINARY_DIR}/blender_gui_shots)
-  set_tests_properties(blender_gui PROPERTIES LABELS blender TIMEOUT 180 COST 65
+  set_tests_properties(blender_gui PROPERTIES LABELS blender TIMEOUT 240 COST 65
     FAIL_REGULAR_EXPRESSION "Traceback|GUI test FAILED")
 endif()

@@ -47,13 +47,16 @@ def is_measurable(obj):
 
 
 def _planet_level(obj):
-    """("Preview" or "Final", level) of what a planet object's mesh holds, or None."""
+    """("Preview" or "Final", level) of what a planet object's mesh holds;
+    ("Other", level) for a cube-sphere of another level (the settings were
+    changed since, and not yet built); None for any other mesh (edited)."""
     settings = params.values_of(obj.fracterra_planet, params.PLANET_OBJECT_PARAMS)
     n = len(obj.data.vertices)
     for kind, values in (("Final", settings), ("Preview", params.planet_preview_values(settings))):
         if n == 6 * 4 ** values["level"] + 2:
             return kind, values["level"]
-    return None
+    level = next((k for k in range(13) if n == 6 * 4 ** k + 2), None)
+    return ("Other", level) if level is not None else None
 
 
 def mesh_level(obj):

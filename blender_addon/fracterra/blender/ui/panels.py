@@ -18,6 +18,7 @@ from ..common.widgets import draw_library_problem, draw_size, draw_wrapped
 TERRAIN_ADD = "mesh.fracterra_terrain_add"
 TERRAIN_REGENERATE = "object.fracterra_terrain_regenerate"
 POLYLINE_REGENERATE = "object.fracterra_polyline_regenerate"
+PLANET_ADD = "mesh.fracterra_planet_add"
 PLANET_REGENERATE = "object.fracterra_planet_regenerate"
 MEASURE = "object.fracterra_measure"
 
@@ -73,7 +74,9 @@ class FRACTERRA_PT_terrain(_SidebarPanel, bpy.types.Panel):
         settings = obj.fracterra_terrain if obj is not None else None
         if settings is None:
             draw_wrapped(layout, "The active object is not a fractal terrain.", width=32)
-            layout.operator(TERRAIN_ADD, text="Add Fractal Terrain", icon="RNDCURVE")
+            col = layout.column(align=True)
+            col.operator(TERRAIN_ADD, text="Add Fractal Terrain", icon="RNDCURVE")
+            col.operator(PLANET_ADD, text="Add Fractal Planet", icon="MESH_UVSPHERE")
             return
         if obj != context.active_object:
             layout.label(text=f"Terrain: {obj.name}", icon="MESH_GRID")
@@ -107,9 +110,10 @@ class FRACTERRA_PT_planet(_SidebarPanel, bpy.types.Panel):
         if level is None:
             col.label(text="Mesh: edited, not its cube-sphere", icon="ERROR")
         else:
-            col.label(text=f"Mesh: {level[0]}, level {level[1]}", icon="MESH_UVSPHERE")
-            if level[0] == "Preview":
-                col.label(text=f"Final: level {settings.level}", icon="RENDER_STILL")
+            kind = "" if level[0] == "Other" else f"{level[0]}, "
+            col.label(text=f"Mesh: {kind}level {level[1]}", icon="MESH_UVSPHERE")
+            if level[0] != "Final":
+                col.label(text=f"Regenerate builds level {settings.level}", icon="RENDER_STILL")
         draw_planet_settings(layout, settings, compact=True)
 
 
