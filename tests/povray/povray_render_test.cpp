@@ -361,6 +361,18 @@ TEST_F(PovTest, PlanetMesh2AndIsosurfaceRenderTheSameGlobe) {
   const double r = cov / std::sqrt((saa / n - sa / n * sa / n) * (sbb / n - sb / n * sb / n));
   std::printf("mesh2 against isosurface: r = %.3f over %d pixels\n", r, n);
   EXPECT_GT(r, 0.95) << "the mesh2 and the isosurface show different globes";
+  // Bad input: a clear message, no scene.
+  out.clear();
+  EXPECT_NE(run_cli(planet + "--pov-geometry mesh2 --level 13 --pov '" + path("bad.pov") + "'", out), 0);
+  EXPECT_NE(out.find("level"), std::string::npos) << out;
+  out.clear();
+  EXPECT_NE(run_cli(planet + "--pov-geometry mesh2 --out '" + path("m.ply") + "' --pov '" + path("bad.pov") + "'",
+                    out), 0);
+  EXPECT_NE(out.find("--pov-geometry mesh2"), std::string::npos) << out;
+  out.clear();
+  EXPECT_NE(run_cli(planet + "--pov-geometry sphere --pov '" + path("bad.pov") + "'", out), 0);
+  EXPECT_NE(out.find("pov-geometry"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(path("bad.pov")));
 }
 
 // `fracterra polyline ... --pov` (asked for, and missing before): a framed
