@@ -57,6 +57,22 @@ TEST_F(Cli, TerrainStatsPrintsOneJsonObjectWithTheRequiredKeys) {
   EXPECT_GE(j["seconds"].get<double>(), 0.0);
 }
 
+// `tiles --engine`: the set, then its engine tiles and sidecar in OUT/ENGINE/;
+// a tile size that does not cut the set is refused before anything is written.
+TEST_F(Cli, TilesForAnEngineGoBesideTheSetAndBadSizesAreRefusedFirst) {
+  const CliRun r = run("tiles --levels 7 --seed 3 --tile 32 --quiet --engine unreal --out " + path("set"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["engine"]["columns"], 4);
+  EXPECT_EQ(j["engine"]["tile_samples"], 32);
+  EXPECT_TRUE(fs::exists(path("set/unreal/terrain_x3_y3.png")));
+  EXPECT_TRUE(fs::exists(path("set/unreal/unreal.json")));
+  const CliRun bad = run("tiles --levels 7 --tile 32 --engine unity --engine-size 100 --out " + path("bad"));
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("sizes that do: 129, 65, 33"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(path("bad")));
+}
+
 TEST_F(Cli, PngPgmAndNpyOutputsRoundTrip) {
   ft_terrain_params p = terrain::default_terrain_params();
   p.levels = 6;
