@@ -73,6 +73,21 @@ TEST_F(Cli, TilesForAnEngineGoBesideTheSetAndBadSizesAreRefusedFirst) {
   EXPECT_FALSE(fs::exists(path("bad")));
 }
 
+// An enum flag takes the label the add-on shows as well as its name:
+// `terrain --erode rugged-mountains` is `--erode land`, bit for bit.
+TEST_F(Cli, EnumFlagsTakeTheAddonsLabels) {
+  const std::string t = "terrain --levels 6 --seed 2 --falloff radial --height-offset 0.5 --threads 1 ";
+  ASSERT_EQ(run(t + "--erode land --out " + path("a.npy")).code, 0);
+  const CliRun label = run(t + "--erode \"Rugged Mountains\" --out " + path("b.npy"));
+  ASSERT_EQ(label.code, 0) << label.err;
+  ASSERT_EQ(run(t + "--erode gentle_valleys --out " + path("c.npy")).code, 0);
+  EXPECT_EQ(io::read_file(path("a.npy")), io::read_file(path("b.npy")));
+  EXPECT_NE(io::read_file(path("a.npy")), io::read_file(path("c.npy")));
+  const CliRun bad = run(t + "--erode mountains --out " + path("d.npy"));
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("land (rugged-mountains)"), std::string::npos) << bad.err;
+}
+
 TEST_F(Cli, PngPgmAndNpyOutputsRoundTrip) {
   ft_terrain_params p = terrain::default_terrain_params();
   p.levels = 6;
