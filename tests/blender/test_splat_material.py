@@ -82,7 +82,9 @@ class SplatColoursAreTheLibrarys(unittest.TestCase):
     def check_attribute(self, obj, rules=None):
         """The attribute is the library's colour map decoded to linear, to
         float32 rounding (the decoding is the same formula in numpy: 1e-6
-        allows the last bit of pow's float64 -> float32)."""
+        allows the last bit of pow's float64 -> float32). Broken on purpose:
+        the attribute left in sRGB, or the erosion maps not passed to the
+        rules, failed here."""
         got = attribute_rgba(obj.data)
         want = splat().linear_from_srgb(library_colors(obj, rules))
         self.assertEqual(got.shape[0], want.shape[0])
@@ -242,8 +244,11 @@ class BlenderAndPovRayLookAlike(unittest.TestCase):
         (1 / 20) x the colour step across that line, which is at most about
         0.3 (grass 0.06 linear to snow 0.85 at a hard edge is smoothed by
         the rules' blends to a few pixels) -> ~0.015. Measured: worst block
-        0.006 (see the printed line). A material that ignored the rules'
-        sRGB -> linear decoding would be off by ~0.2 in grass and rock."""
+        0.0022, mean 0.0010 (the printed line). Broken on purpose: the export
+        decoding the linear colours once more failed at 0.175, the export's
+        colours mirrored in x (a misregistration) at 0.054. Workbench shows the
+        attribute, not the node material: test_an_uneroded_terrain_... checks
+        that the material's Base Color is that attribute."""
         bpy.ops.mesh.fracterra_terrain_add(levels=6, seed=5, erode_preset="LAND")
         obj = bpy.context.active_object
         bpy.ops.object.camera_add(location=(0, -13, 7.5), rotation=(1.05, 0, 0))

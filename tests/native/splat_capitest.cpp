@@ -26,7 +26,7 @@ std::string write_file(const std::string& name, const std::string& text) {
 std::vector<ft_splat_params> layers_of(const ft_splat_rules* rules) {
   int32_t n = 0;
   EXPECT_EQ(ft_splat_rules_layers(rules, nullptr, 0, &n), FT_OK) << ft_last_error();
-  std::vector<ft_splat_params> layers(size_t(n));
+  std::vector<ft_splat_params> layers(static_cast<size_t>(n));
   for (auto& l : layers) l.struct_size = sizeof(ft_splat_params);
   EXPECT_EQ(ft_splat_rules_layers(rules, layers.data(), n, &n), FT_OK) << ft_last_error();
   return layers;
