@@ -8,16 +8,14 @@
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
+#include "cli/splat_sources.hpp"
 #include "core/error.hpp"
-#include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
 #include "hydrology/river_files.hpp"
 #include "io/polyline_io.hpp"
 #include "povray/pov_params.hpp"
 #include "povray/render.hpp"
 #include "povray/scene.hpp"
-#include "splat/rules_json.hpp"
-#include "splat/splat_map.hpp"
 #include "tiles/manifest.hpp"
 #include "tiles/mosaic_vrt.hpp"
 
@@ -68,9 +66,7 @@ pov::TiledTerrain load_tiles(const std::string& dir) {
 // are the file's own, as `fracterra splat` reads them: its recorded world
 // size, else --size, else 10.
 std::vector<float> splat_colors(const SceneOptions& o, Heightfield& hf) {
-  splat::SplatRules rules;
-  if (!o.rules.empty()) rules = splat::read_rules(o.rules);
-  else rules.layers = splat::default_layers();
+  const SplatSources src = read_splat_sources(o.rules, o.maps);
   // The rules' world size for this call only: the rivers below read the recorded one.
   const double recorded = hf.world_size();
   if (recorded <= 0) hf.set_world_size(o.size > 0 ? o.size : 10.0);
@@ -79,15 +75,7 @@ std::vector<float> splat_colors(const SceneOptions& o, Heightfield& hf) {
     double size;
     ~Restore() { hf.set_world_size(size); }
   } restore{hf, recorded};
-  Heightfield deposited, area;
-  splat::SplatInputs in{&hf, nullptr, nullptr};
-  if (!o.maps.empty()) {
-    deposited = erosion::read_erosion_map(o.maps, "deposited");
-    area = erosion::read_erosion_map(o.maps, "drainage_area");
-    in.deposited = &deposited;
-    in.drainage_area = &area;
-  }
-  return splat::splat_colors_linear(in, rules.layers.data(), int32_t(rules.layers.size()));
+  return splat::splat_colors_linear(src.inputs(hf), src.rules.layers.data(), src.layer_count());
 }
 
 int run(SceneOptions& o) {
