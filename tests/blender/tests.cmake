@@ -3,7 +3,7 @@
 find_program(FT_BLENDER blender)
 if(FT_BLENDER)
   set(FT_BLENDER_ZIP ${PROJECT_BINARY_DIR}/blender_addon/fracterra.zip)
-  foreach(name addon missing_library params dem tiles erosion pov_export preview rivers planet)
+  foreach(name addon missing_library params dem tiles erosion pov_export preview rivers planet splat_material)
     set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_${name})
     add_test(NAME blender_${name}
       COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch}
@@ -14,7 +14,8 @@ if(FT_BLENDER)
   endforeach()
   # The installed add-on must use its bundled library, except in the test of a missing one.
   set_tests_properties(blender_addon blender_params blender_dem blender_tiles blender_erosion blender_pov_export
-    blender_preview blender_rivers blender_planet PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
+    blender_preview blender_rivers blender_planet blender_splat_material
+    PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
   # The Erode step is checked against the CLI, another front end of the library's pipeline.
   set_tests_properties(blender_erosion PROPERTIES ENVIRONMENT "FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>")
   # Rivers and Lakes too: the rivers are those `fracterra terrain --rivers` traces.
@@ -33,7 +34,8 @@ if(FT_BLENDER)
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_pov_export
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_preview
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_rivers
-            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_planet)
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_planet
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_splat_material)
   set_tests_properties(blender_scratch_clean PROPERTIES FIXTURES_SETUP blender_scratch LABELS blender)
 endif()
 

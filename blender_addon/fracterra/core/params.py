@@ -317,6 +317,11 @@ def _blender_terrain_params(dyadic):
         Param("falloff_mask_soft", "bool", True, "Soft Edge",
               "Fade the object's outline inward over the Falloff Width (a smoothstep); off: a step at the "
               "outline"),
+        # The terrain's colours (the material's Base Color, the POV-Ray export's texture).
+        Param("splat_rules", "string", "", "Splat Rules",
+              "Layer rules JSON ({\"layers\": [{\"name\": ..., \"slope_min\": ...}]}, as fracterra splat --rules "
+              "reads it) that colour the terrain; blank: the built-in grass, rock, sediment and snow",
+              subtype="FILE_PATH"),
         # Mesh options.
         Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
         Param("smooth", "bool", True, "Smooth Shading", "Shade faces smooth", geometry=True),

@@ -19,6 +19,7 @@ from . import erosion_masks
 from . import falloff_mask
 from . import mesh as mesh_build
 from . import planet as planet_build
+from . import splat_material
 from . import water as water_build
 from .objects import mesh_level, remember_settings
 from ..common.images import image_luminance
@@ -107,13 +108,15 @@ def terrain_work(values, context, topology=True, frame=None, terrain_name=None):
     terrain object, refused as its own mask). `topology`: False when only the
     vertex positions are needed (an in-place rewrite). The erosion mask and
     the rain map are read too (from the terrain's own vertex groups, or
-    images); `work.maps` holds them (erosion_masks.maps_for).
+    images); `work.maps` holds them (erosion_masks.maps_for). The Splat Rules
+    file is read and checked here too (a bad one is refused before the job).
     """
     check_grid(*grid_shape(values))
     reference = reference_for(values)
     mask = falloff_mask.mask_for(values, frame if frame is not None else Matrix.Identity(4),
                                  context.evaluated_depsgraph_get(), terrain_name)
     maps = erosion_masks.maps_for(values, bpy.data.objects.get(terrain_name) if terrain_name else None)
+    rules = splat_material.rules_of(values)
     threads = library_threads(context)
     # The library flattens the sea itself (ft_terrain_params.sea): no floor here.
     world_size, floor = values["world_size"], NO_FLOOR
@@ -128,7 +131,7 @@ def terrain_work(values, context, topology=True, frame=None, terrain_name=None):
     def work(progress):
         # Generation, then the Erode step when the settings ask for it.
         return erosion_ui.generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=mask,
-                                             maps=maps)
+                                             maps=maps, rules=rules)
     work.maps = maps
     return work
 
@@ -146,6 +149,7 @@ def _build_new_mesh(g, values, name, settings=None):
         mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
         yield 0.95
         erosion_ui.set_maps(mesh, g.erosion_maps)
+        splat_material.set_colors(mesh, g.colors)
         remember_settings(mesh, settings if settings is not None else values)
     except BaseException:  # GeneratorExit too: a cancel leaves nothing behind
         bpy.data.meshes.remove(mesh)
@@ -193,6 +197,7 @@ def _build_in_place(obj, g, values, settings, groups=None):
         mesh_build.rewrite_positions(mesh, g.co)
         mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
         erosion_ui.set_maps(mesh, g.erosion_maps)
+        splat_material.set_colors(mesh, g.colors)
         if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
             mesh_build.set_uvs(mesh, g.uv if values["uvs"] else None)
         mesh_build.set_smooth(mesh, values["smooth"])
@@ -200,6 +205,7 @@ def _build_in_place(obj, g, values, settings, groups=None):
         return _with_water(f"{g.nx} x {g.ny} terrain heights rewritten", build_water(obj, _water_of(g)))
     new, _summary = yield from _build_new_mesh(g, values, mesh.name, settings)
     mesh_build.swap_mesh(obj, new)
+    splat_material.give_material(obj.data)  # the old eroded material, carried over, gives way
     erosion_masks.carry_groups(obj, groups or {}, g.nx, g.ny)
     return _with_water(f"{g.nx} x {g.ny} terrain mesh rebuilt", build_water(obj, water_build.take(new)))
 

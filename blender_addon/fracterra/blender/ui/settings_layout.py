@@ -92,6 +92,7 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
             box.prop(data, "reference_height", text="Relief if not georeferenced")
             _prop(box, data, "reference_scale")
     erosion_layout.draw_erosion(col, data)
+    _prop(col.column(align=True), data, "splat_rules")
     sub = col.column(heading="Mesh", align=True)
     _prop(sub, data, "uvs")
     _prop(sub, data, "smooth")
