@@ -30,7 +30,10 @@ extern "C" {
 
 /// How a planet is made (ft_planet_params.method).
 enum {
-  FT_PLANET_FBM = 0         ///< octave noise on the sphere (Quilez; the bases of terrain.h in 3D)
+  FT_PLANET_FBM = 0,        ///< octave noise on the sphere (Quilez; the bases of terrain.h in 3D)
+  FT_PLANET_MIDPOINT = 1    ///< (2.22) Voss's midpoint displacement by subdivision of the cube-sphere: its
+                            ///< heights are the cube-sphere's samples (ft_planet_heights refuses it; the
+                            ///< equirect and icosphere layouts interpolate them). Uses sigma, hurst, seed, sea.
 };
 
 /// Where a planet's sea is (ft_planet_params.sea); heights below it are

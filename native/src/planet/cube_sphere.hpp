@@ -31,6 +31,19 @@ std::array<double, 3> unit_vector(const CubePoint& p);
 bool face_sample(const CubePoint& p, int face, int64_t n, int64_t* i, int64_t* j);
 // The outward normal of face `face` (a unit axis).
 std::array<int, 3> face_normal(int face);
+// The point d n_f + s s_f + t t_f of face `face`'s frame (normal, column and
+// row directions): cube_point(face, i, j, n) is face_point(face, n, 2i - n, 2j - n).
+CubePoint face_point(int face, int64_t d, int64_t s, int64_t t);
+// Sample (i, j) of face `face`'s plane at N = n, one coordinate allowed up to
+// n past the face: the plane folded over that edge onto the next face (the
+// cube net), so (-1, j) is the sample of the next face one row in from the
+// shared edge. Inside the face it is cube_point().
+CubePoint folded_point(int face, int64_t i, int64_t j, int64_t n);
+// The first face (0..5) holding `p` at N = n, and its (i, j) there.
+int locate(const CubePoint& p, int64_t n, int64_t* i, int64_t* j);
+// The face a direction lies on (its largest component's axis and sign) and
+// its continuous face coordinates (s, t) in [-1, 1] (gnomonic).
+int face_of_direction(double x, double y, double z, double* s, double* t);
 
 // Validates level, face and the patch (inside the face's samples).
 void validate_patch(int level, int face, int64_t x0, int64_t y0, int64_t w, int64_t h);
