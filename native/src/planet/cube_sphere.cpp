@@ -129,13 +129,44 @@ Heightfield face_patch(const Planet& planet, int level, int face, int64_t x0, in
   return hf;
 }
 
+void check_vertical_scale(double vertical_scale) {
+  if (!std::isfinite(vertical_scale) || std::fabs(vertical_scale) > 1e6)
+    invalid("vertical_scale must be finite and within +-1e6, got " + format_number(vertical_scale));
+}
+
+std::vector<float> heights_in_rows(const Planet& planet, const Directions& u) {
+  // Rows of 4096 vertices through the parallel row filler (its progress and cancel).
+  const int64_t nv = u.size();
+  const int32_t row = 4096, rows = int32_t((nv + row - 1) / row);
+  std::vector<float> padded(size_t(rows) * row);
+  fill_rows(row, rows, planet.config().threads, planet.config().progress,
+            [&](int32_t r, float* out) {
+              const int64_t b = int64_t(r) * row, m = std::min<int64_t>(row, nv - b);
+              planet.heights(m, u.x.data() + b, u.y.data() + b, u.z.data() + b, out);
+            },
+            padded.data());
+  padded.resize(size_t(nv));
+  return padded;
+}
+
+void place_on_sphere(const Directions& u, const std::vector<float>& h, double radius, double vertical_scale,
+                     Mesh* mesh) {
+  const int64_t nv = u.size();
+  mesh->positions.resize(size_t(3 * nv));
+  for (int64_t v = 0; v < nv; ++v) {
+    const double r = radius + vertical_scale * double(h[size_t(v)]);
+    mesh->positions[size_t(3 * v)] = float(u.x[size_t(v)] * r);
+    mesh->positions[size_t(3 * v + 1)] = float(u.y[size_t(v)] * r);
+    mesh->positions[size_t(3 * v + 2)] = float(u.z[size_t(v)] * r);
+  }
+}
+
 int64_t mesh_vertex_count(int level) { return 6 * (int64_t(1) << (2 * level)) + 2; }
 int64_t mesh_face_count(int level) { return 6 * (int64_t(1) << (2 * level)); }
 
 Mesh cube_sphere_mesh(const Planet& planet, int level, double vertical_scale, std::vector<float>* heights) {
   check_int_range("level", level, 0, kMaxMeshLevel);
-  if (!std::isfinite(vertical_scale) || std::fabs(vertical_scale) > 1e6)
-    invalid("vertical_scale must be finite and within +-1e6, got " + format_number(vertical_scale));
+  check_vertical_scale(vertical_scale);
   const int64_t n = int64_t(1) << level, nv = mesh_vertex_count(level), nf = mesh_face_count(level);
   // positions, unit vectors (3 doubles), heights, indices and the sample
   // map; a midpoint planet's faces and their work too.
@@ -175,10 +206,8 @@ Mesh cube_sphere_mesh(const Planet& planet, int level, double vertical_scale, st
     }
   }
   if (count != nv) fail(FT_ERR_INTERNAL, "cube-sphere mesh: vertex count " + std::to_string(count));
-  // Heights in rows of 4096 vertices, through the same parallel row filler;
-  // a midpoint planet's are its faces' samples.
-  const int32_t row = 4096, rows = int32_t((nv + row - 1) / row);
-  std::vector<float> padded(size_t(rows) * row);
+  // A midpoint planet's heights are its faces' samples.
+  std::vector<float> padded(static_cast<size_t>(nv));
   if (planet.midpoint()) {
     std::vector<float> all(size_t(6 * side * side));
     std::array<float*, 6> out;
@@ -187,24 +216,11 @@ Mesh cube_sphere_mesh(const Planet& planet, int level, double vertical_scale, st
     planet.raise_to_sea(int64_t(all.size()), all.data());
     for (int64_t v = 0; v < nv; ++v) padded[size_t(v)] = all[size_t(first_sample[size_t(v)])];
   } else {
-    fill_rows(row, rows, planet.config().threads, planet.config().progress,
-              [&](int32_t r, float* out) {
-                const int64_t b = int64_t(r) * row, m = std::min<int64_t>(row, nv - b);
-                planet.heights(m, u.x.data() + b, u.y.data() + b, u.z.data() + b, out);
-              },
-              padded.data());
+    padded = heights_in_rows(planet, u);
   }
   padded.resize(size_t(nv));
-  const std::vector<float>& h = padded;
   Mesh mesh;
-  mesh.positions.resize(size_t(3 * nv));
-  const double radius = planet.config().radius;
-  for (int64_t v = 0; v < nv; ++v) {
-    const double r = radius + vertical_scale * double(h[size_t(v)]);
-    mesh.positions[size_t(3 * v)] = float(u.x[size_t(v)] * r);
-    mesh.positions[size_t(3 * v + 1)] = float(u.y[size_t(v)] * r);
-    mesh.positions[size_t(3 * v + 2)] = float(u.z[size_t(v)] * r);
-  }
+  place_on_sphere(u, padded, planet.config().radius, vertical_scale, &mesh);
   mesh.face_sizes.assign(size_t(nf), 4);
   mesh.face_indices.reserve(size_t(4 * nf));
   for (int f = 0; f < 6; ++f) {

@@ -50,6 +50,14 @@ void validate_patch(int level, int face, int64_t x0, int64_t y0, int64_t w, int6
 // The samples (x0 .. x0 + w - 1, y0 .. y0 + h - 1) of face `face` at `level`.
 Heightfield face_patch(const Planet& planet, int level, int face, int64_t x0, int64_t y0, int32_t w, int32_t h);
 
+// Throws unless the mesh exaggeration is finite and within +-1e6.
+void check_vertical_scale(double vertical_scale);
+// An fBm planet's heights at u, in parallel rows (progress, cancel).
+std::vector<float> heights_in_rows(const Planet& planet, const Directions& u);
+// Mesh positions: each direction times radius + vertical_scale x its height.
+void place_on_sphere(const Directions& u, const std::vector<float>& h, double radius, double vertical_scale,
+                     Mesh* mesh);
+
 // Vertex and quad counts of the closed mesh: 6 N^2 + 2 and 6 N^2.
 int64_t mesh_vertex_count(int level);
 int64_t mesh_face_count(int level);
