@@ -233,7 +233,7 @@ TEST(PlanetMidpoint, GreatCircleVariogramGivesHAtAFaceCentreAndNearACorner) {
 
 TEST(PlanetMidpoint, HeightsSpreadAsMuchAsTheFbmPlanets) {
   // sigma means the same for both methods at the default H 0.8: the std of
-  // the heights of a level-7 cube-sphere (all faces) averaged over 16 seeds,
+  // the heights of a level-6 cube-sphere (all faces) averaged over 16 seeds,
   // midpoint against fBm (12 octaves, frequency 1.5), within 15 % (one
   // planet's std varies by ~30 % from seed to seed, its continents are few;
   // 16 seeds give ~8 %). At H 0.5 the midpoint spreads more (the fBm's
@@ -247,7 +247,7 @@ TEST(PlanetMidpoint, HeightsSpreadAsMuchAsTheFbmPlanets) {
       f.method = kMethodFbm;
       for (const PlanetConfig& c : {midpoint(seed, H), f}) {
         double s = 0, s2 = 0, count = 0;
-        for (const Heightfield& hf : whole_faces(Planet(c), 7))
+        for (const Heightfield& hf : whole_faces(Planet(c), 6))
           for (int64_t i = 0; i < int64_t(hf.width()) * hf.height(); ++i)
             s += hf.data()[i], s2 += double(hf.data()[i]) * hf.data()[i], count += 1;
         (c.method == kMethodMidpoint ? sm : sf) += std::sqrt(s2 / count - (s / count) * (s / count)) / 16;
