@@ -212,5 +212,43 @@ TEST(FluvialRouting, CreepOnATorusKeepsItsMeanAtAnyRate) {
     }
 }
 
+// The global depression fill of a large grid is one long call (27 s of a
+// 4097^2 Land run without a report at load 12: docs/erosion.md, Progress).
+// It reports the share of cells done every 2^20 cells and stops at a cancel.
+// 1449^2 white noise (2.1 M cells, pits everywhere: the global fill) gives
+// two reports; taking the progress out of priority_flood gives none.
+TEST(FluvialRouting, TheGlobalFillReportsProgressAndCancels) {
+  D8Grid g;
+  g.width = g.height = 1449;
+  std::vector<float> z(g.size());
+  uniform_fill(5, Counter{0, 0, Stream::kFirstUser}, 0, z.size(), z.data());
+  struct Log {
+    std::vector<double> seen;
+    bool cancel = false;
+  } log;
+  auto record = [](void* user, double f) {
+    auto* l = static_cast<Log*>(user);
+    l->seen.push_back(f);
+    return l->cancel ? 1 : 0;
+  };
+  std::vector<float> a = z;
+  FlowGraph graph;
+  route_filled(g, a.data(), -1, graph, Progress(record, &log));
+  EXPECT_EQ(graph.pits, 0);
+  ASSERT_EQ(log.seen.size(), 2u);
+  EXPECT_DOUBLE_EQ(log.seen[0], double(1 << 20) / double(g.size()));
+  EXPECT_DOUBLE_EQ(log.seen[1], double(2 << 20) / double(g.size()));
+  log = Log{{}, true};
+  std::vector<float> b = z;
+  FlowGraph other;
+  try {
+    route_filled(g, b.data(), -1, other, Progress(record, &log));
+    FAIL() << "a cancel inside the fill was not seen";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), FT_ERR_CANCELLED);
+  }
+  EXPECT_EQ(log.seen.size(), 1u);
+}
+
 }  // namespace
 }  // namespace ft::erosion

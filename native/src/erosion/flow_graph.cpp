@@ -221,7 +221,7 @@ void reroute_changed(const D8Grid& g, const float* z, int32_t sink, FlowGraph& g
   graph.pits = pits;
 }
 
-void route_and_fill(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
+void route_and_fill(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph, const Progress& progress) {
   route_steepest(g, z, sink, graph);
   // Local fills can spill into a neighbouring pit that a later fill raises;
   // another round handles that. A fractal terrain's first step has pits
@@ -230,7 +230,7 @@ void route_and_fill(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
   // one or two cells deep.
   for (int round = 0; graph.pits > 0; ++round) {
     if (round >= 4 || graph.pits * 16 > int64_t(g.size())) {
-      fill_depressions(g, z, sink, graph.random.empty() ? nullptr : graph.random.data());
+      fill_depressions(g, z, sink, graph.random.empty() ? nullptr : graph.random.data(), progress);
       route_steepest(g, z, sink, graph);
       // A global fill leaves every cell a strictly lower neighbour: a pit
       // after it is a bug (or a height that is not finite), and looping
@@ -248,8 +248,8 @@ void route_and_fill(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
   }
 }
 
-void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
-  route_and_fill(g, z, sink, graph);
+void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph, const Progress& progress) {
+  route_and_fill(g, z, sink, graph, progress);
   build_stack(g, graph);
 }
 

@@ -166,9 +166,13 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
       cap[i] = std::numeric_limits<float>::infinity();
     }
     draw_rho8(g, sink, level * uint32_t(kMaxSteps) + uint32_t(step), graph);
-    route_filled(g, filled.data(), sink, graph);
-    // A step of a 4097^2 detail run takes seconds: the bar moves (and a
-    // cancel is seen) within it too, at its phases' rough shares of the time.
+    {
+      // A step of a 4097^2 detail run takes seconds: the bar moves (and a
+      // cancel is seen) within it too, at its phases' rough shares of the
+      // time; the first step's global fill, the longest part, inside it.
+      const ProgressPart routing(progress, double(step) / steps, 0.5 / steps);
+      route_filled(g, filled.data(), sink, graph, routing.progress());
+    }
     progress.report((step + 0.5) / steps);
     // Runs of whole trees are independent: each is walked in stack order
     // (receivers first) or against it (donors first), so the result does
