@@ -10,6 +10,7 @@
 #include "cli/engine_flags.hpp"
 #include "cli/erosion_map_flags.hpp"
 #include "cli/param_flags.hpp"
+#include "core/platform.hpp"
 #include "core/error.hpp"
 #include "erosion/erosion.hpp"
 #include "erosion/erosion_params.hpp"
@@ -81,7 +82,7 @@ Registration reg({"erode", "Erode a heightfield (channels, scree and fans over y
                       if (o->world_size > 0) hf.set_world_size(o->world_size);
                       else if (hf.world_size() <= 0) hf.set_world_size(10.0);
                       const ft_erosion_params e = settings(*o, app, hf);
-                      if (!o->maps.empty()) std::filesystem::create_directories(o->maps);
+                      if (!o->maps.empty()) std::filesystem::create_directories(platform::fs_path(o->maps));
                       erosion::ErosionMaps maps;
                       erosion::MassBudget budget;
                       Stopwatch clock;

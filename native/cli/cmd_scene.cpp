@@ -8,6 +8,7 @@
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
+#include "core/platform.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
 #include "hydrology/river_files.hpp"
@@ -54,7 +55,7 @@ pov::TiledTerrain load_tiles(const std::string& dir) {
   t.height_min = (*m)["height_range"]["min"].get<double>();
   t.height_max = (*m)["height_range"]["max"].get<double>();
   for (const nlohmann::json& e : (*m)["tiles"])
-    t.tiles.push_back({(std::filesystem::path(dir) / e["file"].get<std::string>()).string(), e["x0"].get<int64_t>(),
+    t.tiles.push_back({platform::utf8_of(platform::fs_path(dir) / platform::fs_path(e["file"].get<std::string>())), e["x0"].get<int64_t>(),
                        e["y0"].get<int64_t>(), e["width"].get<int32_t>(), e["height"].get<int32_t>()});
   return t;
 }

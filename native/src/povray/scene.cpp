@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/platform.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/png_image.hpp"
@@ -21,8 +22,8 @@ void grow(Vec3& lo, Vec3& hi, const Vec3& p) {
 }
 
 std::string default_image_path(const std::string& pov_path) {
-  std::filesystem::path p(pov_path);
-  return p.replace_extension(".terrain.png").string();
+  std::filesystem::path p = platform::fs_path(pov_path);
+  return platform::utf8_of(p.replace_extension(".terrain.png"));
 }
 
 const char* kind_name(LineKind k) {
@@ -52,8 +53,8 @@ PolylineSet tapered(const PolylineSet& set, double base) {
 
 // "x.pov" -> "x.colors.png", or beside a given terrain image: "t.png" -> "t.colors.png".
 std::string colors_image_path(const std::string& pov_path, const std::string& image_path) {
-  std::filesystem::path p(image_path.empty() ? pov_path : image_path);
-  return p.replace_extension(".colors.png").string();
+  std::filesystem::path p = platform::fs_path(image_path.empty() ? pov_path : image_path);
+  return platform::utf8_of(p.replace_extension(".colors.png"));
 }
 
 // The terrain colours as an 8-bit sRGB PNG (sRGB spends its 256 steps where
@@ -207,10 +208,10 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
 
   std::string s;
   s += "// fracterra scene" + (p.title.empty() ? std::string() : ": " + comment_text(p.title)) + "\n";
-  s += "// Render: fracterra render " + comment_text(std::filesystem::path(pov_path).filename().string()) +
+  s += "// Render: fracterra render " + comment_text(platform::utf8_of(platform::fs_path(pov_path).filename())) +
        " --width 800 --height 600 --out image.png\n";
   s += "//     or: povray +W800 +H600 +A0.1 " +
-       comment_text(std::filesystem::path(pov_path).filename().string()) + "\n";
+       comment_text(platform::utf8_of(platform::fs_path(pov_path).filename())) + "\n";
   s += "// Axes: fracterra world (x, y, z up) is POV-Ray <x, z, y>; units are world units.\n";
   s += "#version 3.7;\n";
   s += "global_settings { assumed_gamma 1.0 max_trace_level 6" +
