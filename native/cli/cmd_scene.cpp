@@ -8,8 +8,9 @@
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
-#include "core/platform.hpp"
+#include "cli/path_checks.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/heightfield_io.hpp"
 #include "hydrology/river_files.hpp"
 #include "io/polyline_io.hpp"
@@ -137,13 +138,13 @@ int run(SceneOptions& o) {
 Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (and render it)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<SceneOptions>();
-                    app.add_option("--terrain", o->terrain, io::kHeightfieldReadHelp)->check(CLI::ExistingFile);
+                    app.add_option("--terrain", o->terrain, io::kHeightfieldReadHelp)->check(existing_file);
                     app.add_option("--tiles", o->tiles,
                                    "a finished 16-bit tile set folder (fracterra tiles --format png16): its tiles "
                                    "as height_fields edge to edge, in the set's world size")
-                        ->check(CLI::ExistingDirectory);
+                        ->check(existing_directory);
                     app.add_option("--polyline", o->polylines, "polyline set .csv or .json (world units); repeatable")
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--kind", o->kinds,
                                    "kind of the polyline set at the same position: line, lightning (glowing) or "
                                    "coastline (thin, on the sea); default line")
@@ -162,7 +163,7 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                     app.add_option("--rivers", o->rivers,
                                    "rivers and lakes (.json of fracterra rivers, on this --terrain): rivers as "
                                    "water ribbons as wide as the rivers, lakes as water at their levels")
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--pov", o->pov, "scene to write (.pov); the terrain PNG goes beside it")->required();
                     app.add_option("--size", o->size,
                                    "terrain width in world units (x); depth follows the grid; default: the world "

@@ -49,7 +49,7 @@ TEST(PovCapi, WritesASceneWithTerrainAndLines) {
   ft_pov_scene_lines lines = {pl, FT_POV_LIGHTNING, 0};
   p.lines = &lines;
   p.line_set_count = 1;
-  ASSERT_EQ(ft_pov_write_scene(&p, (t / "s.pov").string().c_str()), FT_OK) << ft_last_error();
+  ASSERT_EQ(ft_pov_write_scene(&p, (t / "s.pov").c_str()), FT_OK) << ft_last_error();
   const std::string sdl = slurp(t / "s.pov");
   EXPECT_NE(sdl.find("png \"s.terrain.png\""), std::string::npos);
   EXPECT_NE(sdl.find("FT_Lightning_Tex"), std::string::npos);
@@ -80,7 +80,7 @@ TEST(PovCapi, TheDefaultCameraElevationIsAutoByWhatTheSceneHolds) {
     p.lines = &lines;
     p.line_set_count = 1;
     p.camera_elevation_deg = elevation;
-    EXPECT_EQ(ft_pov_write_scene(&p, (t / (std::string(dir) + "/s.pov")).string().c_str()), FT_OK) << ft_last_error();
+    EXPECT_EQ(ft_pov_write_scene(&p, (t / (std::string(dir) + "/s.pov")).c_str()), FT_OK) << ft_last_error();
     return slurp(t / (std::string(dir) + "/s.pov"));
   };
   ft_pov_scene_params d;
@@ -108,20 +108,20 @@ TEST(PovCapi, CameraMarginAndCentreAreSettingsOfTheTable) {
   EXPECT_EQ(p.camera_margin, 0.04);
   EXPECT_EQ(p.camera_center_v, 0.55);
   p.terrain = hf;
-  ASSERT_EQ(ft_pov_write_scene(&p, (t / "default.pov").string().c_str()), FT_OK) << ft_last_error();
+  ASSERT_EQ(ft_pov_write_scene(&p, (t / "default.pov").c_str()), FT_OK) << ft_last_error();
   const std::string by_default = slurp(t / "default.pov");
   p.camera_center_v = 0.9;
-  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").string().c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("camera_center_v must be in [0.2, 0.8], got 0.9"), std::string::npos)
       << ft_last_error();
   p.camera_center_v = 0.55;
   p.camera_margin = 0.6;
-  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").string().c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("camera_margin must be in [0, 0.5], got 0.6"), std::string::npos)
       << ft_last_error();
   p.camera_margin = 0.04;
   p.camera_elevation_deg = 0.5;  // 0 is auto; between 0 and 1 is neither
-  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").string().c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("camera_elevation_deg must be 0 (auto) or in [1, 90], got 0.5"),
             std::string::npos)
       << ft_last_error();
@@ -129,7 +129,7 @@ TEST(PovCapi, CameraMarginAndCentreAreSettingsOfTheTable) {
   p.camera_elevation_deg = 0;
   p.camera_center_v = 0.7;
   p.camera_margin = 0.2;
-  ASSERT_EQ(ft_pov_write_scene(&p, (t / "moved.pov").string().c_str()), FT_OK) << ft_last_error();
+  ASSERT_EQ(ft_pov_write_scene(&p, (t / "moved.pov").c_str()), FT_OK) << ft_last_error();
   EXPECT_NE(slurp(t / "moved.pov"), by_default) << "margin and center_v reach the camera";
   // A caller of ABI 2.10 knows neither field: its struct ends before them.
   ft_pov_scene_params old;
@@ -137,7 +137,7 @@ TEST(PovCapi, CameraMarginAndCentreAreSettingsOfTheTable) {
   old.terrain = hf;
   old.struct_size = offsetof(ft_pov_scene_params, camera_margin);
   old.camera_margin = old.camera_center_v = -1;  // beyond its size: never read
-  ASSERT_EQ(ft_pov_write_scene(&old, (t / "default.pov").string().c_str()), FT_OK) << ft_last_error();
+  ASSERT_EQ(ft_pov_write_scene(&old, (t / "default.pov").c_str()), FT_OK) << ft_last_error();
   EXPECT_EQ(slurp(t / "default.pov"), by_default);
   ft_heightfield_free(hf);
 }
@@ -167,7 +167,7 @@ TEST(PovCapi, AGivenCameraColoursAndLightAreWrittenAsGiven) {
   p.terrain_colors = rgb.data();
   p.has_scene_light = 1;
   p.sky_color[0] = p.sky_color[1] = p.sky_color[2] = 0.25;
-  ASSERT_EQ(ft_pov_write_scene(&p, (t / "s.pov").string().c_str()), FT_OK) << ft_last_error();
+  ASSERT_EQ(ft_pov_write_scene(&p, (t / "s.pov").c_str()), FT_OK) << ft_last_error();
   const std::string sdl = slurp(t / "s.pov");
   EXPECT_NE(sdl.find("location <0.5, 1, -2>\n  right <1.2, 0, 0>\n  up <0, 0.6, 0.2>\n  direction <0, -0.5, 1.5>"),
             std::string::npos)
@@ -179,16 +179,16 @@ TEST(PovCapi, AGivenCameraColoursAndLightAreWrittenAsGiven) {
   EXPECT_TRUE(fs::exists(t / "s.colors.png"));
 
   p.camera_up[0] = 0.6, p.camera_up[1] = p.camera_up[2] = 0;  // parallel to right
-  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").string().c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("must span space"), std::string::npos) << ft_last_error();
   p.camera_up[0] = 0, p.camera_up[2] = 0.6;
   rgb[7] = NAN;
-  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").string().c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("terrain colours must be finite and >= 0"), std::string::npos)
       << ft_last_error();
   rgb[7] = 0.5f;
   p.sky_color[1] = 2000;
-  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").string().c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "x.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("sky_color"), std::string::npos) << ft_last_error();
   EXPECT_FALSE(fs::exists(t / "x.pov"));
   ft_heightfield_free(hf);
@@ -198,12 +198,12 @@ TEST(PovCapi, RejectsBadArgumentsWithMessages) {
   TempDir t;
   ft_pov_scene_params p;
   ASSERT_EQ(ft_pov_scene_params_init(&p), FT_OK);
-  EXPECT_EQ(ft_pov_write_scene(&p, (t / "s.pov").string().c_str()), FT_ERR_INVALID_ARGUMENT);  // nothing to show
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "s.pov").c_str()), FT_ERR_INVALID_ARGUMENT);  // nothing to show
   EXPECT_NE(std::string(ft_last_error()).find("terrain or at least one polyline"), std::string::npos);
   EXPECT_EQ(ft_pov_write_scene(nullptr, "x.pov"), FT_ERR_INVALID_ARGUMENT);
   EXPECT_EQ(ft_pov_write_scene(&p, nullptr), FT_ERR_INVALID_ARGUMENT);
   p.struct_size = 8;
-  EXPECT_EQ(ft_pov_write_scene(&p, (t / "s.pov").string().c_str()), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_pov_write_scene(&p, (t / "s.pov").c_str()), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("struct_size"), std::string::npos);
   EXPECT_EQ(ft_pov_scene_params_init(nullptr), FT_ERR_INVALID_ARGUMENT);
 
@@ -212,10 +212,10 @@ TEST(PovCapi, RejectsBadArgumentsWithMessages) {
   ASSERT_EQ(ft_polylines_create(xyz, nullptr, 2, nullptr, 1, &pl), FT_OK);
   ft_pov_sweep_params sp;
   ASSERT_EQ(ft_pov_sweep_params_init(&sp), FT_OK);
-  EXPECT_EQ(ft_pov_write_sweeps(pl, &sp, (t / "a.inc").string().c_str(), "bolt } sphere {"), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_pov_write_sweeps(pl, &sp, (t / "a.inc").c_str(), "bolt } sphere {"), FT_ERR_INVALID_ARGUMENT);
   EXPECT_NE(std::string(ft_last_error()).find("identifier"), std::string::npos);
   sp.segments_per_sweep = 0;
-  EXPECT_EQ(ft_pov_write_sweeps(pl, &sp, (t / "a.inc").string().c_str(), "Bolt"), FT_ERR_INVALID_ARGUMENT);
+  EXPECT_EQ(ft_pov_write_sweeps(pl, &sp, (t / "a.inc").c_str(), "Bolt"), FT_ERR_INVALID_ARGUMENT);
   EXPECT_FALSE(fs::exists(t / "a.inc"));
   ft_polylines_free(pl);
 }
@@ -226,7 +226,7 @@ TEST(PovCapi, LowerLevelWritersForOtherExporters) {
   ft_heightfield* hf = nullptr;
   ASSERT_EQ(ft_heightfield_create(2, 2, z.data(), &hf), FT_OK);
   double lo = 0, hi = 0;
-  ASSERT_EQ(ft_pov_write_heightfield(hf, (t / "h.png").string().c_str(), (t / "h.inc").string().c_str(), "Terrain", 10, 10, 2,
+  ASSERT_EQ(ft_pov_write_heightfield(hf, (t / "h.png").c_str(), (t / "h.inc").c_str(), "Terrain", 10, 10, 2,
                                      &lo, &hi),
             FT_OK)
       << ft_last_error();
@@ -239,7 +239,7 @@ TEST(PovCapi, LowerLevelWritersForOtherExporters) {
   ASSERT_EQ(ft_polylines_create(xyz, radii, 3, nullptr, 1, &pl), FT_OK);
   ft_pov_sweep_params sp;
   ft_pov_sweep_params_init(&sp);
-  ASSERT_EQ(ft_pov_write_sweeps(pl, &sp, (t / "b.inc").string().c_str(), "Bolt"), FT_OK) << ft_last_error();
+  ASSERT_EQ(ft_pov_write_sweeps(pl, &sp, (t / "b.inc").c_str(), "Bolt"), FT_OK) << ft_last_error();
   EXPECT_NE(slurp(t / "b.inc").find("#declare Bolt = object {\nsphere_sweep { linear_spline 3,"), std::string::npos);
   ft_polylines_free(pl);
   ft_heightfield_free(hf);

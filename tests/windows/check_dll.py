@@ -10,8 +10,11 @@ only, so such a spill crashes at random (GCC bug 54412; the build assembles
 with -muse-unaligned-vector-move, CMakeLists.txt).
 
 Run as: python3 check_dll.py fracterra.dll [fracterra.exe ...]   (uses binutils-mingw-w64's objdump)
-Checked by breaking it: linked without -static, the DLL imported
-libgomp-1.dll, libstdc++-6.dll and libwinpthread-1.dll and this failed.
+Checked by breaking it: with libgomp.dll.a (FindOpenMP's first choice) the
+DLL imported libgomp-1.dll and this failed; `vmovaps %ymm6, 0x20(%rsp)`
+assembled without -muse-unaligned-vector-move is found, with it not (GCC 12
+realigns the frames of this build's AVX kernels itself: none is found even
+without the option, which stays as the guard).
 """
 
 import re
@@ -53,8 +56,10 @@ def problems_of(path):
     problems = []
     imports, exports = pe_tables(path)
     print(f"{Path(path).name}: imports {', '.join(imports)}; exports {len(exports)} symbols")
+    # A test program may import the DLL it tests.
+    allowed = SYSTEM if path.name.lower() == "fracterra.dll" else SYSTEM | {"fracterra.dll"}
     for name in imports:
-        if name.lower() not in SYSTEM and not name.lower().startswith("api-ms-win-"):
+        if name.lower() not in allowed and not name.lower().startswith("api-ms-win-"):
             problems.append(f"{Path(path).name} imports {name}, which Windows does not ship")
     moves = aligned_stack_moves(path)
     if moves:

@@ -144,8 +144,10 @@ def refusals(exe, cli):
         expect = [
             ([*t, "t.tif"], ["GeoTIFF", "needs GDAL", formats]),
             ([*t, "t.exr"], ["OpenEXR", "needs OpenEXR", formats]),
-            ([*t, "t.hgt"], ["'.hgt'", "needs GDAL", formats]),
+            ([*t, "t.hgt"], ["unsupported heightfield format (use .png, .pgm, .npy, .raw or .r16)"]),
+            (["relief", "--in", "dem.hgt", "--out", "r.png"], ["'.hgt'", "needs GDAL", formats]),
         ]
+        Path(tmp, "dem.hgt").write_bytes(bytes(2 * 1201 * 1201))  # an SRTM tile's size, all zeros
         Path(tmp, "cube.obj").write_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n")
         expect.append((["fractalize", "--in", "cube.obj", "--levels", "2", "--out", "rock.obj"], ["needs OpenSubdiv"]))
         for args, words in expect:
@@ -157,15 +159,14 @@ def refusals(exe, cli):
         if f"heightfield formats: {formats}" not in out or "optional libraries: none" not in out:
             problems.append(f"--version does not say what the build has: {out.strip()}")
         # render spawns FT_POVRAY with POV-Ray's options. fracterra.exe itself stands in: it refuses
-        # them, so the message must carry its exit code and its own error text, read from its stderr.
+        # them ("A subcommand is required", exit 106), so the message must carry its exit code and its
+        # own error text, read from its stderr through the pipe.
         run_windows(exe, ["terrain", "--levels", "4", "--out", "t.png"], tmp)
         run_windows(exe, ["scene", "--terrain", "t.png", "--pov", "s.pov"], tmp)
-        env_exe = windows_path(Path(exe).resolve())
-        os.environ["FT_POVRAY"] = env_exe
-        os.environ["WINEDLLOVERRIDES"] = os.environ.get("WINEDLLOVERRIDES", "")
         # Wine passes the Linux environment to Windows programs.
+        os.environ["FT_POVRAY"] = windows_path(exe)
         r, _, err = run_windows(exe, ["render", "s.pov", "--width", "8", "--height", "8", "--out", "s.png"], tmp)
-        if r == 0 or "povray failed" not in err or "exit code" not in err or "+O-" not in err:
+        if r == 0 or "povray failed" not in err or "exit code 106" not in err or "subcommand is required" not in err:
             problems.append(f"render through CreateProcessW: exit {r}: {err.strip()[:400]}")
         os.environ["FT_POVRAY"] = "no-such-povray"
         r, _, err = run_windows(exe, ["render", "s.pov", "--out", "s.png"], tmp)
@@ -178,7 +179,7 @@ def refusals(exe, cli):
 
 
 def main(case, exe, cli):
-    exe, cli = Path(exe), Path(cli)
+    exe, cli = Path(exe).resolve(), Path(cli).resolve()
     try:
         if case != "refusals" and not cli.is_file():
             raise Skip(f"SKIP: the Linux build's {cli} is missing (scripts/build.sh)")

@@ -5,8 +5,8 @@
 #include <cstring>
 #include <filesystem>
 
-#include "core/platform.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/exr.hpp"
 #include "io/heightfield_io.hpp"

@@ -32,7 +32,8 @@ RenderResult render_scene(const std::string& pov_path, const std::string& out_pn
   check_int_range("width", o.width, 1, 16384);
   check_int_range("height", o.height, 1, 16384);
   check_range("antialias", o.antialias, 0, 3);
-  if (!fs::is_regular_file(platform::fs_path(pov_path))) fail(FT_ERR_IO, "cannot render '" + pov_path + "': no such file");
+  if (!fs::is_regular_file(platform::fs_path(pov_path)))
+    fail(FT_ERR_IO, "cannot render '" + pov_path + "': no such file");
   std::string program = o.povray;
   if (program.empty()) program = std::getenv("FT_POVRAY") ? std::getenv("FT_POVRAY") : "povray";
 
@@ -58,7 +59,8 @@ RenderResult render_scene(const std::string& pov_path, const std::string& out_pn
   } else {
     args.push_back("-A");
   }
-  for (const auto& dir : o.include_paths) args.push_back("+L" + quote(platform::utf8_of(fs::absolute(platform::fs_path(dir)))));
+  for (const auto& dir : o.include_paths)
+    args.push_back("+L" + quote(platform::utf8_of(fs::absolute(platform::fs_path(dir)))));
 
   io::AtomicFile image(out_png);  // the rendered image goes to its temporary file
   const platform::ProcessResult run = platform::run_process(args, image.file(), platform::utf8_of(scene.parent_path()));

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <vector>
 
-#include "core/platform.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/png_image.hpp"
 #include "povray/sdl_writer.hpp"
@@ -15,7 +16,6 @@
 namespace ft::pov {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 void grow(Vec3& lo, Vec3& hi, const Vec3& p) {
   for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
@@ -114,7 +114,7 @@ double automatic_line_radius(const SceneLines& l, const Camera& cam, double exte
   if (lo[0] <= hi[0]) {
     const Vec3 c{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
     const double d = std::hypot(c[0] - cam.location[0], c[1] - cam.location[1], c[2] - cam.location[2]);
-    pixel = 2 * d * std::tan(cam.fov_deg * kPi / 360) / image_width;
+    pixel = 2 * d * std::tan(cam.fov_deg * std::numbers::pi / 360) / image_width;
   }
   const double m = median(seg);
   return std::max(0.75 * pixel, std::isnan(m) ? cap : std::min(0.1 * m, cap));
@@ -233,7 +233,7 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
 
   s += camera_sdl(cam);
 
-  const double saz = p.sun_azimuth_deg * kPi / 180, sel = p.sun_elevation_deg * kPi / 180;
+  const double saz = p.sun_azimuth_deg * std::numbers::pi / 180, sel = p.sun_elevation_deg * std::numbers::pi / 180;
   const double far = extent * 100;
   const Vec3 sun{centre[0] + far * std::sin(saz) * std::cos(sel), centre[1] + far * std::sin(sel),
                  centre[2] + far * std::cos(saz) * std::cos(sel)};

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "core/platform.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 
 namespace ft::pov {
 

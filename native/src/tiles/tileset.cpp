@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <optional>
 
-#include "core/platform.hpp"
 #include "core/build_features.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "terrain/terrain.hpp"
 #include "tiles/manifest.hpp"
 #include "tiles/mosaic_vrt.hpp"
@@ -18,7 +18,8 @@ void make_folder(const std::string& dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path folder = platform::fs_path(dir);
-  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec)) fail(FT_ERR_IO, "'" + dir + "' exists and is not a folder");
+  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
+    fail(FT_ERR_IO, "'" + dir + "' exists and is not a folder");
   fs::create_directories(folder, ec);
   if (ec) fail(FT_ERR_IO, "cannot create the folder '" + dir + "': " + ec.message());
 }
