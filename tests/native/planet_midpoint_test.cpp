@@ -18,6 +18,7 @@
 #include "planet/cube_sphere.hpp"
 #include "planet/equirect.hpp"
 #include "planet/planet.hpp"
+#include "planet_edges.hpp"
 
 namespace ft::planet {
 namespace {
@@ -104,23 +105,11 @@ TEST(PlanetMidpoint, GradientAcrossAnEdgeIsAsContinuousAsInsideAFace) {
       const int g = locate(p, n, &i, &j);
       return double(faces[size_t(g)].at(int32_t(i), int32_t(j)));
     };
-    for (int a = 0; a < 6; ++a)
-      for (int64_t j = 1; j < n; ++j)
-        for (int side = 0; side < 4; ++side) {
-          const int64_t i = side < 2 ? (side == 0 ? 0 : n) : j, jj = side < 2 ? j : (side == 2 ? 0 : n);
-          const CubePoint e = cube_point(a, i, jj, n);
-          for (int b = 0; b < 6; ++b) {
-            int64_t bi, bj;
-            if (b == a || !face_sample(e, b, n, &bi, &bj)) continue;
-            const auto na = face_normal(a), nb = face_normal(b);
-            const CubePoint a1{e.x - 2 * nb[0], e.y - 2 * nb[1], e.z - 2 * nb[2]};
-            const CubePoint a2{e.x - 4 * nb[0], e.y - 4 * nb[1], e.z - 4 * nb[2]};
-            const CubePoint b1{e.x - 2 * na[0], e.y - 2 * na[1], e.z - 2 * na[2]};
-            const double he = h(e), ha1 = h(a1), ha2 = h(a2), hb1 = h(b1);
-            across2 += (hb1 - 2 * he + ha1) * (hb1 - 2 * he + ha1);
-            inside2 += (he - 2 * ha1 + ha2) * (he - 2 * ha1 + ha2);
-          }
-        }
+    for_each_edge_step(n, [&](const CubePoint& e, const CubePoint& a1, const CubePoint& a2, const CubePoint& b1) {
+      const double he = h(e), ha1 = h(a1), ha2 = h(a2), hb1 = h(b1);
+      across2 += (hb1 - 2 * he + ha1) * (hb1 - 2 * he + ha1);
+      inside2 += (he - 2 * ha1 + ha2) * (he - 2 * ha1 + ha2);
+    });
   }
   const double r2 = std::sqrt(across2 / inside2);
   RecordProperty("second_difference_ratio", std::to_string(r2));
