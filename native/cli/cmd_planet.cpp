@@ -33,7 +33,8 @@ namespace fs = std::filesystem;
 constexpr const char* kFaceNames[6] = {"px", "nx", "py", "ny", "pz", "nz"};
 
 struct PlanetCli {
-  std::string layout = "cube", size = "2048x1024", patch, out, format = ".tif", pov, render, spectrum;
+  std::string layout = "cube", size = "2048x1024", patch, out, format = ".tif", pov, render, spectrum,
+      pov_geometry = "isosurface";
   pov::PlanetScene scene;
   pov::RenderOptions r;
   int level = 6;
@@ -120,6 +121,12 @@ int run(const CLI::App& app, const PlanetCli& o) {
   nlohmann::json info = {{"method", config.method == planet::kMethodMidpoint ? "midpoint" : "fbm"},
                          {"radius", config.radius}, {"seed", config.fbm.seed}};
   if (config.method == planet::kMethodFbm) info["octaves"] = config.fbm.octaves;
+  auto render_if_asked = [&] {
+    if (o.render.empty()) return;
+    Stopwatch render_clock;
+    pov::render_scene(o.pov, o.render, o.r);
+    info["render_seconds"] = render_clock.seconds();
+  };
   if (o.layout != "cube" && o.layout != "equirect" && o.layout != "icosphere")
     invalid("--layout must be cube, equirect or icosphere, got '" + o.layout + "'");
   if (!o.spectrum.empty()) info["spectrum"] = spectrum_json(planet::Planet(config), o.spectrum);
@@ -138,6 +145,21 @@ int run(const CLI::App& app, const PlanetCli& o) {
     info["seconds"] = clock.seconds();
     info["patch"] = stats_json(hf);
     if (!o.out.empty()) io::write_heightfield(hf, o.out);
+  } else if (!o.pov.empty() && o.pov_geometry == "mesh2") {
+    // The exact cube-sphere of --level, heights times the scene's exaggeration.
+    if (!o.out.empty())
+      invalid("--pov-geometry mesh2 writes the mesh beside the scene; write --out with another command");
+    const planet::Planet planet(config);
+    std::vector<float> heights;
+    const Mesh mesh = planet::cube_sphere_mesh(planet, o.level, o.scene.exaggeration, &heights);
+    info["seconds"] = clock.seconds();
+    info["vertices"] = mesh.vertex_count();
+    pov::PlanetScene scene = o.scene;
+    scene.radius = config.radius;
+    scene.sea_height = planet.sea_height();
+    pov::write_planet_mesh_scene(mesh, heights, scene, o.pov);
+    render_if_asked();
+    if (!std::isnan(planet.sea_height())) info["sea_height"] = planet.sea_height();
   } else if (o.layout == "equirect" || !o.pov.empty()) {
     int w = 0, h = 0;
     parse_wxh(o.size, &w, &h);
@@ -153,11 +175,7 @@ int run(const CLI::App& app, const PlanetCli& o) {
       scene.radius = config.radius;
       scene.sea_height = planet.sea_height();
       pov::write_planet_scene(hf, scene, o.pov);
-      if (!o.render.empty()) {
-        Stopwatch render_clock;
-        pov::render_scene(o.pov, o.render, o.r);
-        info["render_seconds"] = render_clock.seconds();
-      }
+      render_if_asked();
     }
     if (!std::isnan(planet.sea_height())) info["sea_height"] = planet.sea_height();
   } else {
@@ -240,6 +258,11 @@ Registration reg({"planet",
                     app.add_option("--pov", o->pov,
                                    "write a POV-Ray scene of the globe (isosurface over the equirectangular map "
                                    "of --size, saved beside it as <scene>_height.png)");
+                    app.add_option("--pov-geometry", o->pov_geometry,
+                                   "the scene's ground: isosurface (over the map of --size) or mesh2 (the exact "
+                                   "cube-sphere of --level, as <scene>_mesh.inc)")
+                        ->check(CLI::IsMember({"isosurface", "mesh2"}))
+                        ->capture_default_str();
                     app.add_option("--render", o->render, "also render the scene with povray to this PNG");
                     app.add_option("--exaggeration", o->scene.exaggeration, "the scene's height exaggeration")
                         ->capture_default_str();

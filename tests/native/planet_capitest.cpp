@@ -91,7 +91,7 @@ TEST(PlanetAbi, LayoutsAgreeAndProgressCancels) {
 }
 
 TEST(PlanetAbi, MidpointIcosphereAndSpectrum) {
-  // ABI 2.22 through the C entry points: a midpoint planet's face patch is
+  // ABI 2.23 through the C entry points: a midpoint planet's face patch is
   // its whole face's samples, ft_planet_heights refuses it with a message
   // that names the way out, the icosphere's counts and arrays, the spectrum
   // and H (bad degrees and capacities refused by name).
