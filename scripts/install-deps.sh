@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages fracterra needs to build, test and run its
 # demo. Packages already present are skipped, so a second run costs nothing.
-# Usage: scripts/install-deps.sh [build|test|demo]   (default: test, the superset)
+# Usage: scripts/install-deps.sh [build|test|demo|windows]   (default: test, the
+# superset of the first three; windows: the cross build and Wine, docs/windows.md)
 set -euo pipefail
 
 build_pkgs=(cmake make g++ pkg-config libpng-dev libfftw3-dev librandom123-dev libcli11-dev
@@ -13,11 +14,19 @@ run_pkgs=(povray povray-includes blender python3 python3-numpy librsvg2-bin
 test_pkgs=(python3-pytest python3-matplotlib clang libclang-rt-14-dev libomp-dev xvfb xauth xdotool debootstrap gdal-bin
            python3-gdal grass-core)  # grass-core: tests/grass, the drainage map against r.terraflow (installs in ~15 s)
 
+# The Windows cross build (scripts/build-windows.sh) and its tests under Wine;
+# dpkg-dev unpacks the Debian source packages of libpng and FFTW; googletest is
+# the GoogleTest source built for mingw.
+windows_pkgs=(cmake make g++-mingw-w64-x86-64-posix gcc-mingw-w64-x86-64-posix binutils-mingw-w64-x86-64
+              libz-mingw-w64-dev wine64 dpkg-dev googletest nlohmann-json3-dev librandom123-dev libcli11-dev libtinyobjloader-dev
+              python3)
+
 case "${1:-test}" in
   build) want=("${build_pkgs[@]}") ;;
   demo) want=("${build_pkgs[@]}" "${run_pkgs[@]}") ;;
   test) want=("${build_pkgs[@]}" "${run_pkgs[@]}" "${test_pkgs[@]}") ;;
-  *) echo "usage: $0 [build|test|demo]" >&2; exit 2 ;;
+  windows) want=("${windows_pkgs[@]}") ;;
+  *) echo "usage: $0 [build|test|demo|windows]" >&2; exit 2 ;;
 esac
 
 missing=()

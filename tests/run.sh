@@ -12,12 +12,21 @@
 # fuzz replays and three unit programs (tests/sanitize.sh); both builds are
 # unity builds; the longest tests carry a ctest COST so that they start
 # first. Each stage prints its start, so a CI log shows where time goes.
+# The Windows stage (cross build of the library, CLI and C ABI suites; its
+# tests run in the ctest stage under Wine): see docs/windows.md for its cost.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
 stage() { echo "== tests/run.sh: $1 at $((SECONDS - start)) s"; }
 stage "install"
 scripts/install-deps.sh test
+# Before the Linux build: its add-on zip then carries fracterra.dll, and its
+# ctest runs the Windows programs under Wine (tests/windows, docs/windows.md).
+# FT_WINDOWS=0 leaves it out (its tests then skip, saying why).
+if [ "${FT_WINDOWS:-1}" != 0 ]; then
+  stage "Windows build (mingw-w64)"
+  scripts/build-windows.sh
+fi
 stage "Release build"
 scripts/build.sh -DCMAKE_UNITY_BUILD=ON
 stage "ctest"

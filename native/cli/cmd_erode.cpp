@@ -10,7 +10,9 @@
 #include "cli/engine_flags.hpp"
 #include "cli/erosion_map_flags.hpp"
 #include "cli/param_flags.hpp"
+#include "cli/path_checks.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "erosion/erosion.hpp"
 #include "erosion/erosion_params.hpp"
 #include "erosion/presets.hpp"
@@ -59,7 +61,7 @@ std::string preset_help() {
 Registration reg({"erode", "Erode a heightfield (channels, scree and fans over years; expert passes) and write its maps",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<ErodeCli>();
-                    app.add_option("--in", o->in, "heightfield .png, .pgm or .npy")->required()->check(CLI::ExistingFile);
+                    app.add_option("--in", o->in, "heightfield .png, .pgm or .npy")->required()->check(existing_file);
                     app.add_option("--out", o->out, "eroded heightfield .png, .pgm or .npy");
                     app.add_option("--maps", o->maps,
                                    "folder for the maps as 16-bit PNGs with their ranges (and maps.json; drainage "
@@ -81,7 +83,7 @@ Registration reg({"erode", "Erode a heightfield (channels, scree and fans over y
                       if (o->world_size > 0) hf.set_world_size(o->world_size);
                       else if (hf.world_size() <= 0) hf.set_world_size(10.0);
                       const ft_erosion_params e = settings(*o, app, hf);
-                      if (!o->maps.empty()) std::filesystem::create_directories(o->maps);
+                      if (!o->maps.empty()) std::filesystem::create_directories(platform::fs_path(o->maps));
                       erosion::ErosionMaps maps;
                       erosion::MassBudget budget;
                       Stopwatch clock;

@@ -9,6 +9,7 @@
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
+#include "cli/path_checks.hpp"
 #include "core/error.hpp"
 #include "io/obj_io.hpp"
 #include "povray/mesh2_export.hpp"
@@ -58,7 +59,7 @@ Registration reg({"fractalize", "Fractalize a polygon mesh (OBJ) with OpenSubdiv
                     auto o = std::make_shared<FractalizeOptions>();
                     auto& p = o->p;
                     app.add_option("--in", o->in, "input mesh .obj (polygons; 't crease'/'t corner' tags honoured)")
-                        ->required()->check(CLI::ExistingFile);
+                        ->required()->check(existing_file);
                     // --levels .. --threads, --scheme midpoint|additions: from the table.
                     add_param_flags(app, subdiv::fractalize_param_table(), &p);
                     app.add_option("--out", o->out, "output .obj (written atomically)");

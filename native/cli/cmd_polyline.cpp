@@ -10,6 +10,7 @@
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
+#include "cli/path_checks.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/polyline_io.hpp"
@@ -149,7 +150,7 @@ Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch
                     app.add_option("--ifs-table", o->ifs_table,
                                    "ifs: a file of maps, one \"a,b,c,d,e,f,p\" per line: x' = a x + b y + e, "
                                    "y' = c x + d y + f, probability p (instead of --ifs-preset)")
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--out", o->out, "output .csv (x,y,z,radius; blank line between polylines) or .json");
                     app.add_option("--svg", o->svg, "also draw the x,y projection into this .svg");
                     app.add_option("--pov", o->pov,

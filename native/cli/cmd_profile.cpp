@@ -6,6 +6,7 @@
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
+#include "cli/path_checks.hpp"
 #include "core/buffer.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
@@ -86,7 +87,7 @@ Registration reg({"profile", "Generate a Voss 1D fractal profile (a horizon)",
                     add_param_flags(app, terrain::profile_param_table(), &p);
                     app.add_option("--reference", o->reference,
                                    "2^m + 1 reference values: a 1D .npy, or a .csv whose y column is used")
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--out", o->out, "output .csv (x = t in [0,1], y = height), .json or .npy");
                     app.add_flag("--stats", o->stats, "print a JSON object with seconds, min, max, mean");
                     return [o] {

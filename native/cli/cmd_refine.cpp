@@ -7,6 +7,7 @@
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
+#include "cli/path_checks.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
 #include "refine/dem_refine.hpp"
@@ -92,7 +93,7 @@ Registration reg({"refine", "Refine a real DEM: its samples kept, finer levels a
                     auto o = std::make_shared<RefineCli>();
                     app.add_option("--in", o->in, "the DEM: any raster GDAL reads (GeoTIFF, .hgt, .asc, ...)")
                         ->required()
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--out", o->out, std::string("the refined terrain: ") + io::kHeightfieldWriteFormats +
                                                         " (.tif keeps the georeference)")
                         ->required();

@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "cli/command.hpp"
+#include "cli/path_checks.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/png_image.hpp"
@@ -18,7 +19,7 @@ struct ReliefCli {
 Registration reg({"relief", "Draw a shaded-relief preview PNG of a heightfield",
                   [](CLI::App& app) -> std::function<int()> {
                     auto c = std::make_shared<ReliefCli>();
-                    app.add_option("--in", c->in, io::kHeightfieldReadHelp)->required()->check(CLI::ExistingFile);
+                    app.add_option("--in", c->in, io::kHeightfieldReadHelp)->required()->check(existing_file);
                     app.add_option("--out", c->out, "output RGB .png")->required();
                     app.add_option("--sea-fraction", c->o.sea_fraction, "fraction of the height range under water, 0..1")
                         ->capture_default_str();

@@ -4,6 +4,7 @@
 
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
+#include "cli/path_checks.hpp"
 #include "povray/render.hpp"
 
 namespace ft::cli {
@@ -18,7 +19,7 @@ struct RenderCliOptions {
 Registration reg({"render", "Render a POV-Ray scene to a PNG with povray",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<RenderCliOptions>();
-                    app.add_option("scene", o->scene, "the .pov scene")->required()->check(CLI::ExistingFile);
+                    app.add_option("scene", o->scene, "the .pov scene")->required()->check(existing_file);
                     app.add_option("--out", o->out, "output PNG (written under a temporary name, renamed when done)")
                         ->required();
                     app.add_option("--width", o->r.width, "image width in pixels")->check(CLI::Range(1, 16384))
@@ -30,7 +31,7 @@ Registration reg({"render", "Render a POV-Ray scene to a PNG with povray",
                         ->check(CLI::Range(0.0, 3.0))->capture_default_str();
                     app.add_option("--include", o->r.include_paths,
                                    "extra folder for #include files (povray +L), e.g. povray_macros; repeatable")
-                        ->check(CLI::ExistingDirectory);
+                        ->check(existing_directory);
                     app.add_option("--povray", o->r.povray, "povray program (default: $FT_POVRAY or povray)");
                     app.add_flag("--verbose", o->r.verbose, "print all of POV-Ray's messages");
                     return [o] {

@@ -9,6 +9,7 @@
 #include "cli/command.hpp"
 #include "cli/network_json.hpp"
 #include "cli/param_flags.hpp"
+#include "cli/path_checks.hpp"
 #include "core/error.hpp"
 #include "hydrology/hydrology.hpp"
 #include "hydrology/hydrology_params.hpp"
@@ -63,7 +64,7 @@ Registration reg({"rivers", "Rivers, lakes and the sea of a heightfield, as poly
                     auto o = std::make_shared<RiversCli>();
                     app.add_option("--in", o->in, "heightfield (any format `terrain` writes or GDAL reads)")
                         ->required()
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--out", o->out,
                                    "rivers: .csv or .json (the polyline format with discharge, width, depth, "
                                    "order), .geojson (LineStrings) or .gpkg (rivers and lakes layers)");

@@ -8,8 +8,10 @@
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
+#include "cli/path_checks.hpp"
 #include "cli/splat_sources.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/heightfield_io.hpp"
 #include "hydrology/river_files.hpp"
 #include "io/polyline_io.hpp"
@@ -55,7 +57,7 @@ pov::TiledTerrain load_tiles(const std::string& dir) {
   t.height_min = (*m)["height_range"]["min"].get<double>();
   t.height_max = (*m)["height_range"]["max"].get<double>();
   for (const nlohmann::json& e : (*m)["tiles"])
-    t.tiles.push_back({(std::filesystem::path(dir) / e["file"].get<std::string>()).string(), e["x0"].get<int64_t>(),
+    t.tiles.push_back({platform::utf8_of(platform::fs_path(dir) / platform::fs_path(e["file"].get<std::string>())), e["x0"].get<int64_t>(),
                        e["y0"].get<int64_t>(), e["width"].get<int32_t>(), e["height"].get<int32_t>()});
   return t;
 }
@@ -162,13 +164,13 @@ int run(SceneOptions& o) {
 Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (and render it)",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<SceneOptions>();
-                    app.add_option("--terrain", o->terrain, io::kHeightfieldReadHelp)->check(CLI::ExistingFile);
+                    app.add_option("--terrain", o->terrain, io::kHeightfieldReadHelp)->check(existing_file);
                     app.add_option("--tiles", o->tiles,
                                    "a finished 16-bit tile set folder (fracterra tiles --format png16): its tiles "
                                    "as height_fields edge to edge, in the set's world size")
-                        ->check(CLI::ExistingDirectory);
+                        ->check(existing_directory);
                     app.add_option("--polyline", o->polylines, "polyline set .csv or .json (world units); repeatable")
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--kind", o->kinds,
                                    "kind of the polyline set at the same position: line, lightning (glowing) or "
                                    "coastline (thin, on the sea); default line")
@@ -187,7 +189,7 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                     app.add_option("--rivers", o->rivers,
                                    "rivers and lakes (.json of fracterra rivers, on this --terrain): rivers as "
                                    "water ribbons as wide as the rivers, lakes as water at their levels")
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--texture", o->texture,
                                    "how the --terrain is coloured: splat (the splat rules' colour map, as "
                                    "fracterra splat --color bakes it and the Blender material shows it) or "
@@ -198,11 +200,11 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                     app.add_option("--rules", o->rules,
                                    "splat rules JSON that colour the terrain (as fracterra splat --rules reads "
                                    "them) [default: grass, rock, sediment, snow]")
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--maps", o->maps,
                                    "the folder of fracterra erode --maps for the rules' deposit and flow "
                                    "conditions (without it they see none)")
-                        ->check(CLI::ExistingDirectory);
+                        ->check(existing_directory);
                     app.add_option("--pov", o->pov, "scene to write (.pov); the terrain PNG goes beside it")->required();
                     app.add_option("--size", o->size,
                                    "terrain width in world units (x); depth follows the grid; default: the world "

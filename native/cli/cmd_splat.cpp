@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/path_checks.hpp"
 #include "cli/splat_sources.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
@@ -62,15 +63,15 @@ int run(const SplatCli& o) {
 Registration reg({"splat", "Write splat (weight) maps and a colour map of a terrain by layer rules",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<SplatCli>();
-                    app.add_option("--in", o->in, io::kHeightfieldReadHelp)->check(CLI::ExistingFile);
+                    app.add_option("--in", o->in, io::kHeightfieldReadHelp)->check(existing_file);
                     app.add_option("--maps", o->maps,
                                    "the folder of fracterra erode --maps (deposited and drainage_area feed the "
                                    "sediment rule); without it those conditions see 0")
-                        ->check(CLI::ExistingDirectory);
+                        ->check(existing_directory);
                     app.add_option("--rules", o->rules,
                                    "layer rules JSON {\"layers\": [{\"name\": ..., fields of "
                                    "`fracterra params` ft_splat_params}]} [default: grass, rock, sediment, snow]")
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--out", o->out,
                                    "RGBA .png, four layers to a file (layers 4-7 in NAME_1.png, ...); the weights "
                                    "sum to 255 (or 65535 with --depth 16) at every pixel");

@@ -10,6 +10,7 @@
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
+#include "cli/path_checks.hpp"
 #include "contour/marching_squares.hpp"
 #include "core/error.hpp"
 #include "cli/engine_flags.hpp"
@@ -179,14 +180,14 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     app.add_option("--reference", o->reference,
                                    "reference grid (2^m + 1)^2: " + std::string(io::kHeightfieldReadHelp) +
                                        "; its values survive exactly (a DEM: see fracterra refine)")
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--falloff-mask", o->falloff_mask,
                                    "custom edge falloff (sets --falloff custom): a mask spanning the terrain, " +
                                        std::string(io::kHeightfieldReadHelp) +
                                        "; white (1) keeps the height, black (0) gives --edge-level; 8/16-bit "
                                        "images read as 0..1, other rasters must hold 0..1; resampled bilinearly, "
                                        "image row 0 (the top) at terrain row 0")
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     // The pipeline's and the erosion's settings from their tables; the
                     // terrain's threads serve every stage, and a terrain that tiles
                     // erodes as a torus (the library's rule, not a flag).

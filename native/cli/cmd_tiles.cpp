@@ -13,6 +13,7 @@
 #include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
+#include "cli/path_checks.hpp"
 #include "core/error.hpp"
 #include "engines/engine_preset.hpp"
 #include "engines/engine_tiles.hpp"
@@ -101,7 +102,7 @@ Registration reg({"tiles", "Write a terrain larger than memory as a tile set (ti
                     app.add_option("--reference", o->reference,
                                    "reference grid (2^m + 1)^2 for midpoint/additions: " +
                                        std::string(io::kHeightfieldReadHelp))
-                        ->check(CLI::ExistingFile);
+                        ->check(existing_file);
                     app.add_option("--out", o->out,
                                    "the tile set's folder (created; a folder holding another tile set is refused; "
                                    "a rerun resumes)")

@@ -1,5 +1,6 @@
 #include "cli/erosion_map_flags.hpp"
 
+#include "cli/path_checks.hpp"
 #include "io/heightfield_io.hpp"
 
 namespace ft::cli {
@@ -11,9 +12,9 @@ void ErosionMapFlags::add_to(CLI::App& app) {
   app.add_option("--erosion-mask", erosion_mask,
                  "where erosion acts: white (1) erodes fully, black (0) not at all (sediment may still settle "
                  "there); " + raster)
-      ->check(CLI::ExistingFile);
+      ->check(existing_file);
   app.add_option("--rain-map", rain_map, "where rain falls: white (1) full rainfall, black (0) none; " + raster)
-      ->check(CLI::ExistingFile);
+      ->check(existing_file);
 }
 
 void ErosionMapFlags::apply(ft_erosion_params& p) {

@@ -4,7 +4,9 @@
 #include <cstdio>
 
 #include "cli/command.hpp"
+#include "core/build_features.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 
 namespace ft::cli {
 std::vector<Command>& registry() {
@@ -19,7 +21,11 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   // Wide enough that "--octave-rotation FLOAT=0.5" keeps two spaces before its text.
   app.get_formatter()->column_width(40);
-  app.set_version_flag("--version", std::string("fracterra " FT_VERSION_STRING));
+  // The version names what this build has: the Windows build goes without
+  // GDAL, OpenEXR and OpenSubdiv (docs/windows.md).
+  app.set_version_flag("--version", std::string("fracterra " FT_VERSION_STRING "\nheightfield formats: ") +
+                                        ft::heightfield_formats() + "\noptional libraries: " +
+                                        (*ft::build_features() ? ft::build_features() : "none"));
   auto& commands = registry();
   std::stable_sort(commands.begin(), commands.end(),
                    [](const Command& a, const Command& b) { return a.order < b.order; });
@@ -30,7 +36,12 @@ int main(int argc, char** argv) {
     sub->callback([&action, run] { action = run; });
   }
   try {
-    app.parse(argc, argv);
+    // UTF-8 arguments (on Windows taken from the wide command line, so that
+    // "Dossier été" reaches the library intact); CLI11 takes them reversed.
+    std::vector<std::string> args = ft::platform::utf8_arguments(argc, argv);
+    args.erase(args.begin());
+    std::reverse(args.begin(), args.end());
+    app.parse(args);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }

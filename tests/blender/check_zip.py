@@ -2,8 +2,12 @@
 only glibc, the C++ runtime (which the bundled OpenSubdiv needs and Blender
 itself loads) and the other libraries beside it; libfracterra.so finds them
 through RPATH $ORIGIN, links its own C++ runtime in, and exports only ft_*.
+When the zip carries lib/fracterra.dll (the Windows build), the DLL needs only
+Windows' own DLLs and exports only ft_* (tests/windows/check_dll.py), and the
+4.2+ manifest lists both platforms; without it, Linux only.
 
-Run as: python3 check_zip.py fracterra.zip      (uses binutils' readelf and nm)
+Run as: python3 check_zip.py fracterra.zip      (uses binutils' readelf and nm;
+x86_64-w64-mingw32-objdump for the DLL)
 """
 
 import re
@@ -12,6 +16,9 @@ import sys
 import tempfile
 import zipfile
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "windows"))
+import check_dll  # noqa: E402  (tests/windows: the DLL's imports and exports)
 
 SYSTEM = {"libc.so.6", "libm.so.6", "ld-linux-x86-64.so.2", "libpthread.so.0", "libdl.so.2", "librt.so.1"}
 CXX_RUNTIME = {"libstdc++.so.6", "libgcc_s.so.1"}
@@ -30,7 +37,16 @@ def main(zip_path):
         zipfile.ZipFile(zip_path).extractall(tmp)
         lib = Path(tmp, "fracterra", "lib")
         bundled = {p.name for p in lib.iterdir()}
-        for path in sorted(lib.iterdir()):
+        dll = lib / "fracterra.dll"
+        platforms = re.search(r"^platforms = (.*)$", Path(tmp, "fracterra", "blender_manifest.toml").read_text(),
+                              re.M).group(1)
+        want = '["linux-x64", "windows-x64"]' if dll.is_file() else '["linux-x64"]'
+        if platforms != want:
+            problems.append(f"blender_manifest.toml lists platforms = {platforms}, expected {want}")
+        if dll.is_file():
+            problems += check_dll.problems_of(dll)
+        print(f"platforms = {platforms}")
+        for path in sorted(p for p in lib.iterdir() if p.suffix != ".dll"):
             needed, _ = dynamic(path)
             allowed = SYSTEM | bundled | (CXX_RUNTIME if path.name != "libfracterra.so" else set())
             for name in needed:

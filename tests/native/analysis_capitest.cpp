@@ -180,7 +180,7 @@ TEST(AnalysisCapi, CloudsFillABufferOrWriteAPng) {
   ASSERT_EQ(ft_clouds(hf, &p, px.data(), px.size()), FT_OK);
   EXPECT_EQ(*std::max_element(px.begin(), px.end()), 65535);
   const auto path = std::filesystem::temp_directory_path() / ("ft_capi_clouds_" + std::to_string(::getpid()) + ".png");
-  ASSERT_EQ(ft_clouds_write_png(hf, &p, path.c_str()), FT_OK) << ft_last_error();
+  ASSERT_EQ(ft_clouds_write_png(hf, &p, path.string().c_str()), FT_OK) << ft_last_error();
   EXPECT_TRUE(std::filesystem::exists(path));
   std::filesystem::remove(path);
   EXPECT_EQ(ft_clouds_write_png(hf, &p, "/nonexistent-dir/c.png"), FT_ERR_IO);

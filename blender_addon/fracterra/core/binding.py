@@ -1,4 +1,4 @@
-"""Finding and loading libfracterra.so, and the ctypes signature of every symbol.
+"""Finding and loading libfracterra.so (fracterra.dll on Windows), and the ctypes signature of every symbol.
 
 Search order: the path in the FRACTERRA_LIBRARY environment variable (when
 set, it is the only candidate: an explicit choice must not silently fall back),
@@ -9,6 +9,8 @@ what to do. A library whose ABI major version differs is refused.
 
 import ctypes
 import os
+import platform
+import sys
 import threading
 from ctypes import (CFUNCTYPE, POINTER, Structure, c_char_p, c_double, c_float, c_int32, c_int64,
                     c_size_t, c_uint16, c_uint32, c_uint64, c_void_p)
@@ -17,16 +19,28 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 2
-ABI_MINOR_MIN = 23  # 2.23: midpoint planets, the icosphere, the planet's spectrum; 2.22: splat rules files (ft_splat_rules_*); 2.21: the sea as erosion's base level; 2.20: ft_terrain_build_rivers, ft_river_network_grid; 2.19: splat.h, ft_drainage_statistics bound; 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library); 2.12: ft_erosion_preset_fitted, uplift_follows_terrain; 2.13: ft_terrain_build (pipeline.h)
+ABI_MINOR_MIN = 24  # 2.24: ft_build_features, ft_has_feature, ft_heightfield_formats (the Windows build has no GDAL, OpenEXR or OpenSubdiv); 2.23: midpoint planets, the icosphere, the planet's spectrum; 2.22: splat rules files (ft_splat_rules_*); 2.21: the sea as erosion's base level; 2.20: ft_terrain_build_rivers, ft_river_network_grid; 2.19: splat.h, ft_drainage_statistics bound; 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library); 2.12: ft_erosion_preset_fitted, uplift_follows_terrain; 2.13: ft_terrain_build (pipeline.h)
 ENV_VAR = "FRACTERRA_LIBRARY"
-LIBRARY_NAME = "libfracterra.so"
+# The library of each platform the add-on zip can carry one for (docs/windows.md).
+LIBRARY_NAMES = {("linux", "x86_64"): "libfracterra.so", ("win32", "amd64"): "fracterra.dll"}
+PLATFORM = (sys.platform, platform.machine().lower())
+LIBRARY_NAME = LIBRARY_NAMES.get(PLATFORM, "libfracterra.so")
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
 
 HOW_TO_FIX = (
     "Install the add-on zip built by `cmake --build build --target fracterra_blender_addon` "
-    "(it bundles lib/libfracterra.so), or set the environment variable "
-    f"{ENV_VAR} to the full path of libfracterra.so before starting Blender."
+    f"(it bundles lib/{LIBRARY_NAME}), or set the environment variable "
+    f"{ENV_VAR} to the full path of {LIBRARY_NAME} before starting Blender."
 )
+
+
+def unsupported_platform():
+    """Why this platform has no library ("" where it has one): the zip carries Linux and Windows x64 only."""
+    if PLATFORM in LIBRARY_NAMES:
+        return ""
+    return (f"fracterra has no library for this platform ({sys.platform}, {platform.machine()}): the add-on "
+            "carries lib/libfracterra.so for x86-64 Linux and lib/fracterra.dll for x64 Windows only. "
+            f"Build the library for this platform and set {ENV_VAR} to its path.")
 
 # ft_progress_fn: int32_t (*)(void* user, double fraction); non-zero cancels.
 PROGRESS_FN = CFUNCTYPE(c_int32, c_void_p, c_double)
@@ -180,6 +194,9 @@ SIGNATURES = {
     "ft_version_string": (c_char_p, []),
     "ft_last_error": (c_char_p, []),
     "ft_status_name": (c_char_p, [c_int32]),
+    "ft_build_features": (c_char_p, []),
+    "ft_has_feature": (c_int32, [c_char_p]),
+    "ft_heightfield_formats": (c_char_p, []),
     "ft_memory_cap": (c_uint64, []),
     "ft_set_memory_cap": (None, [c_uint64]),
     "ft_heightfield_create": (c_int32, [c_int32, c_int32, _F32P, POINTER(_HF)]),
@@ -423,9 +440,11 @@ def library():
     with _lock:
         if _library is None:
             path = library_path()
+            if not os.environ.get(ENV_VAR) and unsupported_platform():
+                raise LibraryNotFoundError(unsupported_platform())
             if not path.is_file():
                 source = f"{ENV_VAR}={os.environ[ENV_VAR]}" if os.environ.get(ENV_VAR) else "the add-on folder"
-                raise LibraryNotFoundError(f"libfracterra.so not found ({source}: {path} does not exist). {HOW_TO_FIX}")
+                raise LibraryNotFoundError(f"{LIBRARY_NAME} not found ({source}: {path} does not exist). {HOW_TO_FIX}")
             _library = Library(path)
         return _library
 
@@ -436,7 +455,9 @@ def status():
         lib = library()
     except LibraryNotFoundError as e:
         return False, str(e)
-    return True, f"libfracterra {lib.version} (ABI {lib.abi_major}.{lib.abi_minor}) from {lib.path}"
+    formats = lib.ft_heightfield_formats().decode()
+    return True, (f"libfracterra {lib.version} (ABI {lib.abi_major}.{lib.abi_minor}) from {lib.path}; "
+                  f"heightfield formats: {formats}")
 
 
 def enum_values(kind_name, field):

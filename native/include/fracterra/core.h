@@ -8,7 +8,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#if defined(FT_BUILDING_LIBRARY)
+#if defined(FT_BUILDING_LIBRARY) && defined(_WIN32)
+#define FT_API __declspec(dllexport)
+#elif defined(FT_BUILDING_LIBRARY)
 #define FT_API __attribute__((visibility("default")))
 #else
 #define FT_API
@@ -72,7 +74,9 @@ extern "C" {
 /// 2.23: planet.h: FT_PLANET_MIDPOINT (midpoint displacement on the cube-sphere), the icosphere
 ///      (ft_planet_icosphere(_counts)), the spherical-harmonic spectrum (ft_planet_power_spectrum,
 ///      ft_planet_spectrum_hurst).
-#define FT_ABI_VERSION_MINOR 23
+/// 2.24: ft_build_features, ft_has_feature and ft_heightfield_formats: what this build has
+///      (the Windows build has no GDAL, OpenEXR or OpenSubdiv; docs/windows.md).
+#define FT_ABI_VERSION_MINOR 24
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.
@@ -99,6 +103,16 @@ FT_API const char* ft_version_string(void);
 FT_API const char* ft_last_error(void);
 /// A short name for a status code ("FT_ERR_INVALID_ARGUMENT"); static storage.
 FT_API const char* ft_status_name(ft_status status);
+/// The optional libraries this build has, space-separated: "gdal openexr opensubdiv"
+/// on Linux, "" for Windows (docs/windows.md). A call that needs a missing one
+/// returns FT_ERR_UNSUPPORTED naming it. Static storage.
+FT_API const char* ft_build_features(void);
+/// 1 if this build has `feature` ("gdal", "openexr" or "opensubdiv"), else 0 (NULL too).
+FT_API int32_t ft_has_feature(const char* feature);
+/// The heightfield formats this build reads and writes, for messages and
+/// menus: "PNG, PGM, NPY, RAW16, GeoTIFF, OpenEXR and every raster GDAL reads"
+/// on Linux, "PNG, PGM, NPY and RAW16" without GDAL and OpenEXR. Static storage.
+FT_API const char* ft_heightfield_formats(void);
 
 /// Progress callback for long calls: `fraction` grows from 0 to 1. Return
 /// non-zero to cancel; the call then returns FT_ERR_CANCELLED and frees

@@ -3,6 +3,7 @@
 
 #include "capi/guard.hpp"
 #include "capi/handles.hpp"
+#include "core/build_features.hpp"
 #include "core/memory.hpp"
 #include "fracterra/fracterra.h"
 
@@ -21,6 +22,14 @@ extern "C" {
 FT_API uint32_t ft_abi_version(void) { return FT_ABI_VERSION; }
 FT_API const char* ft_version_string(void) { return FT_VERSION_STRING; }  // from CMake
 FT_API const char* ft_last_error(void) { return ft::capi::g_last_error.c_str(); }
+FT_API const char* ft_build_features(void) { return ft::build_features(); }
+FT_API const char* ft_heightfield_formats(void) { return ft::heightfield_formats(); }
+
+FT_API int32_t ft_has_feature(const char* feature) {
+  if (!feature) return 0;
+  const std::string want(feature), have = std::string(" ") + ft::build_features() + " ";
+  return !want.empty() && want.find(' ') == std::string::npos && have.find(" " + want + " ") != std::string::npos;
+}
 
 FT_API const char* ft_status_name(ft_status status) {
   switch (status) {

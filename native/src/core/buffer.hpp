@@ -5,14 +5,14 @@
 // ~65000 (where the kernel allows it; otherwise the advice is ignored).
 #pragma once
 
-#include <sys/mman.h>
-
 #include <atomic>
 #include <cstddef>
 #include <cstdlib>
 #include <memory>
 #include <new>
 #include <type_traits>
+
+#include "core/platform_memory.hpp"
 
 namespace ft {
 
@@ -35,7 +35,7 @@ inline size_t next_colour_offset() {
 
 struct FreeDeleter {
   size_t offset = 0;  // from the allocation's start to the data
-  void operator()(void* p) const noexcept { std::free(static_cast<char*>(p) - offset); }
+  void operator()(void* p) const noexcept { platform::aligned_free(static_cast<char*>(p) - offset); }
 };
 
 // Returns the data pointer and sets `offset` (what FreeDeleter takes back).
@@ -44,9 +44,9 @@ inline void* allocate_uninitialised(size_t bytes, size_t& offset) {
   const size_t align = huge ? kHuge : 64;
   offset = huge ? next_colour_offset() : 0;
   const size_t rounded = (bytes + offset + align - 1) / align * align;
-  void* p = std::aligned_alloc(align, rounded == 0 ? align : rounded);
+  void* p = platform::aligned_allocate(align, rounded == 0 ? align : rounded);
   if (!p) throw std::bad_alloc();
-  if (huge) ::madvise(p, rounded, MADV_HUGEPAGE);
+  if (huge) platform::advise_huge_pages(p, rounded);
   return static_cast<char*>(p) + offset;
 }
 }  // namespace detail

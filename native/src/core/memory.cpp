@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "core/platform_memory.hpp"
 
 namespace ft {
 namespace {
@@ -27,21 +28,7 @@ std::string human(uint64_t bytes) {
 uint64_t memory_cap() { return g_cap.load(); }
 void set_memory_cap(uint64_t bytes) { g_cap.store(bytes == 0 ? kDefaultMemoryCap : bytes); }
 
-uint64_t available_memory() {
-  FILE* f = std::fopen("/proc/meminfo", "r");
-  if (!f) return std::numeric_limits<uint64_t>::max();
-  char line[256];
-  uint64_t kib = 0;
-  bool found = false;
-  while (std::fgets(line, sizeof line, f)) {
-    if (std::strncmp(line, "MemAvailable:", 13) == 0) {
-      found = std::sscanf(line + 13, "%lu", &kib) == 1;
-      break;
-    }
-  }
-  std::fclose(f);
-  return found ? kib * 1024 : std::numeric_limits<uint64_t>::max();
-}
+uint64_t available_memory() { return platform::available_memory(); }
 
 uint64_t checked_bytes(uint64_t a, uint64_t b, uint64_t c) {
   constexpr uint64_t kMax = std::numeric_limits<uint64_t>::max();

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/exr.hpp"
 #include "io/heightfield_io.hpp"
@@ -117,7 +118,7 @@ nlohmann::json write_for_engine(const Heightfield& given, const std::string& out
   const HeightStats s = hf.stats();
   const double range = s.max - s.min, spacing = hf.world_size() / (w - 1);
   nlohmann::json j = {{"engine", engine_name(o.engine)},
-                      {"file", std::filesystem::path(out).filename().string()},
+                      {"file", platform::utf8_of(platform::fs_path(out).filename())},
                       {"width", w},
                       {"height", h},
                       {"min", s.min},
@@ -168,7 +169,7 @@ nlohmann::json write_for_engine(const Heightfield& given, const std::string& out
                     {"vertex_spacing", spacing},
                     {"height_scale", 1.0},
                     {"height_offset", 0.0},
-                    {"control_file", std::filesystem::path(control).filename().string()},
+                    {"control_file", platform::utf8_of(platform::fs_path(control).filename())},
                     {"texture_ids", textures}};
       break;
     }

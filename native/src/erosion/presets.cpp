@@ -125,10 +125,14 @@ void write_erosion_maps(const ErosionMaps& maps, const std::string& dir, const s
       // Drainage area spans cells to the whole map (1 to 10^6 at 1025^2): a
       // linear 16-bit step is then several cells, and every hillslope value
       // is blurred. Its log10 keeps the same relative precision everywhere.
+      // In double, rounded once to float: libm's log10f differs by an ulp
+      // between glibc and Windows' C runtime, the double one (rounded) does
+      // not, so the map has the same bits on both (tests/windows).
       Heightfield log_area(hf->width(), hf->height());
       log_area.set_world_size(hf->world_size());
       log_area.set_georef(hf->georef());
-      for (size_t i = 0; i < hf->size(); ++i) log_area.data()[i] = float(std::log10(std::max(hf->data()[i], 1e-30f)));
+      for (size_t i = 0; i < hf->size(); ++i)
+        log_area.data()[i] = float(std::log10(double(std::max(hf->data()[i], 1e-30f))));
       io::write_heightfield(log_area, dir + "/" + file);
       const HeightStats l = log_area.stats();
       entry["scale"] = "log10";

@@ -1,10 +1,5 @@
 #include "io/atomic_file.hpp"
 
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cstdlib>
@@ -13,13 +8,13 @@
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "core/platform.hpp"
 
 namespace ft::io {
 namespace {
 std::string folder_of(const std::string& path) {
-  std::filesystem::path p(path);
-  auto parent = p.parent_path();
-  return parent.empty() ? std::string(".") : parent.string();
+  auto parent = platform::fs_path(path).parent_path();
+  return parent.empty() ? std::string(".") : platform::utf8_of(parent);
 }
 
 // A writer killed outright (SIGKILL, power loss) cannot remove its temporary
@@ -31,13 +26,13 @@ std::string folder_of(const std::string& path) {
 // destination stays intact), are the only ones touched or left.
 void remove_stale_temps(const std::string& folder, const std::string& prefix) {
   std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
-    const std::string name = e.path().filename().string();
+  for (const auto& e : std::filesystem::directory_iterator(platform::fs_path(folder), ec)) {
+    const std::string name = platform::utf8_of(e.path().filename());
     if (name.compare(0, prefix.size(), prefix) != 0) continue;
     char* end = nullptr;
     const long pid = std::strtol(name.c_str() + prefix.size(), &end, 10);
-    if (pid <= 0 || *end != '.' || pid == long(::getpid())) continue;
-    if (::kill(pid_t(pid), 0) != 0 && errno == ESRCH) ::unlink(e.path().c_str());
+    if (pid <= 0 || *end != '.' || pid == platform::process_id()) continue;
+    if (platform::process_gone(pid)) platform::remove_file(platform::utf8_of(e.path()));
   }
 }
 }  // namespace
@@ -45,32 +40,22 @@ void remove_stale_temps(const std::string& folder, const std::string& prefix) {
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   if (path_.empty()) invalid("output path must not be empty");
   const std::string folder = folder_of(path_);
-  struct stat st {};
-  if (::stat(folder.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+  std::error_code ec;
+  if (!std::filesystem::is_directory(platform::fs_path(folder), ec))
     fail(FT_ERR_IO, "cannot write '" + path_ + "': folder '" + folder + "' does not exist");
-  if (::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+  if (std::filesystem::is_directory(platform::fs_path(path_), ec))
     fail(FT_ERR_IO, "cannot write '" + path_ + "': it is a folder");
-  const std::string prefix = "." + std::filesystem::path(path_).filename().string() + ".tmp.";
+  const std::string prefix = "." + platform::utf8_of(platform::fs_path(path_).filename()) + ".tmp.";
   remove_stale_temps(folder, prefix);
-  temp_ = (std::filesystem::path(folder) / (prefix + std::to_string(::getpid()) + ".XXXXXX")).string();
-  int fd = ::mkstemp(temp_.data());
-  if (fd < 0)
-    fail(FT_ERR_IO, "cannot write in folder '" + folder + "': " + std::strerror(errno));
-  // mkstemp makes the file 0600; give it the usual permissions (respecting umask).
-  mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  file_ = ::fdopen(fd, "wb");
-  if (!file_) {
-    ::close(fd);
-    ::unlink(temp_.c_str());
-    fail(FT_ERR_IO, "cannot open a temporary file for '" + path_ + "'");
-  }
+  temp_ = platform::utf8_of(platform::fs_path(folder) /
+                            platform::fs_path(prefix + std::to_string(platform::process_id()) + ".XXXXXX"));
+  file_ = platform::create_temp_file(temp_);
+  if (!file_) fail(FT_ERR_IO, "cannot write in folder '" + folder + "': " + std::strerror(errno));
 }
 
 AtomicFile::~AtomicFile() {
   if (file_) std::fclose(file_);
-  if (!committed_) ::unlink(temp_.c_str());
+  if (!committed_) platform::remove_file(temp_);
 }
 
 void AtomicFile::write(std::string_view bytes) {
@@ -79,13 +64,13 @@ void AtomicFile::write(std::string_view bytes) {
 }
 
 void AtomicFile::commit() {
-  bool ok = std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
+  bool ok = platform::sync_file(file_);
   const int err = errno;
   ok = (std::fclose(file_) == 0) && ok;
   file_ = nullptr;
   if (!ok) fail(FT_ERR_IO, "writing '" + path_ + "' failed: " + std::strerror(err));
-  if (::rename(temp_.c_str(), path_.c_str()) != 0)
-    fail(FT_ERR_IO, "cannot move the finished file to '" + path_ + "': " + std::strerror(errno));
+  const std::string why = platform::replace_file(temp_, path_);
+  if (!why.empty()) fail(FT_ERR_IO, "cannot move the finished file to '" + path_ + "': " + why);
   committed_ = true;
 }
 
@@ -96,24 +81,25 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
 }
 
 std::string extension_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
+  std::string ext = platform::utf8_of(platform::fs_path(path).extension());
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
 std::string read_file(const std::string& path) {
-  FILE* f = std::fopen(path.c_str(), "rb");
+  FILE* f = platform::open_file(path, "rb");
   if (!f) fail(FT_ERR_IO, "cannot read '" + path + "': " + std::strerror(errno));
   std::string data;
-  struct stat st {};
-  if (::fstat(::fileno(f), &st) == 0 && S_ISREG(st.st_mode)) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(platform::fs_path(path), ec)) {
+    const int64_t size = platform::file_size(f);
     try {
-      check_allocation(uint64_t(st.st_size), "reading '" + path + "'");
+      if (size > 0) check_allocation(uint64_t(size), "reading '" + path + "'");
     } catch (...) {
       std::fclose(f);
       throw;
     }
-    data.reserve(size_t(st.st_size));
+    if (size > 0) data.reserve(size_t(size));
   }
   char buf[1 << 16];
   size_t n;

@@ -31,7 +31,16 @@ Heightfield image_to_heightfield(const GrayImage& image);
 Heightfield decode_heightfield(const std::string& bytes, const std::string& extension);
 
 // The extensions write_heightfield knows, for messages and help texts.
+// What this build writes (the Windows build has no GDAL or OpenEXR: core/build_features.hpp).
+#if FT_WITH_GDAL && FT_WITH_OPENEXR
 inline constexpr const char* kHeightfieldWriteFormats = ".png, .pgm, .npy, .tif, .exr, .raw or .r16";
+#elif FT_WITH_GDAL
+inline constexpr const char* kHeightfieldWriteFormats = ".png, .pgm, .npy, .tif, .raw or .r16";
+#elif FT_WITH_OPENEXR
+inline constexpr const char* kHeightfieldWriteFormats = ".png, .pgm, .npy, .exr, .raw or .r16";
+#else
+inline constexpr const char* kHeightfieldWriteFormats = ".png, .pgm, .npy, .raw or .r16";
+#endif
 inline constexpr const char* kHeightfieldReadHelp =
     "heightfield .png, .pgm, .npy, .exr, .raw/.r16, or any raster GDAL reads (.tif, .hgt, .asc, ...)";
 

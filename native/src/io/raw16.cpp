@@ -1,13 +1,14 @@
 #include "io/raw16.hpp"
 
 #include <nlohmann/json.hpp>
-#include <sys/stat.h>
 
 #include <cfloat>
 #include <cmath>
+#include <filesystem>
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
 
@@ -71,8 +72,8 @@ Heightfield decode_raw16(const std::string& bytes, const std::string& sidecar, c
 
 Heightfield read_raw16(const std::string& path) {
   const std::string side = raw16_sidecar_path(path);
-  struct stat st {};
-  const std::string sidecar = ::stat(side.c_str(), &st) == 0 ? read_file(side) : std::string();
+  std::error_code ec;
+  const std::string sidecar = std::filesystem::exists(platform::fs_path(side), ec) ? read_file(side) : std::string();
   return decode_raw16(read_file(path), sidecar, path);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/error.hpp"
 #include "povray/sdl_writer.hpp"
@@ -9,7 +10,6 @@
 namespace ft::pov {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -39,7 +39,7 @@ bool Camera::project(const Vec3& p, double& u, double& v) const {
   if (depth <= 0) return false;
   // POV-Ray: the image plane spans |right| = aspect across and |up| = 1
   // down, at distance 0.5 * aspect / tan(angle / 2).
-  const double t = std::tan(fov_deg * kPi / 360);
+  const double t = std::tan(fov_deg * std::numbers::pi / 360);
   u = 0.5 + dot(d, right) / depth * 0.5 / t;
   v = 0.5 - dot(d, up) / depth * 0.5 * aspect / t;
   return true;
@@ -54,17 +54,17 @@ Camera frame_points(const std::vector<Vec3>& points, const CameraOptions& o) {
   const double size = std::max(std::sqrt(dot({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]},
                                               {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]})),
                                1e-9);
-  const double az = o.azimuth_deg * kPi / 180, el = o.elevation_deg * kPi / 180;
+  const double az = o.azimuth_deg * std::numbers::pi / 180, el = o.elevation_deg * std::numbers::pi / 180;
   // World azimuth: 0 = +y (POV +z), 90 = +x.
   const Vec3 to_camera{std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el)};
-  const double t = std::tan(o.fov_deg * kPi / 360);
+  const double t = std::tan(o.fov_deg * std::numbers::pi / 360);
   const Vec3 flat{-std::sin(az), 0, -std::cos(az)};
   Camera c;
   c.fov_deg = o.fov_deg;
   c.aspect = o.aspect;
   auto place = [&](double d, double tilt) {
     // The view axis is raised by `tilt` from the line to the centre.
-    const double pitch = std::clamp(-el + tilt, -kPi / 2 + 1e-6, kPi / 2 - 1e-6);
+    const double pitch = std::clamp(-el + tilt, -std::numbers::pi / 2 + 1e-6, std::numbers::pi / 2 - 1e-6);
     c.direction = {flat[0] * std::cos(pitch), std::sin(pitch), flat[2] * std::cos(pitch)};
     // Straight down, "up" in the picture is still the way the camera faces.
     const Vec3 sky = o.elevation_deg > 89.9 ? Vec3{flat[0], 0, flat[2]} : Vec3{0, 1, 0};
@@ -134,7 +134,7 @@ Camera camera_from_pose(const CameraPose& pose) {
   c.direction = unit(c.given_direction);
   c.right = unit(c.given_right);
   c.up = unit(c.given_up);
-  c.fov_deg = 2 * std::atan(0.5 * rn / dn) * 180 / kPi;
+  c.fov_deg = 2 * std::atan(0.5 * rn / dn) * 180 / std::numbers::pi;
   c.aspect = rn / un;
   c.look_at = {c.location[0] + c.given_direction[0], c.location[1] + c.given_direction[1],
                c.location[2] + c.given_direction[2]};

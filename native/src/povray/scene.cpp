@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/png_image.hpp"
 #include "povray/sdl_writer.hpp"
@@ -15,15 +17,14 @@
 namespace ft::pov {
 namespace {
 
-constexpr double kScenePi = 3.14159265358979323846;  // not kPi: camera.cpp has one, and unity builds share anonymous namespaces
 
 void grow(Vec3& lo, Vec3& hi, const Vec3& p) {
   for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
 }
 
 std::string default_image_path(const std::string& pov_path) {
-  std::filesystem::path p(pov_path);
-  return p.replace_extension(".terrain.png").string();
+  std::filesystem::path p = platform::fs_path(pov_path);
+  return platform::utf8_of(p.replace_extension(".terrain.png"));
 }
 
 const char* kind_name(LineKind k) {
@@ -53,8 +54,8 @@ PolylineSet tapered(const PolylineSet& set, double base) {
 
 // "x.pov" -> "x.colors.png", or beside a given terrain image: "t.png" -> "t.colors.png".
 std::string colors_image_path(const std::string& pov_path, const std::string& image_path) {
-  std::filesystem::path p(image_path.empty() ? pov_path : image_path);
-  return p.replace_extension(".colors.png").string();
+  std::filesystem::path p = platform::fs_path(image_path.empty() ? pov_path : image_path);
+  return platform::utf8_of(p.replace_extension(".colors.png"));
 }
 
 // The terrain colours as an 8-bit sRGB PNG (sRGB spends its 256 steps where
@@ -114,7 +115,7 @@ double automatic_line_radius(const SceneLines& l, const Camera& cam, double exte
   if (lo[0] <= hi[0]) {
     const Vec3 c{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
     const double d = std::hypot(c[0] - cam.location[0], c[1] - cam.location[1], c[2] - cam.location[2]);
-    pixel = 2 * d * std::tan(cam.fov_deg * kScenePi / 360) / image_width;
+    pixel = 2 * d * std::tan(cam.fov_deg * std::numbers::pi / 360) / image_width;
   }
   const double m = median(seg);
   return std::max(0.75 * pixel, std::isnan(m) ? cap : std::min(0.1 * m, cap));
@@ -208,10 +209,10 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
 
   std::string s;
   s += "// fracterra scene" + (p.title.empty() ? std::string() : ": " + comment_text(p.title)) + "\n";
-  s += "// Render: fracterra render " + comment_text(std::filesystem::path(pov_path).filename().string()) +
+  s += "// Render: fracterra render " + comment_text(platform::utf8_of(platform::fs_path(pov_path).filename())) +
        " --width 800 --height 600 --out image.png\n";
   s += "//     or: povray +W800 +H600 +A0.1 " +
-       comment_text(std::filesystem::path(pov_path).filename().string()) + "\n";
+       comment_text(platform::utf8_of(platform::fs_path(pov_path).filename())) + "\n";
   s += "// Axes: fracterra world (x, y, z up) is POV-Ray <x, z, y>; units are world units.\n";
   s += "#version 3.7;\n";
   s += "global_settings { assumed_gamma 1.0 max_trace_level 6" +
@@ -233,7 +234,7 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path) {
 
   s += camera_sdl(cam);
 
-  const double saz = p.sun_azimuth_deg * kScenePi / 180, sel = p.sun_elevation_deg * kScenePi / 180;
+  const double saz = p.sun_azimuth_deg * std::numbers::pi / 180, sel = p.sun_elevation_deg * std::numbers::pi / 180;
   const double far = extent * 100;
   const Vec3 sun{centre[0] + far * std::sin(saz) * std::cos(sel), centre[1] + far * std::sin(sel),
                  centre[2] + far * std::cos(saz) * std::cos(sel)};

@@ -1,10 +1,12 @@
 #include "povray/sdl_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/platform.hpp"
 
 namespace ft::pov {
 
@@ -65,16 +67,19 @@ std::string comment_text(const std::string& text) {
 std::string relative_path(const std::string& target, const std::string& from_dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  const fs::path t = fs::weakly_canonical(fs::absolute(target), ec);
-  const fs::path d = fs::weakly_canonical(fs::absolute(from_dir.empty() ? "." : from_dir), ec);
+  const fs::path t = fs::weakly_canonical(fs::absolute(platform::fs_path(target)), ec);
+  const fs::path d = fs::weakly_canonical(fs::absolute(platform::fs_path(from_dir.empty() ? "." : from_dir)), ec);
   fs::path rel = t.lexically_relative(d);
   if (rel.empty()) rel = t;  // different roots: keep it absolute
-  return rel.generic_string();
+  std::string s = platform::utf8_of(rel);
+  // POV-Ray reads '/' on every system; a backslash would start an escape.
+  if constexpr (fs::path::preferred_separator == '\\') std::replace(s.begin(), s.end(), '\\', '/');
+  return s;
 }
 
 std::string folder_of(const std::string& path) {
-  const auto parent = std::filesystem::path(path).parent_path();
-  return parent.empty() ? std::string(".") : parent.string();
+  const auto parent = platform::fs_path(path).parent_path();
+  return parent.empty() ? std::string(".") : platform::utf8_of(parent);
 }
 
 }  // namespace ft::pov

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "splat/splat_params.hpp"
 
 namespace ft::splat {
@@ -76,7 +77,7 @@ SplatRules parse_rules(const std::string& text, const std::string& source) {
 }
 
 SplatRules read_rules(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
+  std::ifstream f(platform::fs_path(path), std::ios::binary);
   if (!f) fail(FT_ERR_IO, "cannot open splat rules '" + path + "': " + std::strerror(errno));
   std::ostringstream s;
   s << f.rdbuf();

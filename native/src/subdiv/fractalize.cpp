@@ -39,10 +39,6 @@ namespace ft::subdiv {
 
 using namespace OpenSubdiv;
 
-ft_fractalize_params default_fractalize_params() {
-  return defaults_of<ft_fractalize_params>(fractalize_param_table());
-}
-
 namespace detail {
 
 // A primvar of N floats: xyz, plus (N = 4) the displacement scale factor.

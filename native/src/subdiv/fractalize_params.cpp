@@ -75,4 +75,8 @@ const ParamTable& fractalize_param_table() {
   return table;
 }
 
+ft_fractalize_params default_fractalize_params() {
+  return defaults_of<ft_fractalize_params>(fractalize_param_table());
+}
+
 }  // namespace ft::subdiv

@@ -2,6 +2,7 @@
 
 #include <string_view>
 
+#include "core/kernel_clones.hpp"
 #include "core/rng.hpp"
 
 namespace ft::terrain::detail {
@@ -33,14 +34,14 @@ inline void diamond_points(float* row, const float* up, const float* dn, int x0,
 
 }  // namespace
 
-__attribute__((target_clones("avx2", "default")))
+FT_KERNEL_CLONES_AVX2
 void square_row_portable(float* row, const float* up, const float* dn, int x0, int count, int big, int half,
                          float delta, const float* g) {
   if (big == 2) square_points<2>(row, up, dn, x0, count, big, half, delta, g);
   else square_points<0>(row, up, dn, x0, count, big, half, delta, g);
 }
 
-__attribute__((target_clones("avx2", "default")))
+FT_KERNEL_CLONES_AVX2
 void diamond_interior_portable(float* row, const float* up, const float* dn, int x0, int count, int big, int half,
                                float delta, const float* g) {
   if (big == 2) diamond_points<2>(row, up, dn, x0, count, big, half, delta, g);

@@ -1,7 +1,5 @@
 #include "tiles/manifest.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
 #include <zlib.h>
 
 #include <cerrno>
@@ -10,6 +8,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "terrain/terrain_params.hpp"
 
@@ -41,7 +40,9 @@ nlohmann::json value_of(const ft_param_info& row, const void* p) {
   }
 }
 
-std::string path_in(const std::string& dir, const char* name) { return (std::filesystem::path(dir) / name).string(); }
+std::string path_in(const std::string& dir, const char* name) {
+  return platform::utf8_of(platform::fs_path(dir) / name);
+}
 
 }  // namespace
 
@@ -114,7 +115,7 @@ nlohmann::json parse_manifest(const std::string& text, const std::string& path) 
 
 std::optional<nlohmann::json> read_manifest(const std::string& dir) {
   const std::string path = path_in(dir, kManifestName);
-  if (!std::filesystem::exists(path)) return std::nullopt;
+  if (!std::filesystem::exists(platform::fs_path(path))) return std::nullopt;
   return parse_manifest(io::read_file(path), path);
 }
 
@@ -125,18 +126,13 @@ void write_manifest(const std::string& dir, const nlohmann::json& m) {
 void append_journal(const std::string& dir, int32_t col, int32_t row, uint32_t crc) {
   const std::string path = path_in(dir, kJournalName);
   const std::string line = nlohmann::json{{"column", col}, {"row", row}, {"crc32", crc}}.dump() + "\n";
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (fd < 0) fail(FT_ERR_IO, "cannot open '" + path + "': " + std::strerror(errno));
-  // One write of a short line: O_APPEND puts it whole at the end.
-  const bool ok = ::write(fd, line.data(), line.size()) == ssize_t(line.size()) && ::fdatasync(fd) == 0;
-  const int err = errno;
-  ::close(fd);
-  if (!ok) fail(FT_ERR_IO, "cannot append to '" + path + "': " + std::strerror(err));
+  const std::string why = platform::append_synced(path, line);
+  if (!why.empty()) fail(FT_ERR_IO, "cannot append to '" + path + "': " + why);
 }
 
 int64_t replay_journal(const std::string& dir, nlohmann::json& m) {
   const std::string path = path_in(dir, kJournalName);
-  if (!std::filesystem::exists(path)) return 0;
+  if (!std::filesystem::exists(platform::fs_path(path))) return 0;
   const std::string text = io::read_file(path);
   nlohmann::json& tiles = m["tiles"];
   const int64_t columns = m.value("columns", int64_t(0)), rows = m.value("rows", int64_t(0));
@@ -157,7 +153,7 @@ int64_t replay_journal(const std::string& dir, nlohmann::json& m) {
 
 void remove_journal(const std::string& dir) {
   std::error_code ec;
-  std::filesystem::remove(path_in(dir, kJournalName), ec);
+  std::filesystem::remove(platform::fs_path(path_in(dir, kJournalName)), ec);
   if (ec) fail(FT_ERR_IO, "cannot remove '" + path_in(dir, kJournalName) + "': " + ec.message());
 }
 

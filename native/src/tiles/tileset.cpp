@@ -4,7 +4,9 @@
 #include <filesystem>
 #include <optional>
 
+#include "core/build_features.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "terrain/terrain.hpp"
 #include "tiles/manifest.hpp"
 #include "tiles/mosaic_vrt.hpp"
@@ -15,8 +17,10 @@ namespace {
 void make_folder(const std::string& dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) fail(FT_ERR_IO, "'" + dir + "' exists and is not a folder");
-  fs::create_directories(dir, ec);
+  const fs::path folder = platform::fs_path(dir);
+  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
+    fail(FT_ERR_IO, "'" + dir + "' exists and is not a folder");
+  fs::create_directories(folder, ec);
   if (ec) fail(FT_ERR_IO, "cannot create the folder '" + dir + "': " + ec.message());
 }
 
@@ -116,9 +120,9 @@ bool TileSet::done(int32_t col, int32_t row) const {
   if (range_pending_) return false;
   const nlohmann::json& e = manifest_["tiles"][size_t(row) * size_t(spec_.grid.columns()) + size_t(col)];
   if (e["crc32"].is_null()) return false;
-  const std::string path = (std::filesystem::path(dir_) / e["file"].get<std::string>()).string();
+  const std::string path = platform::utf8_of(platform::fs_path(dir_) / platform::fs_path(e["file"].get<std::string>()));
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  if (!std::filesystem::is_regular_file(platform::fs_path(path), ec)) return false;
   return file_crc32(path) == e["crc32"].get<uint32_t>();
 }
 
@@ -140,8 +144,10 @@ void TileSet::finish() {
   if (n != spec_.grid.count())
     invalid("the tile set in '" + dir_ + "' has " + std::to_string(n) + " of " + std::to_string(spec_.grid.count()) +
             " tiles; write the rest before finishing it");
-  write_mosaic_vrt(spec_, dir_);
-  manifest_["vrt"] = kMosaicName;
+  if (kHaveGdal) {  // without GDAL (Windows) the set is complete without its mosaic
+    write_mosaic_vrt(spec_, dir_);
+    manifest_["vrt"] = kMosaicName;
+  }
   manifest_["complete"] = true;
   write_manifest(dir_, manifest_);
   remove_journal(dir_);

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "core/platform.hpp"
 #include "io/heightfield_io.hpp"
 #include "tiles/manifest.hpp"
 #include "tiles/tile_writer.hpp"
@@ -52,7 +53,8 @@ Heightfield read_tileset_window(const std::string& dir, int lod, int64_t x0, int
   for (int32_t r = r0; r <= r1; ++r)
     for (int32_t c = c0; c <= c1; ++c) {
       const nlohmann::json& e = m["tiles"][size_t(r) * size_t(columns) + size_t(c)];
-      const std::string path = (std::filesystem::path(dir) / e["file"].get<std::string>()).string();
+      const std::string path =
+          platform::utf8_of(platform::fs_path(dir) / platform::fs_path(e["file"].get<std::string>()));
       if (e["crc32"].is_null() || file_crc32(path) != e["crc32"].get<uint32_t>())
         fail(FT_ERR_IO, "the tile '" + path + "' is missing or damaged (its CRC-32 differs from the manifest's); "
                         "rerun fracterra tiles on the folder to rewrite it");
