@@ -132,6 +132,15 @@ TEST(PlanetAbi, MidpointIcosphereAndSpectrum) {
   EXPECT_TRUE(hurst > 0 && hurst < 1.6) << hurst;  // one planet at low degrees: only loosely H
   expect_error(ft_planet_spectrum_hurst(&p, 16, 16, &hurst, &err), FT_ERR_INVALID_ARGUMENT, "l_min");
   expect_error(ft_planet_spectrum_hurst(&p, 4, 16, nullptr, &err), FT_ERR_INVALID_ARGUMENT, "hurst");
+  // Progress reaches the callback and a cancel stops a face and a map.
+  // (Seen to fail: without parallel_rows' reports the face came back FT_OK.)
+  p.progress = cancel_at_half;
+  EXPECT_EQ(ft_planet_face(&p, 9, 0, 0, 0, 513, 513, &whole), FT_ERR_CANCELLED);
+  EXPECT_EQ(whole, nullptr);
+  ft_heightfield* map = nullptr;
+  EXPECT_EQ(ft_planet_equirect(&p, 512, 256, &map), FT_ERR_CANCELLED);
+  EXPECT_EQ(map, nullptr);
+  p.progress = nullptr;
   p.method = 2;
   expect_error(ft_planet_face(&p, 4, 0, 0, 0, 8, 8, &whole), FT_ERR_INVALID_ARGUMENT, "method");
 }

@@ -18,6 +18,7 @@
 #include "planet/cube_sphere.hpp"
 #include "planet/equirect.hpp"
 #include "planet/planet.hpp"
+#include "planet_edges.hpp"
 
 namespace ft::planet {
 namespace {
@@ -80,6 +81,39 @@ TEST(PlanetMidpoint, SharedEdgeSamplesAreBitIdentical) {
         }
     EXPECT_EQ(pairs, 6 * (4 * int(n - 1) + 8));
   }
+}
+
+TEST(PlanetMidpoint, GradientAcrossAnEdgeIsAsContinuousAsInsideAFace) {
+  // As PlanetCube's for fBm: for every edge sample e shared by faces A and
+  // B (not a corner), the second difference across the edge, h(b1) - 2 h(e)
+  // + h(a1), against the same one sample inside A, h(e) - 2 h(a1) + h(a2)
+  // (a1 = e - 2 n_B, b1 = e - 2 n_A in cube units). (The first differences'
+  // ratio is 1 by construction here: with both orderings of A and B each
+  // step across an edge is also counted as a step inside.) Level 7, 4
+  // seeds, 12 edges x 127 samples x 2 orderings: ~12000 differences, RMS
+  // within ~1.5 %; the finest displacements dominate and are alike on both
+  // sides. Tolerance 8 %, the fBm test's. Measured 1.05. (Seen to fail: an
+  // edge vertex's centre beyond the edge replaced by a second copy of the
+  // one on its own face gave 1.41.)
+  const int level = 7;
+  const int64_t n = 128;
+  double across2 = 0, inside2 = 0;
+  for (uint64_t seed : {11u, 12u, 13u, 14u}) {
+    const std::vector<Heightfield> faces = whole_faces(Planet(midpoint(seed, 0.6)), level);
+    auto h = [&](const CubePoint& p) {
+      int64_t i, j;
+      const int g = locate(p, n, &i, &j);
+      return double(faces[size_t(g)].at(int32_t(i), int32_t(j)));
+    };
+    for_each_edge_step(n, [&](const CubePoint& e, const CubePoint& a1, const CubePoint& a2, const CubePoint& b1) {
+      const double he = h(e), ha1 = h(a1), ha2 = h(a2), hb1 = h(b1);
+      across2 += (hb1 - 2 * he + ha1) * (hb1 - 2 * he + ha1);
+      inside2 += (he - 2 * ha1 + ha2) * (he - 2 * ha1 + ha2);
+    });
+  }
+  const double r2 = std::sqrt(across2 / inside2);
+  RecordProperty("second_difference_ratio", std::to_string(r2));
+  EXPECT_NEAR(r2, 1.0, 0.08);
 }
 
 TEST(PlanetMidpoint, PatchesEqualTheWholeAndCoarserLevelsAreSubsets) {

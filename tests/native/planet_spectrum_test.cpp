@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli_run.hpp"
 #include "core/error.hpp"
 #include "planet/planet.hpp"
 #include "planet/sphere_spectrum.hpp"
@@ -100,6 +104,32 @@ TEST(PlanetSpectrum, RefusesBadDegrees) {
   EXPECT_THROW(spectrum_hurst(p, 0, 5), Error);
   EXPECT_THROW(spectrum_hurst(p, 5, 10), Error);
   EXPECT_THROW(spectrum_hurst(p, 5, 5), Error);
+}
+
+TEST(PlanetCli, MidpointIcosphereAndSpectrumEndToEnd) {
+  // The CLI as a user runs it: a midpoint icosphere mesh with --stats and
+  // --spectrum (its JSON has the counts, the method, H and the C_l), and
+  // the clear refusals. (Seen to fail: with the layout check as it was,
+  // cube or equirect only, it exited 1.)
+  namespace fs = std::filesystem;
+  const fs::path out = fs::temp_directory_path() / ("ft_ico_" + std::to_string(::getpid()) + ".ply");
+  const test::CliRun r = test::run_cli("planet --method midpoint --layout icosphere --level 3 --stats --spectrum 4,16 "
+                                       "--out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["method"], "midpoint");
+  EXPECT_EQ(j["vertices"], 642);
+  EXPECT_EQ(j["faces"], 1280);
+  EXPECT_EQ(j["spectrum"]["power"].size(), 17u);
+  EXPECT_TRUE(j["spectrum"]["hurst"].is_number());
+  EXPECT_TRUE(fs::file_size(out) > 642 * 12);
+  fs::remove(out);
+  EXPECT_NE(test::run_cli("planet --layout icosphere --level 11 --stats").err.find("level must be in 0..10"),
+            std::string::npos);
+  EXPECT_NE(test::run_cli("planet --stats --spectrum 8").err.find("--spectrum must be LMIN,LMAX"), std::string::npos);
+  EXPECT_NE(test::run_cli("planet --layout hex --stats").err.find("cube, equirect or icosphere"), std::string::npos);
+  EXPECT_NE(test::run_cli("planet --method midpoint --layout icosphere --level 2 --out x.stl").err.find(".ply or .obj"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "planet/cube_sphere.hpp"
 #include "planet/equirect.hpp"
 #include "planet/icosphere.hpp"
+#include "planet_edges.hpp"
 #include "planet/planet.hpp"
 #include "planet/planet_params.hpp"
 
@@ -137,28 +138,14 @@ TEST(PlanetCube, GradientAcrossAnEdgeIsAsContinuousAsInsideAFace) {
     PlanetConfig c = config(seed, 12, 0.6);
     c.fbm.frequency = 1.0;  // finest octave 2^11 cells a radius: ~8 per sample at level 7
     const Planet planet(c);
-    for (int a = 0; a < 6; ++a)
-      for (int64_t j = 1; j < n; ++j)
-        for (int side = 0; side < 4; ++side) {
-          const int64_t i = side < 2 ? (side == 0 ? 0 : n) : j, jj = side < 2 ? j : (side == 2 ? 0 : n);
-          const CubePoint e = cube_point(a, i, jj, n);
-          for (int b = 0; b < 6; ++b) {
-            int64_t bi, bj;
-            if (b == a || !face_sample(e, b, n, &bi, &bj)) continue;
-            const auto na = face_normal(a), nb = face_normal(b);
-            const CubePoint a1{e.x - 2 * nb[0], e.y - 2 * nb[1], e.z - 2 * nb[2]};
-            const CubePoint a2{e.x - 4 * nb[0], e.y - 4 * nb[1], e.z - 4 * nb[2]};
-            const CubePoint b1{e.x - 2 * na[0], e.y - 2 * na[1], e.z - 2 * na[2]};
-            ASSERT_TRUE(face_sample(a1, a, n, &bi, &bj));
-            ASSERT_TRUE(face_sample(b1, b, n, &bi, &bj));
-            const double he = height_at(planet, e), ha1 = height_at(planet, a1), ha2 = height_at(planet, a2),
-                         hb1 = height_at(planet, b1);
-            across1 += (hb1 - he) * (hb1 - he);
-            inside1 += (he - ha1) * (he - ha1);
-            across2 += (hb1 - 2 * he + ha1) * (hb1 - 2 * he + ha1);
-            inside2 += (he - 2 * ha1 + ha2) * (he - 2 * ha1 + ha2);
-          }
-        }
+    for_each_edge_step(n, [&](const CubePoint& e, const CubePoint& a1, const CubePoint& a2, const CubePoint& b1) {
+      const double he = height_at(planet, e), ha1 = height_at(planet, a1), ha2 = height_at(planet, a2),
+                   hb1 = height_at(planet, b1);
+      across1 += (hb1 - he) * (hb1 - he);
+      inside1 += (he - ha1) * (he - ha1);
+      across2 += (hb1 - 2 * he + ha1) * (hb1 - 2 * he + ha1);
+      inside2 += (he - 2 * ha1 + ha2) * (he - 2 * ha1 + ha2);
+    });
   }
   const double r1 = std::sqrt(across1 / inside1), r2 = std::sqrt(across2 / inside2);
   RecordProperty("first_difference_ratio", std::to_string(r1));
