@@ -194,9 +194,8 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                                    "how the --terrain is coloured: splat (the splat rules' colour map, as "
                                    "fracterra splat --color bakes it and the Blender material shows it) or "
                                    "altitude (ft_terrain.inc's sand, grass, rock and snow by altitude and slope; "
-                                   "tile sets always)")
-                        ->check(CLI::IsMember({"splat", "altitude"}))
-                        ->capture_default_str();
+                                   "tile sets always) [default: splat]")
+                        ->check(CLI::IsMember({"splat", "altitude"}));
                     app.add_option("--rules", o->rules,
                                    "splat rules JSON that colour the terrain (as fracterra splat --rules reads "
                                    "them) [default: grass, rock, sediment, snow]")
