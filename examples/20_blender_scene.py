@@ -238,6 +238,7 @@ def main():
     print(f"20_blender_scene: terrain {len(terrain.data.vertices)} vertices in {time.perf_counter() - t0:.2f} s")
     mat = terrain_material()
     zs = [v.co.z for v in terrain.data.vertices]
+    terrain.data.materials.clear()  # in place of the terrain's splat material
     terrain.data.materials.append(mat)
     if args.sea_level is not None:
         water(args.size, args.sea_level)

@@ -68,6 +68,7 @@ def main():
     print(f"21_blender_mandelbrot: terrain {len(terrain.data.vertices)} vertices in {time.perf_counter() - t0:.2f} s")
     mat = scene20.terrain_material()  # by the terrain's own height and slope attributes
     zs = [v.co.z for v in terrain.data.vertices]
+    terrain.data.materials.clear()  # in place of the terrain's splat material
     terrain.data.materials.append(mat)
 
     # The sea at the equipotential of escape time 1.6, the curves above it.

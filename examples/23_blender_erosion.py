@@ -4,10 +4,10 @@
 
 Adds the same fBm terrain twice with the fracterra add-on (installed, or from
 this source tree with the library from build/native): once as generated, once
-with the Erode preset "Land" (rivers, rain, scree). The eroded one gets the
-add-on's own material, which reads the erosion attributes (rock on slopes,
-sediment in channels and deposits, grass elsewhere); the other the same
-material without channels. Renders before-after.png with Cycles and saves
+with the Erode preset "Land" (rivers, rain, scree). Both get the add-on's
+terrain material, which shows the library's splat colours (rock on slopes,
+grass and snow by height, and on the eroded one sediment in channels and
+deposits). Renders before-after.png with Cycles and saves
 erosion.blend. Exits non-zero with a message on any error.
 """
 
@@ -50,9 +50,6 @@ def main():
         bpy.data.objects.remove(obj)
     before = terrain(args, -5.6, "NONE")
     after = terrain(args, 5.6, "LAND")
-    # The uneroded terrain: the same material; without the erosion attributes
-    # the Attribute nodes read 0, so no channels or deposits: grass and rock.
-    before.data.materials.append(after.data.materials[0])
     bpy.ops.object.light_add(type="SUN", rotation=(math.radians(50), 0.0, math.radians(130)))
     bpy.context.active_object.data.energy = 4.0
     bpy.ops.object.camera_add(location=(0.0, -15.0, 13.0), rotation=(math.radians(47), 0.0, 0.0))

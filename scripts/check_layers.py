@@ -18,9 +18,9 @@ a layer of lower rank, never one of the same rank (sideways) or higher
     3  refine/                                 DEM refinement (uses terrain/)
     3  planet/                                 fractal planets: spherical fBm (noise/), cube-sphere
                                                and equirectangular layouts (terrain/'s tables)
-       engines/                                game-engine sizes, formats and sidecars
-                                               (io/, splat/)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
+       engines/                                game-engine sizes, formats and sidecars, and
+                                               tile sets cut for engines (io/, splat/, tiles/)
        erosion/                                fluvial, hydraulic, thermal erosion and maps
     5  hydrology/                              rivers, lakes and the sea (erosion/'s routing,
                                                polyline/'s FPL, contour/'s shorelines)
@@ -79,7 +79,7 @@ RANK = {
     "tiles": 3,  # tile sets: windows of terrain/ written through io/
     "planet": 3,  # fractal planets: noise/ in 3D on the sphere; terrain/'s enum tables
     "splat": 2,  # splat (weight) and colour maps by layer rules (PNGs through io/)
-    "engines": 3,  # game-engine presets: sizes, formats, sidecars (io/, splat/)
+    "engines": 4,  # game-engine presets: sizes, formats, sidecars; tile sets cut for engines (io/, splat/, tiles/)
     "pipeline": 6,  # the terrain pipeline: terrain/, erosion/, then hydrology/
     "hydrology": 5,  # rivers, lakes, the sea: erosion/'s flow graph, polyline/'s FPL, contour/
     "tables": 7,  # every capability's parameter table, by kind

@@ -3,7 +3,7 @@
 workers' memory written as 16-bit tiles through Dask on this machine, against the
 in-memory generator in the same run.
 
-    PYTHONPATH=blender_addon FRACTERRA_LIBRARY=build/native/libfracterra.so \\
+    PYTHONPATH=build/python/stage FRACTERRA_LIBRARY=build/native/libfracterra.so \\
         /usr/bin/python3 native/bench/tiles_dask_bench.py --levels 16 --tile 4096 \\
         --workers 2 --memory-limit 3GB --out /work/scratch/tiles65537
 
@@ -27,14 +27,17 @@ import sys
 import time
 from ctypes import byref, c_void_p
 
-from fracterra.core import generate_terrain, tiles
+from fracterra import tiles
+from fracterra.core import generate_terrain
+from fracterra.core.binding import library
+from fracterra.core.terrain import terrain_struct
 
 
 def generate_only(col, row, settings, tile):
     """A task: tile (col, row)'s window generated and dropped; returns its samples."""
-    lib = tiles._lib()
-    p, _keep = tiles._terrain(settings, None)
-    w, h = tiles._extent(settings, None)
+    lib = library()
+    p = terrain_struct(settings)
+    w, h = tiles.terrain_extent(settings, None)
     tw, th = min(tile + 1, w - col * tile), min(tile + 1, h - row * tile)
     out = c_void_p()
     lib.check(lib.ft_terrain_generate_window(byref(p), col * tile, row * tile, tw, th, byref(out)))
@@ -71,7 +74,7 @@ def main():
 
     client = tiles.connect(workers=a.workers, memory_limit=a.memory_limit)
     try:
-        w, h = tiles._extent(settings, None)
+        w, h = tiles.terrain_extent(settings, None)
         cols, rows = (w - 2) // a.tile + 1, (h - 2) // a.tile + 1
         grid = [(c, r) for r in range(rows) for c in range(cols)]
         times = []

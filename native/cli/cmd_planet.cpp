@@ -1,6 +1,8 @@
-// fracterra planet: a fractal planet as a cube-sphere (one raster per face
-// plus a manifest, or a closed mesh), a patch of one face at any level, or an
-// equirectangular map (georeferenced in EPSG:4326 when written as GeoTIFF).
+// fracterra planet: a fractal planet (fBm or midpoint) as a cube-sphere (one
+// raster per face plus a manifest, or a closed mesh), a patch of one face at
+// any level, an equirectangular map (georeferenced in EPSG:4326 when written
+// as GeoTIFF) or an icosphere mesh; --spectrum adds its spherical-harmonic
+// power spectrum and H to --stats.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +19,8 @@
 #include "io/ply_io.hpp"
 #include "planet/cube_sphere.hpp"
 #include "planet/equirect.hpp"
+#include "planet/icosphere.hpp"
+#include "planet/sphere_spectrum.hpp"
 #include "planet/planet_params.hpp"
 #include "povray/planet_scene.hpp"
 #include "povray/render.hpp"
@@ -29,7 +33,8 @@ namespace fs = std::filesystem;
 constexpr const char* kFaceNames[6] = {"px", "nx", "py", "ny", "pz", "nz"};
 
 struct PlanetCli {
-  std::string layout = "cube", size = "2048x1024", patch, out, format = ".tif", pov, render;
+  std::string layout = "cube", size = "2048x1024", patch, out, format = ".tif", pov, render, spectrum,
+      pov_geometry = "isosurface";
   pov::PlanetScene scene;
   pov::RenderOptions r;
   int level = 6;
@@ -69,6 +74,31 @@ nlohmann::json stats_json(const Heightfield& hf) {
           {"std", s.std}};
 }
 
+// --spectrum LMIN,LMAX: C_l up to LMAX and H fitted over LMIN..LMAX.
+nlohmann::json spectrum_json(const planet::Planet& planet, const std::string& text) {
+  int lo = 0, hi = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%d,%d%c", &lo, &hi, &extra) != 2)
+    invalid("--spectrum must be LMIN,LMAX (e.g. 8,64), got '" + text + "'");
+  check_int_range("--spectrum LMAX", hi, 2, planet::kMaxSpectrumDegree);
+  check_int_range("--spectrum LMIN", lo, 1, hi - 1);
+  Stopwatch clock;
+  const std::vector<double> power = planet::angular_power_spectrum(planet, hi);
+  const planet::SpectrumHurst fit = planet::spectrum_hurst(power, lo, hi);
+  return {{"l_min", lo}, {"l_max", hi}, {"hurst", fit.hurst}, {"std_error", fit.std_error}, {"slope", fit.slope},
+          {"seconds", clock.seconds()}, {"power", power}};
+}
+
+void write_mesh(const Mesh& mesh, const std::string& out, const std::string& what, nlohmann::json* info) {
+  (*info)["vertices"] = mesh.vertex_count();
+  (*info)["faces"] = mesh.face_count();
+  if (out.empty()) return;
+  const std::string ext = extension(out), comment = "fracterra planet, " + what + ", metres";
+  if (ext == ".ply") io::write_ply(mesh, out, comment);
+  else if (ext == ".obj") io::write_obj(mesh, out, comment);
+  else invalid("a mesh's --out is a .ply or .obj file, got '" + out + "'");
+}
+
 void write_json(const nlohmann::json& j, const std::string& path) {
   io::AtomicFile f(path);
   f.write(j.dump(2) + "\n");
@@ -77,6 +107,7 @@ void write_json(const nlohmann::json& j, const std::string& path) {
 
 int run(const CLI::App& app, const PlanetCli& o) {
   if (o.out.empty() && !o.stats && o.pov.empty()) invalid("give --out DIR|FILE, --pov SCENE and/or --stats");
+  if (!o.spectrum.empty() && !o.stats) invalid("--spectrum adds to --stats: give --stats too");
   if (!o.render.empty() && o.pov.empty()) invalid("--render needs --pov SCENE (the scene it renders)");
   ft_planet_params p = o.flags;
   const bool level_given = flag_given(app, "sea_level"), fraction_given = flag_given(app, "sea_fraction");
@@ -87,10 +118,26 @@ int run(const CLI::App& app, const PlanetCli& o) {
   }
   const planet::PlanetConfig config = planet::from_c(p);
   Stopwatch clock;
-  nlohmann::json info = {{"radius", config.radius}, {"seed", config.fbm.seed}, {"octaves", config.fbm.octaves}};
-  if (o.layout != "cube" && o.layout != "equirect")
-    invalid("--layout must be cube or equirect, got '" + o.layout + "'");
-  if (!o.patch.empty()) {
+  nlohmann::json info = {{"method", config.method == planet::kMethodMidpoint ? "midpoint" : "fbm"},
+                         {"radius", config.radius}, {"seed", config.fbm.seed}};
+  if (config.method == planet::kMethodFbm) info["octaves"] = config.fbm.octaves;
+  auto render_if_asked = [&] {
+    if (o.render.empty()) return;
+    Stopwatch render_clock;
+    pov::render_scene(o.pov, o.render, o.r);
+    info["render_seconds"] = render_clock.seconds();
+  };
+  if (o.layout != "cube" && o.layout != "equirect" && o.layout != "icosphere")
+    invalid("--layout must be cube, equirect or icosphere, got '" + o.layout + "'");
+  if (!o.spectrum.empty()) info["spectrum"] = spectrum_json(planet::Planet(config), o.spectrum);
+  if (o.layout == "icosphere" && o.patch.empty() && o.pov.empty()) {
+    check_int_range("--level", o.level, 0, planet::kMaxIcosphereLevel);
+    const planet::Planet planet(config);
+    const Mesh mesh = planet::icosphere_mesh(planet, o.level, o.vertical_scale);
+    info["seconds"] = clock.seconds();
+    write_mesh(mesh, o.out, "icosphere level " + std::to_string(o.level), &info);
+    if (!std::isnan(planet.sea_height())) info["sea_height"] = planet.sea_height();
+  } else if (!o.patch.empty()) {
     const Patch q = parse_patch(o.patch);
     planet::validate_patch(o.level, q.face, q.x0, q.y0, q.w, q.h);
     const planet::Planet planet(config);
@@ -98,6 +145,21 @@ int run(const CLI::App& app, const PlanetCli& o) {
     info["seconds"] = clock.seconds();
     info["patch"] = stats_json(hf);
     if (!o.out.empty()) io::write_heightfield(hf, o.out);
+  } else if (!o.pov.empty() && o.pov_geometry == "mesh2") {
+    // The exact cube-sphere of --level, heights times the scene's exaggeration.
+    if (!o.out.empty())
+      invalid("--pov-geometry mesh2 writes the mesh beside the scene; write --out with another command");
+    const planet::Planet planet(config);
+    std::vector<float> heights;
+    const Mesh mesh = planet::cube_sphere_mesh(planet, o.level, o.scene.exaggeration, &heights);
+    info["seconds"] = clock.seconds();
+    info["vertices"] = mesh.vertex_count();
+    pov::PlanetScene scene = o.scene;
+    scene.radius = config.radius;
+    scene.sea_height = planet.sea_height();
+    pov::write_planet_mesh_scene(mesh, heights, scene, o.pov);
+    render_if_asked();
+    if (!std::isnan(planet.sea_height())) info["sea_height"] = planet.sea_height();
   } else if (o.layout == "equirect" || !o.pov.empty()) {
     int w = 0, h = 0;
     parse_wxh(o.size, &w, &h);
@@ -113,11 +175,7 @@ int run(const CLI::App& app, const PlanetCli& o) {
       scene.radius = config.radius;
       scene.sea_height = planet.sea_height();
       pov::write_planet_scene(hf, scene, o.pov);
-      if (!o.render.empty()) {
-        Stopwatch render_clock;
-        pov::render_scene(o.pov, o.render, o.r);
-        info["render_seconds"] = render_clock.seconds();
-      }
+      render_if_asked();
     }
     if (!std::isnan(planet.sea_height())) info["sea_height"] = planet.sea_height();
   } else {
@@ -126,11 +184,7 @@ int run(const CLI::App& app, const PlanetCli& o) {
     if (ext == ".ply" || ext == ".obj") {
       const Mesh mesh = planet::cube_sphere_mesh(planet, o.level, o.vertical_scale);
       info["seconds"] = clock.seconds();
-      info["vertices"] = mesh.vertex_count();
-      info["faces"] = mesh.face_count();
-      const std::string comment = "fracterra planet, level " + std::to_string(o.level) + ", metres";
-      if (ext == ".ply") io::write_ply(mesh, o.out, comment);
-      else io::write_obj(mesh, o.out, comment);
+      write_mesh(mesh, o.out, "level " + std::to_string(o.level), &info);
     } else {
       if (!ext.empty() && !fs::is_directory(o.out))
         invalid("a cube layout's --out is a folder (one raster per face plus planet.json) or a .ply or .obj "
@@ -161,7 +215,7 @@ int run(const CLI::App& app, const PlanetCli& o) {
             {"level", o.level}, {"samples_per_side", side}, {"radius", config.radius},
             {"units", "metres above the radius"}, {"faces", faces}};
         if (!std::isnan(planet.sea_height())) manifest["sea_height"] = planet.sea_height();
-        manifest["params"] = {{"seed", config.fbm.seed}, {"octaves", config.fbm.octaves},
+        manifest["params"] = {{"method", info["method"]}, {"seed", config.fbm.seed}, {"octaves", config.fbm.octaves},
                               {"hurst", config.fbm.hurst}, {"sigma", config.fbm.sigma},
                               {"frequency", config.fbm.frequency}, {"lacunarity", config.fbm.lacunarity},
                               {"basis", config.fbm.basis}, {"variant", config.fbm.variant}};
@@ -174,15 +228,21 @@ int run(const CLI::App& app, const PlanetCli& o) {
   return 0;
 }
 
-Registration reg({"planet", "A fractal planet: cube-sphere faces or mesh, a face patch, or an equirectangular map",
+Registration reg({"planet",
+                  "A fractal planet (fBm or midpoint): cube-sphere faces or mesh, a face patch, an equirectangular "
+                  "map or an icosphere",
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<PlanetCli>();
-                    app.add_option("--layout", o->layout, "cube (six faces, or a mesh) or equirect")
+                    app.add_option("--layout", o->layout,
+                                   "cube (six faces, or a mesh), equirect, or icosphere (a .ply / .obj mesh)")
                         ->capture_default_str();
                     app.add_option("--level", o->level,
                                    "cube-face level n: faces of (2^n + 1)^2 samples (patches up to 26, meshes up "
-                                   "to 12)")
+                                   "to 12); icosphere: 10 4^n + 2 vertices (up to 10)")
                         ->capture_default_str();
+                    app.add_option("--spectrum", o->spectrum,
+                                   "LMIN,LMAX: add the spherical-harmonic power spectrum C_l (l <= LMAX <= 512) "
+                                   "and H fitted to C_l ~ l^-(2H+2) over LMIN..LMAX to --stats (e.g. 8,64)");
                     app.add_option("--size", o->size, "equirectangular map WxH")->capture_default_str();
                     app.add_option("--patch", o->patch,
                                    "FACE,X0,Y0,W,H: W x H samples of one face (0..5: +X -X +Y -Y +Z -Z) from "
@@ -198,6 +258,11 @@ Registration reg({"planet", "A fractal planet: cube-sphere faces or mesh, a face
                     app.add_option("--pov", o->pov,
                                    "write a POV-Ray scene of the globe (isosurface over the equirectangular map "
                                    "of --size, saved beside it as <scene>_height.png)");
+                    app.add_option("--pov-geometry", o->pov_geometry,
+                                   "the scene's ground: isosurface (over the map of --size) or mesh2 (the exact "
+                                   "cube-sphere of --level, as <scene>_mesh.inc)")
+                        ->check(CLI::IsMember({"isosurface", "mesh2"}))
+                        ->capture_default_str();
                     app.add_option("--render", o->render, "also render the scene with povray to this PNG");
                     app.add_option("--exaggeration", o->scene.exaggeration, "the scene's height exaggeration")
                         ->capture_default_str();

@@ -9,6 +9,7 @@
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
 #include "cli/path_checks.hpp"
+#include "cli/splat_sources.hpp"
 #include "core/error.hpp"
 #include "core/platform.hpp"
 #include "io/heightfield_io.hpp"
@@ -28,7 +29,7 @@ const std::map<std::string, int> kKinds = {{"line", int(pov::LineKind::kGeneric)
                                            {"coastline", int(pov::LineKind::kCoastline)}};
 
 struct SceneOptions {
-  std::string terrain, tiles, pov, render, rivers;
+  std::string terrain, tiles, pov, render, rivers, rules, maps, texture = "splat";
   std::vector<std::string> polylines;
   std::vector<int> kinds;
   std::vector<double> radii, radius_scales;
@@ -61,6 +62,24 @@ pov::TiledTerrain load_tiles(const std::string& dir) {
   return t;
 }
 
+// The terrain's colours by the splat rules (the built-in ones or --rules, with
+// the erosion --maps if given), linear RGB per sample: the colour map
+// `fracterra splat --color` bakes and the Blender material shows. The slopes
+// are the file's own, as `fracterra splat` reads them: its recorded world
+// size, else --size, else 10.
+std::vector<float> splat_colors(const SceneOptions& o, Heightfield& hf) {
+  const SplatSources src = read_splat_sources(o.rules, o.maps);
+  // The rules' world size for this call only: the rivers below read the recorded one.
+  const double recorded = hf.world_size();
+  if (recorded <= 0) hf.set_world_size(o.size > 0 ? o.size : 10.0);
+  struct Restore {
+    Heightfield& hf;
+    double size;
+    ~Restore() { hf.set_world_size(size); }
+  } restore{hf, recorded};
+  return splat::splat_colors_linear(src.inputs(hf), src.rules.layers.data(), src.layer_count());
+}
+
 int run(SceneOptions& o) {
   pov::SceneParams p;
   // Checked against the tables first, then the terrain's own forms (which set world sizes and sea) follow.
@@ -68,10 +87,13 @@ int run(SceneOptions& o) {
   pov::apply_scene_settings(o.scene, p);
   p.sweep = pov::sweep_options(o.sweep);
   Heightfield hf;
+  std::vector<float> colors;  // the terrain's, alive until the scene is written
   pov::TiledTerrain tiled;
   std::vector<PolylineSet> sets(o.polylines.size());
   if (!o.tiles.empty()) {
     if (!o.terrain.empty()) invalid("give --terrain or --tiles, not both");
+    if (!o.rules.empty() || !o.maps.empty())
+      invalid("--rules and --maps colour a --terrain; a tile set is textured by altitude and slope");
     if (!std::isnan(o.sea_fraction) && !std::isnan(o.water)) invalid("give --sea-fraction or --water, not both");
     tiled = load_tiles(o.tiles);
     hf = tiles::read_mosaic_preview(o.tiles, 257);
@@ -86,6 +108,10 @@ int run(SceneOptions& o) {
     const double size = o.size > 0 ? o.size : hf.world_size() > 0 ? hf.world_size() : 1.0;
     pov::set_scene_terrain(p, hf, size, o.vertical_scale, o.sea_fraction);
     if (!std::isnan(o.water)) p.has_sea = true, p.sea_level = o.water;
+    if (o.texture == "splat") {
+      colors = splat_colors(o, hf);
+      p.terrain_colors = colors.data();
+    }
   } else if (!std::isnan(o.water)) {
     p.has_sea = true, p.sea_level = o.water;
   }
@@ -164,6 +190,21 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                                    "rivers and lakes (.json of fracterra rivers, on this --terrain): rivers as "
                                    "water ribbons as wide as the rivers, lakes as water at their levels")
                         ->check(existing_file);
+                    app.add_option("--texture", o->texture,
+                                   "how the --terrain is coloured: splat (the splat rules' colour map, as "
+                                   "fracterra splat --color bakes it and the Blender material shows it) or "
+                                   "altitude (ft_terrain.inc's sand, grass, rock and snow by altitude and slope; "
+                                   "tile sets always)")
+                        ->check(CLI::IsMember({"splat", "altitude"}))
+                        ->capture_default_str();
+                    app.add_option("--rules", o->rules,
+                                   "splat rules JSON that colour the terrain (as fracterra splat --rules reads "
+                                   "them) [default: grass, rock, sediment, snow]")
+                        ->check(existing_file);
+                    app.add_option("--maps", o->maps,
+                                   "the folder of fracterra erode --maps for the rules' deposit and flow "
+                                   "conditions (without it they see none)")
+                        ->check(existing_directory);
                     app.add_option("--pov", o->pov, "scene to write (.pov); the terrain PNG goes beside it")->required();
                     app.add_option("--size", o->size,
                                    "terrain width in world units (x); depth follows the grid; default: the world "
@@ -199,6 +240,8 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                       o->aspect_given = aspect->count() > 0;
                       if (o->terrain.empty() && o->tiles.empty() && o->polylines.empty())
                         invalid("give --terrain or --tiles and/or --polyline");
+                      if (o->texture == "altitude" && (!o->rules.empty() || !o->maps.empty()))
+                        invalid("--rules and --maps set the splat colours: drop them or --texture altitude");
                       return run(*o);
                     };
                   },

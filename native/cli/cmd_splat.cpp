@@ -6,8 +6,8 @@
 
 #include "cli/command.hpp"
 #include "cli/path_checks.hpp"
+#include "cli/splat_sources.hpp"
 #include "core/error.hpp"
-#include "erosion/presets.hpp"
 #include "io/heightfield_io.hpp"
 #include "splat/rules_json.hpp"
 #include "splat/splat_files.hpp"
@@ -24,9 +24,8 @@ struct SplatCli {
 };
 
 int run(const SplatCli& o) {
-  splat::SplatRules rules;
-  if (!o.rules.empty()) rules = splat::read_rules(o.rules);
-  else rules.layers = splat::default_layers();
+  SplatSources src = read_splat_sources(o.rules, o.in.empty() ? std::string() : o.maps);
+  const splat::SplatRules& rules = src.rules;
   if (o.print_rules) {
     std::printf("%s", splat::rules_to_json(rules.layers).c_str());
     if (o.in.empty()) return 0;
@@ -36,15 +35,8 @@ int run(const SplatCli& o) {
   Heightfield terrain = io::read_heightfield(o.in);
   if (o.world_size > 0) terrain.set_world_size(o.world_size);
   else if (terrain.world_size() <= 0) terrain.set_world_size(10.0);
-  Heightfield deposited, area;
-  splat::SplatInputs in{&terrain, nullptr, nullptr};
-  if (!o.maps.empty()) {
-    deposited = erosion::read_erosion_map(o.maps, "deposited");
-    area = erosion::read_erosion_map(o.maps, "drainage_area");
-    in.deposited = &deposited;
-    in.drainage_area = &area;
-  }
-  const int32_t n = int32_t(rules.layers.size());
+  const splat::SplatInputs in = src.inputs(terrain);
+  const int32_t n = src.layer_count();
   nlohmann::json report = {{"layers", nlohmann::json::array()}, {"files", nlohmann::json::array()}};
   if (!o.out.empty()) {
     const auto weights = splat::splat_weights(in, rules.layers.data(), n, o.depth == 16 ? 65535 : 255);

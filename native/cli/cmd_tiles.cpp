@@ -2,8 +2,11 @@
 // (tiles sharing their edge samples, one height scale, manifest.json,
 // mosaic.vrt with overviews). Resumable: a rerun skips the tiles whose
 // CRC-32 matches the manifest. The distributed version of the same loop is
-// the Dask driver (python3 -m fracterra.core.tiles; docs/scale.md).
+// the Dask driver (python3 -m fracterra.tiles; docs/scale.md). With
+// --engine the finished set is also cut the way a game engine imports a
+// large terrain in pieces (engines/engine_tiles.hpp), into OUT/<engine>/.
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -12,6 +15,8 @@
 #include "cli/param_flags.hpp"
 #include "cli/path_checks.hpp"
 #include "core/error.hpp"
+#include "engines/engine_preset.hpp"
+#include "engines/engine_tiles.hpp"
 #include "io/heightfield_io.hpp"
 #include "terrain/terrain.hpp"
 #include "terrain/terrain_params.hpp"
@@ -25,6 +30,8 @@ struct TilesOptions {
   std::string reference, out, format = "png16";
   int64_t tile = 4096;
   bool quiet = false;
+  std::string engine;  // "" when not given
+  int32_t engine_size = 0, region_size = engines::kGodotDefaultRegion;
 };
 
 int run(const TilesOptions& o) {
@@ -36,6 +43,13 @@ int run(const TilesOptions& o) {
       invalid("the reference grid '" + o.reference + "' must be square, 2^m + 1 per side");
     p.reference = reference.data();
     p.reference_size = reference.width();
+  }
+  const engines::EngineOptions engine{o.engine.empty() ? engines::Engine::unity : engines::parse_engine(o.engine),
+                                      o.region_size, o.engine_size};
+  if (!o.engine.empty()) {  // a tile size the set cannot take is refused before anything is written
+    int64_t width = 0, height = 0;
+    terrain::terrain_extent(p, 0, &width, &height);
+    engines::engine_tile_side(engine, width, height, o.tile);
   }
   Stopwatch clock;
   tiles::TileSet set(p, o.tile, tiles::parse_tile_format(o.format), o.out);
@@ -54,11 +68,21 @@ int run(const TilesOptions& o) {
     }
   if (!o.quiet && written) std::fprintf(stderr, "\n");
   set.finish();
-  const nlohmann::json j = {{"tiles", g.count()},          {"written", written},
+  nlohmann::json j = {{"tiles", g.count()},          {"written", written},
                             {"skipped", skipped},          {"columns", g.columns()},
                             {"rows", g.rows()},            {"width", g.width},
                             {"height", g.height},          {"height_range", set.manifest()["height_range"]},
                             {"seconds", clock.seconds()}};
+  if (!o.engine.empty()) {
+    const std::string dir = (std::filesystem::path(o.out) / o.engine).string();
+    const nlohmann::json side = engines::write_engine_tiles(o.out, dir, engine);
+    j["engine"] = {{"folder", dir},
+                   {"sidecar", (std::filesystem::path(dir) / (o.engine + ".json")).string()},
+                   {"tile_samples", side["tile_samples"]},
+                   {"columns", side["columns"]},
+                   {"rows", side["rows"]}};
+    j["seconds"] = clock.seconds();
+  }
   std::printf("%s\n", j.dump().c_str());
   return 0;
 }
@@ -84,6 +108,19 @@ Registration reg({"tiles", "Write a terrain larger than memory as a tile set (ti
                                    "a rerun resumes)")
                         ->required();
                     app.add_flag("--quiet", o->quiet, "no progress line on stderr");
+                    app.add_option("--engine", o->engine,
+                                   "also cut the finished set for a game engine into OUT/ENGINE/ with "
+                                   "OUT/ENGINE/ENGINE.json: unity (RAW16 tiles of 2^n + 1 sharing edges, "
+                                   "NAME_X_Z.raw), unreal (16-bit PNG tiles, NAME_x0_y0.png), godot (Terrain3D "
+                                   "regions as EXR) (docs/engines.md)")
+                        ->check(CLI::IsMember({"unity", "unreal", "godot"}));
+                    app.add_option("--engine-size", o->engine_size,
+                                   "samples per engine tile side [default: the set's tiles (--tile + 1 for Unity, --tile for "
+                                   "Unreal) when the engine takes them, else the largest that cuts the set, at most "
+                                   "Unity 1025, Unreal 1024; Godot: the region size]");
+                    app.add_option("--region-size", o->region_size,
+                                   "--engine godot: Terrain3D's region size, 64..2048, a power of two")
+                        ->capture_default_str();
                     return [o] { return run(*o); };
                   },
                   12});

@@ -11,7 +11,7 @@ namespace {
 
 std::string lower_dashed(const char* s) {
   std::string out;
-  for (; *s; ++s) out += *s == '_' ? '-' : char(std::tolower(static_cast<unsigned char>(*s)));
+  for (; *s; ++s) out += *s == '_' || *s == ' ' ? '-' : char(std::tolower(static_cast<unsigned char>(*s)));
   return out;
 }
 
@@ -68,10 +68,18 @@ void store(void* params, const ft_param_info& row, T v) {
 void parse_into(void* params, const ft_param_info& row, const std::string& text) {
   const std::string flag = flag_of(row.name);
   if (row.type == FT_PARAM_ENUM) {
+    // By its name or by the label the add-on shows ("land" or "rugged-mountains").
+    const std::string given = lower_dashed(text.c_str());
+    auto label_name = [](const ft_param_enum_item& item) { return item.label ? lower_dashed(item.label) : ""; };
     for (int i = 0; i < row.enum_count; ++i)
-      if (cli_name(row.enum_items[i]) == lower_dashed(text.c_str())) return store(params, row, row.enum_items[i].value);
+      if (cli_name(row.enum_items[i]) == given || label_name(row.enum_items[i]) == given)
+        return store(params, row, row.enum_items[i].value);
     std::string names;
-    for (int i = 0; i < row.enum_count; ++i) names += (i ? ", " : "") + cli_name(row.enum_items[i]);
+    for (int i = 0; i < row.enum_count; ++i) {
+      const std::string label = label_name(row.enum_items[i]);
+      names += (i ? ", " : "") + cli_name(row.enum_items[i]) +
+               (!label.empty() && label != cli_name(row.enum_items[i]) ? " (" + label + ")" : "");
+    }
     bad(flag + " must be one of " + names + ", got '" + text + "'");
   }
   // "auto" is the sentinel the row documents (0).

@@ -23,6 +23,7 @@ from .core.erosion import erode_struct
 from .core.errors import LibraryNotFoundError
 from .core.polylines import hurst_of_heightfield
 from .core.raster import read_heightfield, write_heightfield
+from .core.splat import default_rules
 from .core.terrain import Heightfield, generate_from_struct
 
 PathLike = Union[str, os.PathLike]
@@ -214,16 +215,10 @@ def analyze(z, method: str = "auto", *, drainage: bool = True, periodic: bool = 
 def _layers(rules) -> tuple:
     """(array of ft_splat_params, the bytes objects their names point to)."""
     lib = library()
-    layer_type = lib.splat_params_type
     if rules is None:
-        count = c_int32()
-        lib.check(lib.ft_splat_default_layers(None, 0, byref(count)))
-        arr = (layer_type * count.value)()
-        for layer in arr:
-            layer.struct_size = ctypes.sizeof(layer_type)
-        lib.check(lib.ft_splat_default_layers(arr, count.value, byref(count)))
-        return arr, []
-    arr = (layer_type * len(rules))()
+        built_in = default_rules()
+        return built_in.layers, built_in.keep
+    arr = (lib.splat_params_type * len(rules))()
     keep = []
     for layer, rule in zip(arr, rules):
         lib.check(lib.ft_splat_params_init(byref(layer)))

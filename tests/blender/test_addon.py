@@ -373,14 +373,16 @@ class DrawTest(unittest.TestCase):
         clear_scene()
         operators = []
         fake = type("P", (), {"layout": RecordingLayout([], operators)})()
-        panels.FRACTERRA_PT_terrain.draw(fake, bpy.context)  # no terrain: the Add button
+        panels.FRACTERRA_PT_terrain.draw(fake, bpy.context)  # no terrain: the Add buttons
         obj = add_terrain(levels=3)
         panels.FRACTERRA_PT_terrain.draw(fake, bpy.context)  # a terrain: Regenerate
         obj.fracterra_measures.kind = ""
         panels.FRACTERRA_PT_measures.draw(fake, bpy.context)
+        self.assertEqual(bpy.ops.mesh.fracterra_planet_add(level=2), {"FINISHED"})
+        panels.FRACTERRA_PT_planet.draw(fake, bpy.context)  # a planet: its Regenerate
         for _, draw in menus.MENUS:
             draw(fake, bpy.context)
-        self.assertEqual(len(operators), 11)
+        self.assertEqual(len(operators), 14)
         for idname in operators:
             self.assertTrue(operator_exists(idname), idname)
         self.assertFalse(operator_exists("mesh.fracterra_no_such_operator"))

@@ -2,7 +2,7 @@
 heights are those `fracterra terrain --erode` makes of the same settings (the
 CLI, another front end of the library's pipeline), bit for bit, periodic and
 spectral terrains included; the maps are
-point attributes that the terrain's node material reads; the settings stay on
+point attributes beside the splat colours the node material reads; the settings stay on
 the object, so Regenerate reruns both, and None takes erosion away again;
 a cancel during erosion keeps nothing. (Bad settings cannot be entered: the
 properties carry the library's hard ranges; tests/python/test_erosion.py
@@ -155,9 +155,12 @@ class ErodeTest(unittest.TestCase):
         # The deposits show after rain alone.
         rain = self.add(erode_preset="RAIN").data
         self.assertGreater(sum(v > 0 for v in attribute(rain, "fracterra_deposit")), 10)
+        # The material reads the terrain's splat colours (the library's colour map
+        # of these heights and maps: tests/blender/test_splat_material.py).
         material = mesh.materials[0]
         read = {n.attribute_name for n in material.node_tree.nodes if n.type == "ATTRIBUTE"}
-        self.assertTrue({"fracterra_flow", "fracterra_deposit", "fracterra_slope"} <= read, read)
+        self.assertEqual(read, {"fracterra_color"})
+        self.assertIn("fracterra_color", mesh.attributes)
         bsdf = material.node_tree.nodes["Principled BSDF"]
         self.assertTrue(bsdf.inputs["Base Color"].is_linked)
 

@@ -201,13 +201,70 @@ def a_long_redo_hands_over_to_the_progress_bar():
     check(len(terrains) == 1, f"one terrain, not {terrains}")
 
 
+def add_planet(**settings):
+    """Add > Mesh > Fractal Planet as its menu entry runs it."""
+    with in_view3d():
+        result = bpy.ops.mesh.fracterra_planet_add("INVOKE_DEFAULT", True, **settings)
+    yield from wait_for_jobs()
+    return result
+
+
+def planet_sea(planet):
+    return next(c for c in planet.children if c.get("fracterra_kind") == "SEA")
+
+
+def undo_of_a_planet_regenerate_restores_mesh_and_settings():
+    """As for terrains: the seed changed in the sidebar (its own undo step),
+    Regenerate, Ctrl+Z: the old planet, its old sea sphere and its seed."""
+    yield from add_planet(level=3, seed=1)
+    planet = bpy.context.active_object
+    check(planet.fracterra_planet.is_planet, "Add Planet made a planet")
+    name, sea_name = planet.name, planet_sea(planet).name
+    before, sea_before = vertex_hash(planet), vertex_hash(planet_sea(planet))
+    planet.fracterra_planet.seed = 7
+    bpy.ops.ed.undo_push(message="Seed")
+    yield STEP
+    with in_view3d():
+        bpy.ops.object.fracterra_planet_regenerate("INVOKE_DEFAULT", True)
+    yield from wait_for_jobs()
+    planet = bpy.data.objects[name]
+    check(vertex_hash(planet) != before and vertex_hash(planet_sea(planet)) != sea_before,
+          "Regenerate with seed 7 changed the planet and moved its sea")
+    with in_view3d():
+        bpy.ops.ed.undo()
+    yield STEP
+    planet = bpy.data.objects[name]
+    check(vertex_hash(planet) == before and vertex_hash(bpy.data.objects[sea_name]) == sea_before,
+          "undo after Regenerate restores the planet and its sea")
+    check(planet.fracterra_planet.seed == 1,
+          f"undo shows the seed of the planet that is there (1), not {planet.fracterra_planet.seed}")
+
+
+def cancelled_planet_regenerate_keeps_the_settings_of_the_mesh():
+    yield from add_planet(level=3, seed=2)
+    planet = bpy.context.active_object
+    before = vertex_hash(planet)
+    planet.fracterra_planet.level = 10  # 6.3 M vertices: seconds of work
+    with in_view3d():
+        bpy.ops.object.fracterra_planet_regenerate("INVOKE_DEFAULT", True)
+    yield 0.05
+    check(jobs().busy(), "the level 10 Regenerate runs in the background")
+    for runner in list(jobs().ACTIVE):
+        runner.cancel()  # what Esc does
+    yield from wait_for_jobs()
+    check(vertex_hash(planet) == before and planet.fracterra_planet.level == 3,
+          f"a cancelled Regenerate leaves the planet and shows its level (3), not {planet.fracterra_planet.level}")
+
+
 def scenario():
     check(not bpy.app.background, "this test runs with a window (xvfb-run)")
     for step in (undo_removes_the_added_terrain, undo_removes_an_eroded_terrain,
                  undo_of_regenerate_brings_back_the_settings_of_the_mesh,
                  cancelled_regenerate_keeps_the_settings_of_the_mesh,
                  failed_regenerate_keeps_the_settings_of_the_mesh,
-                 a_second_add_does_not_inherit_erosion, a_long_redo_hands_over_to_the_progress_bar):
+                 a_second_add_does_not_inherit_erosion, a_long_redo_hands_over_to_the_progress_bar,
+                 undo_of_a_planet_regenerate_restores_mesh_and_settings,
+                 cancelled_planet_regenerate_keeps_the_settings_of_the_mesh):
         print(f"--- {step.__name__}", flush=True)
         for obj in list(bpy.data.objects):
             bpy.data.objects.remove(obj)

@@ -3,7 +3,7 @@
 find_program(FT_BLENDER blender)
 if(FT_BLENDER)
   set(FT_BLENDER_ZIP ${PROJECT_BINARY_DIR}/blender_addon/fracterra.zip)
-  foreach(name addon missing_library params dem tiles erosion pov_export preview rivers)
+  foreach(name addon missing_library params dem tiles erosion pov_export preview rivers planet splat_material)
     set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_${name})
     add_test(NAME blender_${name}
       COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch}
@@ -14,11 +14,14 @@ if(FT_BLENDER)
   endforeach()
   # The installed add-on must use its bundled library, except in the test of a missing one.
   set_tests_properties(blender_addon blender_params blender_dem blender_tiles blender_erosion blender_pov_export
-    blender_preview blender_rivers PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
+    blender_preview blender_rivers blender_planet blender_splat_material
+    PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
   # The Erode step is checked against the CLI, another front end of the library's pipeline.
   set_tests_properties(blender_erosion PROPERTIES ENVIRONMENT "FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>")
   # Rivers and Lakes too: the rivers are those `fracterra terrain --rivers` traces.
   set_tests_properties(blender_rivers PROPERTIES ENVIRONMENT "FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>")
+  # The planet's sea height is checked against `fracterra planet --stats`.
+  set_tests_properties(blender_planet PROPERTIES ENVIRONMENT "FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>")
   set_tests_properties(blender_missing_library PROPERTIES
     ENVIRONMENT "FRACTERRA_LIBRARY=${CMAKE_CURRENT_BINARY_DIR}/no-such-dir/libfracterra.so")
   add_test(NAME blender_scratch_clean
@@ -30,7 +33,9 @@ if(FT_BLENDER)
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_erosion
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_pov_export
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_preview
-            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_rivers)
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_rivers
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_planet
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_splat_material)
   set_tests_properties(blender_scratch_clean PROPERTIES FIXTURES_SETUP blender_scratch LABELS blender)
 endif()
 
@@ -52,6 +57,8 @@ if(FT_BLENDER)
   # The presets and the default beside A.N.T.'s default: every preset builds and renders (tiny).
   ft_blender_example(presets 22_blender_presets.py 180 --max-levels 5 --resolution 48x30 --samples 1)
   set_tests_properties(blender_example_presets PROPERTIES COST 20)
+  # The planet example: Add Fractal Planet (level 5), sun, camera, a tiny render.
+  ft_blender_example(planet 25_blender_planet.py 120 --level 5 --resolution 48x48 --samples 1)
 endif()
 
 # Undo needs a window (background Blender keeps no undo stack): run it under Xvfb.
@@ -96,6 +103,6 @@ if(FT_BLENDER AND FT_XVFB_RUN AND FT_XDOTOOL)
             ${FT_BLENDER} --factory-startup --window-geometry 0 0 1280 800
             --python ${CMAKE_CURRENT_LIST_DIR}/test_gui.py
             -- --zip ${FT_BLENDER_ZIP} --out ${CMAKE_CURRENT_BINARY_DIR}/blender_gui_shots)
-  set_tests_properties(blender_gui PROPERTIES LABELS blender TIMEOUT 180 COST 65
+  set_tests_properties(blender_gui PROPERTIES LABELS blender TIMEOUT 240 COST 65
     FAIL_REGULAR_EXPRESSION "Traceback|GUI test FAILED")
 endif()

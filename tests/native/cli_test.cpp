@@ -57,6 +57,37 @@ TEST_F(Cli, TerrainStatsPrintsOneJsonObjectWithTheRequiredKeys) {
   EXPECT_GE(j["seconds"].get<double>(), 0.0);
 }
 
+// `tiles --engine`: the set, then its engine tiles and sidecar in OUT/ENGINE/;
+// a tile size that does not cut the set is refused before anything is written.
+TEST_F(Cli, TilesForAnEngineGoBesideTheSetAndBadSizesAreRefusedFirst) {
+  const CliRun r = run("tiles --levels 7 --seed 3 --tile 32 --quiet --engine unreal --out " + path("set"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["engine"]["columns"], 4);
+  EXPECT_EQ(j["engine"]["tile_samples"], 32);
+  EXPECT_TRUE(fs::exists(path("set/unreal/terrain_x3_y3.png")));
+  EXPECT_TRUE(fs::exists(path("set/unreal/unreal.json")));
+  const CliRun bad = run("tiles --levels 7 --tile 32 --engine unity --engine-size 100 --out " + path("bad"));
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("sizes that do: 129, 65, 33"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(path("bad")));
+}
+
+// An enum flag takes the label the add-on shows as well as its name:
+// `terrain --erode rugged-mountains` is `--erode land`, bit for bit.
+TEST_F(Cli, EnumFlagsTakeTheAddonsLabels) {
+  const std::string t = "terrain --levels 6 --seed 2 --falloff radial --height-offset 0.5 --threads 1 ";
+  ASSERT_EQ(run(t + "--erode land --out " + path("a.npy")).code, 0);
+  const CliRun label = run(t + "--erode \"Rugged Mountains\" --out " + path("b.npy"));
+  ASSERT_EQ(label.code, 0) << label.err;
+  ASSERT_EQ(run(t + "--erode gentle_valleys --out " + path("c.npy")).code, 0);
+  EXPECT_EQ(io::read_file(path("a.npy")), io::read_file(path("b.npy")));
+  EXPECT_NE(io::read_file(path("a.npy")), io::read_file(path("c.npy")));
+  const CliRun bad = run(t + "--erode mountains --out " + path("d.npy"));
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("land (rugged-mountains)"), std::string::npos) << bad.err;
+}
+
 TEST_F(Cli, PngPgmAndNpyOutputsRoundTrip) {
   ft_terrain_params p = terrain::default_terrain_params();
   p.levels = 6;

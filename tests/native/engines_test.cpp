@@ -10,10 +10,13 @@
 #include "core/error.hpp"
 #include "engines/engine_export.hpp"
 #include "engines/engine_preset.hpp"
+#include "engines/engine_tiles.hpp"
 #include "io/atomic_file.hpp"
 #include "io/exr.hpp"
 #include "io/png_image.hpp"
 #include "io/raw16.hpp"
+#include "terrain/terrain_params.hpp"
+#include "tiles/tileset.hpp"
 
 namespace ft {
 namespace {
@@ -170,6 +173,110 @@ TEST_F(EngineFiles, WhatAnEngineCannotTakeIsRefusedBeforeWriting) {
   EXPECT_THROW(engines::write_for_engine(bumps(100, 100, 10), path("t.png"), {Engine::unreal, 256, 1025}), Error);
   EXPECT_THROW(engines::write_for_engine(bumps(100, 100, 10), path("t.exr"), {Engine::godot, 300}), Error);
   EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+// A finished png16 tile set of a 129^2 midpoint terrain, cut into 4 x 4 tiles of 32 cells.
+class EngineTiles : public EngineFiles {
+ protected:
+  void SetUp() override {
+    EngineFiles::SetUp();
+    ft_terrain_params p = terrain::default_terrain_params();
+    p.levels = 7;
+    p.seed = 11;
+    p.world_size = 1280;  // 10 m between samples
+    p.sigma = 300;
+    tiles::TileSet set(p, 32, tiles::TileFormat::png16, path("set"));
+    for (int32_t row = 0; row < 4; ++row)
+      for (int32_t col = 0; col < 4; ++col) set.record(col, row, tiles::write_tile(p, set.spec(), set.dir(), col, row));
+    set.finish();
+    // The reference: the set's own 16-bit codes, read from its tile files
+    // (tile_r<row>_c<col>.png, 33^2 each, sharing edges) into one 129^2 grid.
+    codes_.assign(129 * 129, 0);
+    for (const auto& t : set.manifest()["tiles"]) {
+      const GrayImage img = io::read_png(path("set/" + t["file"].get<std::string>()));
+      const int64_t x0 = t["x0"], y0 = t["y0"];
+      for (int32_t y = 0; y < img.height; ++y)
+        for (int32_t x = 0; x < img.width; ++x) codes_[(y0 + y) * 129 + x0 + x] = img.pixels[size_t(y) * img.width + x];
+    }
+    lo_ = set.manifest()["height_range"]["min"];
+    hi_ = set.manifest()["height_range"]["max"];
+  }
+  uint16_t code(int64_t x, int64_t y) const { return codes_[y * 129 + x]; }
+  std::vector<uint16_t> codes_;
+  double lo_ = 0, hi_ = 0;
+};
+
+// Each Unity tile holds the set's codes at its samples, little-endian, and
+// neighbours share their edge samples (Unity's neighbouring terrains do).
+// Broken on purpose (Unity tiles stepping N instead of N - 1, not sharing
+// edges): the 33-sample tile no longer cut the set and this test failed.
+TEST_F(EngineTiles, UnityTilesShareEdgesAndHoldTheSetsCodes) {
+  const nlohmann::json j = engines::write_engine_tiles(path("set"), path("unity"), {Engine::unity, 256, 33});
+  ASSERT_EQ(j["columns"], 4);
+  ASSERT_EQ(j["rows"], 4);
+  EXPECT_EQ(j["unity"]["resolution"], 33);
+  EXPECT_DOUBLE_EQ(j["unity"]["terrain_size"]["x"].get<double>(), 320.0);  // 32 cells of 10 m
+  for (int32_t ty = 0; ty < 4; ++ty)
+    for (int32_t tx = 0; tx < 4; ++tx) {
+      const std::string bytes = io::read_file(path("unity/terrain_" + std::to_string(tx) + "_" + std::to_string(ty) + ".raw"));
+      ASSERT_EQ(bytes.size(), 33u * 33u * 2u);
+      for (int32_t y = 0; y < 33; ++y)
+        for (int32_t x = 0; x < 33; ++x) {
+          const size_t i = 2 * (size_t(y) * 33 + x);
+          const uint16_t v = uint16_t(uint8_t(bytes[i]) | uint8_t(bytes[i + 1]) << 8);
+          ASSERT_EQ(v, code(tx * 32 + x, ty * 32 + y)) << "tile " << tx << "," << ty << " sample " << x << "," << y;
+        }
+    }
+  EXPECT_TRUE(fs::exists(path("unity/unity.json")));
+  EXPECT_EQ(j["files"].size(), 16u);
+}
+
+// Unreal's tiles do not overlap: laid side by side they are the set's first
+// 128 x 128 codes (the importer adds tile (x, y) at x N, y N).
+TEST_F(EngineTiles, UnrealTilesLaidSideBySideAreTheSet) {
+  const nlohmann::json j = engines::write_engine_tiles(path("set"), path("unreal"), {Engine::unreal, 256, 32});
+  ASSERT_EQ(j["columns"], 4);
+  EXPECT_EQ(j["unreal"]["resolution"]["x"], 128);
+  EXPECT_DOUBLE_EQ(j["unreal"]["scale"]["z"].get<double>(), engines::unreal_z_scale(hi_ - lo_));
+  for (int32_t ty = 0; ty < 4; ++ty)
+    for (int32_t tx = 0; tx < 4; ++tx) {
+      const GrayImage img =
+          io::read_png(path("unreal/terrain_x" + std::to_string(tx) + "_y" + std::to_string(ty) + ".png"));
+      ASSERT_EQ(img.width, 32);
+      ASSERT_EQ(img.bit_depth, 16);
+      for (int32_t y = 0; y < 32; ++y)
+        for (int32_t x = 0; x < 32; ++x) ASSERT_EQ(img.pixels[size_t(y) * 32 + x], code(tx * 32 + x, ty * 32 + y));
+    }
+}
+
+// Terrain3D regions: float heights in metres, the set's heights (its codes
+// on its scale) to float rounding, each region's position in the sidecar.
+TEST_F(EngineTiles, GodotRegionsHoldTheHeightsInMetres) {
+  const nlohmann::json j = engines::write_engine_tiles(path("set"), path("godot"), {Engine::godot, 64});
+  ASSERT_EQ(j["columns"], 2);
+  EXPECT_EQ(j["tile_samples"], 64);
+  EXPECT_DOUBLE_EQ(j["files"][3]["position"]["x"].get<double>(), 640.0);
+  EXPECT_DOUBLE_EQ(j["files"][3]["position"]["z"].get<double>(), 640.0);
+  const Heightfield h = io::read_exr(path("godot/terrain_x1_y1.exr"));
+  ASSERT_EQ(h.width(), 64);
+  for (int32_t y = 0; y < 64; ++y)
+    for (int32_t x = 0; x < 64; ++x) {
+      const double want = lo_ + code(64 + x, 64 + y) * (hi_ - lo_) / 65535.0;
+      ASSERT_NEAR(h.at(x, y), want, 1e-6 * (std::abs(want) + hi_ - lo_));
+    }
+}
+
+TEST_F(EngineTiles, SizesThatDoNotCutTheSetAreRefusedNamingThoseThatDo) {
+  try {
+    engines::write_engine_tiles(path("set"), path("unity"), {Engine::unity, 256, 100});
+    FAIL() << "a 100-sample Unity tile was taken";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("sizes that do: 129, 65, 33"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(engines::write_engine_tiles(path("set"), path("godot"), {Engine::godot, 256}), Error);
+  EXPECT_THROW(engines::write_engine_tiles(path("nothing"), path("unity"), {Engine::unity}), Error);
+  EXPECT_FALSE(fs::exists(path("unity")));
+  EXPECT_FALSE(fs::exists(path("godot")));
 }
 
 }  // namespace

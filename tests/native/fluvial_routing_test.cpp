@@ -212,5 +212,51 @@ TEST(FluvialRouting, CreepOnATorusKeepsItsMeanAtAnyRate) {
     }
 }
 
+// The global depression fill of a large grid is one long call (27 s of a
+// 4097^2 Land run without a report at load 12: docs/erosion.md, Progress).
+// It reports the share of cells done every 2^20 cells and stops at a cancel.
+// 1449^2 white noise (2.1 M cells, pits everywhere: the global fill) gives
+// two reports inside the fill's part of route_filled's bar (after the
+// routing, 0.3 of route_and_fill's 0.8; the fill has the rest of it);
+// taking the progress out of priority_flood gave none.
+TEST(FluvialRouting, TheGlobalFillReportsProgressAndCancels) {
+  D8Grid g;
+  g.width = g.height = 1449;
+  std::vector<float> z(g.size());
+  uniform_fill(5, Counter{0, 0, Stream::kFirstUser}, 0, z.size(), z.data());
+  const double routed = 0.8 * 0.3, filled = 0.8;
+  struct Log {
+    std::vector<double> seen, inside;
+    bool cancel = false;
+    double lo = 0, hi = 0;
+  } log{{}, {}, false, routed, filled};
+  auto record = [](void* user, double f) {
+    auto* l = static_cast<Log*>(user);
+    l->seen.push_back(f);
+    const bool inside = f > l->lo + 1e-12 && f < l->hi - 1e-12;
+    if (inside) l->inside.push_back(f);
+    return l->cancel && inside ? 1 : 0;
+  };
+  std::vector<float> a = z;
+  FlowGraph graph;
+  route_filled(g, a.data(), -1, graph, Progress(record, &log));
+  EXPECT_EQ(graph.pits, 0);
+  ASSERT_EQ(log.inside.size(), 2u);
+  for (int k = 1; k <= 2; ++k)
+    EXPECT_NEAR(log.inside[k - 1], routed + (filled - routed) * double(k << 20) / double(g.size()), 1e-12);
+  EXPECT_DOUBLE_EQ(log.seen.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(log.seen.begin(), log.seen.end()));
+  log = Log{{}, {}, true, routed, filled};
+  std::vector<float> b = z;
+  FlowGraph other;
+  try {
+    route_filled(g, b.data(), -1, other, Progress(record, &log));
+    FAIL() << "a cancel inside the fill was not seen";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), FT_ERR_CANCELLED);
+  }
+  EXPECT_EQ(log.inside.size(), 1u);
+}
+
 }  // namespace
 }  // namespace ft::erosion

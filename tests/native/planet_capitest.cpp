@@ -2,6 +2,7 @@
 // status and a message naming what is allowed; layouts agree through the ABI.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -87,6 +88,52 @@ TEST(PlanetAbi, LayoutsAgreeAndProgressCancels) {
   ft_heightfield* map = nullptr;
   EXPECT_EQ(ft_planet_equirect(&p, 256, 128, &map), FT_ERR_CANCELLED);
   EXPECT_EQ(map, nullptr);
+}
+
+TEST(PlanetAbi, MidpointIcosphereAndSpectrum) {
+  // ABI 2.23 through the C entry points: a midpoint planet's face patch is
+  // its whole face's samples, ft_planet_heights refuses it with a message
+  // that names the way out, the icosphere's counts and arrays, the spectrum
+  // and H (bad degrees and capacities refused by name).
+  ft_planet_params p = params();
+  p.method = FT_PLANET_MIDPOINT;
+  ft_heightfield *whole = nullptr, *part = nullptr;
+  ASSERT_EQ(ft_planet_face(&p, 5, 2, 0, 0, 33, 33, &whole), FT_OK) << ft_last_error();
+  ASSERT_EQ(ft_planet_face(&p, 5, 2, 30, 1, 3, 4, &part), FT_OK) << ft_last_error();
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 3; ++x)
+      EXPECT_EQ(ft_heightfield_data(part)[y * 3 + x], ft_heightfield_data(whole)[(1 + y) * 33 + 30 + x]);
+  ft_heightfield_free(whole);
+  ft_heightfield_free(part);
+  const double up[3] = {0, 0, 1};
+  float h = 0;
+  expect_error(ft_planet_heights(&p, up, 1, &h), FT_ERR_INVALID_ARGUMENT, "ft_planet_face");
+  int64_t nv = 0, nf = 0;
+  ASSERT_EQ(ft_planet_icosphere_counts(2, &nv, &nf), FT_OK);
+  EXPECT_EQ(nv, 162);
+  EXPECT_EQ(nf, 320);
+  std::vector<float> xyz(static_cast<size_t>(3 * nv)), heights(static_cast<size_t>(nv));
+  std::vector<int32_t> tris(size_t(3 * nf));
+  ASSERT_EQ(ft_planet_icosphere(&p, 2, 1.0, xyz.data(), xyz.size(), tris.data(), tris.size(), heights.data(),
+                                heights.size()),
+            FT_OK)
+      << ft_last_error();
+  EXPECT_EQ(*std::max_element(tris.begin(), tris.end()), nv - 1);
+  expect_error(ft_planet_icosphere(&p, 2, 1.0, xyz.data(), xyz.size(), tris.data(), 5, nullptr, 0),
+               FT_ERR_INVALID_ARGUMENT, "triangles holds 5");
+  expect_error(ft_planet_icosphere_counts(11, &nv, &nf), FT_ERR_INVALID_ARGUMENT, "level must be in 0..10");
+  std::vector<double> power(17);
+  ASSERT_EQ(ft_planet_power_spectrum(&p, 16, power.data(), power.size()), FT_OK) << ft_last_error();
+  EXPECT_GT(power[2], power[16]);
+  expect_error(ft_planet_power_spectrum(&p, 16, power.data(), 16), FT_ERR_INVALID_ARGUMENT, "power holds 16");
+  expect_error(ft_planet_power_spectrum(&p, 513, power.data(), 600), FT_ERR_INVALID_ARGUMENT, "lmax");
+  double hurst = 0, err = 0;
+  ASSERT_EQ(ft_planet_spectrum_hurst(&p, 4, 16, &hurst, &err), FT_OK) << ft_last_error();
+  EXPECT_TRUE(hurst > 0 && hurst < 1.6) << hurst;  // one planet at low degrees: only loosely H
+  expect_error(ft_planet_spectrum_hurst(&p, 16, 16, &hurst, &err), FT_ERR_INVALID_ARGUMENT, "l_min");
+  expect_error(ft_planet_spectrum_hurst(&p, 4, 16, nullptr, &err), FT_ERR_INVALID_ARGUMENT, "hurst");
+  p.method = 2;
+  expect_error(ft_planet_face(&p, 4, 0, 0, 0, 8, 8, &whole), FT_ERR_INVALID_ARGUMENT, "method");
 }
 
 }  // namespace

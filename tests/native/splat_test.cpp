@@ -322,5 +322,50 @@ TEST_F(SplatFiles, CliRefusesBadRulesWithOneClearLine) {
   EXPECT_FALSE(fs::exists(path("s.png")));
 }
 
+// `fracterra scene` paints the terrain with the splat colour map by default:
+// its colours PNG is `fracterra splat --color` of the same terrain, rules and
+// maps (within 1 of 255: the scene's colours go sRGB -> linear float ->
+// sRGB bytes, which can cross a rounding boundary), a rules file's single
+// red layer makes it all red, and --texture altitude keeps ft_terrain.inc's.
+// (Broken on purpose, the scene's colours without --maps' deposits and flow
+// were off by 23 of 255 at the tenth value.)
+TEST_F(SplatFiles, CliSceneIsColouredByTheSplatRules) {
+  const std::string t = path("t.png"), e = path("e.png"), maps = path("maps");
+  ASSERT_EQ(run_cli("terrain --method midpoint --levels 5 --seed 3 --out " + t).code, 0);
+  ASSERT_EQ(run_cli("erode --in " + t + " --preset land --out " + e + " --maps " + maps).code, 0);
+  ASSERT_EQ(run_cli("splat --in " + e + " --maps " + maps + " --color " + path("c.png")).code, 0);
+  CliRun r = run_cli("scene --terrain " + e + " --maps " + maps + " --pov " + path("s.pov"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const io::ChannelImage want = io::read_png_channels(path("c.png")), got = io::read_png_channels(path("s.colors.png"));
+  ASSERT_EQ(got.samples.size(), want.samples.size());
+  size_t same = 0;
+  for (size_t i = 0; i < got.samples.size(); ++i) {
+    ASSERT_LE(std::abs(int(got.samples[i]) - int(want.samples[i])), 1) << "value " << i;
+    same += got.samples[i] == want.samples[i];
+  }
+  EXPECT_GT(same, got.samples.size() * 9 / 10);
+  const std::string sdl = io::read_file(path("s.pov"));
+  EXPECT_NE(sdl.find("image_map { png \"s.colors.png\""), std::string::npos);
+
+  io::write_file_atomically(path("red.json"), R"({"layers": [{"name": "red", "color": [1, 0, 0]}]})");
+  r = run_cli("scene --terrain " + e + " --rules " + path("red.json") + " --pov " + path("red.pov"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const io::ChannelImage red = io::read_png_channels(path("red.colors.png"));
+  for (size_t i = 0; i < red.samples.size(); i += 3)
+    ASSERT_EQ((std::array<int, 3>{int(red.samples[i]), int(red.samples[i + 1]), int(red.samples[i + 2])}),
+              (std::array<int, 3>{255, 0, 0}));
+
+  r = run_cli("scene --terrain " + e + " --texture altitude --pov " + path("alt.pov"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(path("alt.colors.png")));
+  EXPECT_NE(io::read_file(path("alt.pov")).find("FT_Terrain_Texture("), std::string::npos);
+  r = run_cli("scene --terrain " + e + " --texture altitude --rules " + path("red.json") + " --pov " + path("x.pov"));
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("--texture altitude"), std::string::npos) << r.err;
+  // `fracterra terrain --pov` colours by the built-in rules too.
+  ASSERT_EQ(run_cli("terrain --method midpoint --levels 4 --out " + path("u.png") + " --pov " + path("u.pov")).code, 0);
+  EXPECT_TRUE(fs::exists(path("u.colors.png")));
+}
+
 }  // namespace
 }  // namespace ft

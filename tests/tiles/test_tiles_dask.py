@@ -1,4 +1,5 @@
-"""Tile sets on Dask with real worker processes (dask.distributed LocalCluster).
+"""Tile sets on Dask with real worker processes (dask.distributed LocalCluster),
+driven by the Python package's fracterra.tiles as pip installed it in a venv.
 
 Every comparison is byte for byte against a tile set written by the
 one-process CLI (`fracterra tiles`), the reference: tiles, manifest, VRT and
@@ -10,21 +11,16 @@ import signal
 import socket
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import cloudpickle
 import pytest
 from distributed.diagnostics.plugin import WorkerPlugin
 
-ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "blender_addon"))
-if not os.environ.get("FRACTERRA_LIBRARY"):
-    os.environ["FRACTERRA_LIBRARY"] = str(ROOT / "build" / "native" / "libfracterra.so")
-CLI = os.environ.get("FRACTERRA_CLI", str(ROOT / "build" / "native" / "fracterra"))
+from fracterra import FracterraError, tiles  # the installed wheel's package (tests/package/run_in_venv.py)
 
-from fracterra.core import tiles  # noqa: E402
-from fracterra.core.errors import FracterraError  # noqa: E402
+ROOT = Path(__file__).resolve().parents[2]
+CLI = os.environ.get("FRACTERRA_CLI", str(ROOT / "build" / "native" / "fracterra"))
 
 # 1025^2 midpoint in 16 tiles of 257^2 (the overviews: 513 and 257 a side).
 SETTINGS = {"method": "MIDPOINT", "levels": 10, "hurst": 0.75, "seed": 42}
@@ -183,12 +179,11 @@ def test_hurst_from_tile_sums_reduced_on_dask_equals_the_whole(client):
 
 
 def test_the_command_line_driver_writes_the_same_bytes(reference, tmp_path):
-    # `python3 -m fracterra.core.tiles`: its tasks must reach the workers as references to
-    # the package module (a task defined in __main__ would not unpickle there).
-    env = dict(os.environ, PYTHONPATH=str(ROOT / "blender_addon"))
-    run = subprocess.run([sys.executable, "-m", "fracterra.core.tiles", *FLAGS, "--tile", str(TILE), "--quiet",
+    # `python3 -m fracterra.tiles`: its tasks must reach the workers as references to
+    # the package's modules (a task defined in __main__ would not unpickle there).
+    run = subprocess.run([sys.executable, "-m", "fracterra.tiles", *FLAGS, "--tile", str(TILE), "--quiet",
                           "--workers", "2", "--memory-limit", "1GB", "--out", str(tmp_path / "set")],
-                         capture_output=True, text=True, env=env, timeout=240)
+                         capture_output=True, text=True, timeout=240)
     assert run.returncode == 0, run.stderr
     assert '"written": 16' in run.stdout
     got = files(tmp_path / "set")
@@ -200,10 +195,9 @@ def test_unreachable_scheduler_is_a_clear_error():
     with socket.socket() as s:  # a port nobody listens on
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
-    env = dict(os.environ, PYTHONPATH=str(ROOT / "blender_addon"))
-    run = subprocess.run([sys.executable, "-m", "fracterra.core.tiles", *FLAGS, "--tile", "256", "--out", "unused",
+    run = subprocess.run([sys.executable, "-m", "fracterra.tiles", *FLAGS, "--tile", "256", "--out", "unused",
                           "--scheduler", f"tcp://127.0.0.1:{port}", "--connect-timeout", "2"],
-                         capture_output=True, text=True, env=env, timeout=120)
+                         capture_output=True, text=True, timeout=120)
     assert run.returncode == 2
     assert f"cannot reach the Dask scheduler at tcp://127.0.0.1:{port} within 2" in run.stderr
     assert "Traceback" not in run.stderr

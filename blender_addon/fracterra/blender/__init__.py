@@ -1,7 +1,7 @@
 """The Blender side of the add-on, one folder per role (imports point upwards:
 each folder imports only the folders above it; tests/python/test_addon_layers.py checks it):
     common/  leaves: reporting, jobs (progress bar, Esc), preferences, images, widgets, presets
-    build/   Blender data from and to library arrays: mesh, curve, terrain, polyline, erosion, objects
+    build/   Blender data from and to library arrays: mesh, curve, terrain, planet, polyline, erosion, objects
     ui/      properties and PropertyGroups, how settings are laid out, panels, menus
     ops/     operators (panels and menus name them by their id strings, never import them)
 This file only lists the classes and registers them.
@@ -22,6 +22,7 @@ from .common import presets
 from .ui import properties as props
 from .ui import erosion_layout
 from .ops import terrain as terrain_ops
+from .ops import planet as planet_ops
 from .ops import tiles_import as tiles_import_op
 from .ui.menus import MENUS
 from .build.objects import restore_after_undo
@@ -31,9 +32,12 @@ classes = (
     props.FRACTERRA_PG_terrain,
     props.FRACTERRA_PG_measures,
     props.FRACTERRA_PG_polyline,
+    props.FRACTERRA_PG_planet,
     terrain_ops.FRACTERRA_OT_terrain_add,
     terrain_ops.FRACTERRA_OT_terrain_regenerate,
     terrain_ops.FRACTERRA_OT_reference_image_open,
+    planet_ops.FRACTERRA_OT_planet_add,
+    planet_ops.FRACTERRA_OT_planet_regenerate,
     polyline_ops.FRACTERRA_OT_polyline_add,
     polyline_ops.FRACTERRA_OT_polyline_regenerate,
     polyline_ops.FRACTERRA_OT_coastline_add,
@@ -46,6 +50,7 @@ classes = (
     tiles_import_op.FRACTERRA_OT_import_tiles,
     panels.FRACTERRA_PT_terrain,
     rivers_panel.FRACTERRA_PT_rivers,
+    panels.FRACTERRA_PT_planet,
     panels.FRACTERRA_PT_polyline,
     panels.FRACTERRA_PT_measures,
     prefs.FracterraPreferences,
@@ -58,6 +63,7 @@ def on_register():
     bpy.types.Object.fracterra_terrain = bpy.props.PointerProperty(type=props.FRACTERRA_PG_terrain)
     bpy.types.Object.fracterra_measures = bpy.props.PointerProperty(type=props.FRACTERRA_PG_measures)
     bpy.types.Object.fracterra_polyline = bpy.props.PointerProperty(type=props.FRACTERRA_PG_polyline)
+    bpy.types.Object.fracterra_planet = bpy.props.PointerProperty(type=props.FRACTERRA_PG_planet)
     erosion_layout.register()
     try:
         presets.install_presets()
@@ -72,6 +78,7 @@ def on_unregister():
     if final_for_render in bpy.app.handlers.render_pre:
         bpy.app.handlers.render_pre.remove(final_for_render)
     erosion_layout.unregister()
+    del bpy.types.Object.fracterra_planet
     del bpy.types.Object.fracterra_polyline
     del bpy.types.Object.fracterra_measures
     del bpy.types.Object.fracterra_terrain

@@ -43,6 +43,18 @@ def too_large(nx, ny):
     return None
 
 
+def cube_sphere_too_large(level):
+    """None when a Blender mesh can hold the planet's cube-sphere of `level`
+    (6 4^level quads, 6 4^level + 2 vertices), else why not, as too_large."""
+    quads = 6 * 4 ** level
+    counts = {"vertices": quads + 2, "edges": 2 * quads, "face corners": 4 * quads, "faces": quads}
+    for element, count in counts.items():
+        if count * RECORD_BYTES[element] > INT_MAX:
+            return (f"level {level} has {count:,} {element}, more than the {INT_MAX // RECORD_BYTES[element]:,} "
+                    f"a Blender mesh can hold; use level {level - 1} or less")
+    return None
+
+
 def check_grid(nx, ny):
     """Raises TooLargeError (reported by the operators) when Blender cannot hold the grid."""
     reason = too_large(nx, ny)

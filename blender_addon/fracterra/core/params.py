@@ -23,7 +23,7 @@ from pathlib import Path
 
 from .binding import PARAMS_KINDS, library
 from .errors import LibraryNotFoundError
-from .mesh_limits import too_large
+from .mesh_limits import cube_sphere_too_large, too_large
 
 # Where the add-on's default differs from the library's, and why: the only
 # place such a difference may be stated (tests/python/test_params.py checks
@@ -53,6 +53,10 @@ BLENDER_OVERRIDES = {
         "branch_prob": (0.3, "a lightning bolt forks; 0.3 gives a few side branches at depth 8"),
         "ifs_points": (20000, "every IFS point becomes a one-point spline of a curve object; 100 000 of "
                               "them take Blender seconds to build and draw"),
+    },
+    "planet": {
+        "sea": ("FRACTION", "Add > Mesh > Fractal Planet starts as a globe with oceans (70 %, the Earth's 71 %), "
+                            "the picture a new user expects; the library's planet has no sea unless asked"),
     },
     "fractalize": {
         "levels": (3, "the redo panel runs Fractalize again on every change: 3 levels (64 faces per base "
@@ -84,6 +88,9 @@ BLENDER_LIMITS = {
     "fractalize": {
         "seed": (0, 2**31 - 1, _INT32),
     },
+    "planet": {
+        "seed": (0, 2**31 - 1, _INT32),
+    },
 }
 # Library fields that are not Blender properties, and why.
 _SEA = "the terrain's own sea (its Sea setting) is the rivers' and the erosion's sea, in the library's pipeline"
@@ -92,6 +99,7 @@ NOT_PROPERTIES = {
     "terrain": {"threads": _THREADS},
     "polyline": {"threads": _THREADS},
     "fractalize": {"threads": _THREADS},
+    "planet": {"threads": _THREADS},
     "erosion": {"threads": _THREADS,
                 "periodic": "the terrain's own Periodic setting: a tiling terrain is eroded as a torus",
                 "sea": _SEA, "sea_level": _SEA, "sea_fraction": _SEA},
@@ -309,6 +317,11 @@ def _blender_terrain_params(dyadic):
         Param("falloff_mask_soft", "bool", True, "Soft Edge",
               "Fade the object's outline inward over the Falloff Width (a smoothstep); off: a step at the "
               "outline"),
+        # The terrain's colours (the material's Base Color, the POV-Ray export's texture).
+        Param("splat_rules", "string", "", "Splat Rules",
+              "Layer rules JSON ({\"layers\": [{\"name\": ..., \"slope_min\": ...}]}, as fracterra splat --rules "
+              "reads it) that colour the terrain; blank: the built-in grass, rock, sediment and snow",
+              subtype="FILE_PATH"),
         # Mesh options.
         Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
         Param("smooth", "bool", True, "Smooth Shading", "Shade faces smooth", geometry=True),
@@ -393,6 +406,35 @@ _BLENDER_FRACTALIZE_PARAMS = (
 )
 
 
+# Add > Mesh > Fractal Planet (fracterra/planet.h): Blender's own settings after
+# the library's: the mesh's levels (ft_planet_mesh's argument, not a field) and
+# how the planet stands in the scene.
+def _largest_planet_level():
+    return max(n for n in range(0, 13) if cube_sphere_too_large(n) is None)
+
+
+def _blender_planet_params():
+    top = _largest_planet_level()
+    return (
+        Param("level", "int", 8, "Level",
+              "Cube-face level n of the Final mesh: 6 x 4^n quads (8: 393 216, 10: 6.3 M; 11, 25 M, is the most a "
+              "Blender mesh holds). Regenerate builds it",
+              min=0, max=top, geometry=True),
+        Param("preview_level", "int", 6, "Preview Level",
+              "Auto Update (and the redo panel) builds at this level so editing stays interactive; the Preview "
+              "is the Final's every 2^k-th sample, the same planet with less detail", min=0, max=top),
+        Param("vertical_scale", "float", 20.0, "Exaggeration",
+              "Heights times this: at 1 an Earth's 8 km mountains are 0.1 % of its radius, invisible from space",
+              min=0.0, soft_max=200.0, precision=1),
+        Param("scene_radius", "float", 1.0, "Scene Radius",
+              "The planet's radius in the scene (the Radius setting is the planet's own, in metres, which the "
+              "noise's scale and the heights are relative to); heights are scaled alike",
+              min=1e-6, soft_max=100.0, subtype="DISTANCE", unit="LENGTH"),
+        Param("sea_sphere", "bool", True, "Sea Sphere",
+              "A water sphere at the sea's height, a child of the planet (with a Sea)"),
+    )
+
+
 def _tables():
     """The tables made from the library's description: built on first use, so
     importing this module loads no library (a script, a Dask worker, the
@@ -414,11 +456,13 @@ def _tables():
         "PARAMS_BY_NAME": {p.name: p for p in terrain + erode + rivers},
         "POLYLINE_PARAMS": library_params("polyline") + _BLENDER_POLYLINE_PARAMS,
         "FRACTALIZE_PARAMS": library_params("fractalize") + _BLENDER_FRACTALIZE_PARAMS,
+        "PLANET_PARAMS": library_params("planet"),  # ft_planet_params' settings
+        "PLANET_OBJECT_PARAMS": library_params("planet") + _blender_planet_params(),  # what a planet object stores
     }
 
 
 _LAZY = ("DYADIC_METHODS", "TERRAIN_PARAMS", "EROSION_PARAMS", "ERODE_PARAMS", "RIVERS_PARAMS", "TERRAIN_OBJECT_PARAMS",
-         "PARAMS_BY_NAME", "POLYLINE_PARAMS", "FRACTALIZE_PARAMS")
+         "PARAMS_BY_NAME", "POLYLINE_PARAMS", "FRACTALIZE_PARAMS", "PLANET_PARAMS", "PLANET_OBJECT_PARAMS")
 
 
 def __getattr__(name):
@@ -461,6 +505,13 @@ def preview_values(values):
     floor = values["reference_levels"] if values.get("reference_source") in ("IMAGE", "DEM") else 1
     levels = min(values["levels"], max(values.get("preview_levels", values["levels"]), floor))
     return {**values, "levels": levels} if levels != values["levels"] else values
+
+
+def planet_preview_values(values):
+    """The settings of a planet's Preview: its Level lowered to Preview Level
+    (the same settings when the Final is no larger)."""
+    level = min(values["level"], values["preview_level"])
+    return {**values, "level": level} if level != values["level"] else values
 
 
 def fill_struct(struct, values, param_list=None):

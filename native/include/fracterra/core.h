@@ -69,9 +69,14 @@ extern "C" {
 ///      ft_build_params.rivers; a terrain that tiles gives rivers that wrap, in every front end;
 ///      ft_river_network_grid (the grid a network was traced on).
 /// 2.21: the sea as erosion's base level: ft_erosion_params.sea, sea_level and sea_fraction.
-/// 2.22: ft_build_features, ft_has_feature and ft_heightfield_formats: what this build has
+/// 2.22: splat rules files read through the ABI (ft_splat_rules_read, ft_splat_rules_layers,
+///      ft_splat_rules_free), so the add-on's material checks a file as the CLI does.
+/// 2.23: planet.h: FT_PLANET_MIDPOINT (midpoint displacement on the cube-sphere), the icosphere
+///      (ft_planet_icosphere(_counts)), the spherical-harmonic spectrum (ft_planet_power_spectrum,
+///      ft_planet_spectrum_hurst).
+/// 2.24: ft_build_features, ft_has_feature and ft_heightfield_formats: what this build has
 ///      (the Windows build has no GDAL, OpenEXR or OpenSubdiv; docs/windows.md).
-#define FT_ABI_VERSION_MINOR 22
+#define FT_ABI_VERSION_MINOR 24
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

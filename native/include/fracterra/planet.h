@@ -5,6 +5,8 @@
 /// unit sphere (the noise bases of terrain.h in three dimensions), so there
 /// are no seams and no poles, and every layout and patch gives the bits of
 /// the same planet. Heights are in metres above the radius (float32).
+/// 2.23: midpoint displacement on the cube-sphere (FT_PLANET_MIDPOINT), the
+/// icosphere mesh, the spherical-harmonic power spectrum and H from it.
 ///
 /// Cube faces follow the OpenGL cube-map convention. Face f in 0..5 is
 /// +X, -X, +Y, -Y, +Z, -Z. At level n a face has (2^n + 1)^2 samples;
@@ -30,7 +32,10 @@ extern "C" {
 
 /// How a planet is made (ft_planet_params.method).
 enum {
-  FT_PLANET_FBM = 0         ///< octave noise on the sphere (Quilez; the bases of terrain.h in 3D)
+  FT_PLANET_FBM = 0,        ///< octave noise on the sphere (Quilez; the bases of terrain.h in 3D)
+  FT_PLANET_MIDPOINT = 1    ///< (2.23) Voss's midpoint displacement by subdivision of the cube-sphere: its
+                            ///< heights are the cube-sphere's samples (ft_planet_heights refuses it; the
+                            ///< equirect and icosphere layouts interpolate them). Uses sigma, hurst, seed, sea.
 };
 
 /// Where a planet's sea is (ft_planet_params.sea); heights below it are
@@ -104,6 +109,38 @@ FT_API ft_status ft_planet_mesh_counts(int32_t level, int64_t* vertices, int64_t
 FT_API ft_status ft_planet_mesh(const ft_planet_params* p, int32_t level, double vertical_scale, float* xyz,
                                 size_t xyz_count, int32_t* quads, size_t quad_count, float* heights,
                                 size_t height_count);
+
+/// (2.23) Counts of the icosphere of level `level` (0..10): 10 4^level + 2
+/// vertices and 20 4^level triangles.
+FT_API ft_status ft_planet_icosphere_counts(int32_t level, int64_t* vertices, int64_t* triangles);
+
+/// (2.23) The icosphere mesh of level `level` (0..10 and within the memory
+/// cap): a regular icosahedron whose triangles are split in four `level`
+/// times (new vertices the normalised middles of their edges), closed, no
+/// duplicate vertices, at radius + vertical_scale x height, in metres.
+/// An fBm planet's heights are the field's at the vertices; a midpoint
+/// planet's are its cube-sphere of level + 1 bilinearly interpolated.
+/// Arrays as ft_planet_mesh's, with 3 int32 a triangle (counter-clockwise
+/// seen from outside).
+FT_API ft_status ft_planet_icosphere(const ft_planet_params* p, int32_t level, double vertical_scale, float* xyz,
+                                     size_t xyz_count, int32_t* triangles, size_t triangle_count, float* heights,
+                                     size_t height_count);
+
+/// (2.23) The angular power spectrum C_l = sum_m |a_lm|^2 / (2l + 1) of the
+/// heights (metres^2, orthonormal spherical harmonics), l = 0..lmax
+/// (2..512), into `power` (at least lmax + 1 doubles). A direct transform on
+/// a Gauss-Legendre grid of 4 (lmax + 1) x 8 (lmax + 1) points; a midpoint
+/// planet is interpolated from the cube-sphere level as fine as the grid.
+FT_API ft_status ft_planet_power_spectrum(const ft_planet_params* p, int32_t lmax, double* power,
+                                          size_t power_count);
+
+/// (2.23) H from the slope of log C_l against log l over l_min..l_max
+/// (1 <= l_min < l_max <= 512): fBm on the sphere has C_l ~ l^-(2H + 2), so
+/// H = (-slope - 2) / 2. `std_error` (may be NULL) gets the slope's
+/// standard error / 2. Choose l_min above the planet's largest features
+/// (a few continents: l ~ 8) and l_max below its finest detail.
+FT_API ft_status ft_planet_spectrum_hurst(const ft_planet_params* p, int32_t l_min, int32_t l_max, double* hurst,
+                                          double* std_error);
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,6 @@
 /* fracterra splat: weight maps (splat maps) and colour maps of a terrain for
- * game engines, Blender and POV-Ray, from one set of layer rules (ABI 2.19).
+ * game engines, Blender and POV-Ray, from one set of layer rules (ABI 2.19;
+ * rules files read through the ABI: 2.22).
  *
  * Each layer (rock, grass, ...) has a rule: a weight times a band in height
  * (as a fraction of the terrain's height range, 0 lowest, 1 highest), a band
@@ -66,6 +67,25 @@ FT_API ft_status ft_splat_weights(const ft_heightfield* terrain, const ft_height
 FT_API ft_status ft_splat_colors(const ft_heightfield* terrain, const ft_heightfield* deposited,
                                  const ft_heightfield* drainage_area, const ft_splat_params* layers,
                                  int32_t layer_count, float* rgb, size_t rgb_count);
+
+/// A rule set read from a rules JSON file ({"layers": [{"name": ..., fields of ft_splat_params}]}),
+/// checked as `fracterra splat --rules` checks it (ABI 2.22), so every front end refuses the same
+/// files with the same message (file, layer and field named).
+typedef struct ft_splat_rules ft_splat_rules;
+
+/// Reads and checks the rules file at `path` (UTF-8). On success `*out` owns the rules: release
+/// them with ft_splat_rules_free. On failure `*out` is NULL and ft_last_error() names what is wrong
+/// (FT_ERR_IO: unreadable; FT_ERR_FORMAT: not JSON; FT_ERR_INVALID_ARGUMENT: a bad field).
+FT_API ft_status ft_splat_rules_read(const char* path, ft_splat_rules** out);
+
+/// The layers of `rules`, as ft_splat_default_layers gives the built-in ones: `*count` gets the
+/// number of layers; `layers` (may be NULL to ask the count) holds `capacity` structs whose
+/// struct_size the caller set. Their names point into `rules`: valid until ft_splat_rules_free.
+FT_API ft_status ft_splat_rules_layers(const ft_splat_rules* rules, ft_splat_params* layers, int32_t capacity,
+                                       int32_t* count);
+
+/// Releases rules from ft_splat_rules_read; NULL is a no-op.
+FT_API void ft_splat_rules_free(ft_splat_rules* rules);
 
 #ifdef __cplusplus
 }

@@ -10,6 +10,8 @@
 #include "fracterra/fracterra.h"
 #include "planet/cube_sphere.hpp"
 #include "planet/equirect.hpp"
+#include "planet/icosphere.hpp"
+#include "planet/sphere_spectrum.hpp"
 #include "planet/planet_params.hpp"
 
 using ft::capi::guarded;
@@ -31,6 +33,20 @@ void check_capacity(const char* what, size_t given, uint64_t want) {
   if (given < want)
     ft::invalid(std::string(what) + " holds " + std::to_string(given) + " elements, needs at least " +
                 std::to_string(want));
+}
+
+// A mesh into the caller's arrays (each may be NULL), capacities checked first.
+template <class MakeMesh>
+void mesh_out(int64_t nv, int64_t nf, int corners, float* xyz, size_t xyz_count, int32_t* indices,
+              size_t index_count, const char* index_name, float* heights, size_t height_count, MakeMesh&& make) {
+  if (xyz) check_capacity("xyz", xyz_count, 3 * uint64_t(nv));
+  if (indices) check_capacity(index_name, index_count, uint64_t(corners) * uint64_t(nf));
+  if (heights) check_capacity("heights", height_count, uint64_t(nv));
+  std::vector<float> h;
+  const ft::Mesh mesh = make(&h);
+  if (xyz) std::copy(mesh.positions.begin(), mesh.positions.end(), xyz);
+  if (indices) std::copy(mesh.face_indices.begin(), mesh.face_indices.end(), indices);
+  if (heights) std::copy(h.begin(), h.end(), heights);
 }
 
 }  // namespace
@@ -105,17 +121,55 @@ FT_API ft_status ft_planet_mesh(const ft_planet_params* p, int32_t level, double
                                 size_t height_count) {
   return guarded([&] {
     ft::check_int_range("level", level, 0, ft::planet::kMaxMeshLevel);
-    const uint64_t nv = uint64_t(ft::planet::mesh_vertex_count(level));
-    const uint64_t nf = uint64_t(ft::planet::mesh_face_count(level));
-    if (xyz) check_capacity("xyz", xyz_count, 3 * nv);
-    if (quads) check_capacity("quads", quad_count, 4 * nf);
-    if (heights) check_capacity("heights", height_count, nv);
-    const ft::planet::Planet planet = make_planet(p);
-    std::vector<float> h;
-    const ft::Mesh mesh = ft::planet::cube_sphere_mesh(planet, level, vertical_scale, &h);
-    if (xyz) std::copy(mesh.positions.begin(), mesh.positions.end(), xyz);
-    if (quads) std::copy(mesh.face_indices.begin(), mesh.face_indices.end(), quads);
-    if (heights) std::copy(h.begin(), h.end(), heights);
+    mesh_out(ft::planet::mesh_vertex_count(level), ft::planet::mesh_face_count(level), 4, xyz, xyz_count, quads,
+             quad_count, "quads", heights, height_count, [&](std::vector<float>* h) {
+               return ft::planet::cube_sphere_mesh(make_planet(p), level, vertical_scale, h);
+             });
+  });
+}
+
+FT_API ft_status ft_planet_icosphere_counts(int32_t level, int64_t* vertices, int64_t* triangles) {
+  return guarded([&] {
+    ft::check_int_range("level", level, 0, ft::planet::kMaxIcosphereLevel);
+    if (vertices) *vertices = ft::planet::icosphere_vertex_count(level);
+    if (triangles) *triangles = ft::planet::icosphere_face_count(level);
+  });
+}
+
+FT_API ft_status ft_planet_icosphere(const ft_planet_params* p, int32_t level, double vertical_scale, float* xyz,
+                                     size_t xyz_count, int32_t* triangles, size_t triangle_count, float* heights,
+                                     size_t height_count) {
+  return guarded([&] {
+    ft::check_int_range("level", level, 0, ft::planet::kMaxIcosphereLevel);
+    mesh_out(ft::planet::icosphere_vertex_count(level), ft::planet::icosphere_face_count(level), 3, xyz,
+             xyz_count, triangles, triangle_count, "triangles", heights, height_count,
+             [&](std::vector<float>* h) {
+               return ft::planet::icosphere_mesh(make_planet(p), level, vertical_scale, h);
+             });
+  });
+}
+
+FT_API ft_status ft_planet_power_spectrum(const ft_planet_params* p, int32_t lmax, double* power,
+                                          size_t power_count) {
+  return guarded([&] {
+    ft::check_int_range("lmax", lmax, 2, ft::planet::kMaxSpectrumDegree);
+    ft::check_not_null("power", power);
+    check_capacity("power", power_count, uint64_t(lmax) + 1);
+    const std::vector<double> c = ft::planet::angular_power_spectrum(make_planet(p), lmax);
+    std::copy(c.begin(), c.end(), power);
+  });
+}
+
+FT_API ft_status ft_planet_spectrum_hurst(const ft_planet_params* p, int32_t l_min, int32_t l_max, double* hurst,
+                                          double* std_error) {
+  return guarded([&] {
+    ft::check_not_null("hurst", hurst);
+    ft::check_int_range("l_max", l_max, 2, ft::planet::kMaxSpectrumDegree);
+    ft::check_int_range("l_min", l_min, 1, l_max - 1);
+    const ft::planet::SpectrumHurst r =
+        ft::planet::spectrum_hurst(ft::planet::angular_power_spectrum(make_planet(p), l_max), l_min, l_max);
+    *hurst = r.hurst;
+    if (std_error) *std_error = r.std_error;
   });
 }
 

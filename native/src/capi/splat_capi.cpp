@@ -1,11 +1,14 @@
 // The C ABI of the splat layer (fracterra/splat.h).
 #include <algorithm>
 #include <cstring>
+#include <memory>
+#include <vector>
 #include <string>
 
 #include "capi/guard.hpp"
 #include "capi/handles.hpp"
 #include "fracterra/fracterra.h"
+#include "splat/rules_json.hpp"
 #include "splat/splat_map.hpp"
 #include "splat/splat_params.hpp"
 
@@ -24,7 +27,32 @@ void check_count(const char* what, size_t given, size_t want) {
     ft::invalid(std::string(what) + " holds " + std::to_string(given) + " values; it needs " + std::to_string(want));
 }
 
+// Copies `from` into the caller's `layers` (capacity, struct_size each) and
+// sets *count: the built-in layers and a rules file's alike.
+void copy_layers(const std::vector<ft_splat_params>& from, ft_splat_params* layers, int32_t capacity,
+                 int32_t* count) {
+  ft::check_not_null("count", count);
+  *count = int32_t(from.size());
+  if (!layers) return;
+  if (capacity < int32_t(from.size()))
+    ft::invalid("capacity must be at least " + std::to_string(from.size()) + ", got " + std::to_string(capacity));
+  for (size_t k = 0; k < from.size(); ++k) {
+    // The caller's struct_size decides how much is written (an older, smaller struct).
+    const uint32_t size = layers[k].struct_size;
+    if (size < offsetof(ft_splat_params, color) + sizeof(double[3]) || size > sizeof(ft_splat_params))
+      ft::invalid("layers[" + std::to_string(k) + "].struct_size must be sizeof(ft_splat_params) = " +
+                  std::to_string(sizeof(ft_splat_params)) + ", got " + std::to_string(size));
+    ft_splat_params l = from[k];
+    l.struct_size = size;
+    std::memcpy(&layers[k], &l, size);
+  }
+}
+
 }  // namespace
+
+struct ft_splat_rules {
+  ft::splat::SplatRules rules;
+};
 
 extern "C" {
 
@@ -36,25 +64,29 @@ FT_API ft_status ft_splat_params_init(ft_splat_params* layer) {
 }
 
 FT_API ft_status ft_splat_default_layers(ft_splat_params* layers, int32_t capacity, int32_t* count) {
+  return guarded([&] { copy_layers(ft::splat::default_layers(), layers, capacity, count); });
+}
+
+FT_API ft_status ft_splat_rules_read(const char* path, ft_splat_rules** out) {
   return guarded([&] {
-    ft::check_not_null("count", count);
-    const auto d = ft::splat::default_layers();
-    *count = int32_t(d.size());
-    if (!layers) return;
-    if (capacity < int32_t(d.size()))
-      ft::invalid("capacity must be at least " + std::to_string(d.size()) + ", got " + std::to_string(capacity));
-    for (size_t k = 0; k < d.size(); ++k) {
-      // The caller's struct_size decides how much is written (an older, smaller struct).
-      const uint32_t size = layers[k].struct_size;
-      if (size < offsetof(ft_splat_params, color) + sizeof(double[3]) || size > sizeof(ft_splat_params))
-        ft::invalid("layers[" + std::to_string(k) + "].struct_size must be sizeof(ft_splat_params) = " +
-                    std::to_string(sizeof(ft_splat_params)) + ", got " + std::to_string(size));
-      ft_splat_params l = d[k];
-      l.struct_size = size;
-      std::memcpy(&layers[k], &l, size);
-    }
+    ft::check_not_null("out", out);
+    *out = nullptr;
+    ft::check_not_null("path", path);
+    auto r = std::make_unique<ft_splat_rules>();
+    r->rules = ft::splat::read_rules(path);
+    *out = r.release();
   });
 }
+
+FT_API ft_status ft_splat_rules_layers(const ft_splat_rules* rules, ft_splat_params* layers, int32_t capacity,
+                                       int32_t* count) {
+  return guarded([&] {
+    ft::check_not_null("rules", rules);
+    copy_layers(rules->rules.layers, layers, capacity, count);
+  });
+}
+
+FT_API void ft_splat_rules_free(ft_splat_rules* rules) { delete rules; }
 
 FT_API ft_status ft_splat_weights(const ft_heightfield* terrain, const ft_heightfield* deposited,
                                   const ft_heightfield* drainage_area, const ft_splat_params* layers,

@@ -32,6 +32,7 @@ enum class Stream : uint32_t {
   kNoiseWarpY = 16,         // domain warp, y field: level = octave
   kFluvialRouting = 17,     // Rho8 receivers of the fluvial eroder: level = time step
   kPlanetNoise = 30,        // spherical fbm (planet/): level = octave
+  kPlanetMidpoint = 31,     // spherical midpoint (planet/): {x, y, z} = the vertex's cube point at its birth level
   kPolyline = 10,
   kPolylineBranch = 11,
   kIfs = 12,

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/progress.hpp"
 #include "erosion/d8_grid.hpp"
 
 namespace ft::erosion {
@@ -88,8 +89,10 @@ void accumulate_area(const D8Grid& g, const FlowGraph& graph, std::vector<double
 // edge (bounded) or to `sink` (periodic). Returns the number of cells raised.
 // With `random` (one number in (0, 1) per cell, see draw_rho8) a raised cell
 // is 1 to 4 float steps above the cell it was reached from, and raised cells
-// are visited in order of height, not first in first out.
-int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* random = nullptr);
+// are visited in order of height, not first in first out. `progress` hears
+// the share of cells done (priority_flood).
+int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* random = nullptr,
+                         const Progress& progress = Progress());
 
 // Fills the depression of every pit of the last routing, one at a time in
 // index order, by a Priority-Flood+epsilon restricted to that depression: a
@@ -109,9 +112,10 @@ void reroute_changed(const D8Grid& g, const float* z, int32_t sink, FlowGraph& g
 // again (a global fill and a full routing when pits are more than one cell
 // in 16, or after a few rounds). Afterwards every cell that is not a base
 // level has a strictly lower neighbour (what multiple_flow_area needs).
-void route_and_fill(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph);
+// `progress` moves through a global fill (the long part on a large grid).
+void route_and_fill(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph, const Progress& progress = Progress());
 
 // The usual sequence for an eroder: route_and_fill, then the stack.
-void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph);
+void route_filled(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph, const Progress& progress = Progress());
 
 }  // namespace ft::erosion

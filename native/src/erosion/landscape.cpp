@@ -166,54 +166,65 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
       cap[i] = std::numeric_limits<float>::infinity();
     }
     draw_rho8(g, sink, level * uint32_t(kMaxSteps) + uint32_t(step), graph);
-    route_filled(g, filled.data(), sink, graph);
-    // A step of a 4097^2 detail run takes seconds: the bar moves (and a
-    // cancel is seen) within it too, at its phases' rough shares of the time.
+    {
+      // A step of a 4097^2 detail run takes seconds: the bar moves (and a
+      // cancel is seen) within it too, at its phases' rough shares of the
+      // time; the first step's global fill, the longest part, inside it.
+      const ProgressPart routing(progress, double(step) / steps, 0.5 / steps);
+      route_filled(g, filled.data(), sink, graph, routing.progress());
+    }
     progress.report((step + 0.5) / steps);
     // Runs of whole trees are independent: each is walked in stack order
     // (receivers first) or against it (donors first), so the result does
     // not depend on the thread count.
     const int32_t chunks = int32_t(graph.chunk_start.size()) - 1;
     double carried_step = 0, detached_step = 0, deposited_step = 0;
+    // In batches of chunks, with a report after each (a 4097^2 step's
+    // incision takes seconds); chunks are independent, so the heights do
+    // not depend on the batches.
+    constexpr int32_t kBatches = 4;
+    for (int32_t b = 0; b < kBatches; ++b) {
+      const int32_t from = int32_t(int64_t(chunks) * b / kBatches), to = int32_t(int64_t(chunks) * (b + 1) / kBatches);
 #pragma omp parallel for schedule(dynamic, 1) reduction(+ : carried_step, detached_step, deposited_step)
-    for (int32_t ch = 0; ch < chunks; ++ch) {
-      const int32_t first = graph.chunk_start[ch], last = graph.chunk_start[ch + 1];
-      for (int32_t k = last - 1; k >= first; --k) {  // discharge, donors first
-        const int32_t i = graph.stack[k], r = graph.receiver[i];
-        if (r != i) discharge[r] += discharge[i];
-      }
-      for (int32_t k = first; k < last; ++k) {  // detachment and talus, receivers first
-        const int32_t i = graph.stack[k], r = graph.receiver[i];
-        if (r == i || !(z[i] > z[r])) continue;  // a base level, or under a lake
-        const double w = mask(i);
-        const double f = w * k_dt * (m == 0.5 ? std::sqrt(discharge[i]) : std::pow(discharge[i], m)) / graph.length[i];
-        double zi = (z[i] + f * z[r]) / (1.0 + f);
-        const double limit = z[r] + tan_talus * graph.length[i];
-        if (zi > limit) zi -= w * shed * (zi - limit);
-        z[i] = float(zi);
-      }
-      for (int32_t k = last - 1; k >= first; --k) {  // deposition, donors first
-        const int32_t i = graph.stack[k], r = graph.receiver[i];
-        const double lost = std::max(0.0, double(start[i]) - z[i]) * cell;
-        detached_step += lost;
-        double load = sediment[i] + lost;
-        sediment[i] = 0;
-        if (r == i) {  // a base level: the load leaves (a bounded edge stays where it is)
-          carried_step += load;
-          continue;
+      for (int32_t ch = from; ch < to; ++ch) {
+        const int32_t first = graph.chunk_start[ch], last = graph.chunk_start[ch + 1];
+        for (int32_t k = last - 1; k >= first; --k) {  // discharge, donors first
+          const int32_t i = graph.stack[k], r = graph.receiver[i];
+          if (r != i) discharge[r] += discharge[i];
         }
-        const bool lake = filled[i] > start[i];  // under a lake before this step
-        const double top = lake ? double(filled[i]) : std::isinf(cap[i]) ? double(start[i]) : double(cap[i]);
-        const double share = lake ? 1.0 : std::min(1.0, G * own_rain / std::max(discharge[i], 1e-30));
-        const double laid = std::min(share * load, std::max(0.0, top - z[i]) * cell);
-        z[i] = float(z[i] + laid / cell);
-        deposited_step += laid;
-        sediment[r] += load - laid;
-        cap[r] = std::min(cap[r], float(z[i] - kFanSlope * graph.length[i]));
+        for (int32_t k = first; k < last; ++k) {  // detachment and talus, receivers first
+          const int32_t i = graph.stack[k], r = graph.receiver[i];
+          if (r == i || !(z[i] > z[r])) continue;  // a base level, or under a lake
+          const double w = mask(i);
+          const double f = w * k_dt * (m == 0.5 ? std::sqrt(discharge[i]) : std::pow(discharge[i], m)) / graph.length[i];
+          double zi = (z[i] + f * z[r]) / (1.0 + f);
+          const double limit = z[r] + tan_talus * graph.length[i];
+          if (zi > limit) zi -= w * shed * (zi - limit);
+          z[i] = float(zi);
+        }
+        for (int32_t k = last - 1; k >= first; --k) {  // deposition, donors first
+          const int32_t i = graph.stack[k], r = graph.receiver[i];
+          const double lost = std::max(0.0, double(start[i]) - z[i]) * cell;
+          detached_step += lost;
+          double load = sediment[i] + lost;
+          sediment[i] = 0;
+          if (r == i) {  // a base level: the load leaves (a bounded edge stays where it is)
+            carried_step += load;
+            continue;
+          }
+          const bool lake = filled[i] > start[i];  // under a lake before this step
+          const double top = lake ? double(filled[i]) : std::isinf(cap[i]) ? double(start[i]) : double(cap[i]);
+          const double share = lake ? 1.0 : std::min(1.0, G * own_rain / std::max(discharge[i], 1e-30));
+          const double laid = std::min(share * load, std::max(0.0, top - z[i]) * cell);
+          z[i] = float(z[i] + laid / cell);
+          deposited_step += laid;
+          sediment[r] += load - laid;
+          cap[r] = std::min(cap[r], float(z[i] - kFanSlope * graph.length[i]));
+        }
       }
+      progress.report((step + 0.5 + 0.35 * (b + 1) / kBatches) / steps);
     }
     carried += carried_step, detached += detached_step, deposited += deposited_step;
-    progress.report((step + 0.85) / steps);
     if (creep) {
       if (run.mask || run.texture) {
         // With a texture, a deposit (above it) creeps as it lies: sediment

@@ -55,14 +55,17 @@ inline float raised(float z, const float* random, int32_t j) {
 
 }  // namespace
 
-int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* random) {
+int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* random, const Progress& progress) {
   int64_t raised_cells = 0;
-  priority_flood(g, outlet_cells(g, sink), z, [&](int32_t c, int32_t j) {
-    if (z[j] > z[c]) return false;
-    z[j] = raised(z[c], random, j);
-    ++raised_cells;
-    return !random;  // graded by random steps: through the heap
-  });
+  priority_flood(
+      g, outlet_cells(g, sink), z,
+      [&](int32_t c, int32_t j) {
+        if (z[j] > z[c]) return false;
+        z[j] = raised(z[c], random, j);
+        ++raised_cells;
+        return !random;  // graded by random steps: through the heap
+      },
+      progress);
   return raised_cells;
 }
 

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/progress.hpp"
 #include "erosion/d8_grid.hpp"
 #include "erosion/radix_heap.hpp"
 
@@ -44,9 +45,14 @@ inline std::vector<int32_t> outlet_cells(const D8Grid& g, int32_t sink) {
 // step(c, j) updates j and returns true to queue it in the FIFO (a cell
 // raised just above c) or false to queue it in the heap at key[j], read
 // after the step. Keys taken out never decrease (the radix heap's rule): a
-// step may only raise key[j] to at least key[c].
+// step may only raise key[j] to at least key[c]. `progress` hears the share
+// of the grid's cells taken out every 2^20 cells (a 4097^2 grid's flood
+// takes seconds: the bar moves and a cancel is seen inside it).
 template <class Step>
-void priority_flood(const D8Grid& g, const std::vector<int32_t>& seeds, const float* key, Step&& step) {
+void priority_flood(const D8Grid& g, const std::vector<int32_t>& seeds, const float* key, Step&& step,
+                    const Progress& progress = Progress()) {
+  constexpr size_t kReportEvery = size_t(1) << 20;
+  size_t taken = 0;
   std::vector<uint8_t> closed(g.size(), 0);
   RadixHeap open;
   std::vector<int32_t> fifo;  // taken from `head`; emptied when all are taken
@@ -64,6 +70,7 @@ void priority_flood(const D8Grid& g, const std::vector<int32_t>& seeds, const fl
     } else {
       c = open.pop();
     }
+    if (++taken % kReportEvery == 0) progress.report(double(taken) / double(g.size()));
     const int32_t cx = c % g.width, cy = c / g.width;
     for (int k = 0; k < 8; ++k) {
       const int64_t j = g.neighbour(cx, cy, k);

@@ -66,7 +66,10 @@ void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& 
     // carve one straight channel along the grid direction nearest the fall
     // line; Rho8's paths follow the fall line on average.
     draw_rho8(g, g.periodic ? sink : -1, uint32_t(step), graph);
-    route_filled(g, z, sink, graph);
+    {
+      const ProgressPart routing(progress, double(step) / c.steps, 0.5 / c.steps);  // its global fill moves the bar
+      route_filled(g, z, sink, graph, routing.progress());
+    }
     accumulate_area(g, graph, area);
     const double kdt = c.erodibility * c.dt, m = c.area_exponent;
 #pragma omp parallel for schedule(static)

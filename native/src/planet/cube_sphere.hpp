@@ -31,11 +31,32 @@ std::array<double, 3> unit_vector(const CubePoint& p);
 bool face_sample(const CubePoint& p, int face, int64_t n, int64_t* i, int64_t* j);
 // The outward normal of face `face` (a unit axis).
 std::array<int, 3> face_normal(int face);
+// The point d n_f + s s_f + t t_f of face `face`'s frame (normal, column and
+// row directions): cube_point(face, i, j, n) is face_point(face, n, 2i - n, 2j - n).
+CubePoint face_point(int face, int64_t d, int64_t s, int64_t t);
+// Sample (i, j) of face `face`'s plane at N = n, one coordinate allowed up to
+// n past the face: the plane folded over that edge onto the next face (the
+// cube net), so (-1, j) is the sample of the next face one row in from the
+// shared edge. Inside the face it is cube_point().
+CubePoint folded_point(int face, int64_t i, int64_t j, int64_t n);
+// The first face (0..5) holding `p` at N = n, and its (i, j) there.
+int locate(const CubePoint& p, int64_t n, int64_t* i, int64_t* j);
+// The face a direction lies on (its largest component's axis and sign) and
+// its continuous face coordinates (s, t) in [-1, 1] (gnomonic).
+int face_of_direction(double x, double y, double z, double* s, double* t);
 
 // Validates level, face and the patch (inside the face's samples).
 void validate_patch(int level, int face, int64_t x0, int64_t y0, int64_t w, int64_t h);
 // The samples (x0 .. x0 + w - 1, y0 .. y0 + h - 1) of face `face` at `level`.
 Heightfield face_patch(const Planet& planet, int level, int face, int64_t x0, int64_t y0, int32_t w, int32_t h);
+
+// Throws unless the mesh exaggeration is finite and within +-1e6.
+void check_vertical_scale(double vertical_scale);
+// An fBm planet's heights at u, in parallel rows (progress, cancel).
+std::vector<float> heights_in_rows(const Planet& planet, const Directions& u);
+// Mesh positions: each direction times radius + vertical_scale x its height.
+void place_on_sphere(const Directions& u, const std::vector<float>& h, double radius, double vertical_scale,
+                     Mesh* mesh);
 
 // Vertex and quad counts of the closed mesh: 6 N^2 + 2 and 6 N^2.
 int64_t mesh_vertex_count(int level);

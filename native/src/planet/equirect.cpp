@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "planet/cube_sampler.hpp"
 
 namespace ft::planet {
 namespace {
@@ -36,6 +37,24 @@ Heightfield equirect(const Planet& planet, int32_t width, int32_t height) {
   g.transform = {-180.0, 360.0 / width, 0.0, 90.0, 0.0, -180.0 / height};
   g.has_transform = true;
   hf.set_georef(g);
+  if (planet.midpoint()) {
+    // The cube-sphere at the first level as fine as the map's pixels
+    // (2 / 2^level radians at a face's centre <= 2 pi / width and pi / height),
+    // interpolated; its first 80 % of the progress.
+    const int level = sampler_level_for(std::min(2.0 * std::numbers::pi / width, std::numbers::pi / height));
+    const ProgressPart faces(planet.config().progress, 0.0, 0.8), pixels(planet.config().progress, 0.8, 0.2);
+    const CubeSampler sampler(planet.midpoint_config(), level, planet.config().threads, faces.progress());
+    fill_rows(width, height, planet.config().threads, pixels.progress(),
+              [&](int32_t y, float* row) {
+                for (int32_t x = 0; x < width; ++x) {
+                  const auto p = equirect_point(x, y, width, height);
+                  row[x] = sampler.height(p[0], p[1], p[2]);
+                }
+                planet.raise_to_sea(width, row);
+              },
+              hf.data());
+    return hf;
+  }
   fill_rows(width, height, planet.config().threads, planet.config().progress,
             [&](int32_t y, float* row) {
               Directions d{size_t(width)};

@@ -9,11 +9,12 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "planet/cube_sampler.hpp"
 
 namespace ft::planet {
 
 void validate_planet(const PlanetConfig& c) {
-  check_int_range("method", c.method, kMethodFbm, kMethodFbm);
+  check_int_range("method", c.method, kMethodFbm, kMethodMidpoint);
   if (!(c.radius > 0.0) || !std::isfinite(c.radius) || c.radius > 1e12)
     invalid("radius must be in (0, 1e12] metres (the Earth's is 6371000), got " + format_number(c.radius));
   noise::validate_fbm3(c.fbm);
@@ -47,11 +48,18 @@ Planet::Planet(const PlanetConfig& c) : config_(c), fbm_((validate_planet(c), c.
   if (c.sea == kSeaFraction) {
     // The quantile over equal-area points: the same level for every layout
     // and patch, whatever part of the planet it covers.
+    // A midpoint planet's are interpolated from its level-8 cube-sphere
+    // (spacing 0.2 to 0.45 degrees), whichever level is then sampled.
     const int64_t n = kSeaQuantilePoints;
     Directions d{size_t(n)};
     for (int64_t i = 0; i < n; ++i) d.set(size_t(i), fibonacci_point(i, n));
     std::vector<float> h(n);
-    fbm_.evaluate(n, d.x.data(), d.y.data(), d.z.data(), h.data());
+    if (midpoint()) {
+      const CubeSampler sampler(midpoint_config(), kSeaQuantileLevel, c.threads, Progress());
+      for (int64_t i = 0; i < n; ++i) h[size_t(i)] = sampler.height(d.x[size_t(i)], d.y[size_t(i)], d.z[size_t(i)]);
+    } else {
+      fbm_.evaluate(n, d.x.data(), d.y.data(), d.z.data(), h.data());
+    }
     const size_t k = std::min<size_t>(size_t(n) - 1, size_t(c.sea_fraction * double(n)));
     std::nth_element(h.begin(), h.begin() + std::ptrdiff_t(k), h.end());
     sea_ = c.sea_fraction == 0.0 ? double(*std::min_element(h.begin(), h.end())) : double(h[k]);
@@ -59,7 +67,15 @@ Planet::Planet(const PlanetConfig& c) : config_(c), fbm_((validate_planet(c), c.
 }
 
 void Planet::heights(int64_t n, const double* x, const double* y, const double* z, float* out) const {
+  if (midpoint())
+    invalid("a midpoint planet's heights are its cube-sphere samples, not a function of any point: use "
+            "ft_planet_face (a face or patch at a level), or the equirect and icosphere layouts, which interpolate "
+            "them");
   fbm_.evaluate(n, x, y, z, out);
+  raise_to_sea(n, out);
+}
+
+void Planet::raise_to_sea(int64_t n, float* out) const {
   if (!std::isnan(sea_)) {
     const float s = float(sea_);
     for (int64_t i = 0; i < n; ++i) out[i] = out[i] < s ? s : out[i];

@@ -1,7 +1,9 @@
-// A fractal planet: fBm on the unit sphere (noise/fbm3.hpp) in metres above
-// the radius, with a sea. The height is a function of the 3D point only, so
-// every layout (cube_sphere.hpp, equirect.hpp) and every patch of one gives
-// the bits of the same planet, on any thread count.
+// A fractal planet in metres above the radius, with a sea: fBm on the unit
+// sphere (noise/fbm3.hpp), a function of the 3D point only, so every layout
+// (cube_sphere.hpp, equirect.hpp, icosphere.hpp) and every patch gives the
+// bits of the same planet; or midpoint displacement on the cube-sphere
+// (midpoint_sphere.hpp), whose heights are the cube-sphere's samples (the
+// other layouts interpolate them, cube_sampler.hpp). Any thread count.
 #pragma once
 
 #include <array>
@@ -13,15 +15,18 @@
 
 #include "core/progress.hpp"
 #include "noise/fbm3.hpp"
+#include "planet/midpoint_sphere.hpp"
 
 namespace ft::planet {
 
-enum Method : int32_t { kMethodFbm = 0 };
+enum Method : int32_t { kMethodFbm = 0, kMethodMidpoint = 1 };
 // The values of FT_PLANET_SEA_* (planet.h) and terrain.h's FT_SEA_*.
 enum Sea : int32_t { kSeaNone = 0, kSeaHeight = 1, kSeaFraction = 2 };
 
 // Points of the Fibonacci sphere whose height quantile is a sea fraction's level.
 inline constexpr int kSeaQuantilePoints = 1 << 16;
+// The level of a midpoint planet's cube-sphere those points are interpolated from.
+inline constexpr int kSeaQuantileLevel = 8;
 
 // n unit vectors as three arrays, the form Planet::heights takes.
 struct Directions {
@@ -48,10 +53,15 @@ void validate_planet(const PlanetConfig& c);
 class Planet {
  public:
   explicit Planet(const PlanetConfig& c);  // validates; finds the sea's level
-  // Heights (metres) at n unit vectors; any n; the sea applied.
+  bool midpoint() const { return config_.method == kMethodMidpoint; }
+  MidpointConfig midpoint_config() const { return {config_.fbm.sigma, config_.fbm.hurst, config_.fbm.seed}; }
+  // Heights (metres) at n unit vectors; any n; the sea applied. fBm only: a
+  // midpoint planet is refused (its heights are its cube-sphere samples).
   void heights(int64_t n, const double* x, const double* y, const double* z, float* out) const;
   void heights(const Directions& d, float* out) const { heights(d.size(), d.x.data(), d.y.data(), d.z.data(), out); }
   float height(double x, double y, double z) const;
+  // Heights below the sea raised to it (a no-op without a sea).
+  void raise_to_sea(int64_t n, float* h) const;
   // The sea's height, NaN without a sea.
   double sea_height() const { return sea_; }
   const PlanetConfig& config() const { return config_; }

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
+#include "povray/mesh2_export.hpp"
 #include "povray/sdl_writer.hpp"
 
 namespace ft::pov {
@@ -32,23 +33,21 @@ double planet_max_gradient(const Heightfield& map, double span, double min_radiu
   return 1.3 * (1.0 + g * span / range);
 }
 
-void write_planet_scene(const Heightfield& map, const PlanetScene& s, const std::string& pov_path) {
+namespace {
+
+void check_scene(const PlanetScene& s) {
   if (!(s.exaggeration > 0) || !std::isfinite(s.exaggeration))
     invalid("the height exaggeration must be a finite number > 0, got " + format_number(s.exaggeration));
   if (!(s.distance > 1.2) || !std::isfinite(s.distance))
     invalid("the camera distance must be more than 1.2 radii, got " + format_number(s.distance));
   check_range("view latitude", s.view_latitude_deg, -90, 90);
   check_finite("view longitude", s.view_longitude_deg);
-  io::AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
-  namespace fs = std::filesystem;
-  const fs::path scene(pov_path);
-  const std::string png = scene.stem().string() + "_height.png";
-  io::write_heightfield(map, (scene.parent_path() / png).string());
+}
 
-  const HeightStats st = map.stats();
+// The scene around the ground: ft_planet.inc, camera, light and background
+// before `ground` (SDL), the sea and the atmosphere after it.
+std::string globe_scene(const PlanetScene& s, const std::string& file_name, const std::string& ground) {
   const double k = s.exaggeration / s.radius;  // metres -> scene units (radius 1)
-  const double hmin = st.min * k, hmax = st.max * k;
-  const double gradient = planet_max_gradient(map, hmax - hmin, 1.0 + std::min(0.0, hmin));
   // The camera: POV-Ray's north is +y; image_map map_type 1 puts the map's
   // left edge (longitude -180) towards -z... seen from above the view point.
   const double lat = s.view_latitude_deg * std::numbers::pi / 180, lon = s.view_longitude_deg * std::numbers::pi / 180;
@@ -59,7 +58,7 @@ void write_planet_scene(const Heightfield& map, const PlanetScene& s, const std:
   std::string t;
   t += "// fracterra planet: radius " + number(s.radius) + " m, heights x " + number(s.exaggeration) +
        "; scene units: the radius is 1\n";
-  t += "// Render: povray +W800 +H600 +A0.1 " + comment_text(scene.filename().string()) + "\n";
+  t += "// Render: povray +W800 +H600 +A0.1 " + comment_text(file_name) + "\n";
   t += "#version 3.7;\nglobal_settings { assumed_gamma 1.0 max_trace_level 8 }\n\n";
   t += "// ---- povray_macros/ft_planet.inc, embedded so the scene stands alone ----\n";
   t += kFtPlanetInc;
@@ -68,10 +67,73 @@ void write_planet_scene(const Heightfield& map, const PlanetScene& s, const std:
        number(angle) + " }\n";
   t += "light_source { " + vec({40 * dir[0] + 30, 40 * dir[1] + 25, 40 * dir[2] - 20}) + " color rgb 1.3 }\n";
   t += "background { rgb <0.005, 0.005, 0.012> }\n\n";
-  t += "FT_Planet(" + quoted(png) + ", 1, " + number(hmin) + ", " + number(hmax) + ", " + number(gradient) + ")\n";
+  t += ground;
   if (!std::isnan(s.sea_height)) t += "FT_Planet_Sea(1, " + number(s.sea_height * k) + ")\n";
   if (s.atmosphere) t += "FT_Planet_Atmosphere(1, 0.04)\n";
-  out.write(t);
+  return t;
+}
+
+}  // namespace
+
+void write_planet_scene(const Heightfield& map, const PlanetScene& s, const std::string& pov_path) {
+  check_scene(s);
+  io::AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
+  namespace fs = std::filesystem;
+  const fs::path scene(pov_path);
+  const std::string png = scene.stem().string() + "_height.png";
+  io::write_heightfield(map, (scene.parent_path() / png).string());
+
+  const HeightStats st = map.stats();
+  const double k = s.exaggeration / s.radius;  // metres -> scene units (radius 1)
+  const double hmin = st.min * k, hmax = st.max * k;
+  const double gradient = planet_max_gradient(map, hmax - hmin, 1.0 + std::min(0.0, hmin));
+  out.write(globe_scene(s, scene.filename().string(),
+                        "FT_Planet(" + quoted(png) + ", 1, " + number(hmin) + ", " + number(hmax) + ", " +
+                            number(gradient) + ")\n"));
+  out.commit();
+}
+
+Mesh pov_globe_mesh(const Mesh& mesh, double radius) {
+  Mesh out;
+  out.positions.resize(mesh.positions.size());
+  const double k = 1.0 / radius;
+  for (size_t i = 0; i < mesh.positions.size(); i += 3) {
+    // planet.h's (x, y, z), z north, to POV-Ray's axes, y north, as image_map
+    // map_type 1 lays the isosurface's map (u from +x towards +z, so the map's
+    // left edge, longitude -180, at +x): both geometries are the same globe.
+    out.positions[i] = float(-mesh.positions[i] * k);
+    out.positions[i + 1] = float(mesh.positions[i + 2] * k);
+    out.positions[i + 2] = float(-mesh.positions[i + 1] * k);
+  }
+  // That is a reflection: each face reversed stays counter-clockwise seen from
+  // outside, so mesh2's normals (from the winding) point out.
+  out.face_sizes = mesh.face_sizes;
+  out.face_indices.resize(mesh.face_indices.size());
+  size_t first = 0;
+  for (int32_t n : mesh.face_sizes) {
+    std::reverse_copy(mesh.face_indices.begin() + std::ptrdiff_t(first),
+                      mesh.face_indices.begin() + std::ptrdiff_t(first + size_t(n)),
+                      out.face_indices.begin() + std::ptrdiff_t(first));
+    first += size_t(n);
+  }
+  return out;
+}
+
+void write_planet_mesh_scene(const Mesh& mesh, const std::vector<float>& heights, const PlanetScene& s,
+                             const std::string& pov_path) {
+  check_scene(s);
+  if (heights.empty() || heights.size() != mesh.vertex_count())
+    invalid("the planet mesh needs one height per vertex");
+  io::AtomicFile out(pov_path);  // fails now, before the mesh, if the folder is unwritable
+  namespace fs = std::filesystem;
+  const fs::path scene(pov_path);
+  const std::string inc = scene.stem().string() + "_mesh.inc";
+  write_mesh2(pov_globe_mesh(mesh, s.radius), (scene.parent_path() / inc).string(), "FT_Planet_Mesh2");
+  const auto [lo, hi] = std::minmax_element(heights.begin(), heights.end());
+  const double k = s.exaggeration / s.radius;
+  out.write(globe_scene(s, scene.filename().string(),
+                        "#include " + quoted(inc) + "\nFT_Planet_Mesh(FT_Planet_Mesh2, 1, " + number(*lo * k) +
+                            ", " + number(*hi * k) + ")\n"));
   out.commit();
 }
 

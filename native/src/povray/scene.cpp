@@ -12,6 +12,7 @@
 #include "io/png_image.hpp"
 #include "povray/sdl_writer.hpp"
 #include "povray/sphere_sweep_export.hpp"
+#include "splat/splat_map.hpp"
 
 namespace ft::pov {
 namespace {
@@ -406,6 +407,12 @@ SceneSummary write_terrain_scene(const Heightfield& hf, const std::string& pov_p
   if (hf.world_size() > 0) set_scene_terrain(p, hf, hf.world_size(), 1.0);
   else set_scene_terrain(p, hf);
   p.title = "terrain " + std::to_string(hf.width()) + " x " + std::to_string(hf.height());
+  // Coloured by the built-in splat rules, as `fracterra splat --color` and
+  // the Blender material colour it.
+  const auto layers = splat::default_layers();
+  const std::vector<float> colors =
+      splat::splat_colors_linear({&hf, nullptr, nullptr}, layers.data(), int32_t(layers.size()));
+  p.terrain_colors = colors.data();
   return write_scene(p, pov_path);
 }
 

@@ -103,7 +103,8 @@ SceneSummary write_scene(const SceneParams& p, const std::string& pov_path);
 void set_scene_terrain(SceneParams& p, const Heightfield& hf, double world_size_x = 1, double vertical_scale = 0,
                        double sea_fraction = 0.3);
 // `fracterra terrain ... --pov`: the terrain alone, in its recorded world size
-// with heights unscaled (or, without one, with the defaults above).
+// with heights unscaled (or, without one, with the defaults above), coloured
+// by the built-in splat rules (splat/splat_map.hpp).
 SceneSummary write_terrain_scene(const Heightfield& hf, const std::string& pov_path);
 
 // The automatic camera elevations (ft_pov_scene_params.camera_elevation_deg

@@ -176,4 +176,10 @@ std::vector<float> splat_colors(const SplatInputs& in, const ft_splat_params* gi
   return rgb;
 }
 
+std::vector<float> splat_colors_linear(const SplatInputs& in, const ft_splat_params* layers, int32_t n) {
+  std::vector<float> rgb = splat_colors(in, layers, n);
+  for (float& c : rgb) c = float(c <= 0.04045f ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+  return rgb;
+}
+
 }  // namespace ft::splat

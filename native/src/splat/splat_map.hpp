@@ -44,4 +44,9 @@ std::vector<uint16_t> splat_weights(const SplatInputs& in, const ft_splat_params
 // sRGB 0..1, three floats per sample: the layers' colours mixed by their fractions.
 std::vector<float> splat_colors(const SplatInputs& in, const ft_splat_params* layers, int32_t n);
 
+// The same colours in linear RGB (IEC 61966-2-1 decoding), for renderers that
+// light in linear light: the POV-Ray scenes' terrain colours (and Blender's
+// colour attribute, decoded alike by the add-on).
+std::vector<float> splat_colors_linear(const SplatInputs& in, const ft_splat_params* layers, int32_t n);
+
 }  // namespace ft::splat

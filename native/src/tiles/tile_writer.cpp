@@ -30,18 +30,8 @@ GrayImage quantise(const Heightfield& hf, const TileSpec& s, int32_t col, int32_
   img.width = hf.width();
   img.height = hf.height();
   img.bit_depth = 16;
-  img.pixels.resize(hf.size());
-  const double lo = s.height_min, range = s.height_max - s.height_min;
-  const double k = range > 0 ? 65535.0 / range : 0.0;
-  const float* z = hf.data();
-  for (size_t i = 0; i < hf.size(); ++i) {
-    const double q = std::nearbyint((double(z[i]) - lo) * k);
-    if (!(q >= 0.0 && q <= 65535.0))
-      fail(FT_ERR_INTERNAL, "tile (column " + std::to_string(col) + ", row " + std::to_string(row) + ") has the height " +
-                                format_number(z[i]) + ", outside the tile set's range [" + format_number(s.height_min) +
-                                ", " + format_number(s.height_max) + "]");
-    img.pixels[i] = uint16_t(q);
-  }
+  img.pixels = quantise16(hf, s.height_min, s.height_max,
+                          "tile (column " + std::to_string(col) + ", row " + std::to_string(row) + ")");
   img.text["fracterra:min"] = format_number(s.height_min);
   img.text["fracterra:max"] = format_number(s.height_max);
   img.text["fracterra:world_size"] = format_number(s.spacing * (hf.width() - 1));
@@ -50,6 +40,21 @@ GrayImage quantise(const Heightfield& hf, const TileSpec& s, int32_t col, int32_
 }
 
 }  // namespace
+
+std::vector<uint16_t> quantise16(const Heightfield& hf, double height_min, double height_max, const std::string& what) {
+  std::vector<uint16_t> codes(hf.size());
+  const double range = height_max - height_min;
+  const double k = range > 0 ? 65535.0 / range : 0.0;
+  const float* z = hf.data();
+  for (size_t i = 0; i < hf.size(); ++i) {
+    const double q = std::nearbyint((double(z[i]) - height_min) * k);
+    if (!(q >= 0.0 && q <= 65535.0))
+      fail(FT_ERR_INTERNAL, what + " has the height " + format_number(z[i]) + ", outside the tile set's range [" +
+                                format_number(height_min) + ", " + format_number(height_max) + "]");
+    codes[i] = uint16_t(q);
+  }
+  return codes;
+}
 
 TileSpec make_tile_spec(const ft_terrain_params& p, int64_t tile, TileFormat format, double height_min,
                         double height_max) {

@@ -15,7 +15,9 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
+#include "core/heightfield.hpp"
 #include "terrain/terrain.hpp"  // ft_terrain_params
 #include "tiles/tile_grid.hpp"
 
@@ -47,6 +49,11 @@ void tile_geotransform(const TileSpec& spec, int32_t col, int32_t row, double tr
 // rename). Returns the CRC-32 (zlib's) of the file's bytes. Throws if a
 // sample falls outside [height_min, height_max] (the range is then wrong).
 uint32_t write_tile(const ft_terrain_params& p, const TileSpec& spec, const std::string& dir, int32_t col, int32_t row);
+
+// The 16-bit codes of `hf` on the common scale: round((z - min) 65535 /
+// (max - min)), what every 16-bit tile holds. Throws FT_ERR_INTERNAL naming
+// `what` for a height outside the range (the range is then wrong).
+std::vector<uint16_t> quantise16(const Heightfield& hf, double height_min, double height_max, const std::string& what);
 
 // CRC-32 of a file's bytes; throws FT_ERR_IO naming the file.
 uint32_t file_crc32(const std::string& path);

@@ -1,26 +1,21 @@
 """The Erode step of a terrain in Blender: the settings a preset runs with,
-erosion after generation (in the job's worker thread), the maps as mesh point
-attributes and the node material that textures by them. (Its settings are
-drawn by ui/erosion_layout.py.)
+erosion after generation (in the job's worker thread), the terrain's colours by
+its splat rules (splat_material.py) and the maps as mesh point attributes.
+(Its settings are drawn by ui/erosion_layout.py.)
 """
 
-import bpy
 import numpy as np
 
 from ... import core
 from ...core import erosion, params
-from .mesh import SLOPE_ATTRIBUTE
+from ...core import splat as splat_rules
+from . import splat_material
 
 # Point attributes (0..1) beside fracterra_height and fracterra_slope.
 FLOW_ATTRIBUTE = "fracterra_flow"  # log drainage area: 0 on ridges, 1 at the main outlet
 DEPOSIT_ATTRIBUTE = "fracterra_deposit"  # sediment laid down
 WATER_ATTRIBUTE = "fracterra_water"  # water left by the rain
 ATTRIBUTES = (FLOW_ATTRIBUTE, DEPOSIT_ATTRIBUTE, WATER_ATTRIBUTE)
-MATERIAL_NAME = "Fracterra Eroded Terrain"
-# The eroded material's rule (eroded_material's nodes, eroded_colors per sample
-# for the POV-Ray export): linear RGB, and the attribute ranges each ramp rises over.
-GRASS, SEDIMENT, ROCK = (0.16, 0.26, 0.07), (0.55, 0.47, 0.33), (0.33, 0.31, 0.29)
-CHANNELS, DEPOSITS, STEEP = (0.45, 0.7), (0.05, 0.4), (0.3, 0.45)
 
 
 # --- in the job's worker thread (no bpy here)
@@ -28,15 +23,16 @@ CHANNELS, DEPOSITS, STEEP = (0.45, 0.7), (0.05, 0.4), (0.3, 0.45)
 # The library's share of the work's bar; the mesh arrays and the maps the rest.
 LIBRARY_SHARE = 0.85
 
-def generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=None, maps=None):
+def generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=None, maps=None, rules=None):
     """Builds the terrain of `values` (with its reference and falloff mask, as
     core.generate_terrain takes them) in one library call, eroded when its
     settings ask for it (a preset: its run and rates, Strength and the rest as
     set; Custom: everything as set), where `maps` say (erosion_masks.maps_for:
     the erosion mask and the rain map, or None); returns grid_of(heightfield)
-    with `.erosion_maps` ({attribute: float32 array} or None) and `.water`
-    (core.rivers.WaterArrays, or None without Rivers and Lakes). Runs in the
-    worker thread."""
+    with `.erosion_maps` ({attribute: float32 array} or None), `.water`
+    (core.rivers.WaterArrays, or None without Rivers and Lakes) and `.colors`
+    (linear RGBA per sample by the splat `rules`, core.splat.Rules; None: the
+    built-in set). Runs in the worker thread."""
     preset = values.get("erode_preset", "NONE")
     eroded = preset not in ("NONE", "CUSTOM") or (preset == "CUSTOM" and erosion.requested(values))
     # The bar: the library's pipeline, then the mesh arrays (seconds at 4097^2).
@@ -56,8 +52,13 @@ def generate_and_erode(values, reference, progress, threads, grid_of, falloff_ma
                                                 threads=threads, progress=part(0.0, LIBRARY_SHARE),
                                                 **(maps if eroded and maps else {}))
     with hf:
-        g = grid_of(hf, part(LIBRARY_SHARE, 0.95 - LIBRARY_SHARE))
+        g = grid_of(hf, part(LIBRARY_SHARE, 0.9 - LIBRARY_SHARE))
         spacing = values["world_size"] / (hf.width - 1)
+        # The library's colour map of the final heights and maps: what the
+        # material shows and the POV-Ray export paints.
+        g.colors = splat_material.linear_colors(hf, rules if rules is not None else splat_rules.default_rules(),
+                                                maps if eroded else None)
+        part(0.9, 0.05)(1.0)
     g.erosion_maps = None
     g.water = water
     if eroded:
@@ -106,74 +107,3 @@ def set_maps(mesh, maps):
         if layer is None:
             layer = mesh.attributes.new(name, "FLOAT", "POINT")
         layer.data.foreach_set("value", maps[name])
-    if maps is not None and len(mesh.materials) == 0:
-        mesh.materials.append(eroded_material())
-
-
-def eroded_material():
-    """The node material of eroded terrains (made once per file): rock where the
-    slope is steep, sediment in channels and on deposits, grass elsewhere, from
-    the point attributes fracterra_slope, fracterra_flow and fracterra_deposit."""
-    mat = bpy.data.materials.get(MATERIAL_NAME)
-    if mat is not None:
-        return mat
-    mat = bpy.data.materials.new(MATERIAL_NAME)
-    mat.use_nodes = True
-    nodes, links = mat.node_tree.nodes, mat.node_tree.links
-    bsdf = nodes.get("Principled BSDF")
-    bsdf.inputs["Roughness"].default_value = 0.85
-
-    def attribute(name, y):
-        node = nodes.new("ShaderNodeAttribute")
-        node.attribute_name = name
-        node.location = (-1000, y)
-        return node.outputs["Fac"]
-
-    def ramp(fac, lo, hi, y):
-        """0 below lo, 1 above hi, smooth between (a Map Range, smoothstep)."""
-        node = nodes.new("ShaderNodeMapRange")
-        node.interpolation_type = "SMOOTHSTEP"
-        node.inputs["From Min"].default_value, node.inputs["From Max"].default_value = lo, hi
-        node.location = (-800, y)
-        links.new(fac, node.inputs["Value"])
-        return node.outputs["Result"]
-
-    def mix(fac, a, b, y):
-        node = nodes.new("ShaderNodeMixRGB")
-        node.location = (-500, y)
-        links.new(fac, node.inputs["Fac"])
-        for socket, value in ((node.inputs["Color1"], a), (node.inputs["Color2"], b)):
-            if isinstance(value, tuple):
-                socket.default_value = value
-            else:
-                links.new(value, socket)
-        return node.outputs["Color"]
-
-    grass, sediment, rock = (*GRASS, 1.0), (*SEDIMENT, 1.0), (*ROCK, 1.0)
-    channels = ramp(attribute(FLOW_ATTRIBUTE, 200), *CHANNELS, 200)
-    deposits = ramp(attribute(DEPOSIT_ATTRIBUTE, 0), *DEPOSITS, 0)
-    math_max = nodes.new("ShaderNodeMath")
-    math_max.operation = "MAXIMUM"
-    math_max.location = (-650, 100)
-    links.new(channels, math_max.inputs[0])
-    links.new(deposits, math_max.inputs[1])
-    steep = ramp(attribute(SLOPE_ATTRIBUTE, -200), *STEEP, -200)
-    ground = mix(math_max.outputs["Value"], grass, sediment, 100)
-    colour = mix(steep, ground, rock, -100)
-    links.new(colour, bsdf.inputs["Base Color"])
-    return mat
-
-
-def eroded_colors(slope, flow, deposit):
-    """eroded_material's base colour at each sample of the attribute arrays
-    (0..1 each): an (n, 3) float32 array of linear RGB, node for node."""
-
-    def ramp(x, lo, hi):  # Map Range, smoothstep, clamped
-        t = np.clip((np.asarray(x, dtype=np.float64) - lo) / (hi - lo), 0.0, 1.0)
-        return (t * t * (3.0 - 2.0 * t))[:, None]
-
-    def mix(fac, a, b):  # MixRGB, Mix
-        return (1.0 - fac) * np.asarray(a) + fac * np.asarray(b)
-
-    ground = mix(np.maximum(ramp(flow, *CHANNELS), ramp(deposit, *DEPOSITS)), GRASS, SEDIMENT)
-    return mix(ramp(slope, *STEEP), ground, ROCK).astype(np.float32)

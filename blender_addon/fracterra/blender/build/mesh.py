@@ -43,6 +43,49 @@ def fill_grid_mesh_steps(mesh, g, smooth=True):
     mesh.update()
 
 
+def fill_quad_mesh_steps(mesh, co, loop_vertices, smooth=True):
+    """Replaces the geometry of `mesh` by quads: `co` 3 floats per vertex,
+    `loop_vertices` 4 indices per quad (a closed mesh, e.g. a planet's
+    cube-sphere); Blender derives the edges. Yields the fraction done."""
+    faces = len(loop_vertices) // 4
+    mesh.clear_geometry()
+    mesh.vertices.add(len(co) // 3)
+    mesh.loops.add(4 * faces)
+    mesh.polygons.add(faces)
+    yield 0.1
+    mesh.vertices.foreach_set("co", co)
+    mesh.loops.foreach_set("vertex_index", loop_vertices)
+    yield 0.4
+    mesh.polygons.foreach_set("loop_start", np.arange(0, 4 * faces, 4, dtype=np.uint32))
+    if loop_total_writable():
+        mesh.polygons.foreach_set("loop_total", np.full(faces, 4, dtype=np.uint32))
+    set_smooth(mesh, smooth)
+    yield 0.6
+    mesh.update(calc_edges=True)
+
+
+def fill_quad_mesh(mesh, co, loop_vertices, smooth=True):
+    """fill_quad_mesh_steps in one go."""
+    for _fraction in fill_quad_mesh_steps(mesh, co, loop_vertices, smooth):
+        pass
+
+
+def swap_mesh(obj, new):
+    """Gives `obj` the mesh `new` in place of its old one: the old one's
+    materials when it has any (what the user set stays), else the new one's
+    own; the old mesh goes when nothing else uses it, and `new` takes its name."""
+    old = obj.data
+    if len(old.materials):
+        new.materials.clear()
+        for material in old.materials:
+            new.materials.append(material)
+    obj.data = new
+    if old.users == 0:
+        name = old.name
+        bpy.data.meshes.remove(old)
+        new.name = name
+
+
 def fill_grid_mesh(mesh, g, smooth=True):
     """fill_grid_mesh_steps in one go."""
     for _fraction in fill_grid_mesh_steps(mesh, g, smooth):
@@ -82,6 +125,13 @@ HEIGHT_ATTRIBUTE = "fracterra_height"  # 0 at the lowest vertex, 1 at the highes
 SLOPE_ATTRIBUTE = "fracterra_slope"  # 0 flat, 1 vertical: the slope angle / 90 degrees
 
 
+def set_point_attributes(mesh, arrays):
+    """Writes float point attributes {name: one value per vertex}, made when missing."""
+    for name, values in arrays.items():
+        layer = mesh.attributes.get(name) or mesh.attributes.new(name, "FLOAT", "POINT")
+        layer.data.foreach_set("value", np.ascontiguousarray(values, dtype=np.float32).ravel())
+
+
 def set_height_slope(mesh, co, nx, ny):
     """Writes the height and slope attributes of a grid mesh from its vertex
     positions `co` (3 floats per vertex, rows of nx along X): relative to the
@@ -94,6 +144,4 @@ def set_height_slope(mesh, co, nx, ny):
     dy = (xyz[-1, 0, 1] - xyz[0, 0, 1]) / (ny - 1)
     gy, gx = np.gradient(z, dy, dx)
     slope = np.arctan(np.hypot(gx, gy)) / (np.pi / 2)
-    for name, values in ((HEIGHT_ATTRIBUTE, height), (SLOPE_ATTRIBUTE, slope)):
-        layer = mesh.attributes.get(name) or mesh.attributes.new(name, "FLOAT", "POINT")
-        layer.data.foreach_set("value", values.astype(np.float32).ravel())
+    set_point_attributes(mesh, {HEIGHT_ATTRIBUTE: height, SLOPE_ATTRIBUTE: slope})

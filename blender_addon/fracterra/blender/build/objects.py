@@ -21,6 +21,21 @@ def is_terrain(obj):
     return obj is not None and obj.type == "MESH" and obj.fracterra_terrain.is_terrain
 
 
+def is_planet(obj):
+    """Made by Add > Mesh > Fractal Planet."""
+    return obj is not None and obj.type == "MESH" and obj.fracterra_planet.is_planet
+
+
+def editable_settings(obj):
+    """(settings, param list) of a terrain or a planet object (its PropertyGroup
+    and the settings it stores), or None for any other object."""
+    if is_terrain(obj):
+        return obj.fracterra_terrain, params.TERRAIN_OBJECT_PARAMS
+    if is_planet(obj):
+        return obj.fracterra_planet, params.PLANET_OBJECT_PARAMS
+    return None
+
+
 def is_polyline(obj):
     """Made by Add > Curve > Fractal Polyline (a curve, or a point mesh for IFS)."""
     return obj is not None and obj.type in {"CURVE", "MESH"} and obj.fracterra_polyline.is_polyline
@@ -31,9 +46,25 @@ def is_measurable(obj):
     return obj is not None and (is_terrain(obj) or obj.type == "CURVE")
 
 
+def _planet_level(obj):
+    """("Preview" or "Final", level) of what a planet object's mesh holds;
+    ("Other", level) for a cube-sphere of another level (the settings were
+    changed since, and not yet built); None for any other mesh (edited)."""
+    settings = params.values_of(obj.fracterra_planet, params.PLANET_OBJECT_PARAMS)
+    n = len(obj.data.vertices)
+    for kind, values in (("Final", settings), ("Preview", params.planet_preview_values(settings))):
+        if n == 6 * 4 ** values["level"] + 2:
+            return kind, values["level"]
+    level = next((k for k in range(13) if n == 6 * 4 ** k + 2), None)
+    return ("Other", level) if level is not None else None
+
+
 def mesh_level(obj):
     """("Preview" or "Final", nx, ny) of what a terrain object's mesh holds, or
-    None when it is neither (edited, or built by an older add-on)."""
+    None when it is neither (edited, or built by an older add-on). For a
+    planet: ("Preview" or "Final", level)."""
+    if is_planet(obj):
+        return _planet_level(obj)
     settings = params.values_of(obj.fracterra_terrain)
     n = len(obj.data.vertices)
     final = grid_shape(settings)
@@ -126,18 +157,19 @@ def restoring():
 
 
 def restore_settings(obj):
-    """Puts the settings its mesh was built from back into terrain `obj`'s
-    settings (after a cancel, an undo or a failure); returns the names changed."""
-    if not is_terrain(obj):
+    """Puts the settings its mesh was built from back into terrain or planet
+    `obj`'s settings (after a cancel, an undo or a failure); returns the names changed."""
+    editable = editable_settings(obj)
+    if editable is None:
         return []
     built = built_settings(obj.data)
     if built is None:
         return []
-    settings = obj.fracterra_terrain
+    settings, param_list = editable
     changed = []
     _restoring.append(obj.name)
     try:
-        for p in params.TERRAIN_OBJECT_PARAMS:  # the preset before the passes it fills
+        for p in param_list:  # the preset before the passes it fills
             if p.name in built:
                 value = tuple(built[p.name]) if p.kind == "vector" else built[p.name]
                 current = getattr(settings, p.name)
@@ -153,6 +185,6 @@ def restore_settings(obj):
 def restore_after_undo(*_args):
     """undo_post / redo_post: an undone Regenerate brings the old mesh back, but a
     sidebar edit is an undo step of its own, so the settings could stay newer
-    than the mesh. Every terrain gets the settings of its mesh back."""
+    than the mesh. Every terrain and planet gets the settings of its mesh back."""
     for obj in bpy.data.objects:
         restore_settings(obj)

@@ -18,11 +18,13 @@ from . import erosion as erosion_ui
 from . import erosion_masks
 from . import falloff_mask
 from . import mesh as mesh_build
+from . import planet as planet_build
+from . import splat_material
 from . import water as water_build
 from .objects import mesh_level, remember_settings
 from ..common.images import image_luminance
 from ..common.preferences import library_threads
-from ..common.jobs import Job, run_job
+from ..common.jobs import Job, run_job, run_timed
 from ..common.reporting import SettingsError
 
 
@@ -106,13 +108,15 @@ def terrain_work(values, context, topology=True, frame=None, terrain_name=None):
     terrain object, refused as its own mask). `topology`: False when only the
     vertex positions are needed (an in-place rewrite). The erosion mask and
     the rain map are read too (from the terrain's own vertex groups, or
-    images); `work.maps` holds them (erosion_masks.maps_for).
+    images); `work.maps` holds them (erosion_masks.maps_for). The Splat Rules
+    file is read and checked here too (a bad one is refused before the job).
     """
     check_grid(*grid_shape(values))
     reference = reference_for(values)
     mask = falloff_mask.mask_for(values, frame if frame is not None else Matrix.Identity(4),
                                  context.evaluated_depsgraph_get(), terrain_name)
     maps = erosion_masks.maps_for(values, bpy.data.objects.get(terrain_name) if terrain_name else None)
+    rules = splat_material.rules_of(values)
     threads = library_threads(context)
     # The library flattens the sea itself (ft_terrain_params.sea): no floor here.
     world_size, floor = values["world_size"], NO_FLOOR
@@ -127,7 +131,7 @@ def terrain_work(values, context, topology=True, frame=None, terrain_name=None):
     def work(progress):
         # Generation, then the Erode step when the settings ask for it.
         return erosion_ui.generate_and_erode(values, reference, progress, threads, grid_of, falloff_mask=mask,
-                                             maps=maps)
+                                             maps=maps, rules=rules)
     work.maps = maps
     return work
 
@@ -145,6 +149,7 @@ def _build_new_mesh(g, values, name, settings=None):
         mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
         yield 0.95
         erosion_ui.set_maps(mesh, g.erosion_maps)
+        splat_material.set_colors(mesh, g.colors)
         remember_settings(mesh, settings if settings is not None else values)
     except BaseException:  # GeneratorExit too: a cancel leaves nothing behind
         bpy.data.meshes.remove(mesh)
@@ -182,19 +187,6 @@ def new_terrain_mesh(values, context, name="Fractal Terrain", frame=None):
     return mesh, f"{summary} in {time.perf_counter() - t0:.2f} s"
 
 
-def _swap_mesh(obj, new):
-    """Gives `obj` the mesh `new` in place of its old one (materials kept; the
-    old mesh goes when nothing else uses it)."""
-    old = obj.data
-    for material in old.materials:
-        new.materials.append(material)
-    obj.data = new
-    if old.users == 0:
-        name = old.name
-        bpy.data.meshes.remove(old)
-        new.name = name
-
-
 def _build_in_place(obj, g, values, settings, groups=None):
     """Build steps of a regenerated terrain. The same grid: its positions are
     rewritten in one step. Another grid: a new mesh is built aside and swapped
@@ -205,13 +197,15 @@ def _build_in_place(obj, g, values, settings, groups=None):
         mesh_build.rewrite_positions(mesh, g.co)
         mesh_build.set_height_slope(mesh, g.co, g.nx, g.ny)
         erosion_ui.set_maps(mesh, g.erosion_maps)
+        splat_material.set_colors(mesh, g.colors)
         if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
             mesh_build.set_uvs(mesh, g.uv if values["uvs"] else None)
         mesh_build.set_smooth(mesh, values["smooth"])
         remember_settings(mesh, settings)
         return _with_water(f"{g.nx} x {g.ny} terrain heights rewritten", build_water(obj, _water_of(g)))
     new, _summary = yield from _build_new_mesh(g, values, mesh.name, settings)
-    _swap_mesh(obj, new)
+    mesh_build.swap_mesh(obj, new)
+    splat_material.give_material(obj.data)  # the old eroded material, carried over, gives way
     erosion_masks.carry_groups(obj, groups or {}, g.nx, g.ny)
     return _with_water(f"{g.nx} x {g.ny} terrain mesh rebuilt", build_water(obj, water_build.take(new)))
 
@@ -239,9 +233,7 @@ def regenerate_job(obj, context, preview=False):
 
 def regenerate_object(obj, context, preview=False):
     """Regenerates a terrain object here and now (auto-update, scripts); returns a summary."""
-    t0 = time.perf_counter()
-    summary = run_job(regenerate_job(obj, context, preview))
-    return f"{summary} in {time.perf_counter() - t0:.2f} s"
+    return run_timed(regenerate_job(obj, context, preview))
 
 
 def preview_regenerate(obj, context):
@@ -252,7 +244,7 @@ def preview_regenerate(obj, context):
 @bpy.app.handlers.persistent
 def final_for_render(*_args):
     """render_pre: a command-line render (blender -b -f) renders each terrain at
-    its Final level, rebuilt here when its mesh holds the Preview. Only in
+    its Final level, rebuilt here when its mesh holds the Preview (and each planet). Only in
     background Blender: there render_pre runs in the main thread before the
     scene is read. In the window, F12 calls it from the render job's own thread,
     where rebuilding a mesh is not safe; the sidebar says Preview then."""
@@ -264,3 +256,6 @@ def final_for_render(*_args):
             if level is not None and level[0] == "Preview":
                 print(f"fracterra: {obj.name}: building the Final level for the render", flush=True)
                 regenerate_object(obj, bpy.context)
+    for obj in planet_build.planets_at_preview():  # planets alike
+        print(f"fracterra: {obj.name}: building the Final level for the render", flush=True)
+        planet_build.regenerate_object(obj, bpy.context)

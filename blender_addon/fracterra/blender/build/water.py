@@ -98,7 +98,7 @@ def _remove_data(data):
         (bpy.data.curves if isinstance(data, bpy.types.Curve) else bpy.data.meshes).remove(data)
 
 
-def _put(terrain, kind, name, data, collection):
+def put(terrain, kind, name, data, collection):
     """The terrain's object of `kind` holding `data`: the one there is (its data
     swapped, its materials kept: a re-run keeps what the user set), else a new
     one parented to the terrain with the water material."""
@@ -130,7 +130,7 @@ def _profile(terrain, collection):
     spline.points.add(len(t) - 1)
     spline.points.foreach_set("co", co.astype(np.float32).ravel())
     spline.use_cyclic_u = True
-    obj = _put(terrain, "RIVER_PROFILE", curve.name, curve, collection)
+    obj = put(terrain, "RIVER_PROFILE", curve.name, curve, collection)
     obj.hide_viewport = obj.hide_render = True
     return obj
 
@@ -152,7 +152,7 @@ def _rivers(terrain, water, frame, collection):
     curve.bevel_mode = "OBJECT"
     curve.bevel_object = _profile(terrain, collection)
     curve.use_fill_caps = True
-    return _put(terrain, "RIVERS", curve.name, curve, collection)
+    return put(terrain, "RIVERS", curve.name, curve, collection)
 
 
 def _cells_mesh(name, water, frame, wet, level_of):
@@ -219,7 +219,7 @@ def build_water(terrain, water, heights=None):
     if lakes.any():
         levels = water.levels
         mesh = _cells_mesh(f"{terrain.name} Lakes", water, frame, lakes, lambda lab: levels[lab])
-        _put(terrain, "LAKES", mesh.name, mesh, collection)
+        put(terrain, "LAKES", mesh.name, mesh, collection)
         kept.add("LAKES")
         made.append(f"{water.lake_count} lakes")
     sea = water.mask == SEA
@@ -227,7 +227,7 @@ def build_water(terrain, water, heights=None):
         # Just above the sea floor the landform flattened (the same height would
         # flicker against it): 1e-4 of the relief.
         level = float(heights[sea].max()) + 1e-4 * float(np.ptp(heights))
-        _put(terrain, "SEA", f"{terrain.name} Sea", _sea_mesh(f"{terrain.name} Sea", frame, level), collection)
+        put(terrain, "SEA", f"{terrain.name} Sea", _sea_mesh(f"{terrain.name} Sea", frame, level), collection)
         kept.add("SEA")
         made.append("the sea")
     for obj in water_objects(terrain):

@@ -178,6 +178,13 @@ def run_job(job, on_progress=None):
     return runner.value
 
 
+def run_timed(job):
+    """run_job for a job whose value is a summary: the summary and the seconds it took."""
+    t0 = time.perf_counter()
+    summary = run_job(job)
+    return f"{summary} in {time.perf_counter() - t0:.2f} s"
+
+
 def status_text(label, fraction, cancelling=False):
     """The status bar's line: a text bar (the status bar takes text only in
     Blender 3.4), the percentage, and how to cancel."""

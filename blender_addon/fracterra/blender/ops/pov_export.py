@@ -13,8 +13,7 @@ from mathutils import Matrix, Vector
 from ... import core
 from ...core import povray
 from ..build.curve import curve_polylines
-from ..build.erosion import DEPOSIT_ATTRIBUTE, FLOW_ATTRIBUTE, MATERIAL_NAME, eroded_colors
-from ..build.mesh import SLOPE_ATTRIBUTE
+from ..build.splat_material import attribute_colors, is_terrain_material
 from ..common.reporting import REPORTED, SettingsError
 from ..build.objects import heightfield_of, is_terrain, sea_height
 
@@ -44,25 +43,17 @@ def given_camera(scene, camera, frame, shift):
             "up": tuple(linear @ (top_left - bottom_left))}
 
 
-def _attribute(mesh, name):
-    layer = mesh.attributes.get(name)
-    values = np.zeros(len(mesh.vertices), dtype=np.float32)
-    if layer is not None and layer.domain == "POINT" and layer.data_type == "FLOAT":
-        layer.data.foreach_get("value", values)
-    return values
-
-
 def terrain_colors(obj):
     """Linear RGB per vertex (float32, 3 per vertex, in the grid's order) as
-    Cycles colours the terrain: the eroded material's rule from the mesh's
-    attributes (a missing one reads 0, as the Attribute node does), another
-    material's base colour, or Cycles' grey without a material."""
+    Blender colours the terrain: the terrain material's colour attribute (the
+    library's splat colours), another material's base colour, or Cycles' grey
+    without a material."""
     material = next((slot.material for slot in obj.material_slots if slot.material is not None), None)
     n = len(obj.data.vertices)
-    if material is not None and material.name.split(".")[0] == MATERIAL_NAME:
-        mesh = obj.data
-        return eroded_colors(_attribute(mesh, SLOPE_ATTRIBUTE), _attribute(mesh, FLOW_ATTRIBUTE),
-                             _attribute(mesh, DEPOSIT_ATTRIBUTE)).ravel()
+    if is_terrain_material(material):
+        colors = attribute_colors(obj.data)
+        if colors is not None:
+            return colors
     colour = DEFAULT_GREY
     if material is not None:
         colour = tuple(material.diffuse_color[:3])
@@ -106,8 +97,8 @@ class FRACTERRA_OT_export_pov(bpy.types.Operator, ExportHelper):
     use_scene_look: bpy.props.BoolProperty(
         name="Blender Look", default=True,
         description="Colour the terrain as its Blender material does (grey without one) and light it by the "
-                    "world colour and the sun's colour and strength; off: fracterra's sand, grass, rock, snow, "
-                    "sky and sea")
+                    "world colour and the sun's colour and strength; off: the terrain's splat colours under "
+                    "fracterra's sky, sun and sea")
     render: bpy.props.BoolProperty(name="Render", default=False,
                                    description="Render the scene with povray into a PNG beside it")
     width: bpy.props.IntProperty(name="Width", default=640, min=16, max=8192, subtype="PIXEL")
@@ -141,8 +132,9 @@ class FRACTERRA_OT_export_pov(bpy.types.Operator, ExportHelper):
                 shift = Vector((world_size_x / 2, world_size_y / 2, 0.0))  # the writer's terrain spans 0..size
                 # Blender shows no sea: its flat floor is part of the mesh, coloured as the rest.
                 water = None if self.use_scene_look else sea_height(settings, hf.stats()["min"])
-                if self.use_scene_look:
-                    colors = terrain_colors(terrain)
+                # The splat colours either way (the same map the material shows);
+                # Blender Look also follows another material or none.
+                colors = terrain_colors(terrain) if self.use_scene_look else attribute_colors(terrain.data)
             else:
                 world_size_x = world_size_y = 1.0
                 frame, shift, water = Matrix.Identity(4), Vector((0, 0, 0)), None

@@ -9,7 +9,7 @@ from ..ui import erosion_layout
 from ..ui import properties as props
 from ..common.jobs import JobOperator
 from ..ui.settings_layout import draw_settings
-from ..build.objects import is_terrain, restore_settings
+from .regenerate import RegenerateOperator
 from ..build.terrain import build_water, new_terrain_job, regenerate_job
 from ..build.water import take as take_water, terrain_of
 from ..common.widgets import draw_placement, draw_size
@@ -71,42 +71,15 @@ FRACTERRA_OT_terrain_add.__annotations__ = {
     "erode_preset": erosion_layout.preset_property(options={"SKIP_SAVE"})}
 
 
-class FRACTERRA_OT_terrain_regenerate(JobOperator, bpy.types.Operator):
+class FRACTERRA_OT_terrain_regenerate(RegenerateOperator, bpy.types.Operator):
     """Regenerate the active fractal terrain from its settings at its Final level (heights only when the grid size is unchanged)"""
     bl_idname = "object.fracterra_terrain_regenerate"
     bl_label = "Regenerate Terrain"
     bl_options = {"REGISTER", "UNDO"}
-
-    @classmethod
-    def poll(cls, context):
-        # The active terrain, or the terrain of the active water object or coastline.
-        return context.mode == "OBJECT" and terrain_of(context.active_object) is not None
-
-    def make_job(self, context):
-        obj = terrain_of(context.active_object)
-        obj.fracterra_terrain.last_error = ""
-        self._terrain_name = obj.name
-        return regenerate_job(obj, context)
-
-    def _terrain(self):
-        obj = bpy.data.objects.get(getattr(self, "_terrain_name", ""))
-        return obj if obj is not None else bpy.context.active_object
-
-    def job_cancelled(self, context):
-        # The mesh is the one from before: so are the settings shown.
-        restore_settings(self._terrain())
-
-    def _refuse(self, e):
-        obj = self._terrain()
-        if is_terrain(obj):
-            restore_settings(obj)
-            obj.fracterra_terrain.last_error = str(e)
-        return super()._refuse(e)
-
-    def job_done(self, context, summary):
-        self.report({"INFO"}, f"Fractal terrain: {summary} in {self.job_seconds:.2f} s")
-        return {"FINISHED"}
-
+    noun = "terrain"
+    # The active terrain, or the terrain of the active water object or coastline.
+    target_of = staticmethod(terrain_of)
+    regenerate_job = staticmethod(regenerate_job)
 
 
 class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):

@@ -5,6 +5,7 @@ import bpy
 
 def menu_mesh_add(self, context):
     self.layout.operator("mesh.fracterra_terrain_add", text="Fractal Terrain", icon="RNDCURVE")
+    self.layout.operator("mesh.fracterra_planet_add", text="Fractal Planet", icon="MESH_UVSPHERE")
 
 
 def menu_curve_add(self, context):

@@ -6,6 +6,8 @@ import math
 import bpy
 
 from .settings_layout import draw_polyline_settings, draw_settings
+from .planet_layout import draw_planet_settings
+from ..build.planet import planet_of
 from ..build.objects import geometry_fingerprint, is_measurable, is_polyline, mesh_level
 from ..build.water import terrain_of
 from ...core import params
@@ -16,6 +18,8 @@ from ..common.widgets import draw_library_problem, draw_size, draw_wrapped
 TERRAIN_ADD = "mesh.fracterra_terrain_add"
 TERRAIN_REGENERATE = "object.fracterra_terrain_regenerate"
 POLYLINE_REGENERATE = "object.fracterra_polyline_regenerate"
+PLANET_ADD = "mesh.fracterra_planet_add"
+PLANET_REGENERATE = "object.fracterra_planet_regenerate"
 MEASURE = "object.fracterra_measure"
 
 
@@ -60,7 +64,7 @@ class FRACTERRA_PT_terrain(_SidebarPanel, bpy.types.Panel):
 
     @staticmethod
     def shows(obj):
-        return not is_polyline(obj)  # a polyline has its own panel
+        return not is_polyline(obj) and planet_of(obj) is None  # polylines and planets have their own
 
     def draw(self, context):
         layout = self.layout
@@ -70,7 +74,9 @@ class FRACTERRA_PT_terrain(_SidebarPanel, bpy.types.Panel):
         settings = obj.fracterra_terrain if obj is not None else None
         if settings is None:
             draw_wrapped(layout, "The active object is not a fractal terrain.", width=32)
-            layout.operator(TERRAIN_ADD, text="Add Fractal Terrain", icon="RNDCURVE")
+            col = layout.column(align=True)
+            col.operator(TERRAIN_ADD, text="Add Fractal Terrain", icon="RNDCURVE")
+            col.operator(PLANET_ADD, text="Add Fractal Planet", icon="MESH_UVSPHERE")
             return
         if obj != context.active_object:
             layout.label(text=f"Terrain: {obj.name}", icon="MESH_GRID")
@@ -80,6 +86,35 @@ class FRACTERRA_PT_terrain(_SidebarPanel, bpy.types.Panel):
         draw_mesh_level(layout, settings, level)
         draw_settings(layout, settings, compact=True)
         draw_size(layout, params.values_of(settings))
+
+
+class FRACTERRA_PT_planet(_SidebarPanel, bpy.types.Panel):
+    bl_label = "Fractal Planet"
+
+    @staticmethod
+    def shows(obj):
+        return planet_of(obj) is not None
+
+    def draw(self, context):
+        layout = self.layout
+        draw_library_problem(layout)
+        # The planet, or its sea sphere: the planet's settings.
+        obj = planet_of(context.active_object)
+        settings = obj.fracterra_planet
+        if obj != context.active_object:
+            layout.label(text=f"Planet: {obj.name}", icon="MESH_UVSPHERE")
+        level = mesh_level(obj)
+        draw_regenerate(layout, settings, PLANET_REGENERATE,
+                        text="Build Final" if level is not None and level[0] == "Preview" else "Regenerate")
+        col = layout.column(align=True)
+        if level is None:
+            col.label(text="Mesh: edited, not its cube-sphere", icon="ERROR")
+        else:
+            kind = "" if level[0] == "Other" else f"{level[0]}, "
+            col.label(text=f"Mesh: {kind}level {level[1]}", icon="MESH_UVSPHERE")
+            if level[0] != "Final":
+                col.label(text=f"Regenerate builds level {settings.level}", icon="RENDER_STILL")
+        draw_planet_settings(layout, settings, compact=True)
 
 
 class FRACTERRA_PT_polyline(_SidebarPanel, bpy.types.Panel):

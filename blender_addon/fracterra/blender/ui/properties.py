@@ -12,6 +12,7 @@ from . import erosion_layout
 from ..build.polyline import regenerate_polyline
 from ..build.objects import restore_settings, restoring
 from ..build.terrain import preview_regenerate
+from ..build import planet as planet_build
 
 
 def bpy_property(p, update=None, options=None):
@@ -166,13 +167,21 @@ class FRACTERRA_PG_terrain(bpy.types.PropertyGroup):
     """The settings of a fractal terrain, kept on its object for re-editing."""
 
 
+def editable_annotations(noun):
+    """The flag, Auto Update and Last Error of an object the add-on made and
+    rebuilds at its Preview level (terrain, planet): {name: property}."""
+    return {
+        f"is_{noun}": BoolProperty(name=f"Fractal {noun.title()}", default=False,
+                                   description=f"This object was made by Add > Mesh > Fractal {noun.title()}"),
+        "auto_update": BoolProperty(name="Auto Update", default=False,
+                                    description=f"Regenerate the {noun} at its Preview level whenever a setting "
+                                                "changes (Regenerate builds the Final level)"),
+        "last_error": StringProperty(name="Last Error", default="", options={"SKIP_SAVE"}),
+    }
+
+
 FRACTERRA_PG_terrain.__annotations__ = {
-    "is_terrain": BoolProperty(name="Fractal Terrain", default=False,
-                               description="This object was made by Add > Mesh > Fractal Terrain"),
-    "auto_update": BoolProperty(name="Auto Update", default=False,
-                                description="Regenerate the terrain at its Preview level whenever a setting "
-                                            "changes (Regenerate builds the Final level)"),
-    "last_error": StringProperty(name="Last Error", default="", options={"SKIP_SAVE"}),
+    **editable_annotations("terrain"),
     **terrain_annotations(_on_setting_changed),
     # Picking an erosion preset fills the erosion settings, then regenerates as any change does.
     "erode_preset": erosion_layout.preset_property(then=_on_setting_changed),
@@ -183,6 +192,19 @@ def copy_settings(src, dst, param_list=None):
     """Copies every setting (terrain unless another list is given) between operators and PropertyGroups."""
     for p in param_list or params.TERRAIN_OBJECT_PARAMS:
         setattr(dst, p.name, getattr(src, p.name))
+
+
+_on_planet_setting_changed = live_update("is_planet", planet_build.preview_regenerate, restore_settings)
+
+
+class FRACTERRA_PG_planet(bpy.types.PropertyGroup):
+    """The settings of a fractal planet, kept on its object for re-editing."""
+
+
+FRACTERRA_PG_planet.__annotations__ = {
+    **editable_annotations("planet"),
+    **terrain_annotations(_on_planet_setting_changed, params.PLANET_OBJECT_PARAMS),
+}
 
 
 _on_polyline_setting_changed = live_update("is_polyline", regenerate_polyline)

@@ -9,11 +9,12 @@ from . import erosion_layout
 from ..common.widgets import draw_setting
 
 
-def _prop(layout, data, name):
+def setting_prop(layout, data, name, p=None):
     """layout.prop, except that without the property split (the narrow sidebar)
-    an enum gets its label beside it (Blender would drop it)."""
+    an enum gets its label beside it (Blender would drop it). `p`: the setting's
+    Param (a terrain's, by its name, unless given)."""
     if layout.use_property_split or data.bl_rna.properties[name].type != "ENUM":
-        draw_setting(layout, data, name, params.PARAMS_BY_NAME.get(name))
+        draw_setting(layout, data, name, p if p is not None else params.PARAMS_BY_NAME.get(name))
         return
     row = layout.split(factor=0.4, align=True)
     row.label(text=data.bl_rna.properties[name].name)
@@ -23,6 +24,9 @@ def _prop(layout, data, name):
 # Drawn above for every method that uses them (or by draw_landform and the reference box).
 _SHARED = {"method", "levels", "width", "height", "hurst", "sigma", "seed", "periodic", "world_size",
            "reference_scale"}
+
+
+_prop = setting_prop
 
 
 def _own_settings(method):
@@ -88,6 +92,7 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
             box.prop(data, "reference_height", text="Relief if not georeferenced")
             _prop(box, data, "reference_scale")
     erosion_layout.draw_erosion(col, data)
+    _prop(col.column(align=True), data, "splat_rules")
     sub = col.column(heading="Mesh", align=True)
     _prop(sub, data, "uvs")
     _prop(sub, data, "smooth")
