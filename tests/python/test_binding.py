@@ -272,3 +272,37 @@ def test_custom_falloff_mask_from_python_sequences_and_numpy(core):
         core.generate_terrain(levels=4, falloff="CUSTOM", falloff_mask=(2, 2, [0.0, 1.0, 2.0, 1.0]))
     with pytest.raises(core.InvalidArgumentError, match="needs a mask"):
         core.generate_terrain(levels=4, falloff="CUSTOM")
+
+
+def test_an_unsupported_platform_is_named(monkeypatch):
+    """The zip carries Linux and Windows x64 libraries; elsewhere the error names the platform
+    (with the check removed, the message was "libfracterra.so not found ... does not exist")."""
+    from fracterra.core import binding as lib_mod
+    saved = lib_mod._library
+    monkeypatch.delenv("FRACTERRA_LIBRARY", raising=False)
+    monkeypatch.setattr(lib_mod, "PLATFORM", ("darwin", "arm64"))
+    monkeypatch.setattr(lib_mod.sys, "platform", "darwin")
+    monkeypatch.setattr(lib_mod.platform, "machine", lambda: "arm64")
+    lib_mod.reset()
+    try:
+        with pytest.raises(lib_mod.LibraryNotFoundError,
+                           match=r"no library for this platform \(darwin, arm64\).*fracterra\.dll for x64 Windows"):
+            lib_mod.library()
+    finally:
+        lib_mod._library = saved
+
+
+def test_each_platform_loads_its_own_file():
+    from fracterra.core import binding as lib_mod
+    assert lib_mod.LIBRARY_NAMES[("linux", "x86_64")] == "libfracterra.so"
+    assert lib_mod.LIBRARY_NAMES[("win32", "amd64")] == "fracterra.dll"  # platform.machine() is "AMD64" there
+
+
+def test_the_build_says_what_it_has(core):
+    lib = core.library()
+    features = lib.ft_build_features().decode().split()
+    assert set(features) <= {"gdal", "openexr", "opensubdiv"}
+    for name in ("gdal", "openexr", "opensubdiv"):
+        assert lib.ft_has_feature(name.encode()) == (name in features)
+    assert lib.ft_has_feature(b"") == 0 and lib.ft_has_feature(b"gdal openexr") == 0 and lib.ft_has_feature(None) == 0
+    assert "PNG, PGM, NPY" in lib.ft_heightfield_formats().decode()

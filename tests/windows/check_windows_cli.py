@@ -175,6 +175,7 @@ def refusals(exe, cli):
         del os.environ["FT_POVRAY"]
         if Path(tmp, "s.png").exists():
             problems.append("a failed render left s.png behind")
+        print(f"checked {len(expect)} refusals, --version and two renders")
     return problems
 
 
