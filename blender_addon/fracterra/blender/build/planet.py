@@ -12,11 +12,16 @@ from ...core import params
 from ...core import planet as planet_core
 from . import mesh as mesh_build
 from . import water as water_build
-from .erosion import GRASS, ROCK, SEDIMENT, STEEP
 from .objects import is_planet, mesh_level, remember_settings
 from .shader_nodes import NodeMaterial
 from ..common.jobs import Job, run_timed
 from ..common.preferences import library_threads
+
+# The planet material's colours (linear RGB) and the slope range over which
+# rock takes over (fracterra_slope, 0..1): the terrain's old eroded material's,
+# kept here when terrains moved to the splat rules' colours.
+GRASS, SEDIMENT, ROCK = (0.16, 0.26, 0.07), (0.55, 0.47, 0.33), (0.33, 0.31, 0.29)
+STEEP = (0.3, 0.45)
 
 MATERIAL_NAME = "Fracterra Planet"
 # The sea sphere is a cube-sphere of this level (24 576 quads) whatever the
