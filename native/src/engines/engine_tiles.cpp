@@ -4,9 +4,11 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/exr.hpp"
 #include "io/png_image.hpp"
+#include "io/raw16.hpp"
 #include "tiles/manifest.hpp"
 #include "tiles/tile_writer.hpp"
 #include "tiles/tileset_reader.hpp"
@@ -74,15 +76,6 @@ std::string tile_name(Engine e, const std::string& name, int32_t x, int32_t y) {
   }
 }
 
-std::string raw16_bytes(const std::vector<uint16_t>& codes) {
-  std::string bytes(codes.size() * 2, '\0');
-  for (size_t i = 0; i < codes.size(); ++i) {
-    bytes[2 * i] = char(codes[i] & 0xff);
-    bytes[2 * i + 1] = char(codes[i] >> 8);
-  }
-  return bytes;
-}
-
 }  // namespace
 
 nlohmann::json write_engine_tiles(const std::string& set_dir, const std::string& out_dir, const EngineOptions& o,
@@ -97,17 +90,17 @@ nlohmann::json write_engine_tiles(const std::string& set_dir, const std::string&
   const int32_t columns = int32_t((width - 1) / step), rows = int32_t((height - 1) / step);
   const double lo = m["height_range"]["min"].get<double>(), hi = m["height_range"]["max"].get<double>();
   const double spacing = m["sample_spacing"].get<double>();
-  std::filesystem::create_directories(std::filesystem::path(out_dir));
+  std::filesystem::create_directories(platform::fs_path(out_dir));
 
   nlohmann::json files = nlohmann::json::array();
   for (int32_t y = 0; y < rows; ++y)
     for (int32_t x = 0; x < columns; ++x) {
       const Heightfield hf = tiles::read_tileset_window(set_dir, 0, int64_t(x) * step, int64_t(y) * step, side, side);
       const std::string file = tile_name(o.engine, name, x, y);
-      const std::string path = (std::filesystem::path(out_dir) / std::filesystem::path(file)).string();
+      const std::string path = out_dir + "/" + file;
       const std::string what = std::string(engine_name(o.engine)) + " tile " + file;
       if (o.engine == Engine::unity) {
-        io::write_file_atomically(path, raw16_bytes(tiles::quantise16(hf, lo, hi, what)));
+        io::write_file_atomically(path, io::encode_raw16(tiles::quantise16(hf, lo, hi, what)));
       } else if (o.engine == Engine::unreal) {
         GrayImage img{side, side, 16, tiles::quantise16(hf, lo, hi, what), {{"Software", "fracterra"}}};
         io::write_png(path, img);
@@ -167,7 +160,7 @@ nlohmann::json write_engine_tiles(const std::string& set_dir, const std::string&
     }
   }
   io::write_file_atomically(
-      (std::filesystem::path(out_dir) / (std::string(engine_name(o.engine)) + ".json")).string(),
+      out_dir + "/" + engine_name(o.engine) + ".json",
       j.dump(2) + "\n");
   return j;
 }

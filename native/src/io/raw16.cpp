@@ -16,6 +16,15 @@ namespace ft::io {
 
 std::string raw16_sidecar_path(const std::string& path) { return path + ".json"; }
 
+std::string encode_raw16(const std::vector<uint16_t>& codes) {
+  std::string bytes(codes.size() * 2, '\0');
+  for (size_t i = 0; i < codes.size(); ++i) {
+    bytes[2 * i] = char(codes[i] & 0xff);
+    bytes[2 * i + 1] = char(codes[i] >> 8);
+  }
+  return bytes;
+}
+
 void write_raw16(const Heightfield& hf, const std::string& path) {
   const GrayImage img = heightfield_to_image(hf);  // normalised 16-bit, checks NaN and the cap
   const HeightStats s = hf.stats();
@@ -23,13 +32,8 @@ void write_raw16(const Heightfield& hf, const std::string& path) {
                       {"height", hf.height()}, {"min", s.min},           {"max", s.max},
                       {"height_range", s.max - s.min}};
   if (hf.world_size() > 0) j["world_size"] = hf.world_size();
-  std::string bytes(img.pixels.size() * 2, '\0');
-  for (size_t i = 0; i < img.pixels.size(); ++i) {
-    bytes[2 * i] = char(img.pixels[i] & 0xff);
-    bytes[2 * i + 1] = char(img.pixels[i] >> 8);
-  }
   AtomicFile raw(path);  // fails early (before the sidecar) on a bad folder
-  raw.write(bytes);
+  raw.write(encode_raw16(img.pixels));
   write_file_atomically(raw16_sidecar_path(path), j.dump(2) + "\n");
   raw.commit();
 }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/heightfield.hpp"
 
@@ -22,5 +23,7 @@ Heightfield read_raw16(const std::string& path);
 // `sidecar` is the JSON text, or "" for none.
 Heightfield decode_raw16(const std::string& bytes, const std::string& sidecar, const std::string& name);
 std::string raw16_sidecar_path(const std::string& path);
+// The file's bytes: each code as unsigned 16-bit little-endian, in order.
+std::string encode_raw16(const std::vector<uint16_t>& codes);
 
 }  // namespace ft::io
