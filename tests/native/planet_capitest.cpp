@@ -173,18 +173,25 @@ TEST(PlanetAbi, MeshCancelStopsAtOnceFromItsFirstRows) {
   // reports the first call came at 0.12, from the heights, and the test took
   // 4.3 s instead of 0.09; with the rows not stopping at a cancel, 396 calls
   // followed it.)
+  // On one thread the caller's thread reports after every task, so where the
+  // cancel lands is the same on every run; on two, the other thread may run
+  // ahead of a descheduled caller (seen once at load 7), so only the status
+  // and the silence after the cancel are checked there.
   struct Case {
     int32_t method, level;
     double cancel_from;
     bool arrays;
+    int32_t threads;
   };
-  for (const Case& c : {Case{FT_PLANET_FBM, 11, 0.0, false}, Case{FT_PLANET_MIDPOINT, 11, 0.0, false},
-                        Case{FT_PLANET_FBM, 8, 0.5, true}, Case{FT_PLANET_MIDPOINT, 8, 0.5, true},
-                        Case{FT_PLANET_FBM, 8, 0.99, true}}) {
+  for (const Case& c : {Case{FT_PLANET_FBM, 11, 0.0, false, 1}, Case{FT_PLANET_MIDPOINT, 11, 0.0, false, 1},
+                        Case{FT_PLANET_FBM, 8, 0.5, true, 1}, Case{FT_PLANET_MIDPOINT, 8, 0.5, true, 1},
+                        Case{FT_PLANET_FBM, 8, 0.99, true, 1}, Case{FT_PLANET_FBM, 10, 0.0, false, 2},
+                        Case{FT_PLANET_MIDPOINT, 8, 0.5, true, 2}}) {
     SCOPED_TRACE("method " + std::to_string(c.method) + ", level " + std::to_string(c.level) + ", cancel from " +
-                 std::to_string(c.cancel_from));
+                 std::to_string(c.cancel_from) + ", " + std::to_string(c.threads) + " threads");
     ft_planet_params p = params();
     p.method = c.method;
+    p.threads = c.threads;
     ProgressLog log;
     log.cancel_from = c.cancel_from;
     p.progress = &ProgressLog::call;
@@ -199,7 +206,9 @@ TEST(PlanetAbi, MeshCancelStopsAtOnceFromItsFirstRows) {
     EXPECT_EQ(status, FT_ERR_CANCELLED) << ft_last_error();
     ASSERT_GT(log.cancelled_at, 0u);
     EXPECT_EQ(log.seen.size(), log.cancelled_at) << "called back after the cancel";
-    EXPECT_LT(log.seen.back(), c.cancel_from + 0.05);
+    if (c.threads == 1) {
+      EXPECT_LT(log.seen.back(), c.cancel_from + 0.05);
+    }
   }
 }
 
