@@ -39,6 +39,7 @@
 
 #include "core/error.hpp"
 #include "erosion/erosion.hpp"
+#include "erosion/basin_graph.hpp"
 #include "erosion/flow_graph.hpp"
 
 namespace ft::erosion {
@@ -151,6 +152,7 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
   const double own_rain = c.model.rainfall * cell;  // water a cell gathers itself (x the rain map)
   const double shed = -std::expm1(-dt / kScreeYears);  // share of the excess over the talus shed per step
   FlowGraph graph;
+  BasinGraph basins;
   const bool creep = c.fluvial.diffusion > 0;
   std::vector<float> filled(n), start(n), cap(n), diffused((run.mask || run.texture) && creep ? n : 0),
       plain(run.texture && creep ? n : 0);
@@ -161,7 +163,7 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
   for (int32_t step = 0; step < steps; ++step) {
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n); ++i) {
-      filled[i] = start[i] = z[i];
+      start[i] = z[i];
       discharge[i] = own_rain * (run.rain ? run.rain[i] : 1.0f);
       cap[i] = std::numeric_limits<float>::infinity();
     }
@@ -171,7 +173,7 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
       // cancel is seen) within it too, at its phases' rough shares of the
       // time; the first step's global fill, the longest part, inside it.
       const ProgressPart routing(progress, double(step) / steps, 0.5 / steps);
-      route_filled(g, filled.data(), sink, graph, routing.progress());
+      route_over_depressions(g, z, sink, graph, basins, filled.data(), routing.progress());
     }
     progress.report((step + 0.5) / steps);
     // Runs of whole trees are independent: each is walked in stack order
