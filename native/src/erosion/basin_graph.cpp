@@ -61,10 +61,11 @@ int32_t label_basins(const D8Grid& g, int32_t sink, const FlowGraph& graph, Basi
 
 // The lowest pass between every pair of neighbouring basins of which at
 // least one is a pit's, scanned from the pit with the lower node (base
-// levels' basins are one node, 0, and never scanned). Blocks of pits are
-// scanned in parallel, each keeping its first-found link for equal heights,
-// and concatenated in order.
-void connect_basins(const D8Grid& g, const float* z, const FlowGraph& graph, BasinGraph& bg, int32_t nodes) {
+// levels' basins are one node, 0, and never scanned), the lowest by
+// BasinLink's order. Blocks of pits are scanned in parallel and
+// concatenated in order.
+void connect_basins(const D8Grid& g, const float* z, int32_t sink, const FlowGraph& graph, BasinGraph& bg,
+                    int32_t nodes) {
   const int threads = omp_get_max_threads();
   bg.owner.assign(size_t(threads) * nodes, -1);
   bg.slot.resize(size_t(threads) * nodes);
@@ -72,6 +73,12 @@ void connect_basins(const D8Grid& g, const float* z, const FlowGraph& graph, Bas
   const float* random = graph.random.empty() ? nullptr : graph.random.data();
   int32_t off[8];
   for (int d = 0; d < 8; ++d) off[d] = kDy[d] * g.width + kDx[d];
+  const int32_t sx = g.periodic ? sink % g.width : 0, sy = g.periodic ? sink / g.width : 0;
+  auto relative = [&](int32_t i) {
+    if (!g.periodic) return uint32_t(i);
+    const int32_t x = i % g.width - sx, y = i / g.width - sy;
+    return uint32_t((y < 0 ? y + g.height : y) * g.width + (x < 0 ? x + g.width : x));
+  };
 #pragma omp parallel
   {
     const size_t t = size_t(omp_get_thread_num()) * nodes;
@@ -85,13 +92,18 @@ void connect_basins(const D8Grid& g, const float* z, const FlowGraph& graph, Bas
         const int32_t v = bg.node[j];
         if (v == u || (v != 0 && v < u)) return;
         const float h = std::max(z[i], z[j]);
-        const int32_t top = z[i] >= z[j] ? i : j;  // the pass cell itself
-        const BasinLink link{h, random ? random[top] : 0.0f, i, j, u, v};
+        if (owner[v] == u && h > links[slot[v]].height) return;  // the usual case: decided by height
+        // Rho8's number of the pass cell itself (the higher; of equals, the lower number).
+        const float tie = !random ? 0.0f
+                          : z[i] != z[j] ? random[z[i] > z[j] ? i : j]
+                                         : std::min(random[i], random[j]);
+        const uint32_t pi = relative(i), pj = relative(j);
+        const BasinLink link{h, tie, std::min(pi, pj), std::max(pi, pj), i, j, u, v};
         if (owner[v] != u) {
           owner[v] = u;
           slot[v] = int32_t(links.size());
           links.push_back(link);
-        } else if (h < links[slot[v]].height) {
+        } else if (link < links[slot[v]]) {
           links[slot[v]] = link;
         }
       };
@@ -121,11 +133,7 @@ void connect_basins(const D8Grid& g, const float* z, const FlowGraph& graph, Bas
 // is u's link towards the root after this (reusing the union-find array).
 void spanning_tree(BasinGraph& bg, int32_t nodes) {
   auto& links = bg.links;
-  std::sort(links.begin(), links.end(), [](const BasinLink& p, const BasinLink& q) {
-    if (p.height != q.height) return p.height < q.height;
-    if (p.tie != q.tie) return p.tie < q.tie;
-    return p.cell_a != q.cell_a ? p.cell_a < q.cell_a : p.cell_b < q.cell_b;
-  });
+  std::sort(links.begin(), links.end());
   auto& parent = bg.parent;
   parent.resize(size_t(nodes));
   for (int32_t u = 0; u < nodes; ++u) parent[u] = u;
@@ -197,7 +205,7 @@ void route_over_depressions(const D8Grid& g, const float* z, int32_t sink, FlowG
     return;
   }
   const int32_t nodes = label_basins(g, sink, graph, bg);
-  connect_basins(g, z, graph, bg, nodes);
+  connect_basins(g, z, sink, graph, bg, nodes);
   progress.report(0.55);
   spanning_tree(bg, nodes);
   for (int32_t u = 1; u < nodes; ++u) {

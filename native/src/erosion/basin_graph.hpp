@@ -33,8 +33,21 @@ namespace ft::erosion {
 struct BasinLink {
   float height;
   float tie;  // Rho8's number at the pass (0 for D8): equal passes, a random tree
+  // The pass's cells' positions relative to the periodic sink (a bounded
+  // grid: their indices), lower first: the last of the order's keys, so
+  // that a torus shifted across its edges orders its passes alike.
+  uint32_t first, second;
   int32_t cell_a, cell_b;  // the pass's cells, in basins a and b
   int32_t a, b;            // the basins' nodes (0: every base level's basin)
+
+  // The order of passes (the tree takes the lowest): a strict total order
+  // of the pair of cells, so the tree does not depend on how the basins are
+  // numbered or scanned.
+  bool operator<(const BasinLink& o) const {
+    if (height != o.height) return height < o.height;
+    if (tie != o.tie) return tie < o.tie;
+    return first != o.first ? first < o.first : second < o.second;
+  }
 };
 
 // Scratch of route_over_depressions (kept between steps: a step allocates
