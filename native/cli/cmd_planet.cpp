@@ -25,7 +25,7 @@
 #include "povray/planet_scene.hpp"
 #include "povray/render.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_planet {
 namespace {
 
 namespace fs = std::filesystem;
@@ -280,4 +280,4 @@ Registration reg({"planet",
                   17});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_planet
