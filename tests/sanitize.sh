@@ -8,18 +8,25 @@
 # compile: the standard headers and their templates once, not 8 times) and
 # -g1 (line tables only: the stack traces keep file:line; -g's full debug
 # information cost ~25% more per compile, and more in every link).
+# Usage: tests/sanitize.sh [build|test]: both by default; tests/run.sh builds
+# while the Release ctest runs, then tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${FT_ASAN_BUILD_DIR:-build-asan}
+step=${1:-all}
+case "$step" in all | build | test) ;; *) echo "usage: $0 [build|test]" >&2; exit 2 ;; esac
 # Which unit-test programs: FT_ASAN_UNIT_TESTS="all" for every one (19
 # minutes for the whole script on a loaded machine, 2026-11-26); by default the C ABI suites (always), the fuzz
 # replays (always), and the programs below: bad input, the erosion watchdog
 # and the raster readers, where memory errors would hide. The Release build
 # runs every test without the sanitizers.
 unit_tests=${FT_ASAN_UNIT_TESTS:-hardening_test;erosion_watchdog_test;raster_test}
-CC=gcc CXX=g++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" \
-  -DCMAKE_UNITY_BUILD=ON -DFT_SANITIZE=ON -DFT_BUILD_BENCH=OFF -DFT_SANITIZE_UNIT_TESTS="$unit_tests" >/dev/null
-cmake --build "$build" -j"$(nproc)"
+if [ "$step" != test ]; then
+  CC=gcc CXX=g++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" \
+    -DCMAKE_UNITY_BUILD=ON -DFT_SANITIZE=ON -DFT_BUILD_BENCH=OFF -DFT_SANITIZE_UNIT_TESTS="$unit_tests" >/dev/null
+  cmake --build "$build" -j"$(nproc)"
+fi
+[ "$step" != build ] || exit 0
 # Leaks are errors (detect_leaks); the first report stops the test with a
 # stack trace. OpenMP (libgomp) needs no suppression: its thread pool is
 # still reachable at exit, so LeakSanitizer does not count it.
