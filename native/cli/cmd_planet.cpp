@@ -13,6 +13,7 @@
 #include "cli/command.hpp"
 #include "cli/param_flags.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/obj_io.hpp"
@@ -66,7 +67,8 @@ void parse_wxh(const std::string& text, int* w, int* h) {
     invalid("--size must be WxH (e.g. 4096x2048) or W (height W/2), got '" + text + "'");
 }
 
-std::string extension(const std::string& path) { return fs::path(path).extension().string(); }
+// The extension as given (".ply"), read through the platform layer: --out is UTF-8.
+std::string extension(const std::string& path) { return platform::utf8_of(platform::fs_path(path).extension()); }
 
 nlohmann::json stats_json(const Heightfield& hf) {
   const HeightStats s = hf.stats();
@@ -186,11 +188,11 @@ int run(const CLI::App& app, const PlanetCli& o) {
       info["seconds"] = clock.seconds();
       write_mesh(mesh, o.out, "level " + std::to_string(o.level), &info);
     } else {
-      if (!ext.empty() && !fs::is_directory(o.out))
+      if (!ext.empty() && !fs::is_directory(platform::fs_path(o.out)))
         invalid("a cube layout's --out is a folder (one raster per face plus planet.json) or a .ply or .obj "
                 "mesh, got '" + o.out + "'");
       planet::validate_patch(o.level, 0, 0, 0, (int64_t(1) << o.level) + 1, (int64_t(1) << o.level) + 1);
-      if (!o.out.empty()) fs::create_directories(o.out);
+      if (!o.out.empty()) fs::create_directories(platform::fs_path(o.out));
       nlohmann::json faces = nlohmann::json::array();
       const int32_t side = int32_t((int64_t(1) << o.level) + 1);
       for (int f = 0; f < 6; ++f) {
@@ -200,7 +202,7 @@ int run(const CLI::App& app, const PlanetCli& o) {
         face["name"] = kFaceNames[f];
         if (!o.out.empty()) {
           const std::string name = std::string("face_") + kFaceNames[f] + o.format;
-          io::write_heightfield(hf, (fs::path(o.out) / name).string());
+          io::write_heightfield(hf, platform::join_path(o.out, name));
           face["file"] = name;
         }
         faces.push_back(face);
@@ -219,7 +221,7 @@ int run(const CLI::App& app, const PlanetCli& o) {
                               {"hurst", config.fbm.hurst}, {"sigma", config.fbm.sigma},
                               {"frequency", config.fbm.frequency}, {"lacunarity", config.fbm.lacunarity},
                               {"basis", config.fbm.basis}, {"variant", config.fbm.variant}};
-        write_json(manifest, (fs::path(o.out) / "planet.json").string());
+        write_json(manifest, platform::join_path(o.out, "planet.json"));
       }
     }
     if (!std::isnan(planet.sea_height())) info["sea_height"] = planet.sea_height();

@@ -6,7 +6,6 @@
 // --engine the finished set is also cut the way a game engine imports a
 // large terrain in pieces (engines/engine_tiles.hpp), into OUT/<engine>/.
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -15,6 +14,7 @@
 #include "cli/param_flags.hpp"
 #include "cli/path_checks.hpp"
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "engines/engine_preset.hpp"
 #include "engines/engine_tiles.hpp"
 #include "io/heightfield_io.hpp"
@@ -74,10 +74,10 @@ int run(const TilesOptions& o) {
                             {"height", g.height},          {"height_range", set.manifest()["height_range"]},
                             {"seconds", clock.seconds()}};
   if (!o.engine.empty()) {
-    const std::string dir = (std::filesystem::path(o.out) / o.engine).string();
+    const std::string dir = platform::join_path(o.out, o.engine);
     const nlohmann::json side = engines::write_engine_tiles(o.out, dir, engine);
     j["engine"] = {{"folder", dir},
-                   {"sidecar", (std::filesystem::path(dir) / (o.engine + ".json")).string()},
+                   {"sidecar", platform::join_path(dir, o.engine + ".json")},
                    {"tile_samples", side["tile_samples"]},
                    {"columns", side["columns"]},
                    {"rows", side["rows"]}};

@@ -17,6 +17,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "core/parallel.hpp"
+#include "core/platform.hpp"
 #include "core/rng.hpp"
 #include "io/atomic_file.hpp"
 
@@ -101,6 +102,18 @@ TEST(AtomicFile, UncommittedWriteLeavesOldFileIntact) {
   for (auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();
   EXPECT_EQ(files, 1u) << "the temporary file must be removed";
   std::filesystem::remove_all(dir);
+}
+
+TEST(Platform, PathArithmeticKeepsUtf8Names) {
+  // The helpers that replace std::filesystem::path(std::string): on Linux
+  // the same strings as before; under Wine windows_cli_unicode_path checks
+  // the Windows side (where std::filesystem::path(std::string) mangled them).
+  EXPECT_EQ(platform::join_path("Dossier été", "planète"), "Dossier été/planète");
+  EXPECT_EQ(platform::join_path("out/", "unity"), "out/unity");
+  EXPECT_EQ(platform::join_path("", "face_px.png"), "face_px.png");
+  EXPECT_EQ(platform::file_name_of("Dossier été/carrés"), "carrés");
+  EXPECT_EQ(platform::sibling_path("Dossier été/globe.pov", "_height.png"), "Dossier été/globe_height.png");
+  EXPECT_EQ(platform::sibling_path("splat.png", "_1.png"), "splat_1.png");
 }
 
 TEST(AtomicFile, MissingFolderIsAClearIoError) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fracterra/fracterra.h"
+#include "golden.hpp"
 
 namespace {
 
@@ -88,6 +89,127 @@ TEST(PlanetAbi, LayoutsAgreeAndProgressCancels) {
   ft_heightfield* map = nullptr;
   EXPECT_EQ(ft_planet_equirect(&p, 256, 128, &map), FT_ERR_CANCELLED);
   EXPECT_EQ(map, nullptr);
+}
+
+// What a progress callback saw: every fraction, and where it asked to stop.
+struct ProgressLog {
+  std::vector<double> seen;
+  double cancel_from = 2.0;  // asks to stop at the first fraction >= this
+  size_t cancelled_at = 0;   // how many calls had been made when it asked (0: never)
+  static int32_t call(void* user, double f) {
+    auto* log = static_cast<ProgressLog*>(user);
+    log->seen.push_back(f);
+    if (log->cancelled_at == 0 && f >= log->cancel_from) log->cancelled_at = log->seen.size();
+    return log->cancelled_at != 0;
+  }
+};
+
+struct PlanetMeshArrays {
+  std::vector<float> xyz, heights;
+  std::vector<int32_t> quads;
+  explicit PlanetMeshArrays(int32_t level) {
+    int64_t nv = 0, nf = 0;
+    EXPECT_EQ(ft_planet_mesh_counts(level, &nv, &nf), FT_OK);
+    xyz.resize(size_t(3 * nv)), heights.resize(size_t(nv)), quads.resize(size_t(4 * nf));
+  }
+  ft_status make(const ft_planet_params& p, int32_t level) {
+    return ft_planet_mesh(&p, level, 1.0, xyz.data(), xyz.size(), quads.data(), quads.size(), heights.data(),
+                          heights.size());
+  }
+};
+
+TEST(PlanetAbi, MeshProgressRisesInSmallStepsToOneAndChangesNoBits) {
+  // A level-8 cube-sphere (393 218 vertices) on one thread, where the
+  // caller's thread does every row: the fractions never fall, end at exactly
+  // 1, and no step is over 0.05 (the bar's parts are sized by their measured
+  // times, so a cancel waits for at most about a twentieth of the work).
+  // The arrays are the same bits with any thread count and without a
+  // callback; the quads are the one serial numbering's (golden: that loop's
+  // output, recorded before the rows were numbered in parallel).
+  // (Seen to fail: without the vertex rows' reports the widest step was
+  // 0.128 (fBm) and 0.120 (midpoint); with the shared edge samples given
+  // their left neighbour's id the golden differed; before midpoint_faces
+  // capped its fraction at 1 the midpoint's fell from 0.9257 to 0.92.)
+  const int32_t level = 8;
+  for (int32_t method : {FT_PLANET_FBM, FT_PLANET_MIDPOINT}) {
+    SCOPED_TRACE(method == FT_PLANET_FBM ? "fbm" : "midpoint");
+    ft_planet_params p = params();
+    p.method = method;
+    p.threads = 1;
+    ProgressLog log;
+    p.progress = &ProgressLog::call;
+    p.progress_user = &log;
+    PlanetMeshArrays reported(level);
+    ASSERT_EQ(reported.make(p, level), FT_OK) << ft_last_error();
+    ASSERT_GT(log.seen.size(), 40u);
+    EXPECT_EQ(log.seen.back(), 1.0);
+    double before = 0.0, widest = 0.0;
+    for (double f : log.seen) {
+      EXPECT_GE(f, before);
+      widest = std::max(widest, f - before);
+      before = f;
+    }
+    EXPECT_LE(widest, 0.05);
+    EXPECT_EQ(ft::test::fnv1a(reported.quads.data(), reported.quads.size() * 4), 0x483a7b0e6ea390b3ULL);
+    for (int32_t threads : {0, 2, 3}) {
+      p.threads = threads;
+      p.progress = nullptr;
+      PlanetMeshArrays again(level);
+      ASSERT_EQ(again.make(p, level), FT_OK) << ft_last_error();
+      EXPECT_EQ(again.xyz, reported.xyz) << threads << " threads";
+      EXPECT_EQ(again.quads, reported.quads) << threads << " threads";
+      EXPECT_EQ(again.heights, reported.heights) << threads << " threads";
+    }
+  }
+}
+
+TEST(PlanetAbi, MeshCancelStopsAtOnceFromItsFirstRows) {
+  // Blender's Esc on Add Fractal Planet at level 11 (25 165 826 vertices)
+  // waited about 3.4 s: the vertices were numbered in one loop that neither
+  // reported nor took a cancel. A cancel at the first report must end the
+  // call there, in the first twentieth of the bar, with nothing called back
+  // after it; and so must one in the heights or the quads, for both methods,
+  // the output arrays given or not. (Seen to fail: without the vertex rows'
+  // reports the first call came at 0.12, from the heights, and the test took
+  // 4.3 s instead of 0.09; with the rows not stopping at a cancel, 396 calls
+  // followed it.)
+  // On one thread the caller's thread reports after every task, so where the
+  // cancel lands is the same on every run; on two, the other thread may run
+  // ahead of a descheduled caller (seen once at load 7), so only the status
+  // and the silence after the cancel are checked there.
+  struct Case {
+    int32_t method, level;
+    double cancel_from;
+    bool arrays;
+    int32_t threads;
+  };
+  for (const Case& c : {Case{FT_PLANET_FBM, 11, 0.0, false, 1}, Case{FT_PLANET_MIDPOINT, 11, 0.0, false, 1},
+                        Case{FT_PLANET_FBM, 8, 0.5, true, 1}, Case{FT_PLANET_MIDPOINT, 8, 0.5, true, 1},
+                        Case{FT_PLANET_FBM, 8, 0.99, true, 1}, Case{FT_PLANET_FBM, 10, 0.0, false, 2},
+                        Case{FT_PLANET_MIDPOINT, 8, 0.5, true, 2}}) {
+    SCOPED_TRACE("method " + std::to_string(c.method) + ", level " + std::to_string(c.level) + ", cancel from " +
+                 std::to_string(c.cancel_from) + ", " + std::to_string(c.threads) + " threads");
+    ft_planet_params p = params();
+    p.method = c.method;
+    p.threads = c.threads;
+    ProgressLog log;
+    log.cancel_from = c.cancel_from;
+    p.progress = &ProgressLog::call;
+    p.progress_user = &log;
+    ft_status status;
+    if (c.arrays) {
+      PlanetMeshArrays out(c.level);
+      status = out.make(p, c.level);
+    } else {
+      status = ft_planet_mesh(&p, c.level, 1.0, nullptr, 0, nullptr, 0, nullptr, 0);
+    }
+    EXPECT_EQ(status, FT_ERR_CANCELLED) << ft_last_error();
+    ASSERT_GT(log.cancelled_at, 0u);
+    EXPECT_EQ(log.seen.size(), log.cancelled_at) << "called back after the cancel";
+    if (c.threads == 1) {
+      EXPECT_LT(log.seen.back(), c.cancel_from + 0.05);
+    }
+  }
 }
 
 TEST(PlanetAbi, MidpointIcosphereAndSpectrum) {

@@ -8,7 +8,11 @@
                 this checks that the Windows compiler, C runtime and FFTW keep it.
   unicode_path  a terrain written to "Z:\\...\\Dossier été\\terrain.png" (a Windows
                 path with a space and non-ASCII letters), read back by `relief`
-                and `analyze`: the files land under that name, UTF-8 on Linux's side.
+                and `analyze`: the files land under that name, UTF-8 on Linux's side;
+                in that folder, `planet` makes "planète" and writes its cube
+                faces there, `tiles --engine unity` makes the tile set "carrés"
+                and cuts it (reading its tiles back) into carrés\\unity:
+                every file the Linux build's bytes.
   refusals      what the Windows build goes without (GDAL, OpenEXR, OpenSubdiv)
                 is refused with the library's name and the formats it has;
                 `render` spawns its program through CreateProcessW and reports
@@ -18,7 +22,10 @@ Run as: python3 check_windows_cli.py CASE WINDOWS_EXE LINUX_CLI
 Exit 77 (skip) when Wine or a build is missing, with the reason.
 Checked by breaking it: with utf8_arguments() returning argv as Windows hands
 it over (the ANSI code page), unicode_path failed ("folder ... does not
-exist"); see docs/windows.md for the bit comparisons' history.
+exist"); so it did with `planet`'s folder made by create_directories(o.out)
+(it made "Dossier Ã©tÃ©\\planÃ¨te") and with the engine tiles' folder so made
+("folder ...\\carrés\\unity does not exist"); see docs/windows.md for the bit
+comparisons' history.
 """
 
 import filecmp
@@ -132,8 +139,57 @@ def unicode_path(exe, cli):
         run_linux(cli, [*args, "terrain.png"], lin)
         if (folder / "terrain.png").is_file() and not filecmp.cmp(lin / "terrain.png", folder / "terrain.png", shallow=False):
             problems.append("terrain.png written under the non-ASCII path differs from the Linux build's")
-        print(f"wrote and read back {terrain}")
+        problems += unicode_planet_and_tiles(exe, cli, folder, tmp)
+        print(f"wrote and read back {terrain}, a planet's cube folder and a tile set cut for Unity in it")
         return problems
+
+
+def same_files(lin, win, names):
+    """The files `names` of folders `lin` and `win` that are missing or differ."""
+    return [n for n in names if not (win / n).is_file() or not filecmp.cmp(lin / n, win / n, shallow=False)]
+
+
+def unicode_planet_and_tiles(exe, cli, folder, tmp):
+    """`planet` making a non-ASCII folder in `folder` and writing its faces and
+    planet.json there; `tiles --engine unity` making a non-ASCII tile set
+    there, reading its tiles back and cutting them into OUT/unity/. Each file
+    has its UTF-8 name and the Linux build's bytes; the JSON printed and
+    written names the folders as given. (Two Wine starts: ~6 s at load 7.)"""
+    problems = []
+    lin = Path(tmp, "linux")
+    planet = ["planet", "--layout", "cube", "--level", "4", "--seed", "9", "--format", ".png", "--out"]
+    r, _, err = run_windows(exe, [*planet, windows_path(folder / "planète")], tmp)
+    if r != 0:
+        return [f"planet into {folder / 'planète'}: exit {r}: {err.strip()}"]
+    run_linux(cli, [*planet, "planète"], lin)
+    faces = [f"face_{n}.png" for n in ("px", "nx", "py", "ny", "pz", "nz")]
+    names = sorted(os.listdir(folder / "planète")) if (folder / "planète").is_dir() else []
+    if names != sorted([*faces, "planet.json"]):
+        problems.append(f"planète holds {names} (of {sorted(os.listdir(folder))}), expected the 6 faces and planet.json")
+    elif bad := same_files(lin / "planète", folder / "planète", [*faces, "planet.json"]):
+        problems.append(f"planète: {bad} differ from the Linux build's")
+
+    tiles = ["tiles", "--method", "midpoint", "--levels", "7", "--seed", "9", "--tile", "64", "--quiet",
+             "--engine", "unity", "--out"]
+    win_set = windows_path(folder / "carrés")
+    r, out, err = run_windows(exe, [*tiles, win_set], tmp)
+    if r != 0:
+        return problems + [f"tiles --engine unity into {win_set}: exit {r}: {err.strip()}"]
+    run_linux(cli, [*tiles, "carrés"], lin)
+    printed = json.loads(out)
+    engine = printed.get("engine", {})
+    if printed["written"] != 4 or (engine.get("folder"), engine.get("sidecar")) != (
+            win_set + "\\unity", win_set + "\\unity\\unity.json"):
+        problems.append(f"tiles --engine unity wrote {printed['written']} of 4 tiles and printed {engine}, "
+                        f"not the folders under {win_set}")
+    tile_files = [f"tile_r00{y}_c00{x}.{e}" for y in (0, 1) for x in (0, 1) for e in ("png", "pgw")]
+    unity_files = [f"unity/terrain_{x}_{y}.raw" for y in (0, 1) for x in (0, 1)]
+    if bad := same_files(lin / "carrés", folder / "carrés", [*tile_files, *unity_files]):
+        problems.append(f"carrés: {bad} missing or not the Linux build's")
+    sidecar = folder / "carrés" / "unity" / "unity.json"
+    if not sidecar.is_file() or json.loads(sidecar.read_text(encoding="utf-8")).get("tile_set") != "carrés":
+        problems.append(f"{sidecar} is missing or does not name its tile set carrés")
+    return problems
 
 
 def refusals(exe, cli):

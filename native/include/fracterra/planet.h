@@ -105,7 +105,10 @@ FT_API ft_status ft_planet_mesh_counts(int32_t level, int64_t* vertices, int64_t
 /// `xyz` holds `xyz_count` floats (at least 3 x vertices), `quads` holds
 /// `quad_count` int32 (at least 4 x faces, counter-clockwise seen from
 /// outside); either may be NULL to skip it. `heights` (NULL to skip) gets one
-/// float per vertex (metres, before the vertical scale).
+/// float per vertex (metres, before the vertical scale). Written in place, no
+/// copy made; `progress` is called all along (after every 2^16 samples or
+/// fewer of each pass), so a cancel returns FT_ERR_CANCELLED at that call (the
+/// arrays then hold part of the mesh).
 FT_API ft_status ft_planet_mesh(const ft_planet_params* p, int32_t level, double vertical_scale, float* xyz,
                                 size_t xyz_count, int32_t* quads, size_t quad_count, float* heights,
                                 size_t height_count);

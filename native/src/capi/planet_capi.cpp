@@ -35,13 +35,20 @@ void check_capacity(const char* what, size_t given, uint64_t want) {
                 std::to_string(want));
 }
 
+// The caller's mesh arrays (each may be NULL) hold nv vertices and nf faces.
+void check_mesh_capacity(int64_t nv, int64_t nf, int corners, const float* xyz, size_t xyz_count,
+                         const int32_t* indices, size_t index_count, const char* index_name, const float* heights,
+                         size_t height_count) {
+  if (xyz) check_capacity("xyz", xyz_count, 3 * uint64_t(nv));
+  if (indices) check_capacity(index_name, index_count, uint64_t(corners) * uint64_t(nf));
+  if (heights) check_capacity("heights", height_count, uint64_t(nv));
+}
+
 // A mesh into the caller's arrays (each may be NULL), capacities checked first.
 template <class MakeMesh>
 void mesh_out(int64_t nv, int64_t nf, int corners, float* xyz, size_t xyz_count, int32_t* indices,
               size_t index_count, const char* index_name, float* heights, size_t height_count, MakeMesh&& make) {
-  if (xyz) check_capacity("xyz", xyz_count, 3 * uint64_t(nv));
-  if (indices) check_capacity(index_name, index_count, uint64_t(corners) * uint64_t(nf));
-  if (heights) check_capacity("heights", height_count, uint64_t(nv));
+  check_mesh_capacity(nv, nf, corners, xyz, xyz_count, indices, index_count, index_name, heights, height_count);
   std::vector<float> h;
   const ft::Mesh mesh = make(&h);
   if (xyz) std::copy(mesh.positions.begin(), mesh.positions.end(), xyz);
@@ -121,10 +128,10 @@ FT_API ft_status ft_planet_mesh(const ft_planet_params* p, int32_t level, double
                                 size_t height_count) {
   return guarded([&] {
     ft::check_int_range("level", level, 0, ft::planet::kMaxMeshLevel);
-    mesh_out(ft::planet::mesh_vertex_count(level), ft::planet::mesh_face_count(level), 4, xyz, xyz_count, quads,
-             quad_count, "quads", heights, height_count, [&](std::vector<float>* h) {
-               return ft::planet::cube_sphere_mesh(make_planet(p), level, vertical_scale, h);
-             });
+    // Straight into the caller's arrays: no copy, and no pass that reports no progress.
+    check_mesh_capacity(ft::planet::mesh_vertex_count(level), ft::planet::mesh_face_count(level), 4, xyz, xyz_count,
+                        quads, quad_count, "quads", heights, height_count);
+    ft::planet::cube_sphere_arrays(make_planet(p), level, vertical_scale, {xyz, quads, heights});
   });
 }
 

@@ -29,6 +29,20 @@ namespace ft::platform {
 std::filesystem::path fs_path(std::string_view utf8);
 std::string utf8_of(const std::filesystem::path& p);
 
+// Path arithmetic on UTF-8 paths, by way of fs_path() and utf8_of(): never
+// std::filesystem::path(std::string) or .string(), the ANSI code page on
+// Windows. `name` (a file or folder name, or a relative path) in folder `dir`.
+inline std::string join_path(std::string_view dir, std::string_view name) {
+  return utf8_of(fs_path(dir) / fs_path(name));
+}
+// The last part of a path: "b.pov" of "a/b.pov".
+inline std::string file_name_of(std::string_view path) { return utf8_of(fs_path(path).filename()); }
+// A file beside `path` named after its stem: ("a/b.pov", "_height.png") gives "a/b_height.png".
+inline std::string sibling_path(std::string_view path, std::string_view suffix) {
+  const std::filesystem::path p = fs_path(path);
+  return utf8_of(p.parent_path() / fs_path(utf8_of(p.stem()) + std::string(suffix)));
+}
+
 // fopen of a UTF-8 path; nullptr and errno set on failure.
 FILE* open_file(const std::string& utf8_path, const char* mode);
 // Creates and opens ("wb") a new file from `path_template`, whose last six

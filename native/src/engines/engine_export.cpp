@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 
 #include "core/error.hpp"
 #include "core/platform.hpp"
@@ -41,8 +40,7 @@ Heightfield control_map(const Heightfield& hf, const splat::SplatInputs& maps) {
 }
 
 std::string control_path(const std::string& out) {
-  const std::filesystem::path p(out);
-  return (p.parent_path() / (p.stem().string() + "_control.exr")).string();
+  return platform::sibling_path(out, "_control.exr");
 }
 
 }  // namespace
@@ -118,7 +116,7 @@ nlohmann::json write_for_engine(const Heightfield& given, const std::string& out
   const HeightStats s = hf.stats();
   const double range = s.max - s.min, spacing = hf.world_size() / (w - 1);
   nlohmann::json j = {{"engine", engine_name(o.engine)},
-                      {"file", platform::utf8_of(platform::fs_path(out).filename())},
+                      {"file", platform::file_name_of(out)},
                       {"width", w},
                       {"height", h},
                       {"min", s.min},
@@ -169,7 +167,7 @@ nlohmann::json write_for_engine(const Heightfield& given, const std::string& out
                     {"vertex_spacing", spacing},
                     {"height_scale", 1.0},
                     {"height_offset", 0.0},
-                    {"control_file", platform::utf8_of(platform::fs_path(control).filename())},
+                    {"control_file", platform::file_name_of(control)},
                     {"texture_ids", textures}};
       break;
     }

@@ -97,7 +97,7 @@ nlohmann::json write_engine_tiles(const std::string& set_dir, const std::string&
     for (int32_t x = 0; x < columns; ++x) {
       const Heightfield hf = tiles::read_tileset_window(set_dir, 0, int64_t(x) * step, int64_t(y) * step, side, side);
       const std::string file = tile_name(o.engine, name, x, y);
-      const std::string path = out_dir + "/" + file;
+      const std::string path = platform::join_path(out_dir, file);
       const std::string what = std::string(engine_name(o.engine)) + " tile " + file;
       if (o.engine == Engine::unity) {
         io::write_file_atomically(path, io::encode_raw16(tiles::quantise16(hf, lo, hi, what)));
@@ -117,7 +117,7 @@ nlohmann::json write_engine_tiles(const std::string& set_dir, const std::string&
 
   const double range = hi - lo, tile_size = spacing * (side - 1);
   nlohmann::json j = {{"engine", engine_name(o.engine)},
-                      {"tile_set", std::filesystem::path(set_dir).filename().string()},
+                      {"tile_set", platform::file_name_of(set_dir)},
                       {"tile_samples", side},
                       {"tile_step", step},
                       {"columns", columns},
@@ -160,7 +160,7 @@ nlohmann::json write_engine_tiles(const std::string& set_dir, const std::string&
     }
   }
   io::write_file_atomically(
-      out_dir + "/" + engine_name(o.engine) + ".json",
+      platform::join_path(out_dir, std::string(engine_name(o.engine)) + ".json"),
       j.dump(2) + "\n");
   return j;
 }

@@ -1,7 +1,8 @@
 // The landscape model: channels, talus and fans in world units and years.
 //
-// Each implicit time step, on a flow graph routed over the surface with its
-// lakes filled (a copy: the lakes themselves stay, to be filled by sediment):
+// Each implicit time step, on a flow graph routed over the surface and
+// drained out of its depressions by the basin graph (basin_graph.hpp: the
+// lakes themselves stay, to be filled by sediment):
 //   detachment  the stream-power law dz/dt = -K Q^m S (n = 1), Q = rainfall x
 //               rain map x upstream area, solved implicitly along the stack
 //               (Braun & Willett 2013): unconditionally stable;
@@ -39,6 +40,7 @@
 
 #include "core/error.hpp"
 #include "erosion/erosion.hpp"
+#include "erosion/basin_graph.hpp"
 #include "erosion/flow_graph.hpp"
 
 namespace ft::erosion {
@@ -52,8 +54,12 @@ constexpr double kFanSlope = 0.01;
 // instead of cutting every steep slope at once.
 constexpr double kScreeYears = 1e5;
 // Steps: the knickpoint of a channel draining a sixteenth of the map moves
-// at most this many cells per step; between kMinSteps and kMaxSteps.
-constexpr double kCellsPerStep = 4.0;
+// at most this many cells per step; between kMinSteps and kMaxSteps. The
+// implicit scheme is stable at any step. A 513^2 Rugged Mountains run at 8
+// cells (half the steps of 4) eroded alike: its erosion depth correlated
+// 0.995 with the run at 4 and its mean differed by 0.8 %; at 16 cells,
+// 0.988 and 7 %.
+constexpr double kCellsPerStep = 8.0;
 constexpr int32_t kMinSteps = 2, kMaxSteps = 32, kMaxDetailSteps = 3;
 
 int32_t steps_for(const D8Grid& g, const ErosionConfig& c, double years, int32_t most) {
@@ -151,6 +157,7 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
   const double own_rain = c.model.rainfall * cell;  // water a cell gathers itself (x the rain map)
   const double shed = -std::expm1(-dt / kScreeYears);  // share of the excess over the talus shed per step
   FlowGraph graph;
+  BasinGraph basins;
   const bool creep = c.fluvial.diffusion > 0;
   std::vector<float> filled(n), start(n), cap(n), diffused((run.mask || run.texture) && creep ? n : 0),
       plain(run.texture && creep ? n : 0);
@@ -161,7 +168,7 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
   for (int32_t step = 0; step < steps; ++step) {
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n); ++i) {
-      filled[i] = start[i] = z[i];
+      start[i] = z[i];
       discharge[i] = own_rain * (run.rain ? run.rain[i] : 1.0f);
       cap[i] = std::numeric_limits<float>::infinity();
     }
@@ -171,7 +178,7 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
       // cancel is seen) within it too, at its phases' rough shares of the
       // time; the first step's global fill, the longest part, inside it.
       const ProgressPart routing(progress, double(step) / steps, 0.5 / steps);
-      route_filled(g, filled.data(), sink, graph, routing.progress());
+      route_over_depressions(g, z, sink, graph, basins, filled.data(), routing.progress());
     }
     progress.report((step + 0.5) / steps);
     // Runs of whole trees are independent: each is walked in stack order
@@ -194,11 +201,14 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
         }
         for (int32_t k = first; k < last; ++k) {  // detachment and talus, receivers first
           const int32_t i = graph.stack[k], r = graph.receiver[i];
-          if (r == i || !(z[i] > z[r])) continue;  // a base level, or under a lake
+          // A river that runs into a lake cuts down to the lake's surface,
+          // its base level, not to the lake's floor.
+          const float base = filled[r] > start[r] ? filled[r] : z[r];
+          if (r == i || !(z[i] > base)) continue;  // a base level, or under a lake
           const double w = mask(i);
           const double f = w * k_dt * (m == 0.5 ? std::sqrt(discharge[i]) : std::pow(discharge[i], m)) / graph.length[i];
-          double zi = (z[i] + f * z[r]) / (1.0 + f);
-          const double limit = z[r] + tan_talus * graph.length[i];
+          double zi = (z[i] + f * base) / (1.0 + f);
+          const double limit = base + tan_talus * graph.length[i];
           if (zi > limit) zi -= w * shed * (zi - limit);
           z[i] = float(zi);
         }

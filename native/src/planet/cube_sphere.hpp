@@ -53,17 +53,31 @@ Heightfield face_patch(const Planet& planet, int level, int face, int64_t x0, in
 // Throws unless the mesh exaggeration is finite and within +-1e6.
 void check_vertical_scale(double vertical_scale);
 // An fBm planet's heights at u, in parallel rows (progress, cancel).
-std::vector<float> heights_in_rows(const Planet& planet, const Directions& u);
-// Mesh positions: each direction times radius + vertical_scale x its height.
+std::vector<float> heights_in_rows(const Planet& planet, const Directions& u, const Progress& progress);
+// Mesh positions into xyz (3 per direction): each direction times radius +
+// vertical_scale x its height, in parallel rows (progress, cancel).
 void place_on_sphere(const Directions& u, const std::vector<float>& h, double radius, double vertical_scale,
-                     Mesh* mesh);
+                     int threads, const Progress& progress, float* xyz);
 
 // Vertex and quad counts of the closed mesh: 6 N^2 + 2 and 6 N^2.
 int64_t mesh_vertex_count(int level);
 int64_t mesh_face_count(int level);
-// The closed cube-sphere mesh: every sample once, at radius + scale x height
-// along its direction; quads counter-clockwise seen from outside. `heights`
-// (if not null) gets each vertex's height.
+
+// Where the closed mesh goes: 3 floats per vertex, 4 vertex ids per quad, 1
+// height per vertex (metres above the radius); each may be null (not made).
+struct MeshArrays {
+  float* xyz = nullptr;
+  int32_t* corners = nullptr;
+  float* heights = nullptr;
+};
+// The closed cube-sphere mesh into `out`: every sample once, at radius +
+// scale x height along its direction; quads counter-clockwise seen from
+// outside. Checks its working memory plus `output_bytes` (the arrays', when
+// the library holds them) against the cap; reports progress (the planet's)
+// throughout and stops at a cancel; the same bits on any thread count.
+void cube_sphere_arrays(const Planet& planet, int level, double vertical_scale, const MeshArrays& out,
+                        uint64_t output_bytes = 0);
+// The same as a Mesh; `heights` (if not null) gets each vertex's height.
 Mesh cube_sphere_mesh(const Planet& planet, int level, double vertical_scale, std::vector<float>* heights = nullptr);
 
 }  // namespace ft::planet

@@ -84,19 +84,22 @@ Mesh icosphere_mesh(const Planet& planet, int level, double vertical_scale, std:
   if (count != nv || int64_t(faces.size()) != nf)
     fail(FT_ERR_INTERNAL, "icosphere: " + std::to_string(count) + " vertices, " + std::to_string(faces.size()) +
                               " faces at level " + std::to_string(level));
+  // The splits took the bar's first 10 %; the heights take 80, the positions 10.
+  const ProgressPart height_part(planet.config().progress, 0.1, 0.8), place_part(planet.config().progress, 0.9, 0.1);
   std::vector<float> h;
   if (planet.midpoint()) {
-    const ProgressPart part(planet.config().progress, 0.1, 0.9);
     const CubeSampler sampler(planet.midpoint_config(), std::min(level + 1, kMaxLevel), planet.config().threads,
-                              part.progress());
+                              height_part.progress());
     h.resize(size_t(nv));
     for (int64_t v = 0; v < nv; ++v) h[size_t(v)] = sampler.height(u.x[size_t(v)], u.y[size_t(v)], u.z[size_t(v)]);
     planet.raise_to_sea(nv, h.data());
   } else {
-    h = heights_in_rows(planet, u);
+    h = heights_in_rows(planet, u, height_part.progress());
   }
   Mesh mesh;
-  place_on_sphere(u, h, planet.config().radius, vertical_scale, &mesh);
+  mesh.positions.resize(size_t(3 * nv));
+  place_on_sphere(u, h, planet.config().radius, vertical_scale, planet.config().threads, place_part.progress(),
+                  mesh.positions.data());
   mesh.face_sizes.assign(size_t(nf), 3);
   mesh.face_indices.reserve(size_t(3 * nf));
   for (const Triangle& t : faces) mesh.face_indices.insert(mesh.face_indices.end(), t.begin(), t.end());

@@ -144,7 +144,9 @@ void parallel_rows(int64_t count, int team, const Progress& progress, int64_t* d
     try {
       rows(k);
       const int64_t d = finished.fetch_add(1, std::memory_order_relaxed) + 1;
-      if (omp_get_thread_num() == 0) progress.report(double(start + d * per_row) / double(all));
+      // `all` counts a level's cell centres as a quarter of its samples; the
+      // rims they have past a rect's edges can take the sum a little past it.
+      if (omp_get_thread_num() == 0) progress.report(std::min(1.0, double(start + d * per_row) / double(all)));
     } catch (...) {
 #pragma omp critical(ft_midpoint_sphere)
       if (!error) error = std::current_exception();

@@ -88,22 +88,21 @@ float Planet::height(double x, double y, double z) const {
   return out;
 }
 
-void fill_rows(int32_t w, int32_t h, int threads, const Progress& progress,
-               const std::function<void(int32_t, float*)>& row, float* data) {
+void for_rows(int64_t count, int threads, const Progress& progress, const std::function<void(int64_t)>& row) {
   const int team = resolve_threads(threads);
-  std::atomic<int32_t> done{0};
+  std::atomic<int64_t> done{0};
   std::atomic<bool> stop{false};
   std::exception_ptr error;
 #pragma omp parallel num_threads(team)
   {
     const bool caller = omp_get_thread_num() == 0;
 #pragma omp for schedule(dynamic, 1)
-    for (int32_t y = 0; y < h; ++y) {
+    for (int64_t k = 0; k < count; ++k) {
       if (stop.load(std::memory_order_relaxed)) continue;
       try {
-        row(y, data + size_t(y) * size_t(w));
-        const int32_t d = done.fetch_add(1, std::memory_order_relaxed) + 1;
-        if (caller) progress.report(double(d) / h);
+        row(k);
+        const int64_t d = done.fetch_add(1, std::memory_order_relaxed) + 1;
+        if (caller) progress.report(double(d) / double(count));
       } catch (...) {
 #pragma omp critical(ft_planet_rows)
         if (!error) error = std::current_exception();
@@ -113,6 +112,11 @@ void fill_rows(int32_t w, int32_t h, int threads, const Progress& progress,
   }
   if (error) std::rethrow_exception(error);
   progress.report(1.0);
+}
+
+void fill_rows(int32_t w, int32_t h, int threads, const Progress& progress,
+               const std::function<void(int32_t, float*)>& row, float* data) {
+  for_rows(h, threads, progress, [&](int64_t y) { row(int32_t(y), data + size_t(y) * size_t(w)); });
 }
 
 }  // namespace ft::planet

@@ -13,6 +13,7 @@
 #include <functional>
 #include <limits>
 
+#include "core/buffer.hpp"
 #include "core/progress.hpp"
 #include "noise/fbm3.hpp"
 #include "planet/midpoint_sphere.hpp"
@@ -28,9 +29,10 @@ inline constexpr int kSeaQuantilePoints = 1 << 16;
 // The level of a midpoint planet's cube-sphere those points are interpolated from.
 inline constexpr int kSeaQuantileLevel = 8;
 
-// n unit vectors as three arrays, the form Planet::heights takes.
+// n unit vectors as three arrays, the form Planet::heights takes. Not
+// zero-filled: its maker sets every direction (a mesh's in parallel rows).
 struct Directions {
-  std::vector<double> x, y, z;
+  Buffer<double> x, y, z;
   explicit Directions(size_t n) : x(n), y(n), z(n) {}
   void set(size_t i, const std::array<double, 3>& p) { x[i] = p[0], y[i] = p[1], z[i] = p[2]; }
   int64_t size() const { return int64_t(x.size()); }
@@ -72,9 +74,13 @@ class Planet {
   double sea_ = std::numeric_limits<double>::quiet_NaN();
 };
 
-// Fills h rows of w samples in parallel: row(y, out) writes row y's w
-// floats (it must depend on y alone). Progress is reported by the calling
-// thread; a cancellation stops the rest and is rethrown.
+// Runs row(k) for k in 0..count-1 in parallel; each must depend on k alone
+// and write only its own outputs, so the result is the same on any thread
+// count. Progress (k rows done of count) is reported by the calling thread
+// after each of its rows, then 1; a cancellation stops the rest and is
+// rethrown.
+void for_rows(int64_t count, int threads, const Progress& progress, const std::function<void(int64_t)>& row);
+// for_rows over h rows of w floats: row(y, out) writes row y's w floats.
 void fill_rows(int32_t w, int32_t h, int threads, const Progress& progress,
                const std::function<void(int32_t, float*)>& row, float* data);
 

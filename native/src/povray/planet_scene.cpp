@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/heightfield_io.hpp"
 #include "povray/mesh2_export.hpp"
@@ -78,16 +78,15 @@ std::string globe_scene(const PlanetScene& s, const std::string& file_name, cons
 void write_planet_scene(const Heightfield& map, const PlanetScene& s, const std::string& pov_path) {
   check_scene(s);
   io::AtomicFile out(pov_path);  // fails now, before the PNG, if the folder is unwritable
-  namespace fs = std::filesystem;
-  const fs::path scene(pov_path);
-  const std::string png = scene.stem().string() + "_height.png";
-  io::write_heightfield(map, (scene.parent_path() / png).string());
+  const std::string png_path = platform::sibling_path(pov_path, "_height.png");
+  const std::string png = platform::file_name_of(png_path);
+  io::write_heightfield(map, png_path);
 
   const HeightStats st = map.stats();
   const double k = s.exaggeration / s.radius;  // metres -> scene units (radius 1)
   const double hmin = st.min * k, hmax = st.max * k;
   const double gradient = planet_max_gradient(map, hmax - hmin, 1.0 + std::min(0.0, hmin));
-  out.write(globe_scene(s, scene.filename().string(),
+  out.write(globe_scene(s, platform::file_name_of(pov_path),
                         "FT_Planet(" + quoted(png) + ", 1, " + number(hmin) + ", " + number(hmax) + ", " +
                             number(gradient) + ")\n"));
   out.commit();
@@ -125,13 +124,12 @@ void write_planet_mesh_scene(const Mesh& mesh, const std::vector<float>& heights
   if (heights.empty() || heights.size() != mesh.vertex_count())
     invalid("the planet mesh needs one height per vertex");
   io::AtomicFile out(pov_path);  // fails now, before the mesh, if the folder is unwritable
-  namespace fs = std::filesystem;
-  const fs::path scene(pov_path);
-  const std::string inc = scene.stem().string() + "_mesh.inc";
-  write_mesh2(pov_globe_mesh(mesh, s.radius), (scene.parent_path() / inc).string(), "FT_Planet_Mesh2");
+  const std::string inc_path = platform::sibling_path(pov_path, "_mesh.inc");
+  const std::string inc = platform::file_name_of(inc_path);
+  write_mesh2(pov_globe_mesh(mesh, s.radius), inc_path, "FT_Planet_Mesh2");
   const auto [lo, hi] = std::minmax_element(heights.begin(), heights.end());
   const double k = s.exaggeration / s.radius;
-  out.write(globe_scene(s, scene.filename().string(),
+  out.write(globe_scene(s, platform::file_name_of(pov_path),
                         "#include " + quoted(inc) + "\nFT_Planet_Mesh(FT_Planet_Mesh2, 1, " + number(*lo * k) +
                             ", " + number(*hi * k) + ")\n"));
   out.commit();

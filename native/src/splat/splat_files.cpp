@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/png_image.hpp"
 
@@ -16,12 +16,11 @@ std::vector<SplatFile> write_splat_pngs(const std::string& path, const std::vect
   if (bit_depth != 8 && bit_depth != 16) invalid("splat maps are 8- or 16-bit, got " + std::to_string(bit_depth));
   const size_t samples = size_t(width) * size_t(height);
   if (weights.size() != samples * size_t(layers)) invalid("splat weights do not match width x height x layers");
-  const std::filesystem::path p(path);
   std::vector<SplatFile> files;
   for (int32_t first = 0, index = 0; first < layers; first += 4, ++index) {
     SplatFile f;
     f.path = index == 0 ? path
-                        : (p.parent_path() / (p.stem().string() + "_" + std::to_string(index) + ".png")).string();
+                        : platform::sibling_path(path, std::string("_") + std::to_string(index) + ".png");
     f.first_layer = first;
     f.layers = std::min(4, layers - first);
     io::ChannelImage im{width, height, 4, bit_depth, std::vector<uint16_t>(samples * 4, 0)};

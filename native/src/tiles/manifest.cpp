@@ -40,10 +40,6 @@ nlohmann::json value_of(const ft_param_info& row, const void* p) {
   }
 }
 
-std::string path_in(const std::string& dir, const char* name) {
-  return platform::utf8_of(platform::fs_path(dir) / name);
-}
-
 }  // namespace
 
 nlohmann::json terrain_identity(const ft_terrain_params& p) {
@@ -114,24 +110,24 @@ nlohmann::json parse_manifest(const std::string& text, const std::string& path) 
 }
 
 std::optional<nlohmann::json> read_manifest(const std::string& dir) {
-  const std::string path = path_in(dir, kManifestName);
+  const std::string path = platform::join_path(dir, kManifestName);
   if (!std::filesystem::exists(platform::fs_path(path))) return std::nullopt;
   return parse_manifest(io::read_file(path), path);
 }
 
 void write_manifest(const std::string& dir, const nlohmann::json& m) {
-  io::write_file_atomically(path_in(dir, kManifestName), m.dump(1) + "\n");
+  io::write_file_atomically(platform::join_path(dir, kManifestName), m.dump(1) + "\n");
 }
 
 void append_journal(const std::string& dir, int32_t col, int32_t row, uint32_t crc) {
-  const std::string path = path_in(dir, kJournalName);
+  const std::string path = platform::join_path(dir, kJournalName);
   const std::string line = nlohmann::json{{"column", col}, {"row", row}, {"crc32", crc}}.dump() + "\n";
   const std::string why = platform::append_synced(path, line);
   if (!why.empty()) fail(FT_ERR_IO, "cannot append to '" + path + "': " + why);
 }
 
 int64_t replay_journal(const std::string& dir, nlohmann::json& m) {
-  const std::string path = path_in(dir, kJournalName);
+  const std::string path = platform::join_path(dir, kJournalName);
   if (!std::filesystem::exists(platform::fs_path(path))) return 0;
   const std::string text = io::read_file(path);
   nlohmann::json& tiles = m["tiles"];
@@ -153,8 +149,8 @@ int64_t replay_journal(const std::string& dir, nlohmann::json& m) {
 
 void remove_journal(const std::string& dir) {
   std::error_code ec;
-  std::filesystem::remove(platform::fs_path(path_in(dir, kJournalName)), ec);
-  if (ec) fail(FT_ERR_IO, "cannot remove '" + path_in(dir, kJournalName) + "': " + ec.message());
+  std::filesystem::remove(platform::fs_path(platform::join_path(dir, kJournalName)), ec);
+  if (ec) fail(FT_ERR_IO, "cannot remove '" + platform::join_path(dir, kJournalName) + "': " + ec.message());
 }
 
 std::string identity_difference(const nlohmann::json& wanted, const nlohmann::json& existing) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/gdal_session.hpp"
 
 namespace ft::tiles {
@@ -38,16 +39,15 @@ struct ConfigOption {
 
 void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
   namespace fs = std::filesystem;
-  const fs::path folder(dir);
-  const std::string final_vrt = (folder / kMosaicName).string();
-  const std::string temp_vrt = (folder / ".mosaic.tmp.vrt").string();
-  fs::remove(temp_vrt);
-  fs::remove(temp_vrt + ".ovr");
+  const std::string final_vrt = platform::join_path(dir, kMosaicName);
+  const std::string temp_vrt = platform::join_path(dir, ".mosaic.tmp.vrt");
+  fs::remove(platform::fs_path(temp_vrt));
+  fs::remove(platform::fs_path(temp_vrt + ".ovr"));
 
   io::GdalSession session;
   StringList sources;
   for (int32_t row = 0; row < spec.grid.rows(); ++row)
-    for (int32_t col = 0; col < spec.grid.columns(); ++col) sources.add((folder / tile_file_name(spec, col, row)).string());
+    for (int32_t col = 0; col < spec.grid.columns(); ++col) sources.add(platform::join_path(dir, tile_file_name(spec, col, row)));
   {
     GDALBuildVRTOptions* options = GDALBuildVRTOptionsNew(nullptr, nullptr);
     int usage_error = 0;
@@ -78,14 +78,14 @@ void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
         CE_None)
       session.fail(FT_ERR_IO, "GDAL could not build the overviews of '" + final_vrt + "'");
   }
-  if (!factors.empty()) fs::rename(temp_vrt + ".ovr", final_vrt + ".ovr");
-  else fs::remove(final_vrt + ".ovr");
-  fs::rename(temp_vrt, final_vrt);
+  if (!factors.empty()) fs::rename(platform::fs_path(temp_vrt + ".ovr"), platform::fs_path(final_vrt + ".ovr"));
+  else fs::remove(platform::fs_path(final_vrt + ".ovr"));
+  fs::rename(platform::fs_path(temp_vrt), platform::fs_path(final_vrt));
 }
 
 Heightfield read_mosaic_preview(const std::string& dir, int32_t max_side) {
   check_int_range("preview side", max_side, 2, 65536);
-  const std::string path = (std::filesystem::path(dir) / kMosaicName).string();
+  const std::string path = platform::join_path(dir, kMosaicName);
   io::GdalSession session;
   io::GdalDataset ds(GDALOpen(path.c_str(), GA_ReadOnly));
   if (!ds) session.fail(FT_ERR_IO, "cannot open the tile set's mosaic '" + path + "' (is the set finished?)");

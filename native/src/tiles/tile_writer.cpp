@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/error.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/gdal_raster.hpp"
 #include "io/png_image.hpp"
@@ -13,10 +14,6 @@
 
 namespace ft::tiles {
 namespace {
-
-std::string path_in(const std::string& dir, const std::string& name) {
-  return dir.empty() || dir.back() == '/' ? dir + name : dir + "/" + name;
-}
 
 int digits(int64_t n) {
   int d = 1;
@@ -118,7 +115,7 @@ uint32_t write_tile(const ft_terrain_params& p, const TileSpec& spec, const std:
   Heightfield hf = terrain::generate_terrain_window(p, 0, w.x0, w.y0, w.width, w.height);
   double t[6];
   tile_geotransform(spec, col, row, t);
-  const std::string path = path_in(dir, tile_file_name(spec, col, row));
+  const std::string path = platform::join_path(dir, tile_file_name(spec, col, row));
   if (spec.format == TileFormat::png16) {
     const GrayImage img = quantise(hf, spec, col, row);
     // The world file first: a tile that exists always has it (ESRI order:
