@@ -26,7 +26,7 @@
 #include "io/polyline_io.hpp"
 #include "io/svg_plot.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_analyze {
 namespace {
 
 using nlohmann::json;
@@ -299,4 +299,4 @@ Registration reg({"analyze",
                   40});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_analyze

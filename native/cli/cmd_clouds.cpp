@@ -9,7 +9,7 @@
 #include "io/heightfield_io.hpp"
 #include "io/png_image.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_clouds {
 namespace {
 
 struct CloudsCli {
@@ -42,4 +42,4 @@ Registration reg({"clouds",
                   52});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_clouds

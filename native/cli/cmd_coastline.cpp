@@ -16,7 +16,7 @@
 #include "io/polyline_io.hpp"
 #include "preview/relief.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_coastline {
 namespace {
 
 struct CoastlineCli {
@@ -117,4 +117,4 @@ Registration reg({"coastline",
                   50});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_coastline

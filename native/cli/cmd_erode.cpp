@@ -19,7 +19,7 @@
 #include "io/heightfield_io.hpp"
 #include "pipeline/terrain_build.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_erode {
 namespace {
 
 struct ErodeCli {
@@ -115,4 +115,4 @@ Registration reg({"erode", "Erode a heightfield (channels, scree and fans over y
                   15});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_erode

@@ -16,7 +16,7 @@
 #include "subdiv/fractalize.hpp"
 #include "subdiv/fractalize_params.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_fractalize {
 namespace {
 
 struct FractalizeOptions {
@@ -75,4 +75,4 @@ Registration reg({"fractalize", "Fractalize a polygon mesh (OBJ) with OpenSubdiv
                   40});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_fractalize

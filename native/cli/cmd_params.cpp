@@ -11,7 +11,7 @@
 #include "io/atomic_file.hpp"
 #include "tables/param_registry.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_params {
 namespace {
 
 const char* type_name(int32_t type) {
@@ -86,4 +86,4 @@ Registration reg({"params", "List the library's parameter tables: every field's 
                   95});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_params

@@ -26,7 +26,7 @@
 #include "povray/planet_scene.hpp"
 #include "povray/render.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_planet {
 namespace {
 
 namespace fs = std::filesystem;
@@ -282,4 +282,4 @@ Registration reg({"planet",
                   17});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_planet

@@ -20,7 +20,7 @@
 #include "povray/render.hpp"
 #include "povray/scene.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_polyline {
 namespace {
 
 const std::map<std::string, int> kKinds = {{"line", int(pov::LineKind::kGeneric)},
@@ -177,4 +177,4 @@ Registration reg({"polyline", "Generate a fractal polyline (FPL, lightning, Koch
                   30});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_polyline

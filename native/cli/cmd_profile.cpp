@@ -16,7 +16,7 @@
 #include "terrain/terrain.hpp"
 #include "terrain/terrain_params.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_profile {
 namespace {
 
 struct ProfileOptions {
@@ -98,4 +98,4 @@ Registration reg({"profile", "Generate a Voss 1D fractal profile (a horizon)",
                   20});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_profile

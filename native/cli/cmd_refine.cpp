@@ -13,7 +13,7 @@
 #include "refine/dem_refine.hpp"
 #include "refine/dem_refine_params.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_refine {
 namespace {
 
 struct RefineCli {
@@ -118,4 +118,4 @@ Registration reg({"refine", "Refine a real DEM: its samples kept, finer levels a
                   35});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_refine

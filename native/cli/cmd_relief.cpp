@@ -8,7 +8,7 @@
 #include "io/png_image.hpp"
 #include "preview/relief.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_relief {
 namespace {
 
 struct ReliefCli {
@@ -39,4 +39,4 @@ Registration reg({"relief", "Draw a shaded-relief preview PNG of a heightfield",
                   90});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_relief

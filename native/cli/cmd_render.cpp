@@ -7,7 +7,7 @@
 #include "cli/path_checks.hpp"
 #include "povray/render.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_render {
 namespace {
 
 struct RenderCliOptions {
@@ -46,4 +46,4 @@ Registration reg({"render", "Render a POV-Ray scene to a PNG with povray",
                   90});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_render

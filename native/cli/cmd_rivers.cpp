@@ -50,6 +50,7 @@ void sea_from_flags(const CLI::App& app, ft_hydrology_params& p) {
   }
 }
 
+namespace cmd_rivers {
 namespace {
 
 struct RiversCli {
@@ -102,4 +103,5 @@ Registration reg({"rivers", "Rivers, lakes and the sea of a heightfield, as poly
                   16});
 
 }  // namespace
+}  // namespace cmd_rivers
 }  // namespace ft::cli

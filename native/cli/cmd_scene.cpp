@@ -21,7 +21,7 @@
 #include "tiles/manifest.hpp"
 #include "tiles/mosaic_vrt.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_scene {
 namespace {
 
 const std::map<std::string, int> kKinds = {{"line", int(pov::LineKind::kGeneric)},
@@ -247,4 +247,4 @@ Registration reg({"scene", "Write a POV-Ray scene of a terrain and polylines (an
                   80});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_scene

@@ -13,7 +13,7 @@
 #include "splat/splat_files.hpp"
 #include "splat/splat_map.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_splat {
 namespace {
 
 struct SplatCli {
@@ -88,4 +88,4 @@ Registration reg({"splat", "Write splat (weight) maps and a colour map of a terr
                   16});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_splat

@@ -13,7 +13,7 @@
 #include "io/svg_plot.hpp"
 #include "polyline/fpl_study.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_study {
 namespace {
 
 const std::map<std::string, int> kRngs = {{"uniform", 0}, {"normal", 1}};
@@ -205,4 +205,4 @@ Registration reg({"study", "Reproduce a paper's experiment: 'study fpl' (seed 00
                   60});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_study

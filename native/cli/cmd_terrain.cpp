@@ -27,7 +27,7 @@
 #include "terrain/terrain.hpp"
 #include "terrain/terrain_params.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_terrain {
 namespace {
 
 // Erosion settings that are the terrain's here, not flags of their own: its
@@ -216,4 +216,4 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                   10});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_terrain

@@ -22,7 +22,7 @@
 #include "terrain/terrain_params.hpp"
 #include "tiles/tileset.hpp"
 
-namespace ft::cli {
+namespace ft::cli::cmd_tiles {
 namespace {
 
 struct TilesOptions {
@@ -126,4 +126,4 @@ Registration reg({"tiles", "Write a terrain larger than memory as a tile set (ti
                   12});
 
 }  // namespace
-}  // namespace ft::cli
+}  // namespace ft::cli::cmd_tiles

@@ -21,4 +21,9 @@ foreach(case same_bits unicode_path refusals)
 endforeach()
 set_tests_properties(windows_capi_suites_under_wine windows_dll_imports_and_exports windows_cli_same_bits
                      windows_cli_unicode_path windows_cli_refusals
-  PROPERTIES LABELS windows SKIP_RETURN_CODE 77 ENVIRONMENT "${FT_TEST_ENV}")
+  PROPERTIES LABELS windows SKIP_RETURN_CODE 77 ENVIRONMENT "${FT_TEST_ENV}"
+             ENVIRONMENT_MODIFICATION "${FT_TEST_OMP}")
+# The two longest (30 s and 11 s, idle) start early: numbered last, they
+# otherwise ran last, one core idle beside them.
+set_tests_properties(windows_cli_same_bits PROPERTIES COST 30)
+set_tests_properties(windows_dll_imports_and_exports PROPERTIES COST 10)
