@@ -96,6 +96,17 @@ class PreviewFinalTest(unittest.TestCase):
         self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
         self.assertEqual(objects_module().mesh_level(obj), ("Final", 129, 129))
 
+    def test_raised_levels_leave_the_mesh_shown_as_what_it_is(self):
+        """With Auto Update off, raising Detail Levels changes the settings, not
+        the mesh: the sidebar still says the mesh is the Final it was built as
+        (it said "Mesh: edited, not its grid" until a Regenerate)."""
+        obj = add_terrain(levels=FINAL, preview_levels=PREVIEW, seed=3)
+        s = obj.fracterra_terrain
+        s.auto_update = False
+        s.levels = FINAL + 1
+        self.assertEqual(objects_module().mesh_level(obj), ("Final", 129, 129))
+        self.assertEqual(objects_module().terrain_grid_size(obj), (129, 129))
+
     def test_the_preview_is_the_final_at_their_shared_nodes(self):
         """Raise the levels of a terrain: at every node the Preview has, the Final
         has the same vertex (x, y and height)."""

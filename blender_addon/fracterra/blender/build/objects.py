@@ -65,7 +65,10 @@ def mesh_level(obj):
     planet: ("Preview" or "Final", level)."""
     if is_planet(obj):
         return _planet_level(obj)
-    settings = params.values_of(obj.fracterra_terrain)
+    # By the settings the mesh was built from, as mesh_grid: with Auto Update
+    # off, raised Detail Levels ask for another grid while the mesh is still
+    # the Final it was ("Mesh: edited" there was a state that was not there).
+    settings = built_settings(obj.data) or params.values_of(obj.fracterra_terrain)
     n = len(obj.data.vertices)
     final = grid_shape(settings)
     if n == final[0] * final[1]:
