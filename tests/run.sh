@@ -57,7 +57,7 @@ scripts/build.sh -DCMAKE_UNITY_BUILD=ON -DFT_BUILD_BENCH=OFF
 # after it. Its own process group, so that a failing ctest stops it too.
 stage "ctest (the sanitizer build beside it, nice 19)"
 asan_log=$PWD/build/sanitizer-build.log
-setsid nice -n 19 tests/sanitize.sh build >"$asan_log" 2>&1 &
+setsid --wait nice -n 19 tests/sanitize.sh build >"$asan_log" 2>&1 &
 asan_build=$!
 trap 'kill -- -"$asan_build" 2>/dev/null || true' EXIT
 (cd build && ctest --output-on-failure -j"$(nproc)" --timeout 600)
