@@ -33,12 +33,9 @@ int32_t label_basins(const D8Grid& g, int32_t sink, const FlowGraph& graph, Basi
   const int32_t n = int32_t(g.size());
   auto& node = bg.node;
   node.assign(size_t(n), -1);
-  bg.pit.assign(1, -1);
+  int32_t nodes = 1;
   for (int32_t i = 0; i < n; ++i)
-    if (graph.receiver[i] == i) {
-      node[i] = g.is_base(i, sink) ? 0 : int32_t(bg.pit.size());
-      if (node[i]) bg.pit.push_back(i);
-    }
+    if (graph.receiver[i] == i) node[i] = g.is_base(i, sink) ? 0 : nodes++;
   auto& path = bg.order;
   for (int32_t i = 0; i < n; ++i) {
     if (node[i] >= 0) continue;
@@ -47,7 +44,6 @@ int32_t label_basins(const D8Grid& g, int32_t sink, const FlowGraph& graph, Basi
     for (; node[j] < 0; j = graph.receiver[j]) path.push_back(j);
     for (const int32_t p : path) node[p] = node[j];
   }
-  const int32_t nodes = int32_t(bg.pit.size());
   bg.start.assign(size_t(nodes) + 1, 0);
   for (int32_t i = 0; i < n; ++i) ++bg.start[node[i] + 1];
   bg.start[1] = 0;  // node 0's cells are not listed
@@ -129,8 +125,8 @@ void connect_basins(const D8Grid& g, const float* z, int32_t sink, const FlowGra
 // Kruskal's minimum spanning tree of the links (lowest pass first; equal
 // passes by Rho8's number, so that a flat drains along a random tree, not
 // along rows), as adjacency lists; then each node's level from the root
-// outwards. Returns the indices of the tree's links, by node: bg.parent[u]
-// is u's link towards the root after this (reusing the union-find array).
+// outwards. Afterwards bg.parent[u] is the index of node u's link towards
+// the root (the union-find's array, reused), bg.level[u] its water surface.
 void spanning_tree(BasinGraph& bg, int32_t nodes) {
   auto& links = bg.links;
   std::sort(links.begin(), links.end());

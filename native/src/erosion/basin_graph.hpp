@@ -54,7 +54,6 @@ struct BasinLink {
 // nothing once the sizes settle).
 struct BasinGraph {
   std::vector<int32_t> node;    // per cell: its basin's node (0: drains to a base level)
-  std::vector<int32_t> pit;     // per node: its pit cell (-1 for node 0)
   std::vector<int32_t> start, cells;  // the pits' cells by node (node u: cells[start[u] .. start[u + 1]))
   std::vector<std::vector<BasinLink>> block_links;  // per block of pits, in scan order
   std::vector<BasinLink> links;
