@@ -117,21 +117,45 @@ std::vector<float> box_mean(const float* z, const D8Grid& g, int32_t r) {
   const int32_t w = g.width, h = g.height;
   std::vector<float> rows(g.size()), out(g.size());
   auto at = [&](int32_t k, int32_t n) { return g.periodic ? (k % n + n) % n : std::clamp(k, 0, n - 1); };
-  const float inv = 1.0f / float(2 * r + 1);
+  const double inv = 1.0 / double(2 * r + 1);
+  // Running sums in double, so the cost does not grow with r (17 cells
+  // across at 4097^2): along each row, then down each column, the columns
+  // in blocks among the threads (each column's sums are the same however
+  // they are split).
 #pragma omp parallel for schedule(static)
-  for (int32_t y = 0; y < h; ++y)
+  for (int32_t y = 0; y < h; ++y) {
+    const float* row = z + size_t(y) * w;
+    double sum = 0;
+    for (int32_t d = -r; d <= r; ++d) sum += row[at(d, w)];
     for (int32_t x = 0; x < w; ++x) {
-      double sum = 0;
-      for (int32_t d = -r; d <= r; ++d) sum += z[size_t(y) * w + at(x + d, w)];
-      rows[size_t(y) * w + x] = float(sum) * inv;
+      rows[size_t(y) * w + x] = float(sum * inv);
+      sum += double(row[at(x + r + 1, w)]) - row[at(x - r, w)];
     }
-#pragma omp parallel for schedule(static)
-  for (int32_t y = 0; y < h; ++y)
-    for (int32_t x = 0; x < w; ++x) {
-      double sum = 0;
-      for (int32_t d = -r; d <= r; ++d) sum += rows[size_t(at(y + d, h)) * w + x];
-      out[size_t(y) * w + x] = float(sum) * inv;
+  }
+  constexpr int32_t kBlock = 256;
+  const int32_t blocks = (w + kBlock - 1) / kBlock;
+#pragma omp parallel
+  {
+    std::vector<double> sum(kBlock);
+#pragma omp for schedule(static)
+    for (int32_t b = 0; b < blocks; ++b) {
+      const int32_t x0 = b * kBlock, len = std::min(w, x0 + kBlock) - x0;
+      std::fill(sum.begin(), sum.end(), 0.0);
+      for (int32_t d = -r; d <= r; ++d) {
+        const float* row = rows.data() + size_t(at(d, h)) * w + x0;
+        for (int32_t x = 0; x < len; ++x) sum[x] += row[x];
+      }
+      for (int32_t y = 0; y < h; ++y) {
+        float* dst = out.data() + size_t(y) * w + x0;
+        const float* add = rows.data() + size_t(at(y + r + 1, h)) * w + x0;
+        const float* sub = rows.data() + size_t(at(y - r, h)) * w + x0;
+        for (int32_t x = 0; x < len; ++x) {
+          dst[x] = float(sum[x] * inv);
+          sum[x] += double(add[x]) - sub[x];
+        }
+      }
     }
+  }
   return out;
 }
 
