@@ -457,7 +457,7 @@ TEST_P(EveryPreset, ErodesTheSameTerrainAlikeAt257And2049) {
       // final's texture (averaged over the preview's cells) has the
       // preview's energy. The inputs' differ (averaging takes 0.69 of it),
       // erosion wears both to about one level: the final's is 0.99-1.27
-      // of the preview's on every preset and seed, 3-14 times it if the
+      // of the preview's on every preset and seed, 5-15 times it if the
       // final kept its input's texture. Bound: within 35%.
       const double texture_small = texture_energy(values(small), 257), texture_big = texture_energy(big_down, 257);
       std::printf("%-22s texture energy at 257^2: in %.4g / %.4g, out %.4g / %.4g\n", what.c_str(),
