@@ -596,12 +596,13 @@ std::vector<float> left_of(int32_t edge, int32_t w, int32_t h) {
 }
 
 TEST(ErosionModel, CreepUnderTheMaskKeepsTheVolume) {
-  // With creep on: a mask that is 0 on the terrain's edge cells (so no creep
-  // flows out there) and on the right third, 1 inside. Creep moves material
-  // along each edge by D x the smaller of its cells' weights, so it makes
-  // and loses none, and the budget balances as without creep. (While the
-  // mask scaled creep's lowering only, the change exceeded the budget by 0.7
-  // (0.8 world units^3 in 18 to 26).)
+  // With creep on: a 5 x 5 mask, 0 on its border (so 0 on the terrain's
+  // edge cells: no creep flows out there) and its right two columns, 1 in
+  // the middle of the left half, ramps between. Creep moves material along
+  // each edge by D x the smaller of its cells' weights, so it makes and
+  // loses none, and the budget balances as without creep. (While the mask
+  // scaled creep's lowering only, the land kept 0.8 world units^3 more than
+  // the budget, of 18 to 26 detached.)
   const Heightfield in = default_mountain(7, 2);
   const float mask[] = {0, 0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0, 0, 0, 0};
   for (const char* id : {"rugged_mountains", "gentle_valleys"}) {
