@@ -155,32 +155,17 @@ double slowest_damping(int32_t len, double r) { return r * (2.0 - 2.0 * std::cos
 // x = y - v.y / (1 + e_w v.A_open^-1 v) e_w A_open^-1 v, and the
 // denominator is at least 1 (A_open is positive definite).
 struct WeightedLines {
-  std::vector<double> u, e, t, w, rho;  // values, couplings, c_j / p_j, the wrap's solve, q / p
+  std::vector<double> u, e, t, w, rho, zero;  // values, couplings, c_j / p_j, the wrap's solve, q / p, 0s
 
   void solve(int32_t len, int32_t count, bool fixed_ends, bool cyclic) {
     t.resize(u.size());
     rho.assign(size_t(count), 0.0);
-    if (cyclic) w.assign(u.size(), 0.0);
-    const size_t last = size_t(len - 1) * count;
-    for (int32_t j = 0; j < len; ++j) {
-      const bool end = fixed_ends && (j == 0 || j == len - 1);
-      double* uj = u.data() + size_t(j) * count;
-      const double* up = j > 0 ? uj - count : uj;  // the row before (unused in the first)
-      double* tj = t.data() + size_t(j) * count;
-      for (int32_t c = 0; c < count; ++c) {
-        const double a = j > 0 && !end ? e[size_t(j - 1) * count + c] : 0.0;
-        const double cc = j < len - 1 && !end ? e[size_t(j) * count + c] : 0.0;
-        const double q = 1.0 + a * rho[c], inv = 1.0 / (q + cc);
-        rho[c] = q * inv;
-        tj[c] = cc * inv;
-        uj[c] = (uj[c] + (j > 0 ? a * up[c] : 0.0)) * inv;
-        if (cyclic) {
-          const double ew = e[last + c];
-          const double rhs = j == 0 ? ew : j == len - 1 ? -ew : 0.0;
-          double* wj = w.data() + size_t(j) * count;
-          wj[c] = (rhs + (j > 0 ? a * wj[c - count] : 0.0)) * inv;
-        }
-      }
+    zero.assign(size_t(count), 0.0);
+    if (cyclic) {
+      w.assign(u.size(), 0.0);
+      eliminate<true>(len, count, fixed_ends);
+    } else {
+      eliminate<false>(len, count, fixed_ends);
     }
     for (int32_t j = len - 2; j >= 0; --j) {
       const size_t k = size_t(j) * count;
@@ -189,57 +174,78 @@ struct WeightedLines {
         for (int32_t c = 0; c < count; ++c) w[k + c] += t[k + c] * w[k + count + c];
     }
     if (!cyclic) return;
-    for (int32_t c = 0; c < count; ++c) {
-      const double fact = (u[c] - u[last + c]) / (1.0 + w[c] - w[last + c]);
-      for (int32_t j = 0; j < len; ++j) u[size_t(j) * count + c] -= fact * w[size_t(j) * count + c];
+    const size_t last = size_t(len - 1) * count;
+    std::vector<double>& fact = rho;  // free now
+    for (int32_t c = 0; c < count; ++c) fact[c] = (u[c] - u[last + c]) / (1.0 + w[c] - w[last + c]);
+    for (int32_t j = 0; j < len; ++j) {
+      const size_t k = size_t(j) * count;
+      for (int32_t c = 0; c < count; ++c) u[k + c] -= fact[c] * w[k + c];
+    }
+  }
+
+  // The forward sweep, line by line along j and across the lines at each j
+  // (independent, so that loop vectorises); with kWrap also on the right
+  // side e_w (e_0 - e_last) of the wrap's solve.
+  template <bool kWrap>
+  void eliminate(int32_t len, int32_t count, bool fixed_ends) {
+    const size_t last = size_t(len - 1) * count;
+    for (int32_t j = 0; j < len; ++j) {
+      const bool end = fixed_ends && (j == 0 || j == len - 1);
+      const size_t k = size_t(j) * count;
+      const double* a = j > 0 && !end ? e.data() + k - count : zero.data();
+      const double* cc = j < len - 1 && !end ? e.data() + k : zero.data();
+      const double* up = j > 0 ? u.data() + k - count : zero.data();
+      const double* wp = kWrap && j > 0 ? w.data() + k - count : zero.data();
+      const double sign = j == 0 ? 1.0 : j == len - 1 ? -1.0 : 0.0;
+      double* uj = u.data() + k;
+      double* tj = t.data() + k;
+      double* wj = kWrap ? w.data() + k : nullptr;
+      for (int32_t c = 0; c < count; ++c) {
+        const double q = 1.0 + a[c] * rho[c], inv = 1.0 / (q + cc[c]);
+        rho[c] = q * inv;
+        tj[c] = cc[c] * inv;
+        uj[c] = (uj[c] + a[c] * up[c]) * inv;
+        if constexpr (kWrap) wj[c] = (sign * e[last + c] + a[c] * wp[c]) * inv;
+      }
     }
   }
 };
 
-// One step with a weight per cell in [0, 1] (see the file comment).
+// One step with a weight per cell in [0, 1] (see the file comment). Both
+// sweeps take blocks of adjacent lines, copied into WeightedLines side by
+// side (the elimination along a single line waits on each division).
 void diffuse_weighted(const D8Grid& g, float* z, double r, const float* weight) {
   const int32_t w = g.width, h = g.height;
   const bool fixed = !g.periodic;
-  auto edge = [&](size_t i, size_t k) { return r * double(std::min(weight[i], weight[k])); };
-  // Rows, one line each. Bounded: the first and last rows are outlets and stay.
+  // Lines [l0, l1) of `len` samples; sample j of line l is z[l * line + j * step].
+  auto sweep = [&](int32_t len, int32_t l0, int32_t l1, size_t line, size_t step) {
+    constexpr int32_t kBlock = 32;
+    const int32_t blocks = (l1 - l0 + kBlock - 1) / kBlock;
 #pragma omp parallel
-  {
-    WeightedLines lines;
+    {
+      WeightedLines lines;
 #pragma omp for schedule(static)
-    for (int32_t y = fixed ? 1 : 0; y < (fixed ? h - 1 : h); ++y) {
-      const size_t row = size_t(y) * w;
-      lines.u.assign(z + row, z + row + w);
-      lines.e.resize(size_t(w));
-      for (int32_t x = 0; x < w; ++x) lines.e[x] = edge(row + x, row + (x + 1) % w);
-      lines.solve(w, 1, fixed, g.periodic);
-      for (int32_t x = 0; x < w; ++x) z[row + x] = float(lines.u[x]);
-    }
-  }
-  // Columns, in blocks of adjacent ones copied row by row (contiguous).
-  // Bounded: the first and last columns stay.
-  constexpr int32_t kBlock = 32;
-  const int32_t x0 = fixed ? 1 : 0, x1 = fixed ? w - 1 : w;
-  const int32_t blocks = (x1 - x0 + kBlock - 1) / kBlock;
-#pragma omp parallel
-  {
-    WeightedLines lines;
-#pragma omp for schedule(static)
-    for (int32_t b = 0; b < blocks; ++b) {
-      const int32_t first = x0 + b * kBlock, count = std::min(kBlock, x1 - first);
-      lines.u.resize(size_t(h) * count);
-      lines.e.resize(size_t(h) * count);
-      for (int32_t y = 0; y < h; ++y) {
-        const size_t row = size_t(y) * w + first, next = size_t((y + 1) % h) * w + first;
-        for (int32_t c = 0; c < count; ++c) {
-          lines.u[size_t(y) * count + c] = z[row + c];
-          lines.e[size_t(y) * count + c] = edge(row + c, next + c);
+      for (int32_t b = 0; b < blocks; ++b) {
+        const int32_t first = l0 + b * kBlock, count = std::min(kBlock, l1 - first);
+        lines.u.resize(size_t(len) * count);
+        lines.e.resize(size_t(len) * count);
+        for (int32_t j = 0; j < len; ++j) {
+          const size_t at = size_t(first) * line + size_t(j) * step, next = size_t(first) * line + size_t((j + 1) % len) * step;
+          for (int32_t c = 0; c < count; ++c) {
+            lines.u[size_t(j) * count + c] = z[at + c * line];
+            lines.e[size_t(j) * count + c] = r * double(std::min(weight[at + c * line], weight[next + c * line]));
+          }
         }
+        lines.solve(len, count, fixed, g.periodic);
+        for (int32_t j = 0; j < len; ++j)
+          for (int32_t c = 0; c < count; ++c) z[size_t(first + c) * line + size_t(j) * step] = float(lines.u[size_t(j) * count + c]);
       }
-      lines.solve(h, count, fixed, g.periodic);
-      for (int32_t y = 0; y < h; ++y)
-        for (int32_t c = 0; c < count; ++c) z[size_t(y) * w + first + c] = float(lines.u[size_t(y) * count + c]);
     }
-  }
+  };
+  // Rows, then columns. Bounded: the first and last rows and columns are
+  // outlets and stay.
+  sweep(w, fixed ? 1 : 0, fixed ? h - 1 : h, size_t(w), 1);
+  sweep(h, fixed ? 1 : 0, fixed ? w - 1 : w, 1, size_t(w));
 }
 
 }  // namespace
