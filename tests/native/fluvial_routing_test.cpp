@@ -291,7 +291,8 @@ std::vector<float> some_weights(const D8Grid& g, uint64_t seed) {
 // and on a bounded grid whose edge cells have weight 0 (none flows out).
 // (With Sherman-Morrison left out, a 3 x 3 torus at r = 0.01 was off by
 // 8e-3; with each edge's weight the larger of its cells', a cell of weight 0
-// moved.)
+// moved; with the textbook pivots b_j - a_j c_{j-1} / p_{j-1}, a 3 x 3 torus
+// at r = 1e12 lost 6e-5 of its volume.)
 TEST(FluvialRouting, CreepUnderAMaskSolvesItsSystemAndKeepsTheVolume) {
   struct Size {
     int32_t w, h;
