@@ -255,9 +255,11 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
         }
         hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt, run.mask);
         hillslope_diffusion(g, plain.data(), c.fluvial.diffusion * dt, run.mask);
+        // Added as a change (not assigned): the float rounding of the runs
+        // without a mask stays as it was.
 #pragma omp parallel for schedule(static)
         for (int64_t i = 0; i < int64_t(n); ++i)
-          z[i] = z[i] > run.texture[i] ? plain[i] : diffused[i] + run.texture[i];
+          z[i] += (z[i] > run.texture[i] ? plain[i] : diffused[i] + run.texture[i]) - z[i];
       } else {
         hillslope_diffusion(g, z, c.fluvial.diffusion * dt, run.mask);
       }
