@@ -341,10 +341,11 @@ void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* bu
   for (size_t i = 0; i < after.size(); ++i) after[i] -= before[i];
   const std::vector<float> change = resample(after.data(), coarse, g);
   const std::vector<float> crept_here = crept.empty() ? std::vector<float>() : resample(crept.data(), coarse, g);
-  // The resampled change blurs across the mask's edge: creep and what
-  // lowers act only inside the mask (scaled by it), so outside it only
-  // raises, where sediment was laid (the model's creep, resampled, filled the
-  // masked-off land's hollows). It never lifts a cell above the input's
+  // The resampled change blurs across the mask's edge (the model samples the
+  // mask coarser): creep and what lowers are scaled by the terrain's own
+  // mask, so where it is 0 the land only rises, where sediment was laid
+  // (a creeping model node, blurred onto the masked-off column beside it,
+  // raised it by up to 0.12). It never lifts a cell above the input's
   // highest, and leaves the sea as it is (it blurs across the coast too).
 #pragma omp parallel for schedule(static)
   for (int64_t i = 0; i < int64_t(n); ++i) {
