@@ -21,7 +21,7 @@
 // line then has its own tridiagonal, eliminated in double in a form without
 // cancellation, and a periodic line adds its wrap edge by Sherman-Morrison
 // as that edge's own rank-one term, whose denominator is at least 1 (see
-// solve_weighted).
+// WeightedLines).
 #include <algorithm>
 #include <cmath>
 #include <vector>
