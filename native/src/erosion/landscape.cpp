@@ -21,8 +21,9 @@
 //               grid's edge, a periodic grid's sink, the sea) is carried out;
 //   diffusion   hillslope creep D laplacian(z), implicit; the sea floor
 //               stays as it is.
-// The erosion mask scales detachment, talus and diffusion's lowering; the
-// deposit goes wherever the sediment flows.
+// The erosion mask scales detachment, talus and each edge's creep flux (so
+// creep moves material only where the mask lets it, and makes or loses
+// none); the deposit goes wherever the sediment flows.
 //
 // Resolution: D8 channels are one cell wide, so the incision of a grid of any
 // size depends on its cell size. The model therefore runs at one cell size,
@@ -194,6 +195,9 @@ struct Run {
   // Null: creep acts on z. Else creep acts on z - texture only: what the
   // run did, not the texture it started from (the detail run, see landscape()).
   const float* texture;
+  // Null, or each cell's change by creep, added up (the model's run: its
+  // change is resampled with the mask, see landscape()).
+  float* crept = nullptr;
 };
 
 // Evolves z for `years` in `steps` implicit steps (see the file comment).
@@ -210,8 +214,8 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
   FlowGraph graph;
   BasinGraph basins;
   const bool creep = c.fluvial.diffusion > 0;
-  std::vector<float> filled(n), start(n), cap(n), diffused((run.mask || run.texture) && creep ? n : 0),
-      plain(run.texture && creep ? n : 0);
+  std::vector<float> filled(n), start(n), cap(n), diffused(run.texture && creep ? n : 0),
+      plain(run.texture && creep ? n : 0), before_creep(run.crept && creep ? n : 0);
   std::vector<double> discharge(n), sediment(n);
   const int32_t sink = g.periodic ? periodic_sink(g, z) : -1;
   auto mask = [&](int32_t i) { return run.mask ? double(run.mask[i]) : 1.0; };
@@ -303,30 +307,37 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
     }
     carried += carried_step, detached += detached_step, deposited += deposited_step;
     if (creep) {
-      if (run.mask || run.texture) {
+      if (run.crept) std::copy(z, z + n, before_creep.begin());
+      // The mask scales each edge's flux: outside it creep neither fills a
+      // hollow nor rounds a crest (scaling creep's change instead let it
+      // fill the hollows of the masked-off land).
+      if (run.texture) {
         // With a texture, a deposit (above it) creeps as it lies: sediment
         // has no rock texture, and creep on its change would print the
         // texture of the bed it buried onto a filled lake's flat.
 #pragma omp parallel for schedule(static)
         for (int64_t i = 0; i < int64_t(n); ++i) {
-          diffused[i] = run.texture ? z[i] - run.texture[i] : z[i];
-          if (run.texture) plain[i] = z[i];
+          diffused[i] = z[i] - run.texture[i];
+          plain[i] = z[i];
         }
-        hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt);
-        if (run.texture) hillslope_diffusion(g, plain.data(), c.fluvial.diffusion * dt);
+        hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt, run.mask);
+        hillslope_diffusion(g, plain.data(), c.fluvial.diffusion * dt, run.mask);
+        // Added as a change (not assigned): the float rounding of the runs
+        // without a mask stays as it was.
 #pragma omp parallel for schedule(static)
-        for (int64_t i = 0; i < int64_t(n); ++i) {
-          const float next = !run.texture ? diffused[i] : z[i] > run.texture[i] ? plain[i] : diffused[i] + run.texture[i];
-          const float change = next - z[i];
-          z[i] += change < 0 && run.mask ? float(run.mask[i]) * change : change;
-        }
+        for (int64_t i = 0; i < int64_t(n); ++i)
+          z[i] += (z[i] > run.texture[i] ? plain[i] : diffused[i] + run.texture[i]) - z[i];
       } else {
-        hillslope_diffusion(g, z, c.fluvial.diffusion * dt);
+        hillslope_diffusion(g, z, c.fluvial.diffusion * dt, run.mask);
       }
       if (g.sea) {  // the sea floor stays (creep would spread the coast over it)
 #pragma omp parallel for schedule(static)
         for (int64_t i = 0; i < int64_t(n); ++i)
           if (g.sea[i]) z[i] = start[i];
+      }
+      if (run.crept) {
+#pragma omp parallel for schedule(static)
+        for (int64_t i = 0; i < int64_t(n); ++i) run.crept[i] += z[i] - before_creep[i];
       }
     }
     progress.report(double(step + 1) / steps);
@@ -391,24 +402,33 @@ void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* bu
   const std::vector<float> coarse_rain = resample_map(c.rain_map, coarse.width, coarse.height);
   // Shares of the bar: the model's run and the detail run cost about alike.
   const ProgressPart model_part(progress, 0.0, 0.5), detail_part(progress, 0.5, 0.5);
+  std::vector<float> crept(coarse_mask.empty() ? 0 : coarse.size(), 0.0f);
   evolve({coarse, c, coarse_mask.empty() ? nullptr : coarse_mask.data(),
-          coarse_rain.empty() ? nullptr : coarse_rain.data(), budget, true, nullptr},
+          coarse_rain.empty() ? nullptr : coarse_rain.data(), budget, true, nullptr, crept.empty() ? nullptr : crept.data()},
          after.data(), years, steps_for(coarse, c, years, kMaxSteps), 0, model_part.progress());
   for (size_t i = 0; i < after.size(); ++i) after[i] -= before[i];
   const std::vector<float> change = resample(after.data(), coarse, g);
+  const std::vector<float> crept_here = crept.empty() ? std::vector<float>() : resample(crept.data(), coarse, g);
   // The texture's spread below the model's cell (see bury).
   std::vector<float> spread(n);
 #pragma omp parallel for schedule(static)
   for (int64_t i = 0; i < int64_t(n); ++i) spread[i] = (z[i] - smooth[i]) * (z[i] - smooth[i]);
   spread = box_mean(spread.data(), g, int32_t(factor / 2));
-  // The resampled change lowers only inside the mask (it blurs across the
-  // mask's edge), buries the texture where it rises, never lifts a cell
-  // above the input's highest, and leaves the sea as it is (it blurs across
-  // the coast too).
+  // The resampled change blurs across the mask's edge (the model samples the
+  // mask coarser): creep and what lowers are scaled by the terrain's own
+  // mask, so where it is 0 the land only rises, where sediment was laid
+  // (a creeping model node, blurred onto the masked-off column beside it,
+  // raised it by up to 0.12). Where it rises it buries the texture; it
+  // never lifts a cell above the input's highest, and leaves the sea as it
+  // is (it blurs across the coast too).
 #pragma omp parallel for schedule(static)
   for (int64_t i = 0; i < int64_t(n); ++i) {
     if (g.in_sea(size_t(i))) continue;
-    const float d = change[i] < 0 && mask_or_null ? change[i] * mask_or_null[i] : change[i];
+    float d = change[i];
+    if (mask_or_null) {
+      const float rest = d - crept_here[i];  // detachment, scree and deposits
+      d = mask_or_null[i] * crept_here[i] + (rest < 0 ? mask_or_null[i] * rest : rest);
+    }
     z[i] = std::min(top, d > 0 ? bury(z[i], smooth[i], std::sqrt(spread[i]), d) : z[i] + d);
   }
   const double detail_years = years * g.spacing / coarse.spacing;
