@@ -47,8 +47,9 @@ json drainage_report(const Heightfield& hf, bool periodic) {
   const erosion::DrainageStats s = erosion::drainage_stats(hf, periodic);
   return {{"hack_h", s.hack_h},         {"hack_h_stderr", s.hack_h_stderr}, {"hack_bins", s.hack_bins},
           {"theta", s.theta},           {"theta_stderr", s.theta_stderr},   {"theta_bins", s.theta_bins},
-          {"min_area", s.min_area},     {"max_area", s.max_area},
-          {"note", "real landscapes: Hack h about 0.5-0.6, theta about 0.35-0.7; areas in world units^2"}};
+          {"min_area", s.min_area},     {"max_area", s.max_area},   {"theta_min_area", s.theta_min_area},
+          {"note", "real landscapes: Hack h about 0.5-0.6, theta about 0.35-0.7; areas in world units^2; "
+                   "lakes count in neither fit, theta is fitted from the slope-area turnover (theta_min_area) up"}};
 }
 
 const std::vector<analysis::HurstMethod> kAllMethods = {analysis::HurstMethod::kVariogramAligned, analysis::HurstMethod::kVariogram,

@@ -193,7 +193,8 @@ def analyze(z, method: str = "auto", *, drainage: bool = True, periodic: bool = 
     'band_lo', 'band_hi', 'points', 'min', 'max', 'mean', 'std'} and, with
     drainage=True, 'drainage': {'hack_h', 'hack_h_stderr', 'theta',
     'theta_stderr', 'hack_bins', 'theta_bins'} (Hack's law and the slope-area
-    concavity over channels of at least min_area_cells cells).
+    concavity over channels of at least min_area_cells cells; cells of filled
+    lakes count in neither, and theta is fitted from the slope-area turnover up).
 
     method: auto (the library's choice for the grid, as `fracterra analyze`),
     variogram, variogram_aligned, madogram_aligned or spectral.

@@ -276,18 +276,20 @@ class ErodeMapsTest(unittest.TestCase):
         xs = [v.co.x for v in obj.data.vertices]
         outside = [i for i, x in enumerate(xs) if x > 1e-6]
         inside = [i for i, x in enumerate(xs) if x < -1e-6]
-        # The mask scales every lowering (the library): outside, nothing is worn
-        # away; sediment from inside may still settle there (never lower).
+        # The mask scales every lowering and creep (the library): outside,
+        # nothing is worn away; sediment from inside may still settle there.
         lowered = [i for i in outside if after[i] < before[i]]
         self.assertEqual(lowered, [], f"{len(lowered)} vertices outside the mask were eroded")
         worn = sum(after[i] < before[i] - 1e-4 for i in inside)
         self.assertGreater(worn, 0.2 * len(inside), "inside the mask the terrain eroded")
-        # Rivers that carry all they take away (Fan Building 0) and no creep
-        # (Slope Softening 0) lay almost nothing down: outside, the uneroded
-        # heights, bit for bit. Measured: 6 of 2080 vertices, on one river's path
-        # out of the mask, rose (up to RAISED; the library's coarse-to-fine pass
-        # blurs a rise across the mask's edge, never a lowering); 1% allowed.
-        settings.deposition, settings.diffusion = 0.0, 0.0
+        # Rivers that carry all they take away (Fan Building 0) lay almost
+        # nothing down (a lake still takes all that reaches it), and creep acts
+        # only inside the mask: outside, the uneroded heights, bit for bit.
+        # Measured: 15 of 2080 vertices, on rivers' paths out of the mask, rose
+        # (by up to 0.028); 2% allowed. (While the mask scaled creep's lowering
+        # only, 1446 rose: creep filled the hollows outside, so this held with
+        # Slope Softening 0 alone.)
+        settings.deposition = 0.0
         self.assertEqual(settings.erode_preset, "CUSTOM")
         self.assertEqual(bpy.ops.object.fracterra_terrain_regenerate(), {"FINISHED"})
         after = heights(obj.data)
@@ -295,7 +297,7 @@ class ErodeMapsTest(unittest.TestCase):
         print(f"outside the mask: {len(changed)} of {len(outside)} changed, by at most "
               f"{max([after[i] - before[i] for i in changed], default=0.0):.3g}", flush=True)
         self.assertTrue(all(after[i] > before[i] for i in changed), "outside the mask nothing is lowered")
-        self.assertLess(len(changed), 0.01 * len(outside), f"{len(changed)} of {len(outside)} vertices changed")
+        self.assertLess(len(changed), 0.02 * len(outside), f"{len(changed)} of {len(outside)} vertices changed")
         self.assertGreater(sum(after[i] < before[i] - 1e-4 for i in inside), 0.2 * len(inside))
         # Without the mask the same preset wears the other half too (the check above can fail).
         settings.erosion_mask_source = "NONE"

@@ -93,7 +93,9 @@ set_tests_properties(blender4_extension PROPERTIES LABELS blender TIMEOUT 600 SK
 # The add-on in the real GUI under Xvfb, driven through the event loop with
 # xdotool: menus, redo panels, sidebar panels, preferences, undo, redo; the
 # screenshots land in blender_gui_shots/. Drawing code prints (not raises) its
-# errors, so any traceback in the log fails the test.
+# errors, so any traceback in the log fails the test. It takes about 100 s
+# idle and took 191 s at load 7 (2026-11-27) against the 240 s it had: the
+# timeout is for a hang, not for a busy machine.
 find_program(FT_XDOTOOL xdotool)
 if(FT_BLENDER AND FT_XVFB_RUN AND FT_XDOTOOL)
   set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_gui)
@@ -103,6 +105,6 @@ if(FT_BLENDER AND FT_XVFB_RUN AND FT_XDOTOOL)
             ${FT_BLENDER} --factory-startup --window-geometry 0 0 1280 800
             --python ${CMAKE_CURRENT_LIST_DIR}/test_gui.py
             -- --zip ${FT_BLENDER_ZIP} --out ${CMAKE_CURRENT_BINARY_DIR}/blender_gui_shots)
-  set_tests_properties(blender_gui PROPERTIES LABELS blender TIMEOUT 240 COST 65
+  set_tests_properties(blender_gui PROPERTIES LABELS blender TIMEOUT 480 COST 65
     FAIL_REGULAR_EXPRESSION "Traceback|GUI test FAILED")
 endif()

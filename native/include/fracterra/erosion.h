@@ -92,6 +92,10 @@ FT_API ft_status ft_erode(const ft_heightfield* in, const ft_erosion_params* p, 
 /// Drainage statistics: Hack's law exponent h (main-stream length against
 /// area) and the slope-area concavity theta, with their standard errors,
 /// over channel cells of at least `min_area_cells` cells (>= 2; 20 is usual).
+/// Cells of filled lakes count in neither; theta is fitted from the
+/// slope-area plot's turnover (the hillslope-channel transition) up, when
+/// that lies above `min_area_cells` (since 0.4.0; before, lakes counted in
+/// Hack's law and theta was fitted from `min_area_cells`).
 typedef struct ft_drainage_stats {
   double hack_h, hack_h_stderr, theta, theta_stderr;
   int32_t hack_bins, theta_bins;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <vector>
 
@@ -35,6 +36,26 @@ void binned_medians(const std::vector<double>& x, const std::vector<double>& y, 
 
 }  // namespace
 
+ConcavityFit concavity_fit(const std::vector<double>& area, const std::vector<double>& slope) {
+  std::vector<double> bx, by;
+  binned_medians(area, slope, bx, by);
+  if (bx.size() < 3) invalid("too few channel cells for the slope-area fit (need 3 area bins of 5 cells)");
+  // The fluvial regime starts at the turnover of the slope-area plot: below
+  // it slopes grow with area (diffusive, convex hillslopes), beyond it they
+  // fall (Montgomery & Foufoula-Georgiou 1993; Tucker & Bras 1998); studies
+  // of channel concavity fit only above such a critical area (Wobus et al.
+  // 2006). The fit starts at the bin of the steepest median slope, searched
+  // among bins at least a decade below the largest area so that a decade is
+  // always fitted (a plot with no turnover keeps its first bin).
+  size_t first = 0;
+  for (size_t k = 1; k < bx.size() && bx[k] * 10.0 <= bx.back(); ++k)
+    if (by[k] > by[first]) first = k;
+  bx.erase(bx.begin(), bx.begin() + std::ptrdiff_t(first));
+  by.erase(by.begin(), by.begin() + std::ptrdiff_t(first));
+  const analysis::LogLogFit f = analysis::fit_loglog(bx, by, "slope-area");
+  return {-f.slope, f.slope_stderr, f.points, bx.front()};
+}
+
 DrainageStats drainage_stats(const Heightfield& hf, bool periodic, double min_area_cells) {
   check_range("min_area_cells", min_area_cells, 2.0, 1e12);
   const D8Grid g = grid_of(hf, periodic);
@@ -57,12 +78,15 @@ DrainageStats drainage_stats(const Heightfield& hf, bool periodic, double min_ar
   const double min_area = min_area_cells * g.spacing * g.spacing;
   std::vector<double> a_hack, l_hack, a_slope, s_slope;
   for (size_t i = 0; i < n; ++i) {
-    if (area[i] < min_area) continue;
+    // A cell the fill raised lies in a lake: its receiver, area and length
+    // are the fill's flood order (straight rays from the spill, each with
+    // L ~ A), not a channel's, and its slope is a float step. Counted in
+    // Hack's law, the rays of the lakes bent it (see the header).
+    if (area[i] < min_area || z[i] != hf.data()[i]) continue;
     a_hack.push_back(area[i]);
     l_hack.push_back(length[i]);
     const int32_t r = graph.receiver[i];
-    // Slopes of cells the fill raised are float steps across a lake: not channels.
-    if (r != int32_t(i) && z[i] == hf.data()[i]) {
+    if (r != int32_t(i)) {
       a_slope.push_back(area[i]);
       s_slope.push_back((double(z[i]) - z[r]) / graph.length[i]);
     }
@@ -70,21 +94,18 @@ DrainageStats drainage_stats(const Heightfield& hf, bool periodic, double min_ar
   DrainageStats st;
   std::vector<double> bx, by;
   binned_medians(a_hack, l_hack, bx, by);
-  if (bx.size() < 3) invalid("too few channel cells for Hack's law (need 3 area bins of 5 cells; use a larger terrain)");
+  if (bx.size() < 3) invalid("too few channel cells outside lakes for Hack's law (need 3 area bins of 5 cells; use a larger terrain)");
   auto hack = analysis::fit_loglog(bx, by, "Hack's law");
   st.hack_h = hack.slope;
   st.hack_h_stderr = hack.slope_stderr;
   st.hack_bins = hack.points;
   st.min_area = bx.front();
   st.max_area = bx.back();
-  bx.clear();
-  by.clear();
-  binned_medians(a_slope, s_slope, bx, by);
-  if (bx.size() < 3) invalid("too few channel cells for the slope-area fit (need 3 area bins of 5 cells)");
-  auto flint = analysis::fit_loglog(bx, by, "slope-area");
-  st.theta = -flint.slope;
-  st.theta_stderr = flint.slope_stderr;
-  st.theta_bins = flint.points;
+  const ConcavityFit flint = concavity_fit(a_slope, s_slope);
+  st.theta = flint.theta;
+  st.theta_stderr = flint.theta_stderr;
+  st.theta_bins = flint.bins;
+  st.theta_min_area = flint.min_area;
   return st;
 }
 

@@ -141,7 +141,10 @@ void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* bu
 
 // The processes one by one, in place. `budget` may be null.
 void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& progress);
-void hillslope_diffusion(const D8Grid& g, float* z, double diffusivity_dt);
+// With `weight` (null: 1 everywhere; values in [0, 1]) the flux between two
+// neighbours is scaled by the smaller of their weights: creep only where
+// they let it, and a cell of weight 0 keeps its height.
+void hillslope_diffusion(const D8Grid& g, float* z, double diffusivity_dt, const float* weight = nullptr);
 // What fluvial() adds to each cell per step: the uplift, uniform or following
 // the input `z0`; 0 at a periodic grid's sink; empty without uplift.
 std::vector<float> uplift_per_step(const D8Grid& g, const float* z0, const FluvialConfig& c);

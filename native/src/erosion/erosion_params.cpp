@@ -112,7 +112,8 @@ constexpr ft_param_info kRows[] = {
     {ROW(deposition, FT_PARAM_DOUBLE), .since = kAbi214, .element_kind = -1, .default_value = 0.5, .hard_min = 0,
      .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Fan Building",
      .doc = "How readily rivers drop what they carry: 0 carves and carries everything away, 1 fills valleys "
-            "and builds wide fans (G in dz/dt = -K Q^m S + G Qs / Q, Yuan et al. 2019)",
+            "and lakes and builds wide fans (G in dz/dt = -K Q^m S + G Qs / Q, Yuan et al. 2019; a lake "
+            "keeps G of what reaches it, as a flat floor)",
      .methods = kAll},
     {ROW(rainfall, FT_PARAM_DOUBLE), .since = kAbi214, .element_kind = -1, .default_value = 1, .hard_min = 0,
      .hard_max = 1e6, .soft_min = 0, .soft_max = 4, .unit = "world units/yr", .label = "Rainfall",

@@ -12,6 +12,16 @@
 // of its mean. Where even double cannot resolve the slowest mode (r times
 // its eigenvalue above 1e8) every mode is damped below float's resolution
 // and a line becomes its mean.
+//
+// With a weight per cell (the erosion mask) the flux between two neighbours
+// is D x the smaller of their weights x their difference: creep acts only
+// where the mask lets it, and a cell of weight 0 keeps its height. In flux
+// form it moves material without making or losing any (a periodic line
+// keeps its sum; a bounded one gains or loses only at its fixed ends). Each
+// line then has its own tridiagonal, eliminated in double in a form without
+// cancellation, and a periodic line adds its wrap edge by Sherman-Morrison
+// as that edge's own rank-one term, whose denominator is at least 1 (see
+// WeightedLines).
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -131,10 +141,122 @@ void diffuse(const D8Grid& g, T* z, double r) {
 // 2 - 2 cos(2 pi / len): how far its slowest mode is damped (by 1 / (1 + it)).
 double slowest_damping(int32_t len, double r) { return r * (2.0 - 2.0 * std::cos(2.0 * M_PI / len)); }
 
+// Solves `count` lines side by side (element j of line c at u[j * count + c],
+// e likewise), in place, in double:
+//   (1 + e[j-1] + e[j]) u_j - e[j-1] u_{j-1} - e[j] u_{j+1} = f_j,
+// e[j] the coupling of j and j + 1 (r x the edge's weight); with
+// `fixed_ends` the first and last rows are identity, else the line is open
+// (no flux past its ends) or, `cyclic`, closed by e[len - 1] between its
+// last and first samples. The pivots p_j = q_j + c_j are built from their
+// surplus q_j = 1 + a_j q_{j-1} / p_{j-1} (a, c: the sub- and
+// super-diagonal's magnitudes), a sum of positive terms: the textbook
+// b_j - a_j c_{j-1} / p_{j-1} cancels once r is large. The wrap edge is
+// A - A_open = e_w (e_0 - e_last)(e_0 - e_last)^T: with v = e_0 - e_last,
+// x = y - v.y / (1 + e_w v.A_open^-1 v) e_w A_open^-1 v, and the
+// denominator is at least 1 (A_open is positive definite).
+struct WeightedLines {
+  std::vector<double> u, e, t, w, rho, zero;  // values, couplings, c_j / p_j, the wrap's solve, q / p, 0s
+
+  void solve(int32_t len, int32_t count, bool fixed_ends, bool cyclic) {
+    t.resize(u.size());
+    rho.assign(size_t(count), 0.0);
+    zero.assign(size_t(count), 0.0);
+    if (cyclic) {
+      w.assign(u.size(), 0.0);
+      eliminate<true>(len, count, fixed_ends);
+    } else {
+      eliminate<false>(len, count, fixed_ends);
+    }
+    for (int32_t j = len - 2; j >= 0; --j) {
+      const size_t k = size_t(j) * count;
+      for (int32_t c = 0; c < count; ++c) u[k + c] += t[k + c] * u[k + count + c];
+      if (cyclic)
+        for (int32_t c = 0; c < count; ++c) w[k + c] += t[k + c] * w[k + count + c];
+    }
+    if (!cyclic) return;
+    const size_t last = size_t(len - 1) * count;
+    std::vector<double>& fact = rho;  // free now
+    for (int32_t c = 0; c < count; ++c) fact[c] = (u[c] - u[last + c]) / (1.0 + w[c] - w[last + c]);
+    for (int32_t j = 0; j < len; ++j) {
+      const size_t k = size_t(j) * count;
+      for (int32_t c = 0; c < count; ++c) u[k + c] -= fact[c] * w[k + c];
+    }
+  }
+
+  // The forward sweep, line by line along j and across the lines at each j
+  // (independent, so that loop vectorises); with kWrap also on the right
+  // side e_w (e_0 - e_last) of the wrap's solve.
+  template <bool kWrap>
+  void eliminate(int32_t len, int32_t count, bool fixed_ends) {
+    const size_t last = size_t(len - 1) * count;
+    for (int32_t j = 0; j < len; ++j) {
+      const bool end = fixed_ends && (j == 0 || j == len - 1);
+      const size_t k = size_t(j) * count;
+      const double* a = j > 0 && !end ? e.data() + k - count : zero.data();
+      const double* cc = j < len - 1 && !end ? e.data() + k : zero.data();
+      const double* up = j > 0 ? u.data() + k - count : zero.data();
+      const double* wp = kWrap && j > 0 ? w.data() + k - count : zero.data();
+      const double sign = j == 0 ? 1.0 : j == len - 1 ? -1.0 : 0.0;
+      double* uj = u.data() + k;
+      double* tj = t.data() + k;
+      double* wj = kWrap ? w.data() + k : nullptr;
+      for (int32_t c = 0; c < count; ++c) {
+        const double q = 1.0 + a[c] * rho[c], inv = 1.0 / (q + cc[c]);
+        rho[c] = q * inv;
+        tj[c] = cc[c] * inv;
+        uj[c] = (uj[c] + a[c] * up[c]) * inv;
+        if constexpr (kWrap) wj[c] = (sign * e[last + c] + a[c] * wp[c]) * inv;
+      }
+    }
+  }
+};
+
+// One step with a weight per cell in [0, 1] (see the file comment). Both
+// sweeps take blocks of adjacent lines, copied into WeightedLines side by
+// side (the elimination along a single line waits on each division).
+void diffuse_weighted(const D8Grid& g, float* z, double r, const float* weight) {
+  const int32_t w = g.width, h = g.height;
+  const bool fixed = !g.periodic;
+  // Lines [l0, l1) of `len` samples; sample j of line l is z[l * line + j * step].
+  auto sweep = [&](int32_t len, int32_t l0, int32_t l1, size_t line, size_t step) {
+    constexpr int32_t kBlock = 32;
+    const int32_t blocks = (l1 - l0 + kBlock - 1) / kBlock;
+#pragma omp parallel
+    {
+      WeightedLines lines;
+#pragma omp for schedule(static)
+      for (int32_t b = 0; b < blocks; ++b) {
+        const int32_t first = l0 + b * kBlock, count = std::min(kBlock, l1 - first);
+        lines.u.resize(size_t(len) * count);
+        lines.e.resize(size_t(len) * count);
+        for (int32_t j = 0; j < len; ++j) {
+          const size_t at = size_t(first) * line + size_t(j) * step, next = size_t(first) * line + size_t((j + 1) % len) * step;
+          for (int32_t c = 0; c < count; ++c) {
+            lines.u[size_t(j) * count + c] = z[at + c * line];
+            lines.e[size_t(j) * count + c] = r * double(std::min(weight[at + c * line], weight[next + c * line]));
+          }
+        }
+        lines.solve(len, count, fixed, g.periodic);
+        for (int32_t j = 0; j < len; ++j)
+          for (int32_t c = 0; c < count; ++c) z[size_t(first + c) * line + size_t(j) * step] = float(lines.u[size_t(j) * count + c]);
+      }
+    }
+  };
+  // Rows, then columns. Bounded: the first and last rows and columns are
+  // outlets and stay.
+  sweep(w, fixed ? 1 : 0, fixed ? h - 1 : h, size_t(w), 1);
+  sweep(h, fixed ? 1 : 0, fixed ? w - 1 : w, 1, size_t(w));
+}
+
 }  // namespace
 
-void hillslope_diffusion(const D8Grid& g, float* z, double diffusivity_dt) {
+void hillslope_diffusion(const D8Grid& g, float* z, double diffusivity_dt, const float* weight) {
   const double r = std::min(diffusivity_dt / (g.spacing * g.spacing), double(kMaxSolveFactor));
+  // Weights of 1 everywhere are no mask: the same bits as none.
+  if (weight && std::any_of(weight, weight + g.size(), [](float v) { return v < 1.0f; })) {
+    diffuse_weighted(g, z, r, weight);
+    return;
+  }
   if (!g.periodic) {
     diffuse(g, z, r);
     return;

@@ -13,15 +13,17 @@
 //               passes (the deposition term G Qs / Q of Yuan et al. 2019,
 //               "A new efficient method to solve the stream power law model
 //               taking into account sediment deposition", as fastscapelib's
-//               erosion-deposition law), a lake takes everything up to its
-//               spill level, and a deposit never rises above the cell it came
-//               from (less a fan slope): fans and valley fills, never a
-//               spike; what reaches a base level (a bounded grid's edge, a
-//               periodic grid's sink, the sea) is carried out;
+//               erosion-deposition law), and a deposit never rises above
+//               the cell it came from (less a fan slope): fans and valley
+//               fills, never a spike; a lake settles G of what it gets,
+//               up to its spill level, as a flat floor from its lowest cell
+//               up (lake_fill.hpp); what reaches a base level (a bounded
+//               grid's edge, a periodic grid's sink, the sea) is carried out;
 //   diffusion   hillslope creep D laplacian(z), implicit; the sea floor
 //               stays as it is.
-// The erosion mask scales detachment, talus and diffusion's lowering; the
-// deposit goes wherever the sediment flows.
+// The erosion mask scales detachment, talus and each edge's creep flux (so
+// creep moves material only where the mask lets it, and makes or loses
+// none); the deposit goes wherever the sediment flows.
 //
 // Resolution: D8 channels are one cell wide, so the incision of a grid of any
 // size depends on its cell size. The model therefore runs at one cell size,
@@ -42,6 +44,7 @@
 #include "erosion/erosion.hpp"
 #include "erosion/basin_graph.hpp"
 #include "erosion/flow_graph.hpp"
+#include "erosion/lake_fill.hpp"
 
 namespace ft::erosion {
 namespace {
@@ -115,22 +118,71 @@ std::vector<float> box_mean(const float* z, const D8Grid& g, int32_t r) {
   const int32_t w = g.width, h = g.height;
   std::vector<float> rows(g.size()), out(g.size());
   auto at = [&](int32_t k, int32_t n) { return g.periodic ? (k % n + n) % n : std::clamp(k, 0, n - 1); };
-  const float inv = 1.0f / float(2 * r + 1);
+  const double inv = 1.0 / double(2 * r + 1);
+  // Running sums in double, so the cost does not grow with r (17 cells
+  // across at 4097^2): along each row, then down each column, the columns
+  // in blocks among the threads (each column's sums are the same however
+  // they are split).
 #pragma omp parallel for schedule(static)
-  for (int32_t y = 0; y < h; ++y)
+  for (int32_t y = 0; y < h; ++y) {
+    const float* row = z + size_t(y) * w;
+    double sum = 0;
+    for (int32_t d = -r; d <= r; ++d) sum += row[at(d, w)];
     for (int32_t x = 0; x < w; ++x) {
-      double sum = 0;
-      for (int32_t d = -r; d <= r; ++d) sum += z[size_t(y) * w + at(x + d, w)];
-      rows[size_t(y) * w + x] = float(sum) * inv;
+      rows[size_t(y) * w + x] = float(sum * inv);
+      sum += double(row[at(x + r + 1, w)]) - row[at(x - r, w)];
     }
-#pragma omp parallel for schedule(static)
-  for (int32_t y = 0; y < h; ++y)
-    for (int32_t x = 0; x < w; ++x) {
-      double sum = 0;
-      for (int32_t d = -r; d <= r; ++d) sum += rows[size_t(at(y + d, h)) * w + x];
-      out[size_t(y) * w + x] = float(sum) * inv;
+  }
+  constexpr int32_t kBlock = 256;
+  const int32_t blocks = (w + kBlock - 1) / kBlock;
+#pragma omp parallel
+  {
+    std::vector<double> sum(kBlock);
+#pragma omp for schedule(static)
+    for (int32_t b = 0; b < blocks; ++b) {
+      const int32_t x0 = b * kBlock, len = std::min(w, x0 + kBlock) - x0;
+      std::fill(sum.begin(), sum.end(), 0.0);
+      for (int32_t d = -r; d <= r; ++d) {
+        const float* row = rows.data() + size_t(at(d, h)) * w + x0;
+        for (int32_t x = 0; x < len; ++x) sum[x] += row[x];
+      }
+      for (int32_t y = 0; y < h; ++y) {
+        float* dst = out.data() + size_t(y) * w + x0;
+        const float* add = rows.data() + size_t(at(y + r + 1, h)) * w + x0;
+        const float* sub = rows.data() + size_t(at(y - r, h)) * w + x0;
+        for (int32_t x = 0; x < len; ++x) {
+          dst[x] = float(sum[x] * inv);
+          sum[x] += double(add[x]) - sub[x];
+        }
+      }
     }
+  }
   return out;
+}
+
+// A deposit of mean depth d on a model cell, laid on the terrain's texture
+// below that cell (height z, the cell's mean `smooth`, the texture's spread
+// sd about it): sediment fills the texture's hollows first, so every sample
+// rises to at least a level smooth + sd x l, with l such that the mean rise
+// is d when the texture is normal: E[max(t, l)] - E[t] = d / sd for
+// t ~ N(0, 1), that is phi(l) + l Phi(l) = d / sd. A deep fill (d of a few
+// sd) buries the texture and leaves a plain, as the model's own cell has; a
+// thin one fills only the deepest hollows. Added as z + d instead, the
+// rock's texture stood on every filled lake of a final (the preview's plain
+// was smooth).
+float bury(float z, float smooth, double sd, double d) {
+  const double depth = d / sd;
+  if (!(sd > 0) || depth < 1e-3) return float(z + d);  // level below -3 sd: the texture stays
+  // Newton from l = depth (to the right of the root: the left side is
+  // convex and increasing, phi + l Phi > l), so it converges from above.
+  double l = depth;
+  for (int iter = 0; iter < 30; ++iter) {
+    const double phi = std::exp(-0.5 * l * l) / std::sqrt(2 * M_PI), cdf = 0.5 * std::erfc(-l / std::sqrt(2.0));
+    const double step = (phi + l * cdf - depth) / cdf;
+    l -= step;
+    if (step < 1e-6) break;
+  }
+  return std::max(z, float(smooth + sd * l));
 }
 
 struct Run {
@@ -143,6 +195,9 @@ struct Run {
   // Null: creep acts on z. Else creep acts on z - texture only: what the
   // run did, not the texture it started from (the detail run, see landscape()).
   const float* texture;
+  // Null, or each cell's change by creep, added up (the model's run: its
+  // change is resampled with the mask, see landscape()).
+  float* crept = nullptr;
 };
 
 // Evolves z for `years` in `steps` implicit steps (see the file comment).
@@ -159,8 +214,8 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
   FlowGraph graph;
   BasinGraph basins;
   const bool creep = c.fluvial.diffusion > 0;
-  std::vector<float> filled(n), start(n), cap(n), diffused((run.mask || run.texture) && creep ? n : 0),
-      plain(run.texture && creep ? n : 0);
+  std::vector<float> filled(n), start(n), cap(n), diffused(run.texture && creep ? n : 0),
+      plain(run.texture && creep ? n : 0), before_creep(run.crept && creep ? n : 0);
   std::vector<double> discharge(n), sediment(n);
   const int32_t sink = g.periodic ? periodic_sink(g, z) : -1;
   auto mask = [&](int32_t i) { return run.mask ? double(run.mask[i]) : 1.0; };
@@ -195,6 +250,7 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
 #pragma omp parallel for schedule(dynamic, 1) reduction(+ : carried_step, detached_step, deposited_step)
       for (int32_t ch = from; ch < to; ++ch) {
         const int32_t first = graph.chunk_start[ch], last = graph.chunk_start[ch + 1];
+        LakeFill lake(graph, filled.data(), start.data(), z, cell);
         for (int32_t k = last - 1; k >= first; --k) {  // discharge, donors first
           const int32_t i = graph.stack[k], r = graph.receiver[i];
           if (r != i) discharge[r] += discharge[i];
@@ -218,17 +274,32 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
           detached_step += lost;
           double load = sediment[i] + lost;
           sediment[i] = 0;
+          double laid = 0;
+          if (lake.under(i)) {
+            // A lake's cells pass what they get on to its exit, which
+            // settles the lake's share at once (LakeFill). The share is
+            // G, as on land: a lake traps what settles in still water and
+            // the rest stays in suspension and flows on (a lake that kept
+            // everything filled fBm's closed basins, on half its cells,
+            // into plains, and Badlands, "little sediment kept", kept the
+            // most).
+            if (r != i && lake.under(r) && filled[r] == filled[i]) {
+              sediment[r] += load;
+              continue;
+            }
+            laid = lake.fill(i, std::min(1.0, G) * load);
+          } else if (r != i) {
+            const double top = std::isinf(cap[i]) ? double(start[i]) : double(cap[i]);
+            const double share = std::min(1.0, G * own_rain / std::max(discharge[i], 1e-30));
+            laid = std::min(share * load, std::max(0.0, top - z[i]) * cell);
+            z[i] = float(z[i] + laid / cell);
+          }
+          deposited_step += laid;
           if (r == i) {  // a base level: the load leaves (a bounded edge stays where it is)
-            carried_step += load;
+            carried_step += load - laid;
             continue;
           }
-          const bool lake = filled[i] > start[i];  // under a lake before this step
-          const double top = lake ? double(filled[i]) : std::isinf(cap[i]) ? double(start[i]) : double(cap[i]);
-          const double share = lake ? 1.0 : std::min(1.0, G * own_rain / std::max(discharge[i], 1e-30));
-          const double laid = std::min(share * load, std::max(0.0, top - z[i]) * cell);
-          z[i] = float(z[i] + laid / cell);
-          deposited_step += laid;
-          sediment[r] += load - laid;
+          sediment[r] += std::max(0.0, load - laid);
           cap[r] = std::min(cap[r], float(z[i] - kFanSlope * graph.length[i]));
         }
       }
@@ -236,30 +307,37 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
     }
     carried += carried_step, detached += detached_step, deposited += deposited_step;
     if (creep) {
-      if (run.mask || run.texture) {
+      if (run.crept) std::copy(z, z + n, before_creep.begin());
+      // The mask scales each edge's flux: outside it creep neither fills a
+      // hollow nor rounds a crest (scaling creep's change instead let it
+      // fill the hollows of the masked-off land).
+      if (run.texture) {
         // With a texture, a deposit (above it) creeps as it lies: sediment
         // has no rock texture, and creep on its change would print the
         // texture of the bed it buried onto a filled lake's flat.
 #pragma omp parallel for schedule(static)
         for (int64_t i = 0; i < int64_t(n); ++i) {
-          diffused[i] = run.texture ? z[i] - run.texture[i] : z[i];
-          if (run.texture) plain[i] = z[i];
+          diffused[i] = z[i] - run.texture[i];
+          plain[i] = z[i];
         }
-        hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt);
-        if (run.texture) hillslope_diffusion(g, plain.data(), c.fluvial.diffusion * dt);
+        hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt, run.mask);
+        hillslope_diffusion(g, plain.data(), c.fluvial.diffusion * dt, run.mask);
+        // Added as a change (not assigned): the float rounding of the runs
+        // without a mask stays as it was.
 #pragma omp parallel for schedule(static)
-        for (int64_t i = 0; i < int64_t(n); ++i) {
-          const float next = !run.texture ? diffused[i] : z[i] > run.texture[i] ? plain[i] : diffused[i] + run.texture[i];
-          const float change = next - z[i];
-          z[i] += change < 0 && run.mask ? float(run.mask[i]) * change : change;
-        }
+        for (int64_t i = 0; i < int64_t(n); ++i)
+          z[i] += (z[i] > run.texture[i] ? plain[i] : diffused[i] + run.texture[i]) - z[i];
       } else {
-        hillslope_diffusion(g, z, c.fluvial.diffusion * dt);
+        hillslope_diffusion(g, z, c.fluvial.diffusion * dt, run.mask);
       }
       if (g.sea) {  // the sea floor stays (creep would spread the coast over it)
 #pragma omp parallel for schedule(static)
         for (int64_t i = 0; i < int64_t(n); ++i)
           if (g.sea[i]) z[i] = start[i];
+      }
+      if (run.crept) {
+#pragma omp parallel for schedule(static)
+        for (int64_t i = 0; i < int64_t(n); ++i) run.crept[i] += z[i] - before_creep[i];
       }
     }
     progress.report(double(step + 1) / steps);
@@ -304,7 +382,8 @@ void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* bu
   coarse.width = std::max(3, int32_t(std::lround((g.width - edge) / factor)) + edge);
   coarse.height = std::max(3, int32_t(std::lround((g.height - edge) / factor)) + edge);
   coarse.spacing = g.spacing * double(g.width - edge) / (coarse.width - edge);
-  std::vector<float> before = resample(box_mean(z, g, int32_t(factor / 2)).data(), g, coarse), after = before;
+  const std::vector<float> smooth = box_mean(z, g, int32_t(factor / 2));
+  std::vector<float> before = resample(smooth.data(), g, coarse), after = before;
   // The model's sea: its cells whose nearest terrain sample is sea (their
   // averaged heights mix in the coast, so the level would miss them).
   std::vector<uint8_t> coarse_sea;
@@ -323,19 +402,34 @@ void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* bu
   const std::vector<float> coarse_rain = resample_map(c.rain_map, coarse.width, coarse.height);
   // Shares of the bar: the model's run and the detail run cost about alike.
   const ProgressPart model_part(progress, 0.0, 0.5), detail_part(progress, 0.5, 0.5);
+  std::vector<float> crept(coarse_mask.empty() ? 0 : coarse.size(), 0.0f);
   evolve({coarse, c, coarse_mask.empty() ? nullptr : coarse_mask.data(),
-          coarse_rain.empty() ? nullptr : coarse_rain.data(), budget, true, nullptr},
+          coarse_rain.empty() ? nullptr : coarse_rain.data(), budget, true, nullptr, crept.empty() ? nullptr : crept.data()},
          after.data(), years, steps_for(coarse, c, years, kMaxSteps), 0, model_part.progress());
   for (size_t i = 0; i < after.size(); ++i) after[i] -= before[i];
   const std::vector<float> change = resample(after.data(), coarse, g);
-  // The resampled change lowers only inside the mask (it blurs across the
-  // mask's edge), never lifts a cell above the input's highest, and leaves
-  // the sea as it is (it blurs across the coast too).
+  const std::vector<float> crept_here = crept.empty() ? std::vector<float>() : resample(crept.data(), coarse, g);
+  // The texture's spread below the model's cell (see bury).
+  std::vector<float> spread(n);
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < int64_t(n); ++i) spread[i] = (z[i] - smooth[i]) * (z[i] - smooth[i]);
+  spread = box_mean(spread.data(), g, int32_t(factor / 2));
+  // The resampled change blurs across the mask's edge (the model samples the
+  // mask coarser): creep and what lowers are scaled by the terrain's own
+  // mask, so where it is 0 the land only rises, where sediment was laid
+  // (a creeping model node, blurred onto the masked-off column beside it,
+  // raised it by up to 0.12). Where it rises it buries the texture; it
+  // never lifts a cell above the input's highest, and leaves the sea as it
+  // is (it blurs across the coast too).
 #pragma omp parallel for schedule(static)
   for (int64_t i = 0; i < int64_t(n); ++i) {
     if (g.in_sea(size_t(i))) continue;
-    const float d = change[i] < 0 && mask_or_null ? change[i] * mask_or_null[i] : change[i];
-    z[i] = std::min(top, z[i] + d);
+    float d = change[i];
+    if (mask_or_null) {
+      const float rest = d - crept_here[i];  // detachment, scree and deposits
+      d = mask_or_null[i] * crept_here[i] + (rest < 0 ? mask_or_null[i] * rest : rest);
+    }
+    z[i] = std::min(top, d > 0 ? bury(z[i], smooth[i], std::sqrt(spread[i]), d) : z[i] + d);
   }
   const double detail_years = years * g.spacing / coarse.spacing;
   // No talus here: a fractal's slopes steepen as its cell shrinks, so the
