@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "fracterra/fracterra.h"
@@ -90,6 +91,34 @@ TEST(SplatCapi, BadRulesFilesAreRefusedWithWhatIsWrong) {
   EXPECT_EQ(ft_splat_rules_read(nullptr, &rules), FT_ERR_INVALID_ARGUMENT);
   int32_t n = 0;
   EXPECT_EQ(ft_splat_rules_layers(nullptr, nullptr, 0, &n), FT_ERR_INVALID_ARGUMENT);
+}
+
+TEST(SplatCapi, LinearRgbaRefusesBadArgumentsNamingThemAndCancels) {
+  // ft_splat_colors_linear_rgba (ABI 2.25) checks what ctypes hands it: the
+  // output and its size, the thread count; a callback's non-zero cancels.
+  int32_t n = 0;
+  ASSERT_EQ(ft_splat_default_layers(nullptr, 0, &n), FT_OK);
+  std::vector<ft_splat_params> layers(static_cast<size_t>(n));
+  for (auto& l : layers) l.struct_size = sizeof(ft_splat_params);
+  ASSERT_EQ(ft_splat_default_layers(layers.data(), n, &n), FT_OK);
+  ft_heightfield* hf = nullptr;
+  const std::vector<float> z = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+  ASSERT_EQ(ft_heightfield_create(3, 3, z.data(), &hf), FT_OK);
+  std::vector<float> rgba(36);
+  auto call = [&](int32_t threads, ft_progress_fn progress, float* out, size_t count) {
+    return ft_splat_colors_linear_rgba(hf, nullptr, nullptr, layers.data(), n, threads, progress, nullptr, out, count);
+  };
+  EXPECT_EQ(call(0, nullptr, rgba.data(), rgba.size()), FT_OK) << ft_last_error();
+  EXPECT_EQ(rgba[3], 1.0f);
+  for (auto [threads, out, count, said] :
+       {std::tuple{0, rgba.data(), size_t(35), "rgba holds 35 values; it needs 36"},
+        std::tuple{0, static_cast<float*>(nullptr), size_t(36), "rgba"}, std::tuple{-1, rgba.data(), size_t(36), "threads"},
+        std::tuple{1025, rgba.data(), size_t(36), "threads"}}) {
+    EXPECT_EQ(call(threads, nullptr, out, count), FT_ERR_INVALID_ARGUMENT) << said;
+    EXPECT_NE(std::string(ft_last_error()).find(said), std::string::npos) << ft_last_error();
+  }
+  EXPECT_EQ(call(1, [](void*, double) -> int32_t { return 1; }, rgba.data(), rgba.size()), FT_ERR_CANCELLED);
+  ft_heightfield_free(hf);
 }
 
 }  // namespace

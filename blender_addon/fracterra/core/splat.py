@@ -12,6 +12,7 @@ from ctypes import POINTER, byref, c_float, c_int32, c_void_p
 import numpy as np
 
 from .binding import library
+from .terrain import _ProgressBridge
 
 
 class Rules:
@@ -84,6 +85,25 @@ def colors(terrain, rules=None, deposited=None, drainage_area=None):
     lib.check(lib.ft_splat_colors(terrain.handle, deposited.handle if deposited else None,
                                   drainage_area.handle if drainage_area else None, rules.layers, rules.count,
                                   out.ctypes.data_as(POINTER(c_float)), out.size))
+    return out
+
+
+def linear_rgba(terrain, rules=None, deposited=None, drainage_area=None, threads=0, progress=None):
+    """colors() decoded to linear RGB by the library, with alpha 1: an (n * 4,)
+    float32 array in the samples' order, as Blender's colour attributes take
+    it (ft_splat_colors_linear_rgba, ABI 2.25). threads: 0 for all cores.
+    progress: None or callable(fraction) -> True to cancel (raises
+    CancelledError)."""
+    lib = library()
+    rules = rules if rules is not None else default_rules()
+    out = np.empty(terrain.width * terrain.height * 4, dtype=np.float32)
+    bridge = _ProgressBridge(progress)
+    status = lib.ft_splat_colors_linear_rgba(terrain.handle, deposited.handle if deposited else None,
+                                             drainage_area.handle if drainage_area else None, rules.layers,
+                                             rules.count, threads, bridge.c_fn, None,
+                                             out.ctypes.data_as(POINTER(c_float)), out.size)
+    bridge.reraise()
+    lib.check(status)
     return out
 
 

@@ -76,7 +76,9 @@ extern "C" {
 ///      ft_planet_spectrum_hurst).
 /// 2.24: ft_build_features, ft_has_feature and ft_heightfield_formats: what this build has
 ///      (the Windows build has no GDAL, OpenEXR or OpenSubdiv; docs/windows.md).
-#define FT_ABI_VERSION_MINOR 24
+/// 2.25: ft_splat_colors_linear_rgba (splat.h): the colour map as Blender's colour attribute
+///      takes it, with progress and cancel.
+#define FT_ABI_VERSION_MINOR 25
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.

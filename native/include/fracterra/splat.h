@@ -68,6 +68,17 @@ FT_API ft_status ft_splat_colors(const ft_heightfield* terrain, const ft_heightf
                                  const ft_heightfield* drainage_area, const ft_splat_params* layers,
                                  int32_t layer_count, float* rgb, size_t rgb_count);
 
+/// The colour map as renderers that light in linear light take it (Blender's colour
+/// attributes): ft_splat_colors' colours decoded to linear RGB (IEC 61966-2-1), with alpha 1,
+/// width * height * 4 floats into `rgba` (ABI 2.25). Rows in parallel on up to `threads`
+/// threads (0: all cores; 0..1024), the same bits on any count. `progress` (may be NULL) hears
+/// the share of rows done from the calling thread; non-zero cancels (FT_ERR_CANCELLED; `rgba`
+/// is then partly written).
+FT_API ft_status ft_splat_colors_linear_rgba(const ft_heightfield* terrain, const ft_heightfield* deposited,
+                                            const ft_heightfield* drainage_area, const ft_splat_params* layers,
+                                            int32_t layer_count, int32_t threads, ft_progress_fn progress,
+                                            void* progress_user, float* rgba, size_t rgba_count);
+
 /// A rule set read from a rules JSON file ({"layers": [{"name": ..., fields of ft_splat_params}]}),
 /// checked as `fracterra splat --rules` checks it (ABI 2.22), so every front end refuses the same
 /// files with the same message (file, layer and field named).

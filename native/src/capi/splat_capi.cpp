@@ -112,4 +112,18 @@ FT_API ft_status ft_splat_colors(const ft_heightfield* terrain, const ft_heightf
   });
 }
 
+FT_API ft_status ft_splat_colors_linear_rgba(const ft_heightfield* terrain, const ft_heightfield* deposited,
+                                            const ft_heightfield* drainage_area, const ft_splat_params* layers,
+                                            int32_t layer_count, int32_t threads, ft_progress_fn progress,
+                                            void* progress_user, float* rgba, size_t rgba_count) {
+  return guarded([&] {
+    const auto in = inputs_of(terrain, deposited, drainage_area);
+    ft::check_not_null("rgba", rgba);
+    check_count("rgba", rgba_count, terrain->hf.size() * 4);
+    ft::check_int_range("threads", threads, 0, 1024);
+    ft::splat::splat_colors_linear_rgba(in, layers, layer_count, threads, ft::Progress(progress, progress_user),
+                                        rgba);
+  });
+}
+
 }  // extern "C"

@@ -153,7 +153,18 @@ void hydraulic(const D8Grid& g, float* z, const HydraulicConfig& c, float* water
 void thermal(const D8Grid& g, float* z, const ThermalConfig& c, const Progress& progress);
 
 // Slope and curvature by central differences (one-sided at bounded edges).
-void slope_curvature(const D8Grid& g, const float* z, float* slope, float* curvature);
+// `progress` hears each quarter of the rows.
+void slope_curvature(const D8Grid& g, const float* z, float* slope, float* curvature,
+                     const Progress& progress = Progress());
+
+// The maps of `out`, eroded from `in` (terrain_maps.cpp): drainage area,
+// slope, curvature, and the eroded and deposited depths against `in` plus
+// `lifted` (the uplift the run added to each cell; empty: none), into
+// `maps` (allocated, of the grid's size; water_depth is left as it is). The
+// same bits on any thread count. `progress` rises in steps of at most about
+// a 30th of it; a cancel stops it (FT_ERR_CANCELLED).
+void erosion_maps(const D8Grid& g, const float* in, const float* out, const std::vector<float>& lifted,
+                  ErosionMaps& maps, const Progress& progress);
 
 // The whole pipeline: returns the eroded terrain; fills `maps` if not null.
 Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* maps, MassBudget* budget = nullptr);

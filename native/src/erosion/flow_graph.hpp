@@ -94,6 +94,18 @@ void accumulate_area(const D8Grid& g, const FlowGraph& graph, std::vector<double
 int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* random = nullptr,
                          const Progress& progress = Progress());
 
+// What fill_depressions does without `random` (every depression raised to
+// its lowest spill plus a float step per cell, so every cell that is not a
+// base level then has a strictly lower neighbour), visiting only the cells
+// that do not drain already: those with a strictly falling path to a base
+// level are found first, breadth first, and stay as they are (as in
+// fill_depressions); the flood starts from them. Equal heights may be taken
+// in another order than fill_depressions takes them, so a flat may be
+// graded differently. On an eroded 4097^2 terrain, where 56% of the cells
+// drain, it takes about half the time. Returns the number of cells raised;
+// `progress` hears both parts.
+int64_t fill_closed_basins(const D8Grid& g, float* z, int32_t sink, const Progress& progress = Progress());
+
 // Fills the depression of every pit of the last routing, one at a time in
 // index order, by a Priority-Flood+epsilon restricted to that depression: a
 // flood from the pit finds the lowest spill cell (one with a lower cell

@@ -14,6 +14,7 @@
 
 #include <vector>
 
+#include "core/progress.hpp"
 #include "erosion/d8_grid.hpp"
 
 namespace ft::erosion {
@@ -25,7 +26,9 @@ namespace ft::erosion {
 // levels' areas sum to the grid's area. Cells are visited once each in
 // topological order (a cell after all its higher neighbours), each summing
 // what its higher neighbours give in a fixed order: the result is the same
-// on any thread count.
-void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vector<double>& area);
+// on any thread count. `progress` hears the share done, every 64th of the
+// cells, from the calling thread; a cancel stops it (FT_ERR_CANCELLED).
+void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vector<double>& area,
+                        const Progress& progress = Progress());
 
 }  // namespace ft::erosion

@@ -69,6 +69,73 @@ int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* r
   return raised_cells;
 }
 
+int64_t fill_closed_basins(const D8Grid& g, float* z, int32_t sink, const Progress& progress) {
+  // 1. The cells that drain as they are: breadth first from the base levels
+  //    up every strictly rising step. A drained cell with a neighbour not
+  //    (yet) reached that is not above it is a seed of the flood: every cell
+  //    the flood must visit borders one (a neighbour above a drained cell is
+  //    reached from it), and a seed whose neighbours all drain in the end is
+  //    taken out with nothing left to do.
+  const size_t n = g.size();
+  std::vector<uint8_t> closed(n, 0);
+  std::vector<int32_t> queue, seeds;
+  queue.reserve(n);
+  for (const int32_t o : outlet_cells(g, sink))
+    if (!closed[o]) {
+      closed[o] = 1;
+      queue.push_back(o);
+    }
+  // The bar, in the time of a flooded cell: a drained one costs a fifth of
+  // it (4097^2: 0.45 s of CPU for 9.4 M drained cells, 1.8 s for the flood
+  // of the other 7.3 M). While the pass runs, the cells it has not reached
+  // are counted as flooded: the share done only rises, and ends where the
+  // flood's part starts.
+  constexpr double kDrainedCost = 0.2;
+  auto drained_share = [&](size_t drained) {
+    return kDrainedCost * double(drained) / (kDrainedCost * double(drained) + double(n - drained));
+  };
+  const size_t every = std::max<size_t>(n / 64, size_t(1) << 12);
+  for (size_t head = 0, next_report = every; head < queue.size(); ++head) {
+    if (head == next_report) {
+      progress.report(drained_share(head));
+      next_report += every;
+    }
+    const int32_t c = queue[head];
+    const int32_t cx = c % g.width, cy = c / g.width;
+    bool seed = false;
+    for (int k = 0; k < 8; ++k) {
+      const int64_t j = g.neighbour(cx, cy, k);
+      if (j < 0 || closed[j]) continue;
+      if (z[j] > z[c]) {
+        closed[j] = 1;
+        queue.push_back(int32_t(j));
+      } else {
+        seed = true;
+      }
+    }
+    if (seed) seeds.push_back(c);
+  }
+  const double flood_start = drained_share(queue.size());
+  progress.report(flood_start);
+  std::vector<int32_t>().swap(queue);
+  // 2. Priority-Flood+epsilon from the seeds over the rest: what
+  //    fill_depressions does there (it never raises a drained cell), with
+  //    the drained cells' heap traffic saved.
+  for (const int32_t s : seeds) closed[s] = 0;
+  int64_t raised_cells = 0;
+  const ProgressPart flood(progress, flood_start, 1.0 - flood_start);
+  priority_flood(
+      g, seeds, z,
+      [&](int32_t c, int32_t j) {
+        if (z[j] > z[c]) return false;
+        z[j] = raised(z[c], nullptr, j);
+        ++raised_cells;
+        return true;
+      },
+      flood.progress(), std::move(closed));
+  return raised_cells;
+}
+
 void fill_pits_locally(const D8Grid& g, float* z, int32_t sink, FlowGraph& graph) {
   const size_t n = g.size();
   if (graph.seen.size() != n) {

@@ -7,6 +7,7 @@
 // inside depressions). What a visit does to a cell is the caller's step.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -45,15 +46,19 @@ inline std::vector<int32_t> outlet_cells(const D8Grid& g, int32_t sink) {
 // step(c, j) updates j and returns true to queue it in the FIFO (a cell
 // raised just above c) or false to queue it in the heap at key[j], read
 // after the step. Keys taken out never decrease (the radix heap's rule): a
-// step may only raise key[j] to at least key[c]. `progress` hears the share
-// of the grid's cells taken out every 2^20 cells (a 4097^2 grid's flood
-// takes seconds: the bar moves and a cancel is seen inside it).
+// step may only raise key[j] to at least key[c]. `closed`: empty, or one
+// flag per cell, non-zero for cells the flood must not visit (the seeds'
+// flags 0); the flood flags what it takes. `progress` hears the share of
+// the cells to take that are taken, every 64th of the grid (2^12 cells at
+// least: a 4097^2 grid's flood takes seconds, so the bar moves and a
+// cancel is seen inside it; every 2^20 cells, its steps were 6% of it).
 template <class Step>
 void priority_flood(const D8Grid& g, const std::vector<int32_t>& seeds, const float* key, Step&& step,
-                    const Progress& progress = Progress()) {
-  constexpr size_t kReportEvery = size_t(1) << 20;
-  size_t taken = 0;
-  std::vector<uint8_t> closed(g.size(), 0);
+                    const Progress& progress = Progress(), std::vector<uint8_t> closed = {}) {
+  const size_t every = std::max<size_t>(g.size() / 64, size_t(1) << 12);
+  size_t taken = 0, next_report = every, cells = g.size();
+  if (closed.empty()) closed.assign(g.size(), 0);
+  else cells = size_t(std::count(closed.begin(), closed.end(), uint8_t(0)));
   RadixHeap open;
   std::vector<int32_t> fifo;  // taken from `head`; emptied when all are taken
   size_t head = 0;
@@ -70,7 +75,10 @@ void priority_flood(const D8Grid& g, const std::vector<int32_t>& seeds, const fl
     } else {
       c = open.pop();
     }
-    if (++taken % kReportEvery == 0) progress.report(double(taken) / double(g.size()));
+    if (++taken == next_report) {
+      progress.report(double(taken) / double(cells));
+      next_report += every;
+    }
     const int32_t cx = c % g.width, cy = c / g.width;
     for (int k = 0; k < 8; ++k) {
       const int64_t j = g.neighbour(cx, cy, k);

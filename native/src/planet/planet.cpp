@@ -1,14 +1,11 @@
 #include "planet/planet.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
-#include "core/parallel.hpp"
 #include "planet/cube_sampler.hpp"
 
 namespace ft::planet {
@@ -86,32 +83,6 @@ float Planet::height(double x, double y, double z) const {
   float out;
   heights(1, &x, &y, &z, &out);
   return out;
-}
-
-void for_rows(int64_t count, int threads, const Progress& progress, const std::function<void(int64_t)>& row) {
-  const int team = resolve_threads(threads);
-  std::atomic<int64_t> done{0};
-  std::atomic<bool> stop{false};
-  std::exception_ptr error;
-#pragma omp parallel num_threads(team)
-  {
-    const bool caller = omp_get_thread_num() == 0;
-#pragma omp for schedule(dynamic, 1)
-    for (int64_t k = 0; k < count; ++k) {
-      if (stop.load(std::memory_order_relaxed)) continue;
-      try {
-        row(k);
-        const int64_t d = done.fetch_add(1, std::memory_order_relaxed) + 1;
-        if (caller) progress.report(double(d) / double(count));
-      } catch (...) {
-#pragma omp critical(ft_planet_rows)
-        if (!error) error = std::current_exception();
-        stop.store(true);
-      }
-    }
-  }
-  if (error) std::rethrow_exception(error);
-  progress.report(1.0);
 }
 
 void fill_rows(int32_t w, int32_t h, int threads, const Progress& progress,

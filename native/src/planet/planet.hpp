@@ -14,6 +14,7 @@
 #include <limits>
 
 #include "core/buffer.hpp"
+#include "core/parallel_rows.hpp"
 #include "core/progress.hpp"
 #include "noise/fbm3.hpp"
 #include "planet/midpoint_sphere.hpp"
@@ -74,13 +75,8 @@ class Planet {
   double sea_ = std::numeric_limits<double>::quiet_NaN();
 };
 
-// Runs row(k) for k in 0..count-1 in parallel; each must depend on k alone
-// and write only its own outputs, so the result is the same on any thread
-// count. Progress (k rows done of count) is reported by the calling thread
-// after each of its rows, then 1; a cancellation stops the rest and is
-// rethrown.
-void for_rows(int64_t count, int threads, const Progress& progress, const std::function<void(int64_t)>& row);
-// for_rows over h rows of w floats: row(y, out) writes row y's w floats.
+// for_rows (core/parallel_rows.hpp) over h rows of w floats: row(y, out)
+// writes row y's w floats.
 void fill_rows(int32_t w, int32_t h, int threads, const Progress& progress,
                const std::function<void(int32_t, float*)>& row, float* data);
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/parallel_rows.hpp"
 #include "splat/splat_params.hpp"
 
 namespace ft::splat {
@@ -66,52 +67,91 @@ double band(double x, double lo, double hi, double blend) {
   return rise(x, lo, blend) * rise(-x, -hi, blend);
 }
 
-std::vector<float> layer_fractions(const SplatInputs& in, const ft_splat_params* given, int32_t n) {
+namespace {
+
+// What every sample's rules read, checked and worked out once.
+struct Rules {
+  const SplatInputs& in;
+  std::vector<ft_splat_params> layers;
+  std::vector<double> log_flow_min;  // per layer: log10 of its flow_min (a log per sample was 5% of the time)
+  double low = 0, range = 0;  // the terrain's lowest height and its relief
+  double spacing = 1, area = 1;
+};
+
+Rules rules_of(const SplatInputs& in, const ft_splat_params* given, int32_t n) {
   check_not_null("terrain", in.terrain);
   validate_layers(given, n);
   const Heightfield& hf = *in.terrain;
   check_map("deposited", in.deposited, hf);
   check_map("drainage_area", in.drainage_area, hf);
-  std::vector<ft_splat_params> layers(static_cast<size_t>(n));
-  for (int32_t k = 0; k < n; ++k) layers[size_t(k)] = upgraded(splat_param_table(), given[k]);
+  Rules r{in, std::vector<ft_splat_params>(static_cast<size_t>(n))};
+  for (int32_t k = 0; k < n; ++k) {
+    r.layers[size_t(k)] = upgraded(splat_param_table(), given[k]);
+    r.log_flow_min.push_back(std::log10(r.layers[size_t(k)].flow_min));
+  }
   const HeightStats s = hf.stats();
-  const double range = s.max - s.min;
-  const double spacing = hf.world_size() > 0 && hf.width() > 1 ? hf.world_size() / (hf.width() - 1) : 1.0;
-  const double area = spacing * spacing * double(hf.width() - 1) * double(std::max(hf.height() - 1, 1));
-  const int32_t w = hf.width(), h = hf.height();
-  std::vector<float> out(size_t(w) * size_t(h) * size_t(n));
-#pragma omp parallel for schedule(static)
-  for (int32_t y = 0; y < h; ++y) {
-    std::vector<double> wk(static_cast<size_t>(n));
-    for (int32_t x = 0; x < w; ++x) {
-      const size_t i = size_t(y) * size_t(w) + size_t(x);
-      const double height = range > 0 ? (hf.at(x, y) - s.min) / range : 0.0;
-      const double slope = slope_degrees(hf, x, y, spacing);
-      const double deposit = in.deposited && range > 0 ? in.deposited->data()[i] / range : 0.0;
-      // Flow compared on a log scale: drainage areas span cells to the whole map.
-      const double flow = in.drainage_area ? std::log10(std::max(double(in.drainage_area->data()[i]) / area, 1e-30))
-                                           : -30.0;
-      double sum = 0;
-      for (int32_t k = 0; k < n; ++k) {
-        const ft_splat_params& l = layers[size_t(k)];
-        double v = l.weight * band(height, l.height_min, l.height_max, l.height_blend) *
-                   band(slope, l.slope_min, l.slope_max, l.slope_blend);
-        const bool by_deposit = l.deposit_min > 0, by_flow = l.flow_min > 0;
-        if (by_deposit || by_flow)
-          v *= std::max(by_deposit ? rise(deposit, l.deposit_min, l.deposit_blend) : 0.0,
-                        by_flow ? rise(flow, std::log10(l.flow_min), l.flow_blend) : 0.0);
-        wk[size_t(k)] = v;
-        sum += v;
-      }
-      float* f = out.data() + i * size_t(n);
-      if (!(sum > 0)) {
-        f[0] = 1.0f;
-        for (int32_t k = 1; k < n; ++k) f[k] = 0.0f;
-      } else {
-        for (int32_t k = 0; k < n; ++k) f[k] = float(wk[size_t(k)] / sum);
-      }
+  r.low = s.min, r.range = s.max - s.min;
+  r.spacing = hf.world_size() > 0 && hf.width() > 1 ? hf.world_size() / (hf.width() - 1) : 1.0;
+  r.area = r.spacing * r.spacing * double(hf.width() - 1) * double(std::max(hf.height() - 1, 1));
+  return r;
+}
+
+// The layers' fractions of the samples of row y: width * n floats.
+void row_fractions(const Rules& r, int32_t y, float* out) {
+  const Heightfield& hf = *r.in.terrain;
+  const int32_t w = hf.width(), n = int32_t(r.layers.size());
+  double wk[kMaxLayers];
+  for (int32_t x = 0; x < w; ++x) {
+    const size_t i = size_t(y) * size_t(w) + size_t(x);
+    const double height = r.range > 0 ? (hf.at(x, y) - r.low) / r.range : 0.0;
+    const double slope = slope_degrees(hf, x, y, r.spacing);
+    const double deposit = r.in.deposited && r.range > 0 ? r.in.deposited->data()[i] / r.range : 0.0;
+    // Flow compared on a log scale: drainage areas span cells to the whole map.
+    const double flow =
+        r.in.drainage_area ? std::log10(std::max(double(r.in.drainage_area->data()[i]) / r.area, 1e-30)) : -30.0;
+    double sum = 0;
+    for (int32_t k = 0; k < n; ++k) {
+      const ft_splat_params& l = r.layers[size_t(k)];
+      double v = l.weight * band(height, l.height_min, l.height_max, l.height_blend) *
+                 band(slope, l.slope_min, l.slope_max, l.slope_blend);
+      const bool by_deposit = l.deposit_min > 0, by_flow = l.flow_min > 0;
+      if (by_deposit || by_flow)
+        v *= std::max(by_deposit ? rise(deposit, l.deposit_min, l.deposit_blend) : 0.0,
+                      by_flow ? rise(flow, r.log_flow_min[size_t(k)], l.flow_blend) : 0.0);
+      wk[k] = v;
+      sum += v;
+    }
+    float* f = out + size_t(x) * size_t(n);
+    if (!(sum > 0)) {
+      f[0] = 1.0f;
+      for (int32_t k = 1; k < n; ++k) f[k] = 0.0f;
+    } else {
+      for (int32_t k = 0; k < n; ++k) f[k] = float(wk[k] / sum);
     }
   }
+}
+
+// The layers' colours mixed by a sample's fractions `f`: sRGB 0..1.
+void mix(const Rules& r, const float* f, float* rgb) {
+  const int32_t n = int32_t(r.layers.size());
+  for (int c = 0; c < 3; ++c) {
+    double v = 0;
+    for (int32_t k = 0; k < n; ++k) v += double(f[k]) * r.layers[size_t(k)].color[c];
+    rgb[c] = float(std::clamp(v, 0.0, 1.0));
+  }
+}
+
+// IEC 61966-2-1's decoding of an sRGB value 0..1.
+float linear_from_srgb(float c) { return float(c <= 0.04045f ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4)); }
+
+}  // namespace
+
+std::vector<float> layer_fractions(const SplatInputs& in, const ft_splat_params* given, int32_t n) {
+  const Rules r = rules_of(in, given, n);
+  const int32_t w = in.terrain->width(), h = in.terrain->height();
+  std::vector<float> out(size_t(w) * size_t(h) * size_t(n));
+#pragma omp parallel for schedule(static)
+  for (int32_t y = 0; y < h; ++y) row_fractions(r, y, out.data() + size_t(y) * size_t(w) * size_t(n));
   return out;
 }
 
@@ -161,25 +201,46 @@ std::vector<uint16_t> splat_weights(const SplatInputs& in, const ft_splat_params
 }
 
 std::vector<float> splat_colors(const SplatInputs& in, const ft_splat_params* given, int32_t n) {
-  const std::vector<float> f = layer_fractions(in, given, n);
-  std::vector<ft_splat_params> layers(static_cast<size_t>(n));
-  for (int32_t k = 0; k < n; ++k) layers[size_t(k)] = upgraded(splat_param_table(), given[k]);
-  const size_t samples = f.size() / size_t(n);
-  std::vector<float> rgb(samples * 3);
+  const Rules r = rules_of(in, given, n);
+  const int32_t w = in.terrain->width(), h = in.terrain->height();
+  std::vector<float> rgb(size_t(w) * size_t(h) * 3);
 #pragma omp parallel for schedule(static)
-  for (int64_t i = 0; i < int64_t(samples); ++i)
-    for (int c = 0; c < 3; ++c) {
-      double v = 0;
-      for (int32_t k = 0; k < n; ++k) v += double(f[size_t(i) * size_t(n) + size_t(k)]) * layers[size_t(k)].color[c];
-      rgb[size_t(i) * 3 + size_t(c)] = float(std::clamp(v, 0.0, 1.0));
-    }
+  for (int32_t y = 0; y < h; ++y) {
+    std::vector<float> f(size_t(w) * size_t(n));
+    row_fractions(r, y, f.data());
+    for (int32_t x = 0; x < w; ++x)
+      mix(r, f.data() + size_t(x) * size_t(n), rgb.data() + (size_t(y) * size_t(w) + size_t(x)) * 3);
+  }
   return rgb;
 }
 
 std::vector<float> splat_colors_linear(const SplatInputs& in, const ft_splat_params* layers, int32_t n) {
   std::vector<float> rgb = splat_colors(in, layers, n);
-  for (float& c : rgb) c = float(c <= 0.04045f ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+  for (float& c : rgb) c = linear_from_srgb(c);
   return rgb;
+}
+
+void splat_colors_linear_rgba(const SplatInputs& in, const ft_splat_params* given, int32_t n, int threads,
+                              const Progress& progress, float* rgba) {
+  const Rules r = rules_of(in, given, n);
+  const int32_t w = in.terrain->width();
+  for_rows(in.terrain->height(), threads, progress, [&](int64_t y) {
+    std::vector<float> f(size_t(w) * size_t(n));
+    row_fractions(r, int32_t(y), f.data());
+    // The last value each channel decoded: where one layer covers the
+    // ground (most of a terrain), neighbours repeat it, and the decoding's
+    // pow was the largest part of the time.
+    float last_in[3] = {-1.0f, -1.0f, -1.0f}, last_out[3] = {0.0f, 0.0f, 0.0f};
+    for (int32_t x = 0; x < w; ++x) {
+      float* out = rgba + (size_t(y) * size_t(w) + size_t(x)) * 4;
+      mix(r, f.data() + size_t(x) * size_t(n), out);
+      for (int c = 0; c < 3; ++c) {
+        if (out[c] != last_in[c]) last_in[c] = out[c], last_out[c] = linear_from_srgb(out[c]);
+        out[c] = last_out[c];
+      }
+      out[3] = 1.0f;
+    }
+  });
 }
 
 }  // namespace ft::splat

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/heightfield.hpp"
+#include "core/progress.hpp"
 #include "fracterra/splat.h"
 
 namespace ft::splat {
@@ -45,8 +46,14 @@ std::vector<uint16_t> splat_weights(const SplatInputs& in, const ft_splat_params
 std::vector<float> splat_colors(const SplatInputs& in, const ft_splat_params* layers, int32_t n);
 
 // The same colours in linear RGB (IEC 61966-2-1 decoding), for renderers that
-// light in linear light: the POV-Ray scenes' terrain colours (and Blender's
-// colour attribute, decoded alike by the add-on).
+// light in linear light: the POV-Ray scenes' terrain colours.
 std::vector<float> splat_colors_linear(const SplatInputs& in, const ft_splat_params* layers, int32_t n);
+
+// splat_colors_linear's colours with alpha 1, four floats per sample into
+// `rgba` (width * height * 4): Blender's colour attribute. Rows in parallel
+// on up to `threads` threads (0: all cores), the same bits on any count;
+// `progress` hears the share of rows done and may cancel.
+void splat_colors_linear_rgba(const SplatInputs& in, const ft_splat_params* layers, int32_t n, int threads,
+                              const Progress& progress, float* rgba);
 
 }  // namespace ft::splat

@@ -42,23 +42,23 @@ def rules_of(values):
 
 # --- in the job's worker thread (no bpy here)
 
-def linear_colors(hf, rules, maps=None):
+def linear_colors(hf, rules, maps=None, threads=0, progress=None):
     """Linear RGBA per sample of library heightfield `hf` (float32, 4 per
-    sample, rows as in hf) by `rules`; maps: the pipeline's erosion maps
-    ({name: array.array('f')} in world units) or None (uneroded: the deposit
-    and flow conditions see none)."""
+    sample, rows as in hf) by `rules`, decoded by the library
+    (core.splat.linear_rgba); maps: the pipeline's erosion maps ({name:
+    array.array('f')} in world units) or None (uneroded: the deposit and flow
+    conditions see none). progress: None or callable(fraction) -> True to
+    cancel (raises CancelledError)."""
     extra = {}
     try:
         for name in ("deposited", "drainage_area"):
             if maps is not None and name in maps:
                 extra[name] = core.Heightfield.from_values(hf.width, hf.height, maps[name])
-        srgb = splat.colors(hf, rules, extra.get("deposited"), extra.get("drainage_area"))
+        return splat.linear_rgba(hf, rules, extra.get("deposited"), extra.get("drainage_area"), threads=threads,
+                                 progress=progress)
     finally:
         for m in extra.values():
             m.close()
-    rgba = np.ones((srgb.shape[0], 4), dtype=np.float32)
-    rgba[:, :3] = splat.linear_from_srgb(srgb)
-    return rgba.ravel()
 
 
 # --- in the main thread (build steps)
