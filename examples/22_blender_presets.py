@@ -164,9 +164,10 @@ def main():
         side = math.isqrt(n)
         if side * side == n:  # its grid gets the same height and slope attributes, for the same material
             from fracterra.blender.build import mesh as mesh_build
+            from fracterra.core.grid import height_slope
             co = mesh_build.array.array("f", [0.0]) * (3 * n)
             obj.data.vertices.foreach_get("co", co)
-            mesh_build.set_height_slope(obj.data, co, side, side)
+            mesh_build.set_height_slope(obj.data, *height_slope(co, side, side))
         xs = [v.co.x for v in obj.data.vertices]
         size = max(xs) - min(xs)
         lo, hi = frame_and_render(obj, size, None, args, out / "ant-landscape-default.png", material)
