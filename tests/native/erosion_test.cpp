@@ -19,6 +19,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "progress_log.hpp"
 #include "core/error.hpp"
 #include "core/rng.hpp"
 #include "erosion/drainage_stats.hpp"
@@ -35,7 +36,9 @@
 namespace ft::erosion {
 namespace {
 
+using test::expect_rises_to_one_in_small_steps;
 using test::fbm_terrain;
+using test::ProgressLog;
 
 // An fBm terrain as the routing sees it: its grid, its heights (a copy to
 // fill or route) and its outlet on a torus (-1 bounded).
@@ -292,17 +295,6 @@ bool same_maps(const ErosionMaps& a, const ErosionMaps& b) {
   return true;
 }
 
-struct ProgressLog {
-  std::vector<double> seen;
-  double cancel_from = 2.0;  // the first fraction at or above it cancels
-  size_t cancelled_at = 0;   // its number (1-based), 0: none yet
-  static int32_t call(void* user, double f) {
-    auto* log = static_cast<ProgressLog*>(user);
-    log->seen.push_back(f);
-    if (log->cancelled_at == 0 && f >= log->cancel_from) log->cancelled_at = log->seen.size();
-    return log->cancelled_at != 0;
-  }
-};
 
 TEST(ErosionMaps, ReportInSmallStepsToOneAndChangeNoBits) {
   // The maps of a 4097^2 Land run took 8-10 s after the last model step
@@ -319,15 +311,7 @@ TEST(ErosionMaps, ReportInSmallStepsToOneAndChangeNoBits) {
   omp_set_num_threads(1);
   ProgressLog log;
   const ErosionMaps reported = maps_of(in, out, Progress(&ProgressLog::call, &log));
-  ASSERT_GE(log.seen.size(), 40u);
-  EXPECT_EQ(log.seen.back(), 1.0);
-  double before = 0.0, widest = 0.0;
-  for (double f : log.seen) {
-    EXPECT_GE(f, before);
-    widest = std::max(widest, f - before);
-    before = f;
-  }
-  EXPECT_LE(widest, 0.05);
+  expect_rises_to_one_in_small_steps(log, 40, 0.05);
   omp_set_num_threads(2);
   EXPECT_TRUE(same_maps(maps_of(in, out, Progress()), reported)) << "2 threads, no callback";
   omp_set_num_threads(3);

@@ -7,10 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "progress_log.hpp"
 #include "fracterra/fracterra.h"
 #include "golden.hpp"
 
 namespace {
+
+using ft::test::expect_rises_to_one_in_small_steps;
+using ft::test::ProgressLog;
 
 ft_planet_params params() {
   ft_planet_params p;
@@ -91,18 +95,6 @@ TEST(PlanetAbi, LayoutsAgreeAndProgressCancels) {
   EXPECT_EQ(map, nullptr);
 }
 
-// What a progress callback saw: every fraction, and where it asked to stop.
-struct ProgressLog {
-  std::vector<double> seen;
-  double cancel_from = 2.0;  // asks to stop at the first fraction >= this
-  size_t cancelled_at = 0;   // how many calls had been made when it asked (0: never)
-  static int32_t call(void* user, double f) {
-    auto* log = static_cast<ProgressLog*>(user);
-    log->seen.push_back(f);
-    if (log->cancelled_at == 0 && f >= log->cancel_from) log->cancelled_at = log->seen.size();
-    return log->cancelled_at != 0;
-  }
-};
 
 struct PlanetMeshArrays {
   std::vector<float> xyz, heights;
@@ -141,15 +133,7 @@ TEST(PlanetAbi, MeshProgressRisesInSmallStepsToOneAndChangesNoBits) {
     p.progress_user = &log;
     PlanetMeshArrays reported(level);
     ASSERT_EQ(reported.make(p, level), FT_OK) << ft_last_error();
-    ASSERT_GT(log.seen.size(), 40u);
-    EXPECT_EQ(log.seen.back(), 1.0);
-    double before = 0.0, widest = 0.0;
-    for (double f : log.seen) {
-      EXPECT_GE(f, before);
-      widest = std::max(widest, f - before);
-      before = f;
-    }
-    EXPECT_LE(widest, 0.05);
+    expect_rises_to_one_in_small_steps(log, 41, 0.05);
     EXPECT_EQ(ft::test::fnv1a(reported.quads.data(), reported.quads.size() * 4), 0x483a7b0e6ea390b3ULL);
     for (int32_t threads : {0, 2, 3}) {
       p.threads = threads;
