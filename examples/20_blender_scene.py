@@ -198,6 +198,24 @@ def add_polylines(args, top):
     bpy.context.active_object.name = "Horizon Line"
 
 
+def sun_camera_render(args, path, size, zs, back, up, lens, target_y):
+    """A sun from the south-west, a camera `back` x size south of the centre
+    and `up` x size above the top, looking at the middle of the relief `zs`
+    (`target_y` x size north), the sky; renders the still to `path`."""
+    bpy.ops.object.light_add(type="SUN", rotation=(math.radians(50), 0, math.radians(35)))
+    bpy.context.active_object.data.energy = 4.0
+    bpy.context.active_object.data.angle = math.radians(2)
+    bpy.ops.object.camera_add(location=(0.0, -back * size, up * size + max(zs)))
+    camera = bpy.context.active_object
+    camera.data.lens = lens
+    look_at(camera, (0, target_y * size, 0.5 * (min(zs) + max(zs))))
+    scene = bpy.context.scene
+    scene.camera = camera
+    scene.world = scene.world or bpy.data.worlds.new("World")
+    sky(scene.world)
+    render_still(scene, args, path)
+
+
 def look_at(obj, target):
     obj.rotation_euler = (Vector(target) - obj.location).to_track_quat("-Z", "Y").to_euler()
 

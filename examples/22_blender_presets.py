@@ -62,18 +62,7 @@ def frame_and_render(obj, size, sea, args, path, material):
     zs = [v.co.z for v in obj.data.vertices]
     if sea is not None:
         scene20.water(1.6 * size, sea)
-    bpy.ops.object.light_add(type="SUN", rotation=(math.radians(50), 0, math.radians(35)))
-    bpy.context.active_object.data.energy = 4.0
-    bpy.context.active_object.data.angle = math.radians(2)
-    bpy.ops.object.camera_add(location=(0.0, -1.35 * size, 0.75 * size + max(zs)))
-    camera = bpy.context.active_object
-    camera.data.lens = 35
-    scene20.look_at(camera, (0, 0.05 * size, 0.5 * (min(zs) + max(zs))))
-    scene = bpy.context.scene
-    scene.camera = camera
-    scene.world = scene.world or bpy.data.worlds.new("World")
-    scene20.sky(scene.world)
-    scene20.render_still(scene, args, path)
+    scene20.sun_camera_render(args, path, size, zs, back=1.35, up=0.75, lens=35, target_y=0.05)
     return min(zs), max(zs)
 
 

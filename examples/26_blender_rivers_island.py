@@ -11,7 +11,6 @@ Exits non-zero with a message on any error.
 """
 
 import importlib.util
-import math
 import os
 import sys
 from pathlib import Path
@@ -43,18 +42,7 @@ def main():
         raise RuntimeError("Rivers and Lakes did not finish")
     size = s.world_size
     zs = [v.co.z for v in terrain.data.vertices]
-    bpy.ops.object.light_add(type="SUN", rotation=(math.radians(50), 0, math.radians(35)))
-    bpy.context.active_object.data.energy = 4.0
-    bpy.context.active_object.data.angle = math.radians(2)
-    bpy.ops.object.camera_add(location=(0.0, -0.6 * size, 0.33 * size + max(zs)))
-    camera = bpy.context.active_object
-    camera.data.lens = 30
-    scene20.look_at(camera, (0, 0.04 * size, 0.5 * (min(zs) + max(zs))))
-    scene = bpy.context.scene
-    scene.camera = camera
-    scene.world = scene.world or bpy.data.worlds.new("World")
-    scene20.sky(scene.world)
-    scene20.render_still(scene, args, out / "rivers.png")
+    scene20.sun_camera_render(args, out / "rivers.png", size, zs, back=0.6, up=0.33, lens=30, target_y=0.04)
     print(f"26_blender_rivers_island: highest {max(zs):.2f} m, wrote {out / 'rivers.png'}")
 
 

@@ -6,7 +6,9 @@
 # Time (2 cores): the CI's clean-clone runs took 1759 s (2026-11-26), 1338 s
 # and 1654 s (2026-11-27, the second with the Windows stage, its mingw
 # dependencies cached in ~/.cache; a fresh machine builds those too: about
-# 1925 s). "Well under 25 minutes" is the aim, on a fresh machine too.
+# 1925 s); the first run with the sanitizer build beside ctest took 1097 s
+# (2026-11-27, the CI of session 11's landing). "Well under 25 minutes" is
+# the aim, on a fresh machine too.
 # Measured 2026-11-27 (CPU seconds, user + sys, cold builds without ccache,
 # nice 19 at load 5-11; an idle 2-core machine runs a build stage in about
 # half its CPU time, which reproduces the 1654 s run):

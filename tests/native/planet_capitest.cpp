@@ -7,11 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "progress_log.hpp"
 #include "fracterra/fracterra.h"
 #include "golden.hpp"
-#include "progress_log.hpp"
 
 namespace {
+
+using ft::test::expect_rises_to_one_in_small_steps;
+using ft::test::ProgressLog;
 
 ft_planet_params params() {
   ft_planet_params p;
@@ -92,7 +95,6 @@ TEST(PlanetAbi, LayoutsAgreeAndProgressCancels) {
   EXPECT_EQ(map, nullptr);
 }
 
-using ft::test::ProgressLog;
 
 struct PlanetMeshArrays {
   std::vector<float> xyz, heights;
@@ -131,10 +133,7 @@ TEST(PlanetAbi, MeshProgressRisesInSmallStepsToOneAndChangesNoBits) {
     p.progress_user = &log;
     PlanetMeshArrays reported(level);
     ASSERT_EQ(reported.make(p, level), FT_OK) << ft_last_error();
-    ASSERT_GT(log.seen.size(), 40u);
-    EXPECT_EQ(log.seen.back(), 1.0);
-    EXPECT_TRUE(log.rising());
-    EXPECT_LE(log.widest_step(), 0.05);
+    expect_rises_to_one_in_small_steps(log, 41, 0.05);
     EXPECT_EQ(ft::test::fnv1a(reported.quads.data(), reported.quads.size() * 4), 0x483a7b0e6ea390b3ULL);
     for (int32_t threads : {0, 2, 3}) {
       p.threads = threads;

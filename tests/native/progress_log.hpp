@@ -1,6 +1,8 @@
-// What a progress callback saw, for the tests of long calls: every fraction,
-// and where it asked to stop. Written once, for the unit and the C ABI tests.
+// What a progress callback saw, for the tests of long calls that report:
+// every fraction, and where it asked to stop.
 #pragma once
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -11,21 +13,28 @@ namespace ft::test {
 
 struct ProgressLog {
   std::vector<double> seen;
-  double cancel_from = 2.0;  // asks to stop at the first fraction >= this
-  size_t cancelled_at = 0;   // how many calls had been made when it asked (0: never)
+  double cancel_from = 2.0;  // the first fraction at or above it cancels
+  size_t cancelled_at = 0;   // its number (1-based), 0: none yet
   static int32_t call(void* user, double f) {
     auto* log = static_cast<ProgressLog*>(user);
     log->seen.push_back(f);
     if (log->cancelled_at == 0 && f >= log->cancel_from) log->cancelled_at = log->seen.size();
     return log->cancelled_at != 0;
   }
-  // The widest step from 0 through the fractions seen, and whether they never fell.
-  double widest_step() const {
-    double before = 0.0, widest = 0.0;
-    for (double f : seen) widest = std::max(widest, f - before), before = f;
-    return widest;
-  }
-  bool rising() const { return std::is_sorted(seen.begin(), seen.end()) && (seen.empty() || seen.front() >= 0.0); }
 };
+
+// The bar moves steadily: at least `calls` reports, never backwards, none
+// more than `widest` past the one before, ending at 1.
+inline void expect_rises_to_one_in_small_steps(const ProgressLog& log, size_t calls, double widest) {
+  ASSERT_GE(log.seen.size(), calls);
+  EXPECT_EQ(log.seen.back(), 1.0);
+  double before = 0.0, step = 0.0;
+  for (double f : log.seen) {
+    EXPECT_GE(f, before);
+    step = std::max(step, f - before);
+    before = f;
+  }
+  EXPECT_LE(step, widest);
+}
 
 }  // namespace ft::test

@@ -91,7 +91,10 @@ def height_slope(co, nx, ny, progress=None, bands=16):
     differences as numpy.gradient over the whole grid, central inside and
     one-sided at the edges: the same numbers to the bit. progress: None or
     callable(fraction) -> True to stop (raises CancelledError)."""
-    import numpy as np  # numpy only here: core imports without it (as in rivers.py)
+    # numpy here, not at the top: the rest of core is numpy-free, and scripts
+    # run by a Python without numpy (examples/maps_montage.py) import it.
+    import numpy as np  # pylint: disable=import-outside-toplevel
+
     report = progress or (lambda _fraction: False)
     xyz = np.frombuffer(co, dtype=np.float32).reshape(ny, nx, 3)
     z = xyz[:, :, 2]
