@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <exception>
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
-#include "core/parallel.hpp"
+#include "core/parallel_rows.hpp"
 #include "core/rng.hpp"
 #include "noise/basis.hpp"
 #include "noise/octave_sum.hpp"
@@ -305,34 +304,11 @@ Heightfield fbm_window(const FbmConfig& c, int64_t x0, int64_t y0, int32_t w, in
   const Plan plan = make_plan(c);
   Heightfield hf(w, h);
   const RowFn row_fn = pick_row_fn();
-  const int threads = resolve_threads(c.threads);
-  // One parallel region, rows handed out dynamically: a single barrier at
-  // the end (barriers per band cost dearly when the cores are shared). The
-  // calling thread (OpenMP's thread 0) reports progress between its rows;
-  // a cancellation stops the others at their next row and is rethrown here.
-  std::atomic<int32_t> done{0};
-  std::atomic<bool> stop{false};
-  std::exception_ptr error;
-#pragma omp parallel num_threads(threads)
-  {
-    const bool caller = omp_get_thread_num() == 0;
-#pragma omp for schedule(dynamic, 2)
-    for (int32_t y = 0; y < h; ++y) {
-      if (stop.load(std::memory_order_relaxed)) continue;
-      row_fn(plan, c.width, c.height, y0 + y, x0, w, hf.data() + size_t(y) * size_t(w));
-      const int32_t d = done.fetch_add(1, std::memory_order_relaxed) + 1;
-      if (caller) {
-        try {
-          c.progress.report(double(d) / h);
-        } catch (...) {
-          error = std::current_exception();
-          stop.store(true);
-        }
-      }
-    }
-  }
-  if (error) std::rethrow_exception(error);
-  c.progress.report(1.0);
+  // Rows handed out dynamically in one parallel region (barriers per band
+  // cost dearly when the cores are shared); the calling thread reports.
+  for_rows(h, c.threads, c.progress, [&](int64_t y) {
+    row_fn(plan, c.width, c.height, y0 + y, x0, w, hf.data() + size_t(y) * size_t(w));
+  });
   return hf;
 }
 
