@@ -17,7 +17,7 @@ double LakeFill::fill(int32_t exit, double load) {
     cells_.push_back(v);
     for (int32_t k = graph_.donor_start[v]; k < graph_.donor_start[v + 1]; ++k) {
       const int32_t d = graph_.donors[k];
-      if (under(d) && surface_[d] == surface) todo_.push_back(d);
+      if (in_lake_of(d, exit)) todo_.push_back(d);
     }
   }
   // Lowest first (ties by index, so the order is the same on every run).

@@ -26,6 +26,8 @@ class LakeFill {
       : graph_(graph), surface_(surface), bed_(bed), z_(z), cell_(cell) {}
 
   bool under(int32_t i) const { return surface_[i] > bed_[i]; }
+  // Whether j is under the lake that i is under (one surface).
+  bool in_lake_of(int32_t j, int32_t i) const { return under(j) && surface_[j] == surface_[i]; }
 
   // Lays up to `load` (volume) in the lake whose exit is `exit`, as a flat
   // floor from the bottom up, never above the surface; returns the volume

@@ -283,7 +283,7 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
             // everything filled fBm's closed basins, on half its cells,
             // into plains, and Badlands, "little sediment kept", kept the
             // most).
-            if (r != i && lake.under(r) && filled[r] == filled[i]) {
+            if (r != i && lake.in_lake_of(r, i)) {
               sediment[r] += load;
               continue;
             }
