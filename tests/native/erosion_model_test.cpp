@@ -70,11 +70,11 @@ const Heightfield& fbm(int32_t size, uint64_t seed) {
 
 std::vector<float> values(const Heightfield& hf) { return {hf.data(), hf.data() + hf.size()}; }
 
-// A box filter `r` samples each side along x then y, twice (close to a
-// Gaussian), clamped at the edges.
-std::vector<float> smooth(std::vector<float> v, int32_t w, int32_t h, int32_t r) {
+// A box filter `r` samples each side along x then y, `passes` times (twice:
+// close to a Gaussian), clamped at the edges.
+std::vector<float> smooth(std::vector<float> v, int32_t w, int32_t h, int32_t r, int passes = 2) {
   std::vector<float> t(v.size());
-  for (int pass = 0; pass < 2; ++pass) {
+  for (int pass = 0; pass < passes; ++pass) {
     for (int32_t y = 0; y < h; ++y)
       for (int32_t x = 0; x < w; ++x) {
         double s = 0;
@@ -455,14 +455,28 @@ TEST_P(EveryPreset, ErodesTheSameTerrainAlikeAt257And2049) {
       EXPECT_GE(both, 0.70) << what;
       // The preview looks like the final: at the preview's grid, the
       // final's texture (averaged over the preview's cells) has the
-      // preview's energy. The inputs' differ (averaging takes 0.69 of it),
-      // erosion wears both to about one level: the final's is 0.99-1.27
-      // of the preview's on every preset and seed, 5-15 times it if the
-      // final kept its input's texture. Bound: within 35%.
+      // preview's energy, plus what leaks through that average of the
+      // texture the final keeps by design (its input less the mean over
+      // the model's cell, 9 x 9 samples; a preview cannot show it). The
+      // inputs' differ (averaging takes 0.69 of it); erosion wears both to
+      // about one level: the final's, less the leak (0.18-0.19), is
+      // 0.92-1.08 of the preview's on every preset and seed, 5-15 times it
+      // if the final kept its input's texture. Bound: within 35%. (Over
+      // the whole grid and without the leak it read 0.99-1.27 while the
+      // preview's edge rows kept their input's roughness: that fringe was
+      // a third of the preview's energy.)
+      const std::vector<float> kept_texture = [&] {
+        std::vector<float> t = values(big_in);
+        const std::vector<float> cell_mean = smooth(t, 2049, 2049, 4, 1);
+        for (size_t i = 0; i < t.size(); ++i) t[i] -= cell_mean[i];
+        return downsample(t, 2049, 8);
+      }();
+      const double leak = texture_energy(kept_texture, 257);
       const double texture_small = texture_energy(values(small), 257), texture_big = texture_energy(big_down, 257);
-      std::printf("%-22s texture energy at 257^2: in %.4g / %.4g, out %.4g / %.4g\n", what.c_str(),
-                  texture_energy(values(small_in), 257), texture_energy(big_in_down, 257), texture_small, texture_big);
-      EXPECT_NEAR(texture_big / texture_small, 1.0, 0.35) << what << ": the preview's texture against the final's";
+      std::printf("%-22s texture energy at 257^2: in %.4g / %.4g, out %.4g / %.4g, leak %.4g\n", what.c_str(),
+                  texture_energy(values(small_in), 257), texture_energy(big_in_down, 257), texture_small, texture_big,
+                  leak);
+      EXPECT_NEAR((texture_big - leak) / texture_small, 1.0, 0.35) << what << ": the preview's texture against the final's";
     }
   }
 }
@@ -505,6 +519,37 @@ double border_roughness(const Heightfield& hf) {
   return worst;
 }
 
+// How far the edge row stands out: the median |step| from each edge sample
+// to its neighbour inside, against the median |step| between rows inside
+// (16 cells and more from the edge); the largest of the four sides.
+double edge_step(const Heightfield& hf) {
+  const int32_t w = hf.width(), h = hf.height(), inner = 16;
+  const float* z = hf.data();
+  auto median = [](std::vector<float> v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return double(v[v.size() / 2]);
+  };
+  std::vector<float> steps;
+  for (int32_t y = inner; y < h - 1 - inner; ++y)
+    for (int32_t x = inner; x < w - inner; ++x) steps.push_back(std::fabs(z[size_t(y + 1) * w + x] - z[size_t(y) * w + x]));
+  const double interior = median(steps);
+  double worst = 0;
+  for (int side = 0; side < 4; ++side) {
+    const bool row = side < 2;
+    const int32_t len = row ? w : h;
+    steps.clear();
+    for (int32_t k = 1; k < len - 1; ++k) {
+      auto at = [&](int32_t depth) {  // the sample `depth` cells in from this side, k along it
+        const int32_t x = row ? k : side == 2 ? depth : w - 1 - depth, y = !row ? k : side == 0 ? depth : h - 1 - depth;
+        return z[size_t(y) * w + x];
+      };
+      steps.push_back(std::fabs(at(0) - at(1)));
+    }
+    worst = std::max(worst, median(steps) / interior);
+  }
+  return worst;
+}
+
 TEST_P(EveryPreset, LeavesTheBorderRowsAsSmoothAsTheInterior) {
 #ifdef FT_UNDER_ASAN
   GTEST_SKIP() << "statistical ensemble: Release only";
@@ -512,24 +557,89 @@ TEST_P(EveryPreset, LeavesTheBorderRowsAsSmoothAsTheInterior) {
   // Issue 24's demo (fBm 513^2, seed 7): its top rows' p99 |Laplacian| was
   // about twice the interior's. fBm has no edge of its own (the inputs'
   // ratio is 0.99-1.06), so the eroded borders are held to 1.25. Measured
-  // 1.01-1.12 at 513^2 for every preset; before the detail run's creep
+  // 0.98-1.09 at 513^2 for every preset; before the detail run's creep
   // acted on its change only, Rugged Mountains gave 1.65-1.94 at 513^2 (the
   // creep smoothed the interior, and the edge rows are held fixed).
-  // Not at 257^2, the model's own grid: there creep acts on the heights
-  // themselves, and the edge row, held at the input's rough heights, stands
-  // out of the smoothed rows inside (a one-cell fringe; its p99 |Laplacian|
-  // 0.014-0.019, against the interior's 0.009-0.015). The bound held there
-  // only while the walls of sediment in filled lakes roughened the interior
-  // (the ratio rose from 0.9-1.24 to 0.9-2.15 when they went).
-  for (const int32_t size : {513})
+  // At 257^2, the model's own grid, that p99 is a channel's: a valley
+  // running along an edge (seed 7's right side has one in its input) holds
+  // the band's largest |Laplacian| (1.7-3.5 there), so it is not asserted.
+  //
+  // The edge row itself: while creep held it fixed at the input's rough
+  // heights beside the smoothed rows inside (a one-cell fringe), its median
+  // step to the row inside was 1.74-4.03x the interior's median step
+  // between rows (fBm seeds 1, 2, 3, 7, at 257^2 and 513^2). With creep
+  // closed at the edge it is 0.39-1.44x; the input's own is 1.19. Held to
+  // 1.6: above the measured worst and the input's, below every fringe seen.
+  for (const int32_t size : {257, 513})
     for (uint64_t seed : {1, 7}) {
       const Heightfield& in = fbm(size, seed);
       const Heightfield out = erode(in, preset_for(GetParam()), nullptr);
       const double before = border_roughness(in), after = border_roughness(out);
-      std::printf("%-16s fbm %d seed %d: border / interior p99 |laplacian| %.3f -> %.3f\n", GetParam().c_str(),
-                  size, int(seed), before, after);
-      EXPECT_LE(after, 1.25) << GetParam() << " fbm " << size << " seed " << seed;
+      std::printf("%-16s fbm %d seed %d: border / interior p99 |laplacian| %.3f -> %.3f, edge step %.3f -> %.3f\n",
+                  GetParam().c_str(), size, int(seed), before, after, edge_step(in), edge_step(out));
+      if (size > 257) {
+        EXPECT_LE(after, 1.25) << GetParam() << " fbm " << size << " seed " << seed;
+      }
+      EXPECT_LE(edge_step(out), 1.6) << GetParam() << " fbm " << size << " seed " << seed;
     }
+}
+
+// The final's samples on the preview's flat floors (filled lakes): the
+// preview cells whose 5 x 5 neighbourhood spans under 0.5 mm, and on each
+// the final's samples within half a preview cell. Returns how many stand
+// more than 4 mm above their cell's median, and the most any stands above.
+std::pair<int64_t, double> bumps_on_flat_floors(const Heightfield& preview, const Heightfield& final_hf) {
+  const int32_t w = preview.width(), fw = final_hf.width(), f = (fw - 1) / (w - 1);
+  const float *p = preview.data(), *z = final_hf.data();
+  int64_t count = 0;
+  double worst = 0;
+  std::vector<float> cell;
+  for (int32_t y = 2; y < w - 2; ++y)
+    for (int32_t x = 2; x < w - 2; ++x) {
+      float lo = p[size_t(y) * w + x], hi = lo;
+      for (int32_t dy = -2; dy <= 2; ++dy)
+        for (int32_t dx = -2; dx <= 2; ++dx) {
+          const float v = p[size_t(y + dy) * w + x + dx];
+          lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+      if (hi - lo >= 5e-4f) continue;
+      cell.clear();
+      for (int32_t dy = -f / 2; dy <= f / 2; ++dy)
+        for (int32_t dx = -f / 2; dx <= f / 2; ++dx) cell.push_back(z[size_t(y * f + dy) * fw + x * f + dx]);
+      std::vector<float> sorted = cell;
+      std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+      const float median = sorted[sorted.size() / 2];
+      for (float v : cell) {
+        count += v - median > 4e-3f;
+        worst = std::max(worst, double(v - median));
+      }
+    }
+  return {count, worst};
+}
+
+TEST_P(EveryPreset, LaysTheFinalsFilledFloorsAsFlatAsThePreviews) {
+#ifdef FT_UNDER_ASAN
+  GTEST_SKIP() << "statistical ensemble: Release only";
+#endif
+  // Seen in the GUI (levels 10, seed 1, Rugged Mountains): 70 pimples of
+  // 5-11 mm on a filled lake's floor where the preview (levels 8) is flat.
+  // They were the crests of texture the model does not see, left standing
+  // when the detail run's lake filled over it (see bury in landscape.cpp):
+  // 259 samples of that final stood more than 4 mm above their cell's
+  // median there, the highest 9.8 mm. Now the highest on any preset and
+  // seed here is 3.4 mm: the input's own texture of a few mm on the plain
+  // where the falloff ends (seed 5), detail below the preview's cell that
+  // the final keeps by design; on the lakes' floors 1.1 mm. (Broken on
+  // purpose: bury about the box mean of z, 50-383 samples on seed 1 of
+  // every preset; without its wear, 5 on Rugged Mountains seed 1.)
+  for (uint64_t seed : {1, 5}) {
+    const Heightfield preview = erode(default_mountain(8, seed), preset_for(GetParam()), nullptr);
+    const Heightfield final_hf = erode(default_mountain(10, seed), preset_for(GetParam()), nullptr);
+    const auto [count, worst] = bumps_on_flat_floors(preview, final_hf);
+    std::printf("%-16s seed %d: %lld samples stand > 4 mm above the preview's flat floors, the highest %.4f\n",
+                GetParam().c_str(), int(seed), static_cast<long long>(count), worst);
+    EXPECT_EQ(count, 0) << GetParam() << " seed " << seed;
+  }
 }
 
 // The energy of the finest detail (the terrain less its 5 x 5 smoothing),
