@@ -18,29 +18,12 @@
 #include "erosion/presets.hpp"
 #include "terrain/terrain.hpp"
 #include "sanitizer.hpp"
+#include "test_terrains.hpp"
 
 namespace ft::erosion {
 namespace {
 
-// The add-on's default terrain (blender_addon/fracterra/core/params.py's
-// BLENDER_OVERRIDES): a midpoint mountain, levelled, raised and faded out
-// radially, 10 world units across.
-Heightfield default_mountain(int32_t levels, uint64_t seed) {
-  ft_terrain_params p = terrain::default_terrain_params();
-  p.method = FT_TERRAIN_MIDPOINT;
-  p.levels = levels;
-  p.width = p.height = (1 << levels) + 1;
-  p.seed = seed;
-  p.sigma = 2.0;
-  p.levelling = 1.0;
-  p.height_offset = 1.5;
-  p.falloff = FT_FALLOFF_RADIAL;
-  p.falloff_width = 0.9;
-  p.world_size = 10.0;
-  Heightfield hf = terrain::generate_terrain(p);
-  hf.set_world_size(10.0);
-  return hf;
-}
+using test::default_mountain;
 
 // fBm: the same terrain at every size (issue 24 measured 0.996 at shared
 // points), so it is the input of the resolution test. With `sea_fraction`

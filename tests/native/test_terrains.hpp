@@ -21,4 +21,24 @@ inline Heightfield fbm_terrain(int32_t size, uint64_t seed, bool periodic = fals
   return hf;
 }
 
+// The add-on's default terrain (blender_addon/fracterra/core/params.py's
+// BLENDER_OVERRIDES): a midpoint mountain, levelled, raised and faded out
+// radially, 10 world units across.
+inline Heightfield default_mountain(int32_t levels, uint64_t seed) {
+  ft_terrain_params p = terrain::default_terrain_params();
+  p.method = FT_TERRAIN_MIDPOINT;
+  p.levels = levels;
+  p.width = p.height = (1 << levels) + 1;
+  p.seed = seed;
+  p.sigma = 2.0;
+  p.levelling = 1.0;
+  p.height_offset = 1.5;
+  p.falloff = FT_FALLOFF_RADIAL;
+  p.falloff_width = 0.9;
+  p.world_size = 10.0;
+  Heightfield hf = terrain::generate_terrain(p);
+  hf.set_world_size(10.0);
+  return hf;
+}
+
 }  // namespace ft::test

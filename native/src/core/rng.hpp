@@ -31,6 +31,7 @@ enum class Stream : uint32_t {
   kNoiseWarpX = 15,         // domain warp, x field: level = octave
   kNoiseWarpY = 16,         // domain warp, y field: level = octave
   kFluvialRouting = 17,     // Rho8 receivers of the fluvial eroder: level = time step
+  kFlatRouting = 18,        // the maps' step costs across flats (erosion/flat_resolution.hpp): level 0
   kPlanetNoise = 30,        // spherical fbm (planet/): level = octave
   kPlanetMidpoint = 31,     // spherical midpoint (planet/): {x, y, z} = the vertex's cube point at its birth level
   kPolyline = 10,

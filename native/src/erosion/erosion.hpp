@@ -18,9 +18,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/buffer.hpp"
 #include "core/heightfield.hpp"
 #include "core/progress.hpp"
 #include "erosion/d8_grid.hpp"
+#include "erosion/flat_resolution.hpp"
 #include "erosion/sea.hpp"
 
 namespace ft::erosion {
@@ -156,6 +158,17 @@ void thermal(const D8Grid& g, float* z, const ThermalConfig& c, const Progress& 
 // `progress` hears each quarter of the rows.
 void slope_curvature(const D8Grid& g, const float* z, float* slope, float* curvature,
                      const Progress& progress = Progress());
+
+// The surface the maps' drainage area runs on (terrain_maps.cpp): `out`
+// with the heights nearer 0 than half a float step at its largest height
+// set to 0, every depression filled flat to its spill (fill_closed_basins)
+// and its flats graded (resolve_flats). `progress` hears both parts.
+struct DrainageSurface {
+  Buffer<float> z;
+  int32_t sink = -1;  // a torus's outlet (periodic_sink), else -1
+  FlatGrading flats;
+};
+DrainageSurface drainage_surface(const D8Grid& g, const float* out, const Progress& progress = Progress());
 
 // The maps of `out`, eroded from `in` (terrain_maps.cpp): drainage area,
 // slope, curvature, and the eroded and deposited depths against `in` plus

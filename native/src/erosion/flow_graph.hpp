@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/progress.hpp"
+#include "core/rng.hpp"
 #include "erosion/d8_grid.hpp"
 
 namespace ft::erosion {
@@ -64,6 +65,13 @@ int32_t periodic_sink(const D8Grid& g, const float* z);
 // numbers for the same terrain shifted across its edges.
 void draw_rho8(const D8Grid& g, int32_t origin, uint32_t step, FlowGraph& graph);
 
+// One number uniform in (0, 1) per cell into `out` (resized to the grid),
+// from the counter RNG at (`stream`, `level`, the cell's position relative to
+// `origin`, or to the corner when it is negative), as draw_rho8 draws them.
+void draw_cell_uniforms(const D8Grid& g, int32_t origin, uint32_t level, Stream stream, std::vector<float>& out);
+// Row y of what draw_cell_uniforms draws, into row[0 .. width).
+void draw_row_uniforms(const D8Grid& g, int32_t origin, uint32_t level, Stream stream, int32_t y, float* row);
+
 // Receivers by steepest descent (ties: the first direction in kDx order),
 // diagonal drops over a run of 2 - r spacings when graph.random is drawn
 // (Rho8), else sqrt 2 (D8).
@@ -103,8 +111,12 @@ int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* r
 // in another order than fill_depressions takes them, so a flat may be
 // graded differently. On an eroded 4097^2 terrain, where 56% of the cells
 // drain, it takes about half the time. Returns the number of cells raised;
-// `progress` hears both parts.
-int64_t fill_closed_basins(const D8Grid& g, float* z, int32_t sink, const Progress& progress = Progress());
+// `progress` hears both parts. `flat`: every depression is raised exactly to
+// its spill, with no float steps (Priority-Flood without the epsilon), into
+// flats that resolve_flats (flat_resolution.hpp) grades; these heights are
+// unique, whatever the order of equal heights.
+int64_t fill_closed_basins(const D8Grid& g, float* z, int32_t sink, const Progress& progress = Progress(),
+                           bool flat = false);
 
 // Fills the depression of every pit of the last routing, one at a time in
 // index order, by a Priority-Flood+epsilon restricted to that depression: a

@@ -85,7 +85,7 @@ struct Setup {
 }  // namespace
 
 void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vector<double>& area,
-                        const Progress& progress) {
+                        const Progress& progress, const FlatGrading* flats) {
   const size_t n = g.size();
   const int32_t w = g.width, h = g.height;
   // Interior cells (all eight neighbours inside, also on a torus) take them
@@ -135,6 +135,45 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
     total[size_t(i)] = sum;
     area[size_t(i)] = cell;
   };
+  // On a flat (the heights equal), a cell gives to its neighbours of the
+  // same height whose key is lower (flat_resolution.hpp), in proportion to
+  // contour length times the key's fall, and takes from those whose key is
+  // higher: the masks and shares of the flats' cells and their outlets, made
+  // again from the keys after the heights' pass over their row.
+  const uint8_t* on_flat = flats ? flats->flat.data() : nullptr;
+  const uint8_t* level = flats ? flats->level.data() : nullptr;
+  const int32_t* key = flats ? flats->key.data() : nullptr;
+  auto grade_row = [&](int32_t y) {
+    const int64_t row = int64_t(y) * w;
+    for (int32_t x = 0; x < w; ++x) {
+      const int64_t i = row + x;
+      if (!level[i]) continue;
+      const bool in = inner(x, y);
+      const int32_t ki = key[i];
+      unsigned up = higher[size_t(i)], down = lower[size_t(i)];
+      double sum = total[size_t(i)];
+      for (unsigned m = level[i]; m; m &= m - 1) {
+        const int k = std::countr_zero(m);
+        const int64_t j = nbr(i, x, y, in, k);
+        if (on_flat[j] && key[j] > ki) {
+          up |= 1u << k;
+        } else if (on_flat[i] && key[j] < ki) {
+          down |= 1u << k;
+          sum += factor[k] * double(ki - key[j]);
+        }
+      }
+      higher[size_t(i)] = uint8_t(up);
+      lower[size_t(i)] = uint8_t(down);
+      waiting[size_t(i)] = uint8_t(std::popcount(up));
+      total[size_t(i)] = sum;
+    }
+  };
+  // What a giver j gives i per unit: contour length over distance times the
+  // fall, of the heights or, on a flat, of the keys.
+  auto fall = [&](int64_t j, int64_t i) {
+    const double d = double(z[j]) - double(z[i]);
+    return key && d == 0.0 ? double(key[j] - key[i]) : d;
+  };
   // Cells whose neighbours are all inner cells (a torus: all cells off its
   // first and last rows and columns) go through the branch-free kernel.
   const int32_t margin = g.periodic ? 1 : 2;
@@ -148,11 +187,13 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
     for (int32_t y = y0; y < y1; ++y) {
       if (y < margin || y >= h - margin || w <= 2 * margin) {
         for (int32_t x = 0; x < w; ++x) setup_cell(x, y);
+        if (flats) grade_row(y);
         continue;
       }
       for (int32_t x = 0; x < margin; ++x) setup_cell(x, y);
       setup_interior(setup, int64_t(y) * w, margin, w - margin);
       for (int32_t x = w - margin; x < w; ++x) setup_cell(x, y);
+      if (flats) grade_row(y);
     }
     progress.report(kSetupShare * (band + 1) / kSetupBands);
   }
@@ -229,7 +270,7 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
         for (unsigned m = higher[size_t(i)]; m; m &= m - 1) {
           const int k = std::countr_zero(m);
           const int64_t j = nbr(i, x, y, in, k);
-          sum += total[size_t(j)] * (factor[k] * (double(z[j]) - double(z[i])));
+          sum += total[size_t(j)] * (factor[k] * fall(j, i));
         }
         area[size_t(i)] = sum;
         if ((++done & 4095) == 0) {

@@ -16,6 +16,7 @@
 
 #include "core/progress.hpp"
 #include "erosion/d8_grid.hpp"
+#include "erosion/flat_resolution.hpp"
 
 namespace ft::erosion {
 
@@ -28,7 +29,10 @@ namespace ft::erosion {
 // what its higher neighbours give in a fixed order: the result is the same
 // on any thread count. `progress` hears the share done, every 64th of the
 // cells, from the calling thread; a cancel stops it (FT_ERR_CANCELLED).
+// With `flats` (resolve_flats on `z`), `z` may hold flats: their cells give
+// to the neighbours of the same height whose key is lower, by the key's fall;
+// the other cells' shares are the heights' as without it.
 void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vector<double>& area,
-                        const Progress& progress = Progress());
+                        const Progress& progress = Progress(), const FlatGrading* flats = nullptr);
 
 }  // namespace ft::erosion

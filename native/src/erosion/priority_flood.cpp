@@ -69,9 +69,10 @@ int64_t fill_depressions(const D8Grid& g, float* z, int32_t sink, const float* r
   return raised_cells;
 }
 
-int64_t fill_closed_basins(const D8Grid& g, float* z, int32_t sink, const Progress& progress) {
+int64_t fill_closed_basins(const D8Grid& g, float* z, int32_t sink, const Progress& progress, bool flat) {
   // 1. The cells that drain as they are: breadth first from the base levels
-  //    up every strictly rising step. A drained cell with a neighbour not
+  //    up every strictly rising step (`flat`: every step that does not
+  //    fall, as such a path is never raised). A drained cell with a neighbour not
   //    (yet) reached that is not above it is a seed of the flood: every cell
   //    the flood must visit borders one (a neighbour above a drained cell is
   //    reached from it), and a seed whose neighbours all drain in the end is
@@ -106,7 +107,7 @@ int64_t fill_closed_basins(const D8Grid& g, float* z, int32_t sink, const Progre
     for (int k = 0; k < 8; ++k) {
       const int64_t j = g.neighbour(cx, cy, k);
       if (j < 0 || closed[j]) continue;
-      if (z[j] > z[c]) {
+      if (z[j] > z[c] || (flat && z[j] == z[c])) {
         closed[j] = 1;
         queue.push_back(int32_t(j));
       } else {
@@ -120,7 +121,8 @@ int64_t fill_closed_basins(const D8Grid& g, float* z, int32_t sink, const Progre
   std::vector<int32_t>().swap(queue);
   // 2. Priority-Flood+epsilon from the seeds over the rest: what
   //    fill_depressions does there (it never raises a drained cell), with
-  //    the drained cells' heap traffic saved.
+  //    the drained cells' heap traffic saved. Flat: Priority-Flood without
+  //    the epsilon (Barnes et al. 2014, Algorithm 2 with the pit queue).
   for (const int32_t s : seeds) closed[s] = 0;
   int64_t raised_cells = 0;
   const ProgressPart flood(progress, flood_start, 1.0 - flood_start);
@@ -128,8 +130,13 @@ int64_t fill_closed_basins(const D8Grid& g, float* z, int32_t sink, const Progre
       g, seeds, z,
       [&](int32_t c, int32_t j) {
         if (z[j] > z[c]) return false;
-        z[j] = raised(z[c], nullptr, j);
-        ++raised_cells;
+        if (flat) {
+          raised_cells += z[j] < z[c];
+          z[j] = z[c];
+        } else {
+          z[j] = raised(z[c], nullptr, j);
+          ++raised_cells;
+        }
         return true;
       },
       flood.progress(), std::move(closed));

@@ -1,7 +1,7 @@
-// Rho8's random numbers (see draw_rho8 in flow_graph.hpp).
+// Rho8's random numbers and the maps' flats' (see draw_rho8 and
+// draw_cell_uniforms in flow_graph.hpp).
 #include <algorithm>
 
-#include "core/rng.hpp"
 #include "erosion/flow_graph.hpp"
 
 namespace ft::erosion {
@@ -13,19 +13,24 @@ constexpr uint64_t kRho8Seed = 0x52686f38;  // "Rho8"
 
 }  // namespace
 
-void draw_rho8(const D8Grid& g, int32_t origin, uint32_t step, FlowGraph& graph) {
-  graph.random.resize(g.size());
+void draw_row_uniforms(const D8Grid& g, int32_t origin, uint32_t level, Stream stream, int32_t y, float* row) {
+  // Cell (x, y) draws the number of (x - ox, y - oy) wrapped into the grid:
+  // row and index of the counter, so a torus shifted across its edges (and
+  // its sink with it) draws the same numbers for the same cells.
   const int32_t ox = origin < 0 ? 0 : origin % g.width, oy = origin < 0 ? 0 : origin / g.width;
+  const Counter c{uint32_t(y >= oy ? y - oy : y - oy + g.height), level, stream};
+  uniform_fill(kRho8Seed, c, 0, size_t(g.width - ox), row + ox);
+  if (ox > 0) uniform_fill(kRho8Seed, c, uint64_t(g.width - ox), size_t(ox), row);
+}
+
+void draw_cell_uniforms(const D8Grid& g, int32_t origin, uint32_t level, Stream stream, std::vector<float>& out) {
+  out.resize(g.size());
 #pragma omp parallel for schedule(static)
-  for (int32_t y = 0; y < g.height; ++y) {
-    // Cell (x, y) draws the number of (x - ox, y - oy) wrapped into the
-    // grid: row and index of the counter, so a torus shifted across its
-    // edges (and its sink with it) draws the same numbers for the same cells.
-    const Counter c{uint32_t(y >= oy ? y - oy : y - oy + g.height), step, Stream::kFluvialRouting};
-    float* w = graph.random.data() + int64_t(y) * g.width;
-    uniform_fill(kRho8Seed, c, 0, size_t(g.width - ox), w + ox);
-    if (ox > 0) uniform_fill(kRho8Seed, c, uint64_t(g.width - ox), size_t(ox), w);
-  }
+  for (int32_t y = 0; y < g.height; ++y) draw_row_uniforms(g, origin, level, stream, y, out.data() + int64_t(y) * g.width);
+}
+
+void draw_rho8(const D8Grid& g, int32_t origin, uint32_t step, FlowGraph& graph) {
+  draw_cell_uniforms(g, origin, step, Stream::kFluvialRouting, graph.random);
 }
 
 }  // namespace ft::erosion

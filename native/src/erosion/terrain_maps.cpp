@@ -1,11 +1,13 @@
 // The maps of an eroded terrain: drainage area by multiple flow over the
-// filled surface, slope and curvature by central differences on the D8 grid,
-// and the depths eroded and deposited.
+// filled surface (its flats graded, flat_resolution.hpp), slope and
+// curvature by central differences on the D8 grid, and the depths eroded
+// and deposited.
 #include <algorithm>
 #include <cmath>
 
 #include "core/buffer.hpp"
 #include "erosion/erosion.hpp"
+#include "erosion/flat_resolution.hpp"
 #include "erosion/flow_graph.hpp"
 #include "erosion/multiple_flow.hpp"
 
@@ -13,9 +15,9 @@ namespace ft::erosion {
 namespace {
 
 // The maps' bar, by the parts' times at 4097^2 (Land, 2 cores at load 2-4):
-// the fill about 45% of it, the area 40%, the depths, slope and curvature
-// the rest.
-constexpr double kFilledShare = 0.45, kAreaShare = 0.85, kDepthsShare = 0.88;
+// the fill about 36% of it, the flats' grading 9%, the area 40%, the
+// depths, slope and curvature the rest.
+constexpr double kSurfaceShare = 0.45, kFillOfSurface = 0.8, kAreaShare = 0.85, kDepthsShare = 0.88;
 // Slope and curvature in bands of rows, with a report after each.
 constexpr int32_t kSlopeBands = 4;
 
@@ -46,30 +48,54 @@ void slope_curvature(const D8Grid& g, const float* z, float* slope, float* curva
   }
 }
 
+DrainageSurface drainage_surface(const D8Grid& g, const float* out, const Progress& progress) {
+  const int64_t cells = int64_t(g.size());
+  DrainageSurface s;
+  s.z = Buffer<float>(g.size());
+  // Heights nearer 0 than half a float step at the terrain's largest are 0
+  // here: creep leaves a plain that was exactly 0 (the edge level a falloff
+  // reaches) at 1e-36 .. 1e-8, which a float at the terrain's scale cannot
+  // tell apart, and the water followed those remnants along straight rows
+  // and diagonals. (Only those: rounding every height to the float steps of
+  // the largest would change the shares everywhere.) The terrain keeps them.
+  float top = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : top)
+  for (int64_t i = 0; i < cells; ++i) top = std::max(top, std::fabs(out[i]));
+  const float unseen = 0.5f * (std::nextafter(top, INFINITY) - top);
+  float* z = s.z.data();
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < cells; ++i) z[i] = std::fabs(out[i]) < unseen ? 0.0f : out[i];
+  s.sink = g.periodic ? periodic_sink(g, z) : -1;
+  // One fill of the cells that do not drain: route_and_fill's local fills
+  // flooded an eroded 4097^2 terrain's hundred thousand pits (its flat lake
+  // floors and plain) one by one, 20 M cells raised in all, 4.4 s without a
+  // report; fill_closed_basins takes 2.3 s of CPU (a global fill 3.9 s) and
+  // reports as it goes. Flat: the grading is resolve_flats'.
+  {
+    const ProgressPart part(progress, 0.0, kFillOfSurface);
+    fill_closed_basins(g, z, s.sink, part.progress(), true);
+  }
+  const ProgressPart part(progress, kFillOfSurface, 1.0 - kFillOfSurface);
+  resolve_flats(g, z, s.sink, s.flats, part.progress());
+  return s;
+}
+
 void erosion_maps(const D8Grid& g, const float* in, const float* out, const std::vector<float>& lifted,
                   ErosionMaps& maps, const Progress& progress) {
   const int64_t cells = int64_t(g.size());
   // The area on the surface as it would drain with its pits filled (a
   // lake's cells all carry what flows through it), by multiple flow
-  // directions so the map has no grid-aligned streaks. One fill of the
-  // cells that do not drain: route_and_fill's local fills flooded an
-  // eroded 4097^2 terrain's hundred thousand pits (its flat lake floors
-  // and plain) one by one, 20 M cells raised in all, 4.4 s without a
-  // report; fill_closed_basins takes 2.3 s of CPU (a global fill 3.9 s) and
-  // reports as it goes. (route_and_fill's routing was thrown away: the
-  // area needs only the filled heights.)
-  Buffer<float> filled(g.size());
-#pragma omp parallel for schedule(static)
-  for (int64_t i = 0; i < cells; ++i) filled[i] = out[i];
-  const int32_t sink = g.periodic ? periodic_sink(g, filled.data()) : -1;
+  // directions so the map has no grid-aligned streaks, across flats too.
+  DrainageSurface surface;
   {
-    const ProgressPart part(progress, 0.0, kFilledShare);
-    fill_closed_basins(g, filled.data(), sink, part.progress());
+    const ProgressPart part(progress, 0.0, kSurfaceShare);
+    surface = drainage_surface(g, out, part.progress());
   }
   std::vector<double> area;
   {
-    const ProgressPart part(progress, kFilledShare, kAreaShare - kFilledShare);
-    multiple_flow_area(g, filled.data(), sink, area, part.progress());
+    const ProgressPart part(progress, kSurfaceShare, kAreaShare - kSurfaceShare);
+    multiple_flow_area(g, surface.z.data(), surface.sink, area, part.progress(),
+                       surface.flats.flat_cells > 0 ? &surface.flats : nullptr);
   }
   // The eroded and deposited depths are against the input plus what the
   // fluvial run lifted it, so uplift never shows as deposit.
