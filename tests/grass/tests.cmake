@@ -1,4 +1,4 @@
-# fracterra's drainage map against GRASS GIS (Debian grass-core): r.watershed's
+# fracterra's drainage map against GRASS GIS (Debian grass-core): r.terraflow's
 # multiple-flow accumulation on the same fixed terrain. Skipped (77) when
 # GRASS is not installed.
 find_program(FT_PYTHON3_SYSTEM NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
