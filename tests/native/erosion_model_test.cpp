@@ -550,6 +550,23 @@ double edge_step(const Heightfield& hf) {
   return worst;
 }
 
+// The most any outlet rose: the edge cells where 50 cells or more of the
+// eroded terrain drain (D8 over its filled heights) leave the map, out
+// against in.
+double highest_outlet_rise(const Heightfield& in, const Heightfield& out) {
+  const D8Grid g = grid_of(out, false);
+  std::vector<float> z = values(out);
+  FlowGraph graph;
+  route_filled(g, z.data(), -1, graph);
+  std::vector<double> area;
+  accumulate_area(g, graph, area);
+  double highest = -1e30;
+  g.for_each_edge_cell([&](size_t i) {
+    if (area[i] >= 50 * g.spacing * g.spacing) highest = std::max(highest, double(out.data()[i] - in.data()[i]));
+  });
+  return highest;
+}
+
 TEST_P(EveryPreset, LeavesTheBorderRowsAsSmoothAsTheInterior) {
 #ifdef FT_UNDER_ASAN
   GTEST_SKIP() << "statistical ensemble: Release only";
@@ -568,15 +585,26 @@ TEST_P(EveryPreset, LeavesTheBorderRowsAsSmoothAsTheInterior) {
   // heights beside the smoothed rows inside (a one-cell fringe), its median
   // step to the row inside was 1.74-4.03x the interior's median step
   // between rows (fBm seeds 1, 2, 3, 7, at 257^2 and 513^2). With creep
-  // closed at the edge it is 0.39-1.44x; the input's own is 1.19. Held to
+  // closed at the edge it is 0.52-1.47x; the input's own is 1.19. Held to
   // 1.6: above the measured worst and the input's, below every fringe seen.
+  //
+  // And the outlets stay: creep closed at the edge filled the notches where
+  // rivers leave the map from the edge cells beside them (Rugged Mountains,
+  // fBm 513^2 seed 1: 66 of 92 outlets rose by over 1 cm, median 2.1 cm) and
+  // silted the valleys' mouths; here the highest outlet rose 3.8-7.2 cm.
+  // Edge cells that gather water now never rise by creep; the highest
+  // outlet rises 0-1.7 cm (deposits and the model's change resampled
+  // between its cells). Bound: 2.5 cm.
   for (const int32_t size : {257, 513})
     for (uint64_t seed : {1, 7}) {
       const Heightfield& in = fbm(size, seed);
       const Heightfield out = erode(in, preset_for(GetParam()), nullptr);
       const double before = border_roughness(in), after = border_roughness(out);
-      std::printf("%-16s fbm %d seed %d: border / interior p99 |laplacian| %.3f -> %.3f, edge step %.3f -> %.3f\n",
-                  GetParam().c_str(), size, int(seed), before, after, edge_step(in), edge_step(out));
+      const double outlet_rise = highest_outlet_rise(in, out);
+      std::printf("%-16s fbm %d seed %d: border / interior p99 |laplacian| %.3f -> %.3f, edge step %.3f -> %.3f, "
+                  "highest outlet rise %.4f\n",
+                  GetParam().c_str(), size, int(seed), before, after, edge_step(in), edge_step(out), outlet_rise);
+      EXPECT_LE(outlet_rise, 0.025) << GetParam() << " fbm " << size << " seed " << seed;
       if (size > 257) {
         EXPECT_LE(after, 1.25) << GetParam() << " fbm " << size << " seed " << seed;
       }
