@@ -232,7 +232,8 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
   BasinGraph basins;
   const bool creep = c.fluvial.diffusion > 0;
   std::vector<float> filled(n), start(n), cap(n), diffused(run.texture && creep ? n : 0),
-      plain(run.texture && creep ? n : 0), before_creep(run.crept && creep ? n : 0);
+      plain(run.texture && creep ? n : 0), settled(run.texture && creep ? n : 0),
+      before_creep(run.crept && creep ? n : 0);
   std::vector<double> discharge(n), sediment(n);
   const int32_t sink = g.periodic ? periodic_sink(g, z) : -1;
   auto mask = [&](int32_t i) { return run.mask ? double(run.mask[i]) : 1.0; };
@@ -339,11 +340,33 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
         }
         hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt, run.mask);
         hillslope_diffusion(g, plain.data(), c.fluvial.diffusion * dt, run.mask);
+        // A sample of the texture beside a deposit is not lifted by the
+        // deposit's creep above where plain creep would put it: a crest
+        // standing out of a filled floor rode up with the floor (by 11 mm
+        // on example 14's top lake) and stayed a pimple on it. (On every
+        // sample, it wore the hillslopes' texture: 0.62 -> 0.54 of its
+        // energy kept, Badlands at 1025^2.)
+        auto beside_deposit = [&](int64_t i) {
+          const int32_t x = int32_t(i % g.width), y = int32_t(i / g.width);
+          for (int k = 0; k < 8; k += 2) {
+            const int64_t j = g.neighbour(x, y, k);
+            if (j >= 0 && z[j] > run.texture[j]) return true;
+          }
+          return false;
+        };
+#pragma omp parallel for schedule(static)
+        for (int64_t i = 0; i < int64_t(n); ++i) {
+          float next = plain[i];
+          if (!(z[i] > run.texture[i])) {
+            next = diffused[i] + run.texture[i];
+            if (beside_deposit(i)) next = std::min(next, std::max(z[i], plain[i]));
+          }
+          settled[i] = next;
+        }
         // Added as a change (not assigned): the float rounding of the runs
         // without a mask stays as it was.
 #pragma omp parallel for schedule(static)
-        for (int64_t i = 0; i < int64_t(n); ++i)
-          z[i] += (z[i] > run.texture[i] ? plain[i] : diffused[i] + run.texture[i]) - z[i];
+        for (int64_t i = 0; i < int64_t(n); ++i) z[i] += settled[i] - z[i];
       } else {
         hillslope_diffusion(g, z, c.fluvial.diffusion * dt, run.mask);
       }
