@@ -29,6 +29,14 @@ struct D8Grid {
   bool on_edge(int32_t x, int32_t y) const {
     return x == 0 || y == 0 || x == width - 1 || y == height - 1;
   }
+  // Calls f(i) for each cell on the edge, row by row.
+  template <class F>
+  void for_each_edge_cell(F f) const {
+    for (int32_t y = 0; y < height; ++y) {
+      const int32_t step = (y == 0 || y == height - 1 || width < 2) ? 1 : width - 1;
+      for (int32_t x = 0; x < width; x += step) f(size_t(y) * size_t(width) + size_t(x));
+    }
+  }
   bool in_sea(size_t i) const { return sea && sea[i]; }
   // A base level: water and sediment leave the grid there (receiver = itself).
   bool is_base(int32_t i, int32_t x, int32_t y, int32_t sink) const {
