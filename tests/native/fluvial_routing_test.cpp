@@ -177,7 +177,7 @@ FlowGraph main_receivers(const D8Grid& g, const float* z, const FlatGrading* fla
     const int32_t x = i % g.width, y = i / g.width;
     graph.receiver[i] = i;
     if (g.is_base(i, -1)) continue;
-    const bool on_flat = flats && flats->flat_cells > 0 && flats->flat[i];
+    const bool on_flat = flats && flats->flat_cells > 0 && flats->key[i] > 0;
     double best = 0.0;
     for (int k = 0; k < 8; ++k) {
       const int64_t j = g.neighbour(x, y, k);
@@ -297,7 +297,7 @@ TEST(FlatDrainage, TheDefaultMountainsFlatsCarryNoStraightStreaks) {
     const DrainageSurface s = drainage_surface(g, out.data());
     ASSERT_GT(s.flats.flat_cells, int64_t(g.size() / 10)) << "the mountain has its flats, seed " << seed;
     std::vector<char> flat(g.size());
-    for (size_t i = 0; i < g.size(); ++i) flat[i] = s.flats.flat[i] != 0;
+    for (size_t i = 0; i < g.size(); ++i) flat[i] = s.flats.key[i] > 0;
     std::vector<float> before(out.data(), out.data() + out.size());
     fill_closed_basins(g, before.data(), -1);
     ASSERT_GE(streak_share(g, main_receivers(g, before.data(), nullptr), flat, 16), 0.4)
@@ -329,7 +329,7 @@ TEST(FlatDrainage, OffTheFlatsAndWhatTheyDrainTheAreaKeepsItsBits) {
     // Touched: on a flat or its outlet, or raised or set to 0 by either.
     std::vector<char> touched(n), clean(n);
     for (size_t i = 0; i < n; ++i)
-      touched[i] = s.flats.flat[i] || s.flats.level[i] || before[i] != out.data()[i] || s.z[i] != out.data()[i];
+      touched[i] = s.flats.level[i] || before[i] != out.data()[i] || s.z[i] != out.data()[i];
     // Clean: untouched, and every cell giving to it clean with untouched
     // lower neighbours (its shares the same), from the top down.
     std::vector<int32_t> order(n);

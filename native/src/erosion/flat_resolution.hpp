@@ -30,16 +30,15 @@
 namespace ft::erosion {
 
 struct FlatGrading {
-  // Per cell: 1 on a flat (no lower neighbour, not a base level), else 0.
-  Buffer<uint8_t> flat;
   // Per cell, bit k: neighbour k is of the same height and one of the two is
-  // a flat cell. Non-zero off the flats: an outlet of one (a cell that
-  // drains, or a base level, beside a flat cell of its height).
+  // on a flat (no lower neighbour, not a base level). Non-zero off the
+  // flats: an outlet of one (a cell that drains, or a base level, beside a
+  // flat cell of its height).
   Buffer<uint8_t> level;
-  // On flats, the passage time to the nearest outlet (0 there and off the
-  // flats): a flat cell gives to its level neighbours whose key is lower,
-  // in proportion to the difference, and its nearest way to an outlet is
-  // lower by its step's cost, 8 or more.
+  // On a flat, the passage time to its nearest outlet, 8 or more; 0 at the
+  // outlets and off the flats. A flat cell gives to its level neighbours
+  // whose key is lower, in proportion to the difference: its nearest way
+  // out is lower by that step's cost.
   Buffer<int32_t> key;
   int64_t flat_cells = 0;  // 0: the rest is empty
 };

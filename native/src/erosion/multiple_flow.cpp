@@ -140,7 +140,6 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
   // contour length times the key's fall, and takes from those whose key is
   // higher: the masks and shares of the flats' cells and their outlets, made
   // again from the keys after the heights' pass over their row.
-  const uint8_t* on_flat = flats ? flats->flat.data() : nullptr;
   const uint8_t* level = flats ? flats->level.data() : nullptr;
   const int32_t* key = flats ? flats->key.data() : nullptr;
   auto grade_row = [&](int32_t y) {
@@ -149,18 +148,18 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
       const int64_t i = row + x;
       if (!level[i]) continue;
       const bool in = inner(x, y);
+      // (A key above 0: a flat cell. The comparisons are a coin toss on a
+      // flat: without branches.)
       const int32_t ki = key[i];
       unsigned up = higher[size_t(i)], down = lower[size_t(i)];
       double sum = total[size_t(i)];
       for (unsigned m = level[i]; m; m &= m - 1) {
         const int k = std::countr_zero(m);
-        const int64_t j = nbr(i, x, y, in, k);
-        if (on_flat[j] && key[j] > ki) {
-          up |= 1u << k;
-        } else if (on_flat[i] && key[j] < ki) {
-          down |= 1u << k;
-          sum += factor[k] * double(ki - key[j]);
-        }
+        const int32_t kj = key[nbr(i, x, y, in, k)];
+        const bool gives = kj > ki, takes = ki > 0 && kj < ki;
+        up |= unsigned(gives) << k;
+        down |= unsigned(takes) << k;
+        sum += takes ? factor[k] * double(ki - kj) : 0.0;
       }
       higher[size_t(i)] = uint8_t(up);
       lower[size_t(i)] = uint8_t(down);
