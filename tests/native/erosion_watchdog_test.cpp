@@ -24,8 +24,8 @@
 #include "core/error.hpp"
 #include "erosion/erosion.hpp"
 #include "erosion/presets.hpp"
-#include "terrain/terrain.hpp"
 #include "sanitizer.hpp"
+#include "test_terrains.hpp"
 
 namespace ft::erosion {
 namespace {
@@ -76,25 +76,7 @@ class Monitor {
 // edge level: the plain that issue 24's hang wore down to subnormal heights)
 // on the midpoint method, or plain fBm.
 Heightfield terrain(bool landform, int32_t levels, uint64_t seed) {
-  ft_terrain_params p = terrain::default_terrain_params();
-  p.seed = seed;
-  p.threads = 0;
-  if (landform) {
-    p.method = FT_TERRAIN_MIDPOINT;
-    p.levels = levels;
-    p.sigma = 2.0;
-    p.levelling = 1.0;
-    p.height_offset = 1.5;
-    p.falloff = FT_FALLOFF_RADIAL;
-    p.falloff_width = 0.9;
-  } else {
-    p.method = FT_TERRAIN_FBM;
-    p.width = p.height = (1 << levels) + 1;
-    p.hurst = 0.8;
-  }
-  Heightfield hf = terrain::generate_terrain(p);
-  hf.set_world_size(10.0);
-  return hf;
+  return landform ? test::default_mountain(levels, seed) : test::fbm_terrain((1 << levels) + 1, seed);
 }
 
 void erode_under_watchdog(const std::string& preset, bool landform, int32_t levels, uint64_t seed) {
