@@ -13,7 +13,7 @@ extern "C" {
 
 /// The maps ft_erode can return, in world units.
 typedef enum ft_erosion_map {
-  FT_MAP_DRAINAGE_AREA = 0,  ///< upstream area (world units^2), multiple flow (Quinn 1991) on the eroded terrain, pits filled
+  FT_MAP_DRAINAGE_AREA = 0,  ///< upstream area (world units^2), multiple flow (Quinn 1991) on the eroded terrain, pits filled flat, flats crossed along random passage times to their outlets
   FT_MAP_SLOPE = 1,          ///< |grad z| (rise over run)
   FT_MAP_CURVATURE = 2,      ///< Laplacian of z (1 / world units; > 0 in hollows and channels)
   FT_MAP_WATER_DEPTH = 3,    ///< water left by the hydraulic passes (0 without them)

@@ -86,6 +86,7 @@ struct Setup {
 
 void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vector<double>& area,
                         const Progress& progress, const FlatGrading* flats) {
+  if (flats && flats->flat_cells == 0) flats = nullptr;  // (its arrays are empty then)
   const size_t n = g.size();
   const int32_t w = g.width, h = g.height;
   // Interior cells (all eight neighbours inside, also on a torus) take them

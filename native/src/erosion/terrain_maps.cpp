@@ -94,8 +94,7 @@ void erosion_maps(const D8Grid& g, const float* in, const float* out, const std:
   std::vector<double> area;
   {
     const ProgressPart part(progress, kSurfaceShare, kAreaShare - kSurfaceShare);
-    multiple_flow_area(g, surface.z.data(), surface.sink, area, part.progress(),
-                       surface.flats.flat_cells > 0 ? &surface.flats : nullptr);
+    multiple_flow_area(g, surface.z.data(), surface.sink, area, part.progress(), &surface.flats);
   }
   // The eroded and deposited depths are against the input plus what the
   // fluvial run lifted it, so uplift never shows as deposit.
