@@ -8,8 +8,10 @@
 // cells creep with their neighbours inside like any other. Held fixed, the
 // edge row kept the input's rough heights beside the smoothed rows inside, a
 // one-cell fringe at the model's own grid (p99 |Laplacian| of the border
-// 1.2-2.2x the interior's on fBm 257^2); water still leaves there (the
-// fluvial model's outlets), creep only rounds them. Periodic grids solve the cyclic system by Sherman-Morrison, in double: in float its
+// 1.2-2.2x the interior's on fBm 257^2). Water still leaves there: the
+// landscape model keeps the edge cells that gather water from rising
+// (kOutletCells). Periodic grids solve the cyclic system by
+// Sherman-Morrison, in double: in float its
 // correction cancels (1 + v.z is about det A / det A', tiny against its
 // terms once r is large), and a 13 x 3 torus at r = 8e13 turned into NaN
 // (the erosion fuzzer, 2026-11-27), a 4097-sample line at r = 1e4 lost 1e-4
@@ -21,8 +23,7 @@
 // is D x the smaller of their weights x their difference: creep acts only
 // where the mask lets it, and a cell of weight 0 keeps its height. In flux
 // form it moves material without making or losing any (every line keeps
-// its sum). Each
-// line then has its own tridiagonal, eliminated in double in a form without
+// its sum). Each line then has its own tridiagonal, eliminated in double in a form without
 // cancellation, and a periodic line adds its wrap edge by Sherman-Morrison
 // as that edge's own rank-one term, whose denominator is at least 1 (see
 // WeightedLines).

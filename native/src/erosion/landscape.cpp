@@ -232,8 +232,7 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
   BasinGraph basins;
   const bool creep = c.fluvial.diffusion > 0;
   std::vector<float> filled(n), start(n), cap(n), diffused(run.texture && creep ? n : 0),
-      plain(run.texture && creep ? n : 0), settled(run.texture && creep ? n : 0),
-      before_creep(run.crept && creep ? n : 0);
+      plain(run.texture && creep ? n : 0), before_creep(run.crept && creep ? n : 0);
   std::vector<double> discharge(n), sediment(n);
   const int32_t sink = g.periodic ? periodic_sink(g, z) : -1;
   auto mask = [&](int32_t i) { return run.mask ? double(run.mask[i]) : 1.0; };
@@ -354,6 +353,8 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
           }
           return false;
         };
+        // Each cell's new height goes into `diffused` (it reads only its own
+        // there), since its neighbours' z are read.
 #pragma omp parallel for schedule(static)
         for (int64_t i = 0; i < int64_t(n); ++i) {
           float next = plain[i];
@@ -361,12 +362,12 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
             next = diffused[i] + run.texture[i];
             if (beside_deposit(i)) next = std::min(next, std::max(z[i], plain[i]));
           }
-          settled[i] = next;
+          diffused[i] = next;
         }
         // Added as a change (not assigned): the float rounding of the runs
         // without a mask stays as it was.
 #pragma omp parallel for schedule(static)
-        for (int64_t i = 0; i < int64_t(n); ++i) z[i] += settled[i] - z[i];
+        for (int64_t i = 0; i < int64_t(n); ++i) z[i] += diffused[i] - z[i];
       } else {
         hillslope_diffusion(g, z, c.fluvial.diffusion * dt, run.mask);
       }
