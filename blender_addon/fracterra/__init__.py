@@ -8,7 +8,7 @@ imported.
 bl_info = {
     "name": "Fracterra",
     "author": "fracterra authors",
-    "version": (0, 5, 0),
+    "version": (0, 6, 0),
     "blender": (3, 4, 0),
     "location": "View3D > Add > Mesh > Fractal Terrain; Sidebar > Fracterra",
     "description": "Fractal terrains (midpoint displacement, successive additions, fBm, spectral) "

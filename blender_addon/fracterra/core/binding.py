@@ -19,7 +19,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 2
-ABI_MINOR_MIN = 25  # 2.25: ft_splat_colors_linear_rgba; 2.24: ft_build_features, ft_has_feature, ft_heightfield_formats (the Windows build has no GDAL, OpenEXR or OpenSubdiv); 2.23: midpoint planets, the icosphere, the planet's spectrum; 2.22: splat rules files (ft_splat_rules_*); 2.21: the sea as erosion's base level; 2.20: ft_terrain_build_rivers, ft_river_network_grid; 2.19: splat.h, ft_drainage_statistics bound; 2.0: the parameter tables (params.h), ft_hurst_result.struct_size, one name per concept; 2.1: erosion.h; 2.2: terrain windows; 2.3: raster.h; 2.4: tiles.h; 2.5: every params struct described; 2.6: landforms; 2.7: tile sets read back; 2.8: ft_erosion_params described; 2.9: a custom falloff mask; 2.10: tile-set journals, per-tile height ranges; 2.11: camera margin and centre rows, auto camera elevation (the POV-Ray exporter leaves it to the library); 2.12: ft_erosion_preset_fitted, uplift_follows_terrain; 2.13: ft_terrain_build (pipeline.h)
+ABI_MINOR_MIN = 26  # what each minor added: CHANGES.md, "ABI history"
 ENV_VAR = "FRACTERRA_LIBRARY"
 # The library of each platform the add-on zip can carry one for (docs/windows.md).
 LIBRARY_NAMES = {("linux", "x86_64"): "libfracterra.so", ("win32", "amd64"): "fracterra.dll"}

@@ -24,61 +24,8 @@ extern "C" {
 /// incompatibly; the minor one when functions or trailing struct fields are
 /// added. Bindings refuse a library whose major number differs from theirs.
 #define FT_ABI_VERSION_MAJOR 2
-/// 2.0: ft_hurst_result starts with struct_size; one name per concept (world_size_x/y,
-/// has_sea/sea_level, octave_rotation, std_error, FT_FRACTALIZE_MIDPOINT); params.h, the
-/// parameter tables. (1.1: ft_terrain_params.world_size; 1.2: the Mandelbrot fields and
-/// FT_HURST_AUTO; ft_terrain_params keeps their layout, so its 1.x sizes are still accepted.)
-/// The shared library's SOVERSION is this major number.
-/// 2.1: erosion.h (ft_erode, its maps, ft_drainage_statistics).
-/// 2.2: windows of a terrain (ft_terrain_extent, ft_terrain_generate_window(_lod)).
-/// 2.3: raster.h (read and write by extension, ft_dem_refine).
-/// 2.4: tiles.h (tile sets: ft_tileset_*, ft_tile_write); H of windows from increment sums (analysis.h).
-/// 2.5: params.h describes ft_pov_scene_params, ft_pov_sweep_params, ft_hurst_params,
-/// ft_clouds_params and ft_dem_refine_params; each accepts any older struct_size.
-/// 2.6: landforms at the end of ft_terrain_params (levelling, height_offset, falloff,
-/// falloff_width, edge_level, sea, sea_level, sea_fraction); FT_FALLOFF_*, FT_SEA_*.
-/// 2.7: tile sets read back (ft_tileset_extent, ft_tileset_read_window).
-/// 2.8: the erosion parameters are described (FT_PARAMS_EROSION in params.h).
-/// 2.9: a custom falloff mask (FT_FALLOFF_CUSTOM; falloff_mask, falloff_mask_width and
-/// falloff_mask_height at the end of ft_terrain_params).
-/// 2.10: tile sets journal their finished tiles; a set's exact height range can
-///      be computed per tile elsewhere (ft_tileset_open_deferred, ft_tile_height_range).
-/// 2.11: ft_pov_scene_params.camera_margin and camera_center_v (described, so the camera's
-/// ranges are checked once); camera_elevation_deg 0 = auto, by the scene's content
-/// (FT_PARAM_FLAG_ZERO_IS_AUTO in params.h); 0 is ft_pov_scene_params_init's default.
-/// 2.12: ft_erosion_preset_fitted (erosion.h); uplift_follows_terrain at the end of
-///      ft_erosion_params.
-/// 2.13: pipeline.h: ft_terrain_build (generate -> landform -> erode -> maps in one call, one
-///      progress callback; a tiling terrain erodes as a torus of its true period),
-///      ft_build_params (described: FT_PARAMS_BUILD), FT_EROSION_PRESET_*.
-/// 2.14: the erosion landscape model in world units and years: strength, duration,
-///      deposition, rainfall, erosion_mask (+ width, height) and rain_map (+ width,
-///      height) at the end of ft_erosion_params; presets named for what they make
-///      (the old ids stay as aliases); ft_erosion_preset_fitted no longer fits an uplift.
-/// 2.15: hydrology.h: rivers, lakes and the sea (ft_rivers_extract, the ft_river_network
-///      accessors, ft_rivers_carve; FT_PARAMS_HYDROLOGY describes ft_hydrology_params).
-/// 2.17: a given camera, terrain colours and scene light at the end of ft_pov_scene_params
-///      (camera_given, camera_location/direction/right/up, terrain_colors, has_scene_light,
-///      sky_color, sun_color): the add-on's export shows Blender's view and material.
-/// 2.18: planet.h: fractal planets (ft_planet_face, ft_planet_equirect, ft_planet_heights,
-///      ft_planet_sea_height, ft_planet_mesh(_counts)); ft_planet_params (FT_PARAMS_PLANET).
-/// 2.19: splat.h: splat (weight) maps and colour maps by layer rules (ft_splat_params, described:
-///      FT_PARAMS_SPLAT; ft_splat_params_init, ft_splat_default_layers, ft_splat_weights,
-///      ft_splat_colors).
-/// 2.20: rivers as the pipeline's last stage: ft_terrain_build_rivers (pipeline.h) and
-///      ft_build_params.rivers; a terrain that tiles gives rivers that wrap, in every front end;
-///      ft_river_network_grid (the grid a network was traced on).
-/// 2.21: the sea as erosion's base level: ft_erosion_params.sea, sea_level and sea_fraction.
-/// 2.22: splat rules files read through the ABI (ft_splat_rules_read, ft_splat_rules_layers,
-///      ft_splat_rules_free), so the add-on's material checks a file as the CLI does.
-/// 2.23: planet.h: FT_PLANET_MIDPOINT (midpoint displacement on the cube-sphere), the icosphere
-///      (ft_planet_icosphere(_counts)), the spherical-harmonic spectrum (ft_planet_power_spectrum,
-///      ft_planet_spectrum_hurst).
-/// 2.24: ft_build_features, ft_has_feature and ft_heightfield_formats: what this build has
-///      (the Windows build has no GDAL, OpenEXR or OpenSubdiv; docs/windows.md).
-/// 2.25: ft_splat_colors_linear_rgba (splat.h): the colour map as Blender's colour attribute
-///      takes it, with progress and cancel.
-#define FT_ABI_VERSION_MINOR 25
+/// The minor number: what each one added is in CHANGES.md (ABI history).
+#define FT_ABI_VERSION_MINOR 26
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.
