@@ -13,21 +13,21 @@ a layer of lower rank, never one of the same rank (sideways) or higher
        splat/                                  splat and colour maps by layer rules (io/)
     3  polyline/                               polylines (the profile method uses terrain/;
                                                the FPL study uses analysis/)
-       tiles/                                  tile sets of terrains larger than memory
-                                               (windows of terrain/, files through io/)
     3  refine/                                 DEM refinement (uses terrain/)
     3  planet/                                 fractal planets: spherical fBm (noise/), cube-sphere
                                                and equirectangular layouts (terrain/'s tables)
     4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
-       engines/                                game-engine sizes, formats and sidecars, and
-                                               tile sets cut for engines (io/, splat/, tiles/)
        erosion/                                fluvial, hydraulic, thermal erosion and maps
     5  hydrology/                              rivers, lakes and the sea (erosion/'s routing,
                                                polyline/'s FPL, contour/'s shorelines)
     6  pipeline/                               generate -> landform -> erode -> maps -> rivers
                                                in one call (uses terrain/, erosion/, hydrology/)
     7  tables/                                 the parameter tables of every layer, by kind
-    8  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
+       tiles/                                  tile sets of terrains larger than memory (windows
+                                               of pipeline/'s built terrains, files through io/)
+    8  engines/                                game-engine sizes, formats and sidecars, and
+                                               tile sets cut for engines (io/, splat/, tiles/)
+    9  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
                                                by side: both link the static core, neither
                                                includes the other
 
@@ -76,14 +76,14 @@ RANK = {
     "subdiv": 4, "povray": 4,
     "refine": 3,  # a real DEM refined by terrain/'s midpoint method
     "erosion": 4,  # fluvial, hydraulic, thermal; uses analysis/
-    "tiles": 3,  # tile sets: windows of terrain/ written through io/
+    "tiles": 7,  # tile sets: windows of pipeline/'s terrains (generated, eroded) written through io/
     "planet": 3,  # fractal planets: noise/ in 3D on the sphere; terrain/'s enum tables
     "splat": 2,  # splat (weight) and colour maps by layer rules (PNGs through io/)
-    "engines": 4,  # game-engine presets: sizes, formats, sidecars; tile sets cut for engines (io/, splat/, tiles/)
+    "engines": 8,  # game-engine presets: sizes, formats, sidecars; tile sets cut for engines (io/, splat/, tiles/)
     "pipeline": 6,  # the terrain pipeline: terrain/, erosion/, then hydrology/
     "hydrology": 5,  # rivers, lakes, the sea: erosion/'s flow graph, polyline/'s FPL, contour/
     "tables": 7,  # every capability's parameter table, by kind
-    "capi": 8, "cli": 8,
+    "capi": 9, "cli": 9,
 }
 TOP = {"capi", "cli"}  # may include any public header
 # The namespace of each layer, where it is not ft::<folder>.
