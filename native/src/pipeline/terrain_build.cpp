@@ -188,19 +188,6 @@ Heightfield crop(const Heightfield& hf, int64_t x0, int64_t y0, int32_t w, int32
 
 }  // namespace
 
-namespace {
-
-// Samples [x0, x0 + w) x [y0, y0 + h) of `hf`, with the window's share of its world size.
-Heightfield crop(const Heightfield& hf, int64_t x0, int64_t y0, int32_t w, int32_t h) {
-  Heightfield out(w, h);
-  for (int32_t j = 0; j < h; ++j)
-    std::memcpy(out.data() + size_t(j) * w, hf.data() + size_t(y0 + j) * hf.width() + size_t(x0), sizeof(float) * w);
-  if (hf.world_size() > 0) out.set_world_size(hf.world_size() * double(w - 1) / double(hf.width() - 1));
-  return out;
-}
-
-}  // namespace
-
 Heightfield build_terrain_window(const ft_build_params& given, int64_t x0, int64_t y0, int32_t w, int32_t h,
                                  erosion::ErosionMaps* maps) {
   const ft_build_params p = upgraded(build_param_table(), given);
