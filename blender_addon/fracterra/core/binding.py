@@ -305,6 +305,8 @@ SIGNATURES = {
     "ft_terrain_build": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF)]),
     # (ABI 2.20) with the rivers stage: the network's handle (core/rivers.py).
     "ft_terrain_build_rivers": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF), POINTER(c_void_p)]),
+    # (ABI 2.26) a window of what ft_terrain_build makes, heights and maps, bit-identical to the whole's.
+    "ft_terrain_build_window": (c_int32, [_Described("build"), c_int64, c_int64, c_int32, c_int32, POINTER(_HF), POINTER(_HF)]),
     # hydrology.h (ABI 2.15): rivers, lakes and the sea; the segment and lake structs as raw memory.
     "ft_hydrology_params_init": (c_int32, [_Described("hydrology")]),
     "ft_rivers_extract": (c_int32, [_HF, _Described("hydrology"), POINTER(c_void_p)]),
