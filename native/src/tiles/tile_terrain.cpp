@@ -1,7 +1,5 @@
 #include "tiles/tile_terrain.hpp"
 
-#include <cstring>
-
 #include "core/error.hpp"
 #include "erosion/erosion_params.hpp"
 #include "pipeline/build_params.hpp"
@@ -58,32 +56,9 @@ Heightfield& map_of(erosion::ErosionMaps& m, int k) {
   return *all[k];
 }
 
-namespace {
-
-Heightfield crop(const Heightfield& whole, const terrain::Window& w, double spacing) {
-  Heightfield out(w.width, w.height);
-  for (int32_t j = 0; j < w.height; ++j)
-    std::memcpy(out.data() + size_t(j) * size_t(w.width),
-                whole.data() + size_t(w.y0 + j) * size_t(whole.width()) + size_t(w.x0), sizeof(float) * size_t(w.width));
-  out.set_world_size(spacing * double(w.width - 1));
-  return out;
-}
-
-}  // namespace
-
 Heightfield build_window(const TileTerrain& t, const terrain::Window& w, erosion::ErosionMaps* maps) {
   if (!t.built()) return terrain::generate_terrain_window(t.terrain, 0, w.x0, w.y0, w.width, w.height);
-  // Until the pipeline's windows are bounded: the whole, cropped.
-  const ft_build_params b = t.build();
-  erosion::ErosionMaps whole_maps;
-  const Heightfield whole = pipeline::build_terrain(b, maps ? &whole_maps : nullptr);
-  if (w.x0 < 0 || w.y0 < 0 || w.width < 1 || w.height < 1 || w.x0 + w.width > whole.width() ||
-      w.y0 + w.height > whole.height())
-    invalid("the window is outside the terrain");
-  const double spacing = whole.world_size() / double(whole.width() - 1);
-  if (maps)
-    for (int k = 0; k < FT_MAP_COUNT; ++k) map_of(*maps, k) = crop(map_of(whole_maps, k), w, spacing);
-  return crop(whole, w, spacing);
+  return pipeline::build_terrain_window(t.build(), w.x0, w.y0, w.width, w.height, maps);
 }
 
 }  // namespace ft::tiles
