@@ -318,9 +318,10 @@ def _blender_terrain_params(dyadic):
               "Fade the object's outline inward over the Falloff Width (a smoothstep); off: a step at the "
               "outline"),
         # The terrain's colours (the material's Base Color, the POV-Ray export's texture).
-        Param("splat_rules", "string", "", "Splat Rules",
-              "Layer rules JSON ({\"layers\": [{\"name\": ..., \"slope_min\": ...}]}, as fracterra splat --rules "
-              "reads it) that colour the terrain; blank: the built-in grass, rock, sediment and snow",
+        Param("splat_rules", "string", "", "Material Rules",
+              "Splat rules: a JSON file of layers ({\"layers\": [{\"name\": ..., \"slope_min\": ...}]}, as "
+              "fracterra splat --rules reads it) that colour the terrain by height, slope and erosion; blank: the "
+              "built-in grass, rock, sediment and snow",
               subtype="FILE_PATH"),
         # Mesh options.
         Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
