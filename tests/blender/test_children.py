@@ -279,6 +279,19 @@ class PolylineDefaultsTest(unittest.TestCase):
         self.assertEqual((tuple(s.start), tuple(s.end)), ((0.0, 0.0, 10.0), (0.0, 0.0, 0.0)))
 
 
+class PlanetDefaultsTest(unittest.TestCase):
+    def test_the_default_planet_shows_its_relief(self):
+        # Its land must rise over 1 % of the radius above the sea for the default
+        # view to shade it (at Exaggeration 20 it rose 0.4 %: a flat disc).
+        clear_scene()
+        self.assertEqual(bpy.ops.mesh.fracterra_planet_add(level=5), {"FINISHED"})
+        planet = bpy.context.active_object
+        co = np.array([v.co for v in planet.data.vertices])
+        r = np.linalg.norm(co, axis=1) / planet.fracterra_planet.scene_radius
+        sea = np.linalg.norm(child(planet, "SEA").data.vertices[0].co) / planet.fracterra_planet.scene_radius
+        self.assertGreater(r.max() - r.min(), 0.01, (r.min(), r.max(), sea))
+
+
 class WidthLayout:
     """Stands in for a UILayout in background mode: records what each label,
     field and button would show, and how much of the row it gets (a split's

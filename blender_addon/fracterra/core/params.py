@@ -424,7 +424,9 @@ def _blender_planet_params():
         Param("preview_level", "int", 6, "Preview Level",
               "Auto Update (and the redo panel) builds at this level so editing stays interactive; the Preview "
               "is the Final's every 2^k-th sample, the same planet with less detail", min=0, max=top),
-        Param("vertical_scale", "float", 20.0, "Exaggeration",
+        # 60: the default planet's land rises 1.25 % of its radius above the sea, whose
+        # shading the default view shows (at 20, 0.4 %: a flat disc of colour).
+        Param("vertical_scale", "float", 60.0, "Exaggeration",
               "Heights times this: at 1 an Earth's 8 km mountains are 0.1 % of its radius, invisible from space",
               min=0.0, soft_max=200.0, precision=1),
         Param("scene_radius", "float", 1.0, "Scene Radius",
