@@ -4,32 +4,9 @@
 native/src/ is layered by capability, one folder per layer; native/cli/ is the
 `fracterra` tool. A file may include a project header of its own layer or of
 a layer of lower rank, never one of the same rank (sideways) or higher
-(upwards). The ranks are the README's layer picture:
-
-    0  core/                                   rng, errors, heightfield, buffers, images
-    1  io/ noise/ contour/ mesh/ preview/      file formats, noise bases, level sets,
-       analysis/                               grid meshes, relief, measures (H, D, stats)
-    2  terrain/                                terrains and the 1D Voss profile (uses noise/)
-       splat/                                  splat and colour maps by layer rules (io/)
-    3  polyline/                               polylines (the profile method uses terrain/;
-                                               the FPL study uses analysis/)
-       tiles/                                  tile sets of terrains larger than memory
-                                               (windows of terrain/, files through io/)
-    3  refine/                                 DEM refinement (uses terrain/)
-    3  planet/                                 fractal planets: spherical fBm (noise/), cube-sphere
-                                               and equirectangular layouts (terrain/'s tables)
-    4  subdiv/ povray/                         OpenSubdiv; POV-Ray scenes (use io/)
-       engines/                                game-engine sizes, formats and sidecars, and
-                                               tile sets cut for engines (io/, splat/, tiles/)
-       erosion/                                fluvial, hydraulic, thermal erosion and maps
-    5  hydrology/                              rivers, lakes and the sea (erosion/'s routing,
-                                               polyline/'s FPL, contour/'s shorelines)
-    6  pipeline/                               generate -> landform -> erode -> maps -> rivers
-                                               in one call (uses terrain/, erosion/, hydrology/)
-    7  tables/                                 the parameter tables of every layer, by kind
-    8  capi/ cli/                              the C ABI (libfracterra.so) and the tool, side
-                                               by side: both link the static core, neither
-                                               includes the other
+(upwards). The ranks are LAYERS below, each with what it holds; `--picture`
+prints them as docs/architecture.md shows them, and the check fails when the
+two differ (`--write-picture` rewrites the document's picture).
 
 Public headers (`fracterra/*.h`, the C ABI) are included by capi/ and cli/, and
 by the layer a header is named after (terrain/ includes fracterra/terrain.h for
@@ -38,8 +15,8 @@ cli/; a header named after no layer (core.h: status codes) by anyone.
 Third-party headers with one home: OpenSubdiv only in subdiv/, CLI11 only in
 cli/.
 
-A folder that is not in the table is an error too: a new layer gets its rank
-here and in the README.
+A folder that is not in the table is an error too: a new layer gets its row
+in LAYERS (and `--write-picture` puts it into docs/architecture.md).
 
 Namespaces follow the folders, one layer = one namespace, as OpenSubdiv's
 Sdc/Vtr/Far do: core/ is the root namespace `ft` (everything stands on it);
@@ -60,6 +37,8 @@ Usage:
 
     scripts/check_layers.py [--root DIR]     # exit 1 and one line per violation
     scripts/check_layers.py --self-test      # the check catches planted bad includes
+    scripts/check_layers.py --picture        # the layer picture, generated from LAYERS
+    scripts/check_layers.py --write-picture  # ... written into docs/architecture.md
 """
 
 import argparse
@@ -68,23 +47,36 @@ import sys
 import tempfile
 from pathlib import Path
 
-RANK = {
-    "core": 0,
-    "io": 1, "noise": 1, "contour": 1, "mesh": 1, "preview": 1, "analysis": 1,
-    "terrain": 2,
-    "polyline": 3,
-    "subdiv": 4, "povray": 4,
-    "refine": 3,  # a real DEM refined by terrain/'s midpoint method
-    "erosion": 4,  # fluvial, hydraulic, thermal; uses analysis/
-    "tiles": 3,  # tile sets: windows of terrain/ written through io/
-    "planet": 3,  # fractal planets: noise/ in 3D on the sphere; terrain/'s enum tables
-    "splat": 2,  # splat (weight) and colour maps by layer rules (PNGs through io/)
-    "engines": 4,  # game-engine presets: sizes, formats, sidecars; tile sets cut for engines (io/, splat/, tiles/)
-    "pipeline": 6,  # the terrain pipeline: terrain/, erosion/, then hydrology/
-    "hydrology": 5,  # rivers, lakes, the sea: erosion/'s flow graph, polyline/'s FPL, contour/
-    "tables": 7,  # every capability's parameter table, by kind
-    "capi": 8, "cli": 8,
+# Every layer: its rank and what it holds (the picture in docs/architecture.md
+# is generated from these rows).
+LAYERS = {
+    "core": (0, "rng, errors, heightfield, polyline set, gray image, memory cap, threads; platform*: the OS calls"),
+    "io": (1, "files: PNG, PGM, npy, RAW16, OpenEXR, GDAL rasters and vectors, OBJ, PLY, SVG plots"),
+    "noise": (1, "noise bases and the fBm octave sum, in 2D and 3D"),
+    "contour": (1, "level sets by marching squares (coastlines, shorelines, curves of equal escape time)"),
+    "mesh": (1, "grid topology for Blender's mesh arrays"),
+    "preview": (1, "shaded relief"),
+    "analysis": (1, "H, D, spectra, the polyline statistics, Horton's ratios"),
+    "terrain": (2, "the method table terrain_methods.hpp, one *_method.cpp per method; landforms; windows"),
+    "splat": (2, "splat and colour maps by layer rules, their table and JSON (PNGs through io/)"),
+    "polyline": (3, "fractal polylines (the profile method uses terrain/'s 1D Voss profile; the FPL study, analysis/)"),
+    "refine": (3, "a real DEM refined by terrain/'s midpoint method, H from analysis/"),
+    "tiles": (3, "tile sets larger than memory: windows of terrain/, manifests, VRT mosaics through io/"),
+    "planet": (3, "fractal planets: fBm on the sphere (noise/), midpoint displacement on the cube-sphere; layouts"),
+    "subdiv": (4, "fractalize meshes: the only OpenSubdiv user"),
+    "povray": (4, "POV-Ray scenes: height_field, sphere_sweep, mesh2, lights and sky (files through io/)"),
+    "erosion": (4, "the landscape model; fluvial, hydraulic, thermal passes; flow routing; maps; drainage statistics"),
+    "engines": (4, "Unity, Unreal, Godot: sizes, formats, sidecars, tile sets cut for them (io/, splat/, tiles/)"),
+    "hydrology": (5, "rivers, lakes, the sea (erosion/'s flow graph, polyline/'s FPL, contour/'s shorelines)"),
+    "pipeline": (6, "generate -> landform -> erode -> maps -> rivers in one call (ft_terrain_build)"),
+    "tables": (7, "every layer's parameter table by kind (ft_params_describe, `fracterra params`)"),
+    "capi": (8, "the extern \"C\" ABI: libfracterra.so = capi/ + the static core"),
+    "cli": (8, "the fracterra tool: links the static core and calls the C++ layers; neither includes capi/"),
 }
+RANK = {layer: rank for layer, (rank, _) in LAYERS.items()}
+PICTURE_DOC = Path("docs/architecture.md")
+PICTURE_BEGIN = "<!-- layers: generated by scripts/check_layers.py --write-picture -->"
+PICTURE_END = "<!-- /layers -->"
 TOP = {"capi", "cli"}  # may include any public header
 # The namespace of each layer, where it is not ft::<folder>.
 NAMESPACE = {"core": "ft", "povray": "ft::pov"}
@@ -138,8 +130,8 @@ def violations(root):
     files = sorted(p for d in (root / "native" / "src", root / "native" / "cli") if d.is_dir()
                    for p in d.rglob("*") if p.suffix in SUFFIXES and p.is_file())
     for folder in sorted({layer_of(p, root) for p in files} - set(RANK)):
-        out.append(f"native/src/{folder}/: a layer without a rank; give it one in scripts/check_layers.py "
-                   "and in the README's layer picture")
+        out.append(f"native/src/{folder}/: a layer without a rank; give it a row in LAYERS in scripts/check_layers.py "
+                   "(then --write-picture)")
     for path in files:
         layer = layer_of(path, root)
         if layer not in RANK:
@@ -179,6 +171,42 @@ def violations(root):
     return out
 
 
+def picture():
+    """The layer picture: one line per layer, highest rank first, as docs/architecture.md shows it."""
+    lines = ["    rank  layer       what it holds"]
+    for layer, (rank, what) in sorted(LAYERS.items(), key=lambda kv: (-kv[1][0], kv[0])):
+        lines.append(f"    {rank:4d}  {layer + '/':<10}  {what}")
+    return "\n".join(lines) + "\n"
+
+
+def picture_in(doc):
+    """The picture between the markers of `doc`, or None."""
+    text = doc.read_text()
+    if PICTURE_BEGIN not in text or PICTURE_END not in text:
+        return None
+    return text.split(PICTURE_BEGIN, 1)[1].split(PICTURE_END, 1)[0].strip("\n") + "\n"
+
+
+def write_picture(doc):
+    text = doc.read_text()
+    head, rest = text.split(PICTURE_BEGIN, 1)
+    tail = rest.split(PICTURE_END, 1)[1]
+    doc.write_text(head + PICTURE_BEGIN + "\n\n" + picture() + "\n" + PICTURE_END + tail)
+
+
+def picture_violations(root):
+    doc = root / PICTURE_DOC
+    if not doc.is_file():
+        return []  # a scratch tree (the self-test)
+    shown = picture_in(doc)
+    if shown is None:
+        return [f"{PICTURE_DOC}: no layer picture between {PICTURE_BEGIN} and {PICTURE_END}"]
+    if shown.strip() != picture().strip():
+        return [f"{PICTURE_DOC}: the layer picture differs from LAYERS in scripts/check_layers.py; "
+                "run scripts/check_layers.py --write-picture"]
+    return []
+
+
 def self_test():
     """Plants one bad include of each kind in a scratch tree and checks each is reported,
     and that the same tree without them passes."""
@@ -213,6 +241,19 @@ def self_test():
         if found:
             print("self-test: a clean tree was reported:", *found, sep="\n  ")
             return 1
+        # The picture: the generated one passes, one with a layer's rank changed fails.
+        doc = root / PICTURE_DOC
+        doc.parent.mkdir(parents=True, exist_ok=True)
+        doc.write_text(f"# x\n{PICTURE_BEGIN}\n{PICTURE_END}\n")
+        write_picture(doc)
+        if picture_violations(root):
+            print("self-test: the generated picture was reported:", *picture_violations(root), sep="\n  ")
+            return 1
+        doc.write_text(doc.read_text().replace("       0  core/", "       1  core/"))
+        if not any("differs" in v for v in picture_violations(root)):
+            print("self-test: a picture that differs from LAYERS was not reported")
+            return 1
+        doc.unlink()
         for rel, (text, _) in bad.items():
             (root / rel).parent.mkdir(parents=True, exist_ok=True)
             (root / rel).write_text(text)
@@ -222,7 +263,8 @@ def self_test():
         if missed or len(found) != len(bad):
             print("self-test: planted bad includes not reported (or extra reports):", *missed, *found, sep="\n  ")
             return 1
-    print(f"self-test: all {len(bad)} planted bad includes and namespaces reported, the clean tree passes")
+    print(f"self-test: all {len(bad)} planted bad includes and namespaces reported, a wrong layer picture too, "
+          "the clean tree passes")
     return 0
 
 
@@ -230,10 +272,18 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--root", type=Path, default=Path(__file__).resolve().parents[1])
     ap.add_argument("--self-test", action="store_true")
+    ap.add_argument("--picture", action="store_true", help="print the layer picture")
+    ap.add_argument("--write-picture", action="store_true", help=f"write the picture into {PICTURE_DOC}")
     args = ap.parse_args()
     if args.self_test:
         return self_test()
-    found = violations(args.root)
+    if args.picture:
+        print(picture(), end="")
+        return 0
+    if args.write_picture:
+        write_picture(args.root / PICTURE_DOC)
+        return 0
+    found = violations(args.root) + picture_violations(args.root)
     for v in found:
         print(v)
     if found:

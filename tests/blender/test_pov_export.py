@@ -8,6 +8,7 @@ with the terrain and colour it alike.
 Set FT_POV_COMPARE_OUT to a folder to keep the renders for a look."""
 
 import array
+import math
 import os
 import re
 import shutil
@@ -30,6 +31,11 @@ VECTOR = rf"<\s*({NUMBER}),\s*({NUMBER}),\s*({NUMBER})\s*>"
 
 
 clear_scene = addon_harness.clear_scene
+
+# Blender's default scene (--factory-startup): its point light and camera, kept
+# before any test clears the scene (the light and camera data stay in the file).
+FACTORY = {name: (obj.data.name, obj.matrix_world.copy()) for name, obj in bpy.data.objects.items()
+           if obj.type in ("LIGHT", "CAMERA")}
 
 
 def vector_after(text, keyword):
@@ -230,6 +236,249 @@ class PovExportMatchesBlender(unittest.TestCase):
         colors = read_rgba(self.dir / "scene.colors.png")
         self.assertTrue(np.allclose(colors[..., :3], 0.8, atol=0.004), colors[0, 0])
 
+
+
+# ---- One scene, two renderers: Cycles and POV-Ray compared block by block ----
+
+BLOCKS = 8
+SIZE = (160, 90)
+
+
+def block_means(rgb, n=BLOCKS):
+    """(n, n, 3) means of linear RGB over an n x n grid of blocks (rows from the top)."""
+    rows = np.array_split(np.arange(rgb.shape[0]), n)
+    cols = np.array_split(np.arange(rgb.shape[1]), n)
+    return np.array([[rgb[r[0]:r[-1] + 1, c[0]:c[-1] + 1].reshape(-1, 3).mean(axis=0) for c in cols] for r in rows])
+
+
+def luminance(rgb):
+    """Rec. 709 relative luminance of linear RGB (..., 3)."""
+    return rgb @ np.array([0.2126, 0.7152, 0.0722])
+
+
+def hue_and_chroma(rgb):
+    """Hue angle (radians) and chroma relative to brightness of linear RGB (..., 3), from the
+    opponent axes of the hexagonal hue model (HSV's hue, continuous)."""
+    r, g, b = rgb[..., 0], rgb[..., 1], rgb[..., 2]
+    alpha, beta = r - 0.5 * (g + b), np.sqrt(3.0) / 2.0 * (g - b)
+    return np.arctan2(beta, alpha), np.hypot(alpha, beta) / np.maximum(rgb.sum(axis=-1) / 3.0, 1e-6)
+
+
+def render_cycles_direct(path, samples, seed):
+    """Cycles as POV-Ray traces: direct light and mirror reflections only (POV-Ray has no
+    diffuse interreflection), on the CPU, without denoising, as plain sRGB."""
+    scene = bpy.context.scene
+    scene.render.engine = "CYCLES"
+    c = scene.cycles
+    c.device, c.samples, c.use_denoising, c.seed = "CPU", samples, False, seed
+    c.max_bounces, c.diffuse_bounces, c.glossy_bounces = 2, 0, 2
+    c.transmission_bounces = c.volume_bounces = c.transparent_max_bounces = 0
+    scene.render.film_transparent = False
+    scene.render.image_settings.file_format = "PNG"
+    scene.render.image_settings.color_mode = "RGB"
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure, scene.view_settings.gamma = 0.0, 1.0
+    scene.render.filepath = str(path)
+    bpy.ops.render.render(write_still=True)
+
+
+def principled_excess(roughness, samples=32):
+    """How much brighter Cycles' Principled BSDF (base 0.3, Specular 0.5, this roughness) is than
+    a Lambertian surface of the same colour, which is what the export writes: the log ratio of
+    the two on a flat plane under a sun, over views from 20 to 75 degrees off the normal and sun
+    elevations of 40 and 70 degrees. Returns (smallest, largest)."""
+    ratios = []
+    scene = bpy.context.scene
+    for view in (20, 50, 75):
+        for tilt in (20, 50):
+            values = []
+            for shader in ("ShaderNodeBsdfPrincipled", "ShaderNodeBsdfDiffuse"):
+                clear_scene()
+                bpy.ops.mesh.primitive_plane_add(size=200)
+                mat = bpy.data.materials.new("calibration")
+                mat.use_nodes = True
+                nodes = mat.node_tree.nodes
+                nodes.clear()
+                bsdf = nodes.new(shader)
+                bsdf.inputs[0].default_value = (0.3, 0.3, 0.3, 1)
+                if shader == "ShaderNodeBsdfPrincipled":
+                    bsdf.inputs["Roughness"].default_value = roughness
+                out = nodes.new("ShaderNodeOutputMaterial")
+                mat.node_tree.links.new(bsdf.outputs[0], out.inputs[0])
+                bpy.context.active_object.data.materials.append(mat)
+                v = math.radians(view)
+                bpy.ops.object.camera_add(location=(0, -10 * math.sin(v), 10 * math.cos(v)), rotation=(v, 0, 0))
+                scene.camera = bpy.context.active_object
+                scene.camera.data.type, scene.camera.data.ortho_scale = "ORTHO", 0.5
+                bpy.ops.object.light_add(type="SUN", rotation=(math.radians(tilt), 0, math.radians(200)))
+                bpy.context.active_object.data.energy = 3.0
+                scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+                scene.render.resolution_x = scene.render.resolution_y = 8
+                path = Path(tempfile.mkdtemp()) / "calibration.png"
+                render_cycles_direct(path, samples, 1)
+                values.append(luminance(read_rgba(path)[..., :3].reshape(-1, 3).mean(axis=0)))
+                shutil.rmtree(path.parent)
+                bpy.data.materials.remove(mat)
+            ratios.append(math.log(values[0] / values[1]))
+    scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
+    clear_scene()
+    return min(ratios), max(ratios)
+
+
+class OneSceneTwoRenderers(unittest.TestCase):
+    """The same scene rendered by Cycles and by POV-Ray from the add-on's export, compared as
+    8 x 8 block means of luminance and hue at 160 x 90.
+
+    Cycles renders as POV-Ray traces: direct light and mirror reflections, no light bounced off
+    diffuse surfaces (POV-Ray has none without radiosity). What then still differs, and so makes
+    the tolerance of a block's log luminance ratio log(POV-Ray / Cycles):
+    - Cycles' Principled BSDF is brighter than the Lambertian surface POV-Ray is given (Disney
+      diffuse's grazing retro-reflection and a broad specular lobe): measured here on a flat
+      calibration plane in the terrain material's roughness, as log ratios in [rho_lo, rho_hi]
+      (about 0.05 to 0.37): POV-Ray blocks may be darker by up to rho_hi;
+    - Cycles' noise: two Cycles renders with other seeds differ by n at most per block (measured
+      in each test); 3 n is allowed;
+    - edges: POV-Ray's smooth height_field against Blender's flat quads and sharp shadows against
+      soft ones move a boundary by about a pixel; across a block's 20-pixel side that is 20 of its
+      at least 220 pixels, 9% of the contrast across it: log(1.1) = 0.1 is allowed.
+    So every block lies in [-(rho_hi + m), m] with m = 3 n + 0.1, and the median of the blocks,
+    whose edges and noise average out, in [-(rho_hi + 3 n), -rho_lo + 3 n + 0.05].
+    Hue (blocks whose chroma is over 0.15 in both): the renderers share the colours, so hue moves
+    only with noise (3 times the seeds' largest difference) and with the Principled excess, which
+    brightens the lights' share of a block against the sky's: measured by rendering POV-Ray again
+    with every light exp(rho_hi) times brighter; that shift plus the noise plus 2 degrees (the
+    8-bit images' rounding of dark colours) is allowed."""
+
+    @classmethod
+    def setUpClass(cls):
+        roughness = addon_harness.submodule("blender.build.splat_material").ROUGHNESS
+        cls.rho_lo, cls.rho_hi = principled_excess(roughness)
+        print(f"Principled over Lambert at roughness {roughness}: log ratio {cls.rho_lo:.3f} .. {cls.rho_hi:.3f}",
+              flush=True)
+
+    def setUp(self):
+        clear_scene()
+        for curve in list(bpy.data.curves):
+            bpy.data.curves.remove(curve)
+        self.keep = os.environ.get("FT_POV_COMPARE_OUT")
+        self.dir = Path(tempfile.mkdtemp())
+        scene = bpy.context.scene
+        scene.render.resolution_x, scene.render.resolution_y = SIZE
+        scene.render.resolution_percentage = 100
+        world = scene.world
+        world.use_nodes = True
+        world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.0509, 0.0509, 0.0509, 1.0)
+        world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
+
+    def tearDown(self):
+        if self.keep:
+            os.makedirs(self.keep, exist_ok=True)
+            for f in self.dir.glob("*.png"):
+                shutil.copy(f, Path(self.keep, f"{self._testMethodName}-{f.name}"))
+        shutil.rmtree(self.dir)
+
+    def factory(self, kind):
+        """The factory scene's light or camera object, back in the scene."""
+        name = {"LIGHT": "Light", "CAMERA": "Camera"}[kind]
+        data_name, matrix = FACTORY[name]
+        data = (bpy.data.lights if kind == "LIGHT" else bpy.data.cameras)[data_name]
+        obj = bpy.data.objects.new(name, data)
+        bpy.context.scene.collection.objects.link(obj)
+        obj.matrix_world = matrix
+        if kind == "CAMERA":
+            bpy.context.scene.camera = obj
+        return obj
+
+    def export_render(self, terrain, name):
+        bpy.context.view_layer.objects.active = terrain
+        pov = self.dir / f"{name}.pov"
+        result = bpy.ops.export_scene.fracterra_pov(filepath=str(pov), render=True, antialias=0.1)
+        self.assertEqual(result, {"FINISHED"})
+        return read_rgba(self.dir / f"{name}.png")[..., :3]
+
+    def renders(self, terrain):
+        """Linear RGB of the scene: Cycles, Cycles with another seed, POV-Ray, and POV-Ray with every
+        light exp(rho_hi) times as strong."""
+        images = []
+        for seed in (1, 2):
+            png = self.dir / f"cycles{seed}.png"
+            render_cycles_direct(png, 24, seed)
+            images.append(read_rgba(png)[..., :3])
+        images.append(self.export_render(terrain, "povray"))
+        lights = [o.data for o in bpy.context.scene.objects if o.type == "LIGHT"]
+        for data in lights:
+            data.energy *= math.exp(self.rho_hi)
+        try:
+            images.append(self.export_render(terrain, "povray-brighter"))
+        finally:
+            for data in lights:
+                data.energy /= math.exp(self.rho_hi)
+        self.assertEqual(images[2].shape, images[0].shape)
+        return images
+
+    def compare(self, cycles, cycles_again, pov, pov_brighter, what):
+        blocks = [block_means(x) for x in (cycles, cycles_again, pov, pov_brighter)]
+        floor = 0.004  # linear luminance below which blocks are black to the eye (8-bit sRGB 12)
+        y = [luminance(b) + floor for b in blocks]
+        ratio = np.log(y[2] / y[0])
+        noise = np.abs(np.log(y[1] / y[0])).max()
+        m = 3 * noise + 0.1
+        lo, hi = -(self.rho_hi + m), m
+        median = float(np.median(ratio))
+        median_lo, median_hi = -(self.rho_hi + 3 * noise), -self.rho_lo + 3 * noise + 0.05
+        hue = [hue_and_chroma(b) for b in blocks]
+        coloured = (hue[0][1] > 0.15) & (hue[2][1] > 0.15)
+        self.assertGreater(coloured.sum(), 16, "too few coloured blocks to compare hues")
+
+        def turn(a, b):
+            return np.degrees(np.abs(np.angle(np.exp(1j * (a - b)))))[coloured]
+        dh = turn(hue[2][0], hue[0][0])
+        hue_tolerance = 3 * turn(hue[1][0], hue[0][0]).max() + turn(hue[3][0], hue[2][0]).max() + 2.0
+        print(f"{what}: log luminance POV-Ray / Cycles median {median:+.3f} (allowed {median_lo:+.3f} .. "
+              f"{median_hi:+.3f}), blocks {ratio.min():+.3f} .. {ratio.max():+.3f} (allowed {lo:+.3f} .. {hi:+.3f}); "
+              f"hue over {coloured.sum()} blocks up to {dh.max():.1f} deg (allowed {hue_tolerance:.1f})", flush=True)
+        self.assertTrue(median_lo <= median <= median_hi, f"{what}: median log ratio {median:+.3f}")
+        bad = np.argwhere((ratio < lo) | (ratio > hi))
+        self.assertEqual(len(bad), 0, f"{what}: blocks (row, column) out of [{lo:+.3f}, {hi:+.3f}]: "
+                         f"{[(int(r), int(c), round(float(ratio[r, c]), 3)) for r, c in bad]}")
+        worst = tuple(int(i) for i in np.argwhere(coloured)[int(np.argmax(dh))])
+        self.assertLessEqual(dh.max(), hue_tolerance, f"{what}: hue turned by {dh.max():.1f} degrees in block {worst}: "
+                             f"Cycles {blocks[0][worst]}, POV-Ray {blocks[2][worst]}")
+
+    def terrain(self, **kw):
+        args = dict(levels=6, seed=13)
+        args.update(kw)
+        self.assertEqual(bpy.ops.mesh.fracterra_terrain_add(**args), {"FINISHED"})
+        return bpy.context.active_object
+
+    def test_default_point_light(self):
+        terrain = self.terrain()
+        self.factory("LIGHT")
+        self.factory("CAMERA")
+        self.compare(*self.renders(terrain), "default point light")
+
+    def test_sun_and_sky(self):
+        terrain = self.terrain()
+        self.factory("CAMERA")
+        bpy.ops.object.light_add(type="SUN", rotation=(0.7, 0.15, 2.2))
+        sun = bpy.context.active_object.data
+        sun.energy, sun.color = 3.0, (1.0, 0.85, 0.65)
+        bpy.context.scene.world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.25, 0.32, 0.5, 1)
+        self.compare(*self.renders(terrain), "sun and sky")
+
+    def test_rivers_lakes_and_sea(self):
+        terrain = self.terrain(erode_preset="VALLEYS", sea="FRACTION", sea_fraction=0.45)
+        terrain.fracterra_terrain.rivers_width_coefficient = 0.08  # rivers a pixel or two wide at 160 x 90
+        self.assertEqual(bpy.ops.object.fracterra_rivers(), {"FINISHED"})
+        kinds = {c.get("fracterra_kind") for c in terrain.children}
+        self.assertTrue({"RIVERS", "SEA"} <= kinds, kinds)
+        bpy.ops.object.camera_add(location=(0.0, -11.0, 7.0), rotation=(1.0, 0.0, 0.0))
+        bpy.context.scene.camera = bpy.context.active_object
+        bpy.ops.object.light_add(type="SUN", rotation=(0.6, 0.2, 0.9))
+        bpy.context.active_object.data.energy = 3.0
+        bpy.context.scene.world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.3, 0.35, 0.45, 1)
+        self.compare(*self.renders(terrain), "rivers, lakes and sea")
 
 if __name__ == "__main__":
     addon_harness.run(globals())

@@ -1,5 +1,5 @@
-# Includes point only downwards through the layers of native/ (the README's
-# picture); the second test plants bad includes in a scratch tree and checks
+# Includes point only downwards through the layers of native/ (the picture in
+# docs/architecture.md, generated from the check's own table); the second test plants bad includes in a scratch tree and checks
 # that each is reported, so the first cannot pass by reporting nothing.
 find_program(FT_LAYERS_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT FT_LAYERS_PYTHON3)

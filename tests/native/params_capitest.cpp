@@ -86,7 +86,7 @@ const std::vector<Field> kPovSceneFields = {
         sea_level, lines, line_set_count, camera_azimuth_deg, camera_elevation_deg, camera_fov_deg, camera_aspect,
         camera_distance_scale, sun_azimuth_deg, sun_elevation_deg, image_path, camera_margin, camera_center_v,
         camera_given, camera_location, camera_direction, camera_right, camera_up, terrain_colors, has_scene_light,
-        sky_color, sun_color),
+        sky_color, sun_color, lights, light_count, line_materials, rivers, water_material, meshes, mesh_count),
 };
 const std::vector<Field> kPovSweepFields = {
     FT_FIELDS(ft_pov_sweep_params, struct_size, spline, segments_per_sweep, default_radius, radius_scale, tolerance),

@@ -51,6 +51,25 @@ def test_an_eroded_periodic_midpoint_terrain_still_tiles(core):
     assert np.array_equal(area[-1], area[0])
 
 
+def test_a_window_is_the_wholes_samples_heights_and_maps(core):
+    # ft_terrain_build_window (ABI 2.26) through the binding: the samples of the whole, byte for byte.
+    values, _ = CASES["periodic midpoint"]
+    hf, maps = core.build_terrain(values, preset="LAND", maps=True)
+    with hf:
+        z = np.frombuffer(hf.to_array(), dtype=np.float32).reshape(hf.height, hf.width)
+    x0, y0, w, h = 5, 9, 23, 17
+    win, win_maps = core.build_terrain(values, preset="LAND", maps=True, window=(x0, y0, w, h))
+    with win:
+        assert (win.width, win.height) == (w, h)
+        got = np.frombuffer(win.to_array(), dtype=np.float32).reshape(h, w)
+    assert np.array_equal(got, z[y0:y0 + h, x0:x0 + w])
+    for name, whole in maps.items():
+        m = np.frombuffer(whole, dtype=np.float32).reshape(z.shape)
+        assert np.array_equal(np.frombuffer(win_maps[name], dtype=np.float32).reshape(h, w), m[y0:y0 + h, x0:x0 + w]), name
+    with pytest.raises(core.InvalidArgumentError, match="lies outside"):
+        core.build_terrain(values, preset="LAND", window=(z.shape[1] - 3, 0, 4, 4))
+
+
 def test_custom_erosion_settings_pass_through_and_a_preset_sets_only_its_own(core):
     from fracterra.core import erosion
     values, _ = CASES["bounded fbm"]

@@ -175,6 +175,27 @@ class PovSceneLines(Structure):
     _fields_ = [("lines", c_void_p), ("kind", c_int32), ("radius", c_double)]
 
 
+class PovLight(Structure):
+    """ft_pov_light (fracterra/povray.h): an array of them is the data that
+    ft_pov_scene_params.lights points to."""
+    _fields_ = [("kind", c_int32), ("color", c_double * 3), ("power", c_double), ("location", c_double * 3),
+                ("direction", c_double * 3), ("spot_size_deg", c_double), ("spot_blend", c_double),
+                ("spot_cos_power", c_double), ("area_u", c_double * 3), ("area_v", c_double * 3),
+                ("area_ellipse", c_int32), ("shadows", c_int32)]
+
+
+class PovMaterial(Structure):
+    """ft_pov_material (fracterra/povray.h)."""
+    _fields_ = [("color", c_double * 3), ("emission", c_double * 3), ("roughness", c_double),
+                ("specular", c_double), ("water", c_int32)]
+
+
+class PovSceneMesh(Structure):
+    """ft_pov_scene_mesh (fracterra/povray.h): an array of them is the data that
+    ft_pov_scene_params.meshes points to."""
+    _fields_ = [("mesh", c_void_p), ("material", PovMaterial), ("smooth", c_int32)]
+
+
 class GridCounts(Structure):
     """ft_grid_counts (fracterra/mesh.h)."""
     _fields_ = [("vertices", c_int64), ("edges", c_int64), ("faces", c_int64), ("loops", c_int64)]
@@ -284,6 +305,8 @@ SIGNATURES = {
     "ft_terrain_build": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF)]),
     # (ABI 2.20) with the rivers stage: the network's handle (core/rivers.py).
     "ft_terrain_build_rivers": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF), POINTER(c_void_p)]),
+    # (ABI 2.26) a window of what ft_terrain_build makes, heights and maps, bit-identical to the whole's.
+    "ft_terrain_build_window": (c_int32, [_Described("build"), c_int64, c_int64, c_int32, c_int32, POINTER(_HF), POINTER(_HF)]),
     # hydrology.h (ABI 2.15): rivers, lakes and the sea; the segment and lake structs as raw memory.
     "ft_hydrology_params_init": (c_int32, [_Described("hydrology")]),
     "ft_rivers_extract": (c_int32, [_HF, _Described("hydrology"), POINTER(c_void_p)]),

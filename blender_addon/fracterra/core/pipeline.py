@@ -17,10 +17,14 @@ from .terrain import Heightfield, _ProgressBridge, attach_falloff_mask, attach_m
 
 
 def build_terrain(values, reference=None, falloff_mask=None, erosion=None, preset="NONE", maps=False, threads=0,
-                  progress=None, erosion_mask=None, rain_map=None):
-    """See _build; returns (Heightfield, maps or None)."""
+                  progress=None, erosion_mask=None, rain_map=None, window=None):
+    """See _build; returns (Heightfield, maps or None). window: None (the
+    whole) or (x0, y0, width, height), samples of the whole terrain
+    (ft_terrain_build_window, ABI 2.26): the same bits as those samples of
+    the whole, heights and maps; the erosion mask and rain map still span
+    the whole terrain."""
     hf, arrays, _water = _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress,
-                                erosion_mask, rain_map, None)
+                                erosion_mask, rain_map, None, window)
     return hf, arrays
 
 
@@ -36,7 +40,8 @@ def build_terrain_rivers(values, rivers, reference=None, falloff_mask=None, eros
                   rivers)
 
 
-def _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress, erosion_mask, rain_map, rivers):
+def _build(values, reference, falloff_mask, erosion, preset, maps, threads, progress, erosion_mask, rain_map, rivers,
+           window=None):
     """Builds the terrain of `values` (settings by name, as generate_terrain
     takes them, with its reference and falloff mask); returns (Heightfield,
     {map name: array.array('f')} or None). Close the Heightfield (or use `with`).
@@ -78,7 +83,10 @@ def _build(values, reference, falloff_mask, erosion, preset, maps, threads, prog
     out, net = c_void_p(), c_void_p()
     handles = (c_void_p * len(MAPS))()
     map_out = ctypes.cast(handles, ctypes.POINTER(c_void_p)) if maps else None
-    if rivers is None:
+    if window is not None:
+        x0, y0, width, height = window
+        status = lib.ft_terrain_build_window(byref(p), x0, y0, width, height, byref(out), map_out)
+    elif rivers is None:
         status = lib.ft_terrain_build(byref(p), byref(out), map_out)
     else:
         status = lib.ft_terrain_build_rivers(byref(p), byref(out), map_out, byref(net))

@@ -70,6 +70,15 @@ FT_API ft_status ft_terrain_build(const ft_build_params* p, ft_heightfield** out
 /// (above). `maps` may be NULL. On failure or cancellation every output is NULL.
 FT_API ft_status ft_terrain_build_rivers(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps,
                                          ft_river_network** rivers);
+/// The samples [x0, x0 + width) x [y0, y0 + height) of what ft_terrain_build(p) makes, heights and
+/// (maps: NULL or FT_MAP_COUNT handles) every map, bit-identical to the same samples of the whole
+/// (ABI 2.26), so a tile set of windows has no seams. `*out`'s world size is the window's share of
+/// the terrain's. Refused, with the reason: a window outside ft_terrain_extent(p->terrain, 0, ...),
+/// the methods without windows (spectral synthesis: one global FFT), a sea given as a fraction
+/// (its level is a quantile of the whole). An erosion mask or rain map spans the whole terrain,
+/// corner to corner, as for ft_terrain_build. On failure every output is NULL.
+FT_API ft_status ft_terrain_build_window(const ft_build_params* p, int64_t x0, int64_t y0, int32_t width,
+                                         int32_t height, ft_heightfield** out, ft_heightfield** maps);
 
 #ifdef __cplusplus
 }

@@ -8,6 +8,7 @@
 #define FRACTERRA_POVRAY_H
 
 #include "core.h"
+#include "subdiv.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -29,6 +30,46 @@ typedef struct ft_pov_scene_lines {
   int32_t kind;               ///< FT_POV_LINE, FT_POV_LIGHTNING or FT_POV_COASTLINE
   double radius;              ///< sweep radius where a vertex has none (radius 0); 0 = by kind and scene size
 } ft_pov_scene_lines;
+
+/// Light kinds (ft_pov_light.kind): Blender's.
+enum { FT_POV_LIGHT_SUN = 0, FT_POV_LIGHT_POINT = 1, FT_POV_LIGHT_SPOT = 2, FT_POV_LIGHT_AREA = 3 };
+
+/// A light in another program's physical units (Blender's Cycles), world axes (ABI 2.26). The
+/// writer converts it so that a white diffuse surface facing it is as bright in POV-Ray as there:
+/// a sun's colour is colour * power / pi; point and spot lights fade with the inverse square law
+/// (fade_power 2); an area light is a grid of lights with a Lambertian falloff. The formulas and
+/// their sources: docs/povray.md, "Lights".
+typedef struct ft_pov_light {
+  int32_t kind;             ///< FT_POV_LIGHT_SUN, _POINT, _SPOT or _AREA
+  double color[3];          ///< linear RGB, 0..1000 each
+  double power;             ///< W (point, spot, area: Blender's Power); W/m^2 (sun: its Strength), 0..1e12
+  double location[3];       ///< world point (point, spot, area)
+  double direction[3];      ///< world direction the light shines in (sun, spot, area: its face's normal); not zero
+  double spot_size_deg;     ///< spot: the cone's full angle, 1..180 (Blender's Spot Size)
+  double spot_blend;        ///< spot: 0..1, the share of the cone's cosine range that fades (Blender's Blend)
+  double spot_cos_power;    ///< spot: an extra cos^k falloff from the axis inside the cone, 0..100
+                            ///< (Cycles before Blender 4.0: 1)
+  double area_u[3];         ///< area: its side along its local x (an ellipse's diameter), world
+  double area_v[3];         ///< area: its side along its local y, world
+  int32_t area_ellipse;     ///< area: 1 for a disk or ellipse, 0 for a square or rectangle
+  int32_t shadows;          ///< 1: casts shadows; 0: shadowless
+} ft_pov_light;
+
+/// A surface as another program shades it (Blender's Principled BSDF or Emission), linear RGB (ABI 2.26).
+typedef struct ft_pov_material {
+  double color[3];          ///< base colour, 0..1 each
+  double emission[3];       ///< emitted radiance (colour * strength), 0..1e6 each
+  double roughness;         ///< 0..1: the highlight's width; below 0.3 the surface also mirrors with Fresnel
+  double specular;          ///< 0..1: Principled's specular (reflectance 0.08 * specular straight on)
+  int32_t water;            ///< 1: water (mirrors with Fresnel whatever its roughness)
+} ft_pov_material;
+
+/// A mesh in a scene (ABI 2.26): water surfaces (lakes, the sea) and other objects.
+typedef struct ft_pov_scene_mesh {
+  const ft_mesh* mesh;      ///< world units; not owned, must not be NULL
+  ft_pov_material material; ///< its material; water = 1 wears the scene's water (water_material)
+  int32_t smooth;           ///< 1: smooth shading (vertex normals); 0: flat faces
+} ft_pov_scene_mesh;
 
 typedef struct ft_pov_scene_params {
   uint32_t struct_size;             ///< sizeof(ft_pov_scene_params)
@@ -70,6 +111,16 @@ typedef struct ft_pov_scene_params {
                                     ///< of sun_color, no fill light; 0 (default): fracterra's sky and sun
   double sky_color[3];              ///< linear RGB, 0..1000 each (has_scene_light); default 0
   double sun_color[3];              ///< linear RGB times strength, 0..1000 each (has_scene_light); default 1
+  /// ABI 2.26: the rest of another program's scene.
+  const ft_pov_light* lights;       ///< light_count lights (has_scene_light) instead of the sun of sun_color
+  int32_t light_count;              ///< 0..1024; default 0 (the sun of sun_color)
+  const ft_pov_material* line_materials;  ///< NULL, or line_set_count materials, one per line set,
+                                          ///< instead of its kind's (no glow, no light at a bolt's foot)
+  const ft_polylines* rivers;       ///< rivers as water ribbons (radius = half the width, z = the water
+                                    ///< surface), world units; NULL: none
+  const ft_pov_material* water_material;  ///< the rivers' and water meshes' material; NULL: ft_water.inc's
+  const ft_pov_scene_mesh* meshes;  ///< mesh_count meshes; may be NULL when the count is 0
+  int32_t mesh_count;               ///< 0..65536; default 0
 } ft_pov_scene_params;
 
 /// Fills `p` with the defaults above (FT_ERR_INVALID_ARGUMENT for NULL).

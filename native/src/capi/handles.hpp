@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/heightfield.hpp"
+#include "core/mesh.hpp"
 #include "core/polyline_set.hpp"
 #include "hydrology/hydrology.hpp"
 
@@ -11,6 +12,10 @@ struct ft_heightfield {
 
 struct ft_polylines {
   ft::PolylineSet set;
+};
+
+struct ft_mesh {
+  ft::Mesh mesh;
 };
 
 struct ft_river_network {

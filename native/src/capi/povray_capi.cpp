@@ -23,6 +23,52 @@ std::string path_arg(const char* name, const char* path) {
   return path;
 }
 
+ft::Vec3 vec3(const double* v) { return {v[0], v[1], v[2]}; }
+
+ft::pov::SceneMaterial material_of(const ft_pov_material& m) {
+  ft::pov::SceneMaterial s;
+  s.color = vec3(m.color);
+  s.emission = vec3(m.emission);
+  s.roughness = m.roughness;
+  s.specular = m.specular;
+  s.water = m.water != 0;
+  return s;
+}
+
+ft::pov::SceneLight light_of(const ft_pov_light& l) {
+  ft::pov::SceneLight s;
+  s.kind = ft::pov::LightKind(l.kind);
+  s.color = vec3(l.color);
+  s.power = l.power;
+  s.location = vec3(l.location);
+  s.direction = vec3(l.direction);
+  s.spot_size_deg = l.spot_size_deg;
+  s.spot_blend = l.spot_blend;
+  s.spot_cos_power = l.spot_cos_power;
+  s.area_u = vec3(l.area_u);
+  s.area_v = vec3(l.area_v);
+  s.area_ellipse = l.area_ellipse != 0;
+  s.shadows = l.shadows != 0;
+  return s;
+}
+
+// The data fields of another program's scene (ABI 2.26); the table checks only settings.
+void apply_scene_data(const ft_pov_scene_params& p, ft::pov::SceneParams& s) {
+  ft::check_int_range("light_count", p.light_count, 0, 1024);
+  if (p.light_count > 0) ft::check_not_null("lights", p.lights);
+  for (int32_t i = 0; i < p.light_count; ++i) s.lights.push_back(light_of(p.lights[i]));
+  if (p.line_materials)
+    for (int32_t i = 0; i < p.line_set_count; ++i) s.lines[size_t(i)].material = material_of(p.line_materials[i]);
+  if (p.rivers) s.rivers = &p.rivers->set;
+  if (p.water_material) s.water_material = material_of(*p.water_material);
+  ft::check_int_range("mesh_count", p.mesh_count, 0, 65536);
+  if (p.mesh_count > 0) ft::check_not_null("meshes", p.meshes);
+  for (int32_t i = 0; i < p.mesh_count; ++i) {
+    ft::check_not_null("meshes[i].mesh", p.meshes[i].mesh);
+    s.meshes.push_back({&p.meshes[i].mesh->mesh, material_of(p.meshes[i].material), p.meshes[i].smooth != 0});
+  }
+}
+
 }  // namespace
 
 extern "C" {
@@ -51,6 +97,7 @@ FT_API ft_status ft_pov_write_scene(const ft_pov_scene_params* given, const char
       ft::check_not_null("lines[i].lines", p->lines[i].lines);
       s.lines.push_back({&p->lines[i].lines->set, ft::pov::LineKind(p->lines[i].kind), p->lines[i].radius});
     }
+    apply_scene_data(*p, s);
     if (p->image_path) s.image_path = path_arg("image_path", p->image_path);
     ft::pov::write_scene(s, path);
   });

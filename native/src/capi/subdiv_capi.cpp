@@ -4,16 +4,13 @@
 #include <string>
 
 #include "capi/guard.hpp"
+#include "capi/handles.hpp"
 #include "subdiv/fractalize_params.hpp"
 #include "core/memory.hpp"
 #include "core/mesh.hpp"
 #include "fracterra/fracterra.h"
 #include "subdiv/fractalize.hpp"
 #include "subdiv/mesh_validation.hpp"
-
-struct ft_mesh {
-  ft::Mesh mesh;
-};
 
 using ft::capi::guarded;
 

@@ -175,4 +175,49 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
   return hf;
 }
 
+namespace {
+
+// Samples [x0, x0 + w) x [y0, y0 + h) of `hf`, with the window's share of its world size.
+Heightfield crop(const Heightfield& hf, int64_t x0, int64_t y0, int32_t w, int32_t h) {
+  Heightfield out(w, h);
+  for (int32_t j = 0; j < h; ++j)
+    std::memcpy(out.data() + size_t(j) * w, hf.data() + size_t(y0 + j) * hf.width() + size_t(x0), sizeof(float) * w);
+  if (hf.world_size() > 0) out.set_world_size(hf.world_size() * double(w - 1) / double(hf.width() - 1));
+  return out;
+}
+
+}  // namespace
+
+Heightfield build_terrain_window(const ft_build_params& given, int64_t x0, int64_t y0, int32_t w, int32_t h,
+                                 erosion::ErosionMaps* maps) {
+  const ft_build_params p = upgraded(build_param_table(), given);
+  check_ranges(build_param_table(), &p);
+  check_not_null("terrain", p.terrain);
+  // The terrain's window rules first (no spectral, no sea fraction), then the window itself.
+  ft_terrain_params t = upgraded(terrain::terrain_param_table(), *p.terrain);
+  t.threads = p.threads;
+  int64_t ew = 0, eh = 0;
+  terrain::terrain_extent(t, 0, &ew, &eh);
+  if (w < 1 || h < 1)
+    invalid("a window needs at least 1 x 1 samples, got " + std::to_string(w) + " x " + std::to_string(h));
+  if (x0 < 0 || y0 < 0 || x0 > ew - w || y0 > eh - h)
+    invalid("the window [" + std::to_string(x0) + ", " + std::to_string(x0 + w) + ") x [" + std::to_string(y0) +
+            ", " + std::to_string(y0 + h) + ") lies outside the terrain's " + std::to_string(ew) + " x " +
+            std::to_string(eh) + " samples");
+  if (!erodes(p) && !maps) {
+    // Generation alone: the terrain's own windows, in memory of the window.
+    t.progress = p.progress, t.progress_user = p.progress_user;
+    return terrain::generate_terrain_window(t, 0, x0, y0, w, h);
+  }
+  // The whole, cropped: exact by construction (memory of the whole).
+  erosion::ErosionMaps whole_maps;
+  const Heightfield whole = build_terrain(p, maps ? &whole_maps : nullptr);
+  if (maps)
+    for (auto [from, to] : {std::pair{&whole_maps.drainage_area, &maps->drainage_area},
+                            std::pair{&whole_maps.slope, &maps->slope}, std::pair{&whole_maps.curvature, &maps->curvature},
+                            std::pair{&whole_maps.water_depth, &maps->water_depth},
+                            std::pair{&whole_maps.eroded, &maps->eroded}, std::pair{&whole_maps.deposited, &maps->deposited}})
+      *to = crop(*from, x0, y0, w, h);
+  return crop(whole, x0, y0, w, h);
+}
 }  // namespace ft::pipeline

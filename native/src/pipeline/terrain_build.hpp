@@ -23,6 +23,14 @@ namespace ft::pipeline {
 Heightfield build_terrain(const ft_build_params& p, erosion::ErosionMaps* maps,
                           hydrology::RiverNetwork* rivers = nullptr);
 
+// The window [x0, x0 + w) x [y0, y0 + h) of build_terrain(p, maps): the same
+// bits as those samples of the whole, heights and maps (`maps` may be null).
+// The world size recorded is the window's share of the terrain's. Throws for
+// a window outside the terrain's extent, and for what has no windows (the
+// terrain's own rules: spectral synthesis, a sea given as a fraction).
+Heightfield build_terrain_window(const ft_build_params& p, int64_t x0, int64_t y0, int32_t w, int32_t h,
+                                 erosion::ErosionMaps* maps);
+
 // The erosion settings for `terrain`: `given` (null: the table's defaults)
 // with the preset named `preset` (an id, label or old id; "": none) fitted to
 // the terrain over it. The preset sets the pass counts and every value it

@@ -11,6 +11,7 @@ constexpr uint32_t kAbove = FT_PARAM_FLAG_MIN_EXCLUSIVE;  // > hard_min
 constexpr double kInf = DBL_MAX;
 constexpr uint32_t kAbi211 = 0x2000B;  // camera_margin, camera_center_v; elevation 0 = auto
 constexpr uint32_t kAbi217 = 0x20011;  // a given camera, terrain colours, scene light
+constexpr uint32_t kAbi226 = 0x2001A;  // lights, materials, rivers and meshes of another program's scene
 
 #define ROW(field, type) FT_PARAM_ROW(ft_pov_scene_params, field, type)
 FT_PARAM_TABLE_BEGIN
@@ -120,6 +121,33 @@ constexpr ft_param_info kSceneRows[] = {
      .doc = "Linear RGB of the sun times its strength (with has_scene_light): 1 lights a white surface facing "
             "it to 1",
      .methods = kAll},
+    {ROW(lights, FT_PARAM_POINTER), .flags = kData, .since = kAbi226, .element_type = FT_PARAM_OPAQUE,
+     .element_kind = -1, .unit = "", .label = "Lights",
+     .doc = "light_count ft_pov_light (Blender's lights in its units) instead of the sun of sun_color (with "
+            "has_scene_light); NULL when the count is 0",
+     .methods = kAll},
+    {ROW(light_count, FT_PARAM_INT32), .flags = kData, .since = kAbi226, .element_kind = -1, .default_value = 0,
+     .hard_min = 0, .hard_max = 1024, .soft_min = 0, .soft_max = 16, .unit = "", .label = "Light Count",
+     .doc = "Entries in lights", .methods = kAll},
+    {ROW(line_materials, FT_PARAM_POINTER), .flags = kData, .since = kAbi226, .element_type = FT_PARAM_OPAQUE,
+     .element_kind = -1, .unit = "", .label = "Line Materials",
+     .doc = "NULL, or line_set_count ft_pov_material: each line set's material instead of its kind's",
+     .methods = kAll},
+    {ROW(rivers, FT_PARAM_POINTER), .flags = kData, .since = kAbi226, .element_type = FT_PARAM_OPAQUE,
+     .element_kind = -1, .unit = "", .label = "Rivers",
+     .doc = "ft_polylines of rivers (vertices on the water surface, radius half the width), drawn as flattened "
+            "water ribbons; NULL: none; not owned",
+     .methods = kAll},
+    {ROW(water_material, FT_PARAM_POINTER), .flags = kData, .since = kAbi226, .element_type = FT_PARAM_OPAQUE,
+     .element_kind = -1, .unit = "", .label = "Water Material",
+     .doc = "The ft_pov_material of rivers and water meshes; NULL: ft_water.inc's water", .methods = kAll},
+    {ROW(meshes, FT_PARAM_POINTER), .flags = kData, .since = kAbi226, .element_type = FT_PARAM_OPAQUE,
+     .element_kind = -1, .unit = "", .label = "Meshes",
+     .doc = "mesh_count ft_pov_scene_mesh (a mesh, its material, smooth or flat); NULL when the count is 0",
+     .methods = kAll},
+    {ROW(mesh_count, FT_PARAM_INT32), .flags = kData, .since = kAbi226, .element_kind = -1, .default_value = 0,
+     .hard_min = 0, .hard_max = 65536, .soft_min = 0, .soft_max = 16, .unit = "", .label = "Mesh Count",
+     .doc = "Entries in meshes", .methods = kAll},
 };
 #undef ROW
 

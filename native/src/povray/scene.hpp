@@ -5,10 +5,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/heightfield.hpp"
+#include "core/mesh.hpp"
 #include "core/polyline_set.hpp"
 #include "povray/camera.hpp"
 #include "povray/heightfield_export.hpp"
@@ -18,6 +20,42 @@
 namespace ft::pov {
 
 enum class LineKind : int32_t { kGeneric = 0, kLightning = 1, kCoastline = 2 };
+
+// A surface as another program shades it (Blender's Principled BSDF or
+// Emission shader), linear RGB; written by material_sdl (scene_materials.hpp).
+struct SceneMaterial {
+  Vec3 color{0.8, 0.8, 0.8};  // base colour, 0..1
+  Vec3 emission{0, 0, 0};     // emitted radiance: colour times strength, >= 0
+  double roughness = 0.5;     // 0..1: the highlight's width
+  double specular = 0.5;      // 0..1: Principled's specular, reflectance at normal incidence 0.08 x specular
+  // Water: ft_water.inc's material in this colour, reflecting the sky and the
+  // land with Fresnel at the index the specular gives.
+  bool water = false;
+};
+
+// A light of another program (Blender's), in its physical units, world axes;
+// written by light_sdl (scene_materials.hpp) by the rules of docs/povray.md.
+enum class LightKind : int32_t { kSun = 0, kPoint = 1, kSpot = 2, kArea = 3 };
+struct SceneLight {
+  LightKind kind = LightKind::kSun;
+  Vec3 color{1, 1, 1};        // linear RGB
+  double power = 1;           // W (point, spot, area); W/m^2 on a surface facing it (sun)
+  Vec3 location{};            // point, spot, area
+  Vec3 direction{0, 0, -1};   // where it shines (sun, spot, area)
+  double spot_size_deg = 45;  // spot: the cone's full angle, 1..180
+  double spot_blend = 0.15;   // spot: share of the cone's cosine range that fades, 0..1
+  double spot_cos_power = 1;  // spot: the extra cos^k falloff from the axis inside the cone, 0..100
+  Vec3 area_u{1, 0, 0}, area_v{0, 1, 0};  // area: its sides (an ellipse's diameters)
+  bool area_ellipse = false;
+  bool shadows = true;
+};
+
+// A mesh drawn in a material (water surfaces, other objects), world axes.
+struct SceneMesh {
+  const Mesh* mesh = nullptr;  // not owned
+  SceneMaterial material;
+  bool smooth = false;         // vertex normals (smooth shading); false: flat faces
+};
 
 struct SceneLines {
   const PolylineSet* set = nullptr;  // world units, not owned
@@ -34,6 +72,9 @@ struct SceneLines {
   // relative thickness while the size follows the picture (the CLI's default).
   bool radii_in_world_units = true;
   double radius_scale = 1;  // multiplies every radius; > 0
+  // Another program's material instead of the kind's (no glow, no light at
+  // a lightning's foot: the other program shows none).
+  std::optional<SceneMaterial> material = std::nullopt;
 };
 
 // A lake: its water surface's height and its shoreline rings (world units,
@@ -64,6 +105,8 @@ struct SceneParams {
   // sky_color, a sun of sun_color (linear RGB times strength), no fill.
   bool scene_light = false;
   Vec3 sky_color{0, 0, 0}, sun_color{1, 1, 1};
+  // With scene_light: these lights instead of the sun of sun_color.
+  std::vector<SceneLight> lights;
   // The terrain PNG; "" = beside the scene, named after it ("x.pov" -> "x.terrain.png").
   std::string image_path;
   std::string title;                     // written as a comment
@@ -81,6 +124,10 @@ struct SceneParams {
   // never thinner than 0.75 pixel. Not owned; may be null.
   const PolylineSet* rivers = nullptr;
   std::vector<SceneLake> lakes;  // water prisms at their levels (ft_water.inc's FT_Lake)
+  // The rivers' and lakes' (and water meshes') colour and gloss; unset:
+  // ft_water.inc's own water.
+  std::optional<SceneMaterial> water_material;
+  std::vector<SceneMesh> meshes;  // each in its material
 };
 
 struct SceneSummary {

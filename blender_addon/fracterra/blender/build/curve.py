@@ -98,12 +98,13 @@ def spline_radii(spline):
     return radius.astype(np.float64)
 
 
-def curve_polylines(obj, matrix, shift=(0.0, 0.0, 0.0)):
+def curve_polylines(obj, matrix, shift=(0.0, 0.0, 0.0), radius_scale=None):
     """A core.Polylines of a curve object's splines of 2 or more points, each point
     mapped by the 4x4 `matrix` then moved by `shift`, with radius times the bevel
-    depth; None when no spline has 2 points."""
+    depth (or times `radius_scale`: a bevel object's half-width); None when no
+    spline has 2 points."""
     m = np.array(matrix, dtype=np.float64)
-    depth = max(obj.data.bevel_depth, 0.0)
+    depth = max(obj.data.bevel_depth, 0.0) if radius_scale is None else radius_scale
     lines, radii = [], []
     for spline in obj.data.splines:
         nodes = spline_nodes(spline)

@@ -125,8 +125,9 @@ def _profile(terrain, collection):
     curve = bpy.data.curves.new(f"{terrain.name} River Profile", "CURVE")
     spline = curve.splines.new("POLY")
     t = np.linspace(0.0, 2.0 * np.pi, _PROFILE_POINTS, endpoint=False)
-    # Blender lays a bevel object's y across the curve (horizontal with Z_UP) and its x up.
-    co = np.stack([RIVER_FLAT * np.cos(t), np.sin(t), np.zeros_like(t), np.ones_like(t)], axis=1)
+    # Blender lays a bevel object's x across the curve (horizontal with Z_UP) and its y up
+    # (measured on the evaluated mesh: x ran across, so the ribbon stood on edge).
+    co = np.stack([np.cos(t), RIVER_FLAT * np.sin(t), np.zeros_like(t), np.ones_like(t)], axis=1)
     spline.points.add(len(t) - 1)
     spline.points.foreach_set("co", co.astype(np.float32).ravel())
     spline.use_cyclic_u = True
