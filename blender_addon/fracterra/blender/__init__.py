@@ -26,7 +26,7 @@ from .ops import planet as planet_ops
 from .ops import tiles_import as tiles_import_op
 from .ui.menus import MENUS
 from .build import kept_final
-from .build.children import follow_visibility
+from .build.children import VISIBILITY_POLL, follow_visibility, poll_visibility
 from .build.objects import restore_after_undo
 from .build.terrain import final_for_render
 
@@ -64,6 +64,7 @@ def on_register():
         handlers.append(restore_after_undo)
     bpy.app.handlers.render_pre.append(final_for_render)
     bpy.app.handlers.depsgraph_update_post.append(follow_visibility)
+    bpy.app.timers.register(poll_visibility, first_interval=VISIBILITY_POLL, persistent=True)
     kept_final.register()
     bpy.types.Object.fracterra_terrain = bpy.props.PointerProperty(type=props.FRACTERRA_PG_terrain)
     bpy.types.Object.fracterra_measures = bpy.props.PointerProperty(type=props.FRACTERRA_PG_measures)
@@ -84,6 +85,8 @@ def on_unregister():
         bpy.app.handlers.render_pre.remove(final_for_render)
     if follow_visibility in bpy.app.handlers.depsgraph_update_post:
         bpy.app.handlers.depsgraph_update_post.remove(follow_visibility)
+    if bpy.app.timers.is_registered(poll_visibility):
+        bpy.app.timers.unregister(poll_visibility)
     kept_final.unregister()
     erosion_layout.unregister()
     del bpy.types.Object.fracterra_planet

@@ -162,11 +162,15 @@ _SEEN = {}
 
 @bpy.app.handlers.persistent
 def follow_visibility(scene, depsgraph=None):
-    """depsgraph_update_post: a terrain or planet hidden (the eye, H, Disable in
-    Viewports or in Renders) hides its children (water, sea, coastlines, a
+    """depsgraph_update_post (Disable in Viewports or in Renders, a script's
+    hide_set), and every VISIBILITY_POLL seconds from a timer (the eye and H
+    change the view layer's bases, which runs no depsgraph handler): a
+    terrain or planet hidden hides its children (water, sea, coastlines, a
     bolt) alike, and shown again shows them; a child hidden on its own while
     its parent stays as it was keeps its own state."""
     view_layer = depsgraph.view_layer if depsgraph is not None else bpy.context.view_layer
+    if scene is None or view_layer is None:
+        return
     for obj in scene.objects:
         if not (is_terrain(obj) or is_planet(obj)):
             continue
@@ -190,6 +194,18 @@ def follow_visibility(scene, depsgraph=None):
                 child.hide_viewport = state[1]
             if state[2] != before[2] and child.hide_render != state[2]:
                 child.hide_render = state[2]
+
+
+VISIBILITY_POLL = 0.25
+
+
+def poll_visibility():
+    """The timer's side of follow_visibility (bpy.app.timers: the seconds to the next call)."""
+    context = bpy.context
+    scene = getattr(context, "scene", None)
+    if scene is not None:
+        follow_visibility(scene, None)
+    return VISIBILITY_POLL
 
 
 def remember_strike(obj):
