@@ -94,7 +94,7 @@ def _pieces(m, lod, x0, y0, w, h, per_tile):
 class FRACTERRA_OT_import_tiles(bpy.types.Operator, ImportHelper):
     """Import a window of a fracterra tile set (its manifest.json) at a level of detail, as one mesh or one object per tile"""
     bl_idname = "import_scene.fracterra_tiles"
-    bl_label = "Import Tile Set (fracterra)"
+    bl_label = "Import Tile Set"
     bl_options = {"REGISTER", "UNDO", "PRESET"}
 
     filename_ext = ".json"
