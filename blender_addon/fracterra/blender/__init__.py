@@ -23,6 +23,7 @@ from .ui import properties as props
 from .ui import erosion_layout
 from .ops import terrain as terrain_ops
 from .ops import planet as planet_ops
+from .ops import tiles_build as tiles_build_op
 from .ops import tiles_import as tiles_import_op
 from .ui.menus import MENUS
 from .build import kept_final
@@ -51,6 +52,7 @@ classes = (
     dem_io_ops.FRACTERRA_OT_import_dem,
     dem_io_ops.FRACTERRA_OT_export_heights,
     tiles_import_op.FRACTERRA_OT_import_tiles,
+    tiles_build_op.FRACTERRA_OT_export_tiles,
     panels.FRACTERRA_PT_terrain,
     rivers_panel.FRACTERRA_PT_rivers,
     panels.FRACTERRA_PT_planet,
