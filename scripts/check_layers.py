@@ -61,17 +61,17 @@ LAYERS = {
     "splat": (2, "splat and colour maps by layer rules, their table and JSON (PNGs through io/)"),
     "polyline": (3, "fractal polylines (the profile method uses terrain/'s 1D Voss profile; the FPL study, analysis/)"),
     "refine": (3, "a real DEM refined by terrain/'s midpoint method, H from analysis/"),
-    "tiles": (3, "tile sets larger than memory: windows of terrain/, manifests, VRT mosaics through io/"),
+    "tiles": (7, "tile sets larger than memory: windows of pipeline/'s terrains, generated or eroded, and their maps; manifests, VRT mosaics through io/"),
     "planet": (3, "fractal planets: fBm on the sphere (noise/), midpoint displacement on the cube-sphere; layouts"),
     "subdiv": (4, "fractalize meshes: the only OpenSubdiv user"),
     "povray": (4, "POV-Ray scenes: height_field, sphere_sweep, mesh2, lights and sky (files through io/)"),
     "erosion": (4, "the landscape model; fluvial, hydraulic, thermal passes; flow routing; maps; drainage statistics"),
-    "engines": (4, "Unity, Unreal, Godot: sizes, formats, sidecars, tile sets cut for them (io/, splat/, tiles/)"),
+    "engines": (8, "Unity, Unreal, Godot: sizes, formats, sidecars, tile sets cut for them (io/, splat/, tiles/)"),
     "hydrology": (5, "rivers, lakes, the sea (erosion/'s flow graph, polyline/'s FPL, contour/'s shorelines)"),
     "pipeline": (6, "generate -> landform -> erode -> maps -> rivers in one call (ft_terrain_build)"),
     "tables": (7, "every layer's parameter table by kind (ft_params_describe, `fracterra params`)"),
-    "capi": (8, "the extern \"C\" ABI: libfracterra.so = capi/ + the static core"),
-    "cli": (8, "the fracterra tool: links the static core and calls the C++ layers; neither includes capi/"),
+    "capi": (9, "the extern \"C\" ABI: libfracterra.so = capi/ + the static core"),
+    "cli": (9, "the fracterra tool: links the static core and calls the C++ layers; neither includes capi/"),
 }
 RANK = {layer: rank for layer, (rank, _) in LAYERS.items()}
 PICTURE_DOC = Path("docs/architecture.md")

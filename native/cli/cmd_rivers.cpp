@@ -16,6 +16,7 @@
 #include "hydrology/network_measures.hpp"
 #include "hydrology/river_files.hpp"
 #include "io/heightfield_io.hpp"
+#include "tiles/tileset_reader.hpp"
 
 namespace ft::cli {
 
@@ -54,7 +55,8 @@ namespace cmd_rivers {
 namespace {
 
 struct RiversCli {
-  std::string in, out, lakes, carve;
+  std::string in, tiles, out, lakes, carve;
+  int32_t lod = 0;
   double world_size = 0;
   bool stats = false;
   ft_hydrology_params flags = defaults_of<ft_hydrology_params>(hydrology::hydrology_param_table());
@@ -64,8 +66,14 @@ Registration reg({"rivers", "Rivers, lakes and the sea of a heightfield, as poly
                   [](CLI::App& app) -> std::function<int()> {
                     auto o = std::make_shared<RiversCli>();
                     app.add_option("--in", o->in, "heightfield (any format `terrain` writes or GDAL reads)")
-                        ->required()
                         ->check(existing_file);
+                    app.add_option("--tiles", o->tiles,
+                                   "a finished tile set's folder (fracterra tiles) instead of --in: one network "
+                                   "across its tiles, in the set's map coordinates (a float tiff set: the rivers "
+                                   "of the whole terrain exactly); the set is read whole at --lod");
+                    app.add_option("--lod", o->lod,
+                                   "--tiles: the level of detail the set is read at (every 2^lod-th sample)")
+                        ->capture_default_str();
                     app.add_option("--out", o->out,
                                    "rivers: .csv or .json (the polyline format with discharge, width, depth, "
                                    "order), .geojson (LineStrings) or .gpkg (rivers and lakes layers)");
@@ -80,9 +88,10 @@ Registration reg({"rivers", "Rivers, lakes and the sea of a heightfield, as poly
                     return [o, &app] {
                       if (o->out.empty() && o->lakes.empty() && o->carve.empty() && !o->stats)
                         invalid("give --out FILE, --lakes FILE, --carve FILE and/or --stats");
+                      if (o->in.empty() == o->tiles.empty()) invalid("give --in FILE or --tiles DIR");
                       ft_hydrology_params p = o->flags;
                       sea_from_flags(app, p);
-                      Heightfield hf = io::read_heightfield(o->in);
+                      Heightfield hf = o->tiles.empty() ? io::read_heightfield(o->in) : tiles::read_tileset_whole(o->tiles, o->lod);
                       if (o->world_size > 0) hf.set_world_size(o->world_size);
                       else if (hf.world_size() <= 0) hf.set_world_size(10.0);
                       const hydrology::HydrologyConfig c = hydrology::from_c(p);

@@ -1,6 +1,8 @@
 """Tile sets on Dask for a terrain larger than memory, one task per tile:
 
     python3 -m fracterra.tiles --levels 16 --tile 4096 --out DIR [--scheduler tcp://H:8786] [--measure]
+    python3 -m fracterra.tiles --levels 15 --tile 4096 --erode land [--strength 0.7] [--maps] \
+        [--engine unreal] --out DIR                                   # an eroded terrain, seamless
 
 The driver opens the set (fracterra.core.tiles.TileSet), runs the exact
 height-range pass where one is needed as one Dask task per tile, submits one
@@ -9,7 +11,12 @@ manifest's journal as results arrive, and finishes with the VRT mosaic. A
 task is pure (terrain settings, tile size, format, range, folder, column,
 row -> column, row, CRC-32): each worker loads the library through the
 package's binding and calls ft_tile_write, so a task lost with a killed worker
-is simply run again and the set comes out byte-identical.
+is simply run again and the set comes out byte-identical. An eroded set (or
+one with maps) is the same with a recipe (fracterra.core.tiles.recipe) in
+place of the settings: its range pass builds each tile once as a task and
+keeps it in the set's folder, and its write task (ft_tile_write_build) takes
+what was kept; --engine then cuts the finished set for a game engine with the
+splat maps of its erosion.
 
 Without --scheduler a LocalCluster of --workers processes with
 --memory-limit each runs on this machine; with --scheduler tcp://HOST:8786
@@ -25,11 +32,12 @@ import sys
 import time
 
 from .core import params as params_mod
-from .core.binding import ENV_VAR, library
+from .core.binding import ENV_VAR, enum_values, library
 from .core.errors import FracterraError
 # The tile set handle and the tasks, re-exported: one import for a script.
-from .core.tiles import (FORMATS, TileSet, extent, hurst_from_sums, manifest, read_window,  # noqa: F401
-                         terrain_extent, tile_height_range, tile_increment_sums, write_tile)
+from .core.tiles import (FORMATS, TileSet, built, built_tile_range, extent, hurst_from_sums,  # noqa: F401
+                         manifest, read_map_window, read_window, recipe, terrain_extent, cut_for_engine, tile_height_range,
+                         tile_increment_sums, write_built_tile, write_tile)
 
 class SchedulerUnreachable(FracterraError):
     """The Dask scheduler named by --scheduler did not answer in time."""
@@ -72,15 +80,20 @@ def _peak_rss_mib():
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 
 
-def exact_height_range(settings, tile, client, reference=None):
+def exact_height_range(settings, tile, client, reference=None, build=None, fmt="png16", out_dir=None):
     """The exact (min, max) of the whole terrain: one Dask task per tile, reduced on Dask in
-    groups of 16 (the pass the library would otherwise run serially in the driver)."""
+    groups of 16 (the pass the library would otherwise run serially in the driver). With a recipe
+    `build`, each task builds its tile (eroded) and keeps it in `out_dir` for the writing pass."""
     w, h = terrain_extent(settings, reference)
     cols, rows = (w - 2) // tile + 1, (h - 2) // tile + 1
     tiles = [(c, r) for r in range(rows) for c in range(cols)]
-    parts = client.map(tile_height_range, [c for c, _ in tiles], [r for _, r in tiles], settings=settings,
-                       reference=reference, tile=tile, retries=3,
-                       key=[f"fracterra-range-{c}-{r}" for c, r in tiles])
+    keys = [f"fracterra-range-{c}-{r}" for c, r in tiles]
+    if build is None:
+        parts = client.map(tile_height_range, [c for c, _ in tiles], [r for _, r in tiles], settings=settings,
+                           reference=reference, tile=tile, retries=3, key=keys)
+    else:
+        parts = client.map(built_tile_range, [c for c, _ in tiles], [r for _, r in tiles], recipe=build, tile=tile,
+                           fmt=fmt, out_dir=out_dir, retries=3, key=keys)
     groups = [client.submit(_range_union, parts[i:i + 16], key=f"fracterra-range-group-{i}")
               for i in range(0, len(parts), 16)]
     return client.submit(_range_union, groups, key="fracterra-range-total").result()
@@ -88,16 +101,30 @@ def exact_height_range(settings, tile, client, reference=None):
 
 def build_tileset(settings, out_dir, tile=4096, fmt="png16", reference=None, client=None, scheduler=None,
                   workers=2, memory_limit="3GB", connect_timeout=10, progress=True, task_threads=1, retries=3,
-                  on_tile=None):
+                  on_tile=None, erosion=None, preset="NONE", maps=False, falloff_mask=None, erosion_mask=None,
+                  rain_map=None, engine=None, engine_size=0, region_size=256):
     """Writes (or resumes) the tile set of the terrain `settings` (names as in params.TERRAIN_PARAMS,
     e.g. {"method": "MIDPOINT", "levels": 14, "hurst": 0.8}) into `out_dir`, one Dask task per tile
     still to do; a new set whose height range needs the exact pass gets it from one task per tile
     too. Returns a summary dict (tiles written and skipped, seconds, peak worker memory).
+    preset ("LAND", ...) and/or erosion ({setting: value} of ft_erosion_params) erode it, as
+    ft_terrain_build does; maps also writes the maps; falloff_mask, erosion_mask, rain_map:
+    (width, height, values) spanning the whole. engine ("unity", "unreal", "godot") then cuts the
+    finished set for that engine into out_dir/ENGINE (the fracterra CLI's --engine).
     on_tile(client, done, total), if given, is called after each recorded tile (tests kill workers there)."""
     start = time.monotonic()
     settings = dict(settings)
     settings["threads"] = task_threads
-    ts, pending = TileSet.open_deferred(settings, out_dir, tile, fmt, reference)
+    build = recipe(settings, reference, falloff_mask, erosion, preset, maps, erosion_mask, rain_map)
+    if not built(build):
+        build = None
+    if engine is not None:
+        _check_engine(engine, build)
+    out = os.path.abspath(str(out_dir))
+    if build is None:
+        ts, pending = TileSet.open_deferred(settings, out_dir, tile, fmt, reference)
+    else:
+        ts, pending = TileSet.open_build(build, out_dir, tile, fmt)
     own = False
     with ts:
         try:
@@ -107,7 +134,7 @@ def build_tileset(settings, out_dir, tile=4096, fmt="png16", reference=None, cli
                 if client is None:
                     client, own = connect(scheduler, workers, memory_limit, connect_timeout), True
                 t = time.monotonic()
-                ts.set_height_range(*exact_height_range(settings, tile, client, reference))
+                ts.set_height_range(*exact_height_range(settings, tile, client, reference, build, fmt, out))
                 summary["range_seconds"] = time.monotonic() - t
             lo, hi = ts.height_range()
             todo = [(c, r) for r in range(rows) for c in range(cols) if not ts.done(c, r)]
@@ -117,14 +144,22 @@ def build_tileset(settings, out_dir, tile=4096, fmt="png16", reference=None, cli
                     client, own = connect(scheduler, workers, memory_limit, connect_timeout), True
                 from distributed import as_completed
                 from tqdm import tqdm
-                futures = client.map(write_tile, [c for c, _ in todo], [r for _, r in todo], settings=settings,
-                                     reference=reference, tile=tile, fmt=fmt, height_min=lo, height_max=hi,
-                                     out_dir=os.path.abspath(str(out_dir)), retries=retries,
-                                     key=[f"fracterra-tile-{c}-{r}" for c, r in todo])
+                keys = [f"fracterra-tile-{c}-{r}" for c, r in todo]
+                if build is None:
+                    futures = client.map(write_tile, [c for c, _ in todo], [r for _, r in todo], settings=settings,
+                                         reference=reference, tile=tile, fmt=fmt, height_min=lo, height_max=hi,
+                                         out_dir=out, retries=retries, key=keys)
+                else:
+                    futures = client.map(write_built_tile, [c for c, _ in todo], [r for _, r in todo],
+                                         recipe=build, tile=tile, fmt=fmt, height_min=lo, height_max=hi,
+                                         out_dir=out, retries=retries, key=keys)
                 with tqdm(total=len(todo), unit="tile", disable=not progress, file=sys.stderr) as bar:
                     for done, future in enumerate(as_completed(futures), 1):
                         col, row, crc = future.result()
-                        ts.record(col, row, crc)
+                        if build is None:
+                            ts.record(col, row, crc)
+                        else:
+                            ts.record_tile(col, row, crc)
                         bar.update(1)
                         if on_tile is not None:
                             on_tile(client, done, len(todo))
@@ -138,8 +173,33 @@ def build_tileset(settings, out_dir, tile=4096, fmt="png16", reference=None, cli
         t = time.monotonic()
         ts.finish()
         summary["finish_seconds"] = time.monotonic() - t
+    if engine is not None:
+        t = time.monotonic()
+        summary["engine"] = _cut_for_engine(out, engine, engine_size, region_size)
+        summary["engine_seconds"] = time.monotonic() - t
     summary["seconds"] = time.monotonic() - start
     return summary
+
+
+ENGINES = ("unity", "unreal", "godot")
+
+
+def _check_engine(engine, build):
+    if engine not in ENGINES:
+        raise FracterraError(f"the engine must be one of {', '.join(ENGINES)}, got {engine!r}")
+    if build is not None and build["preset"] == "NONE" and build["erosion"] is None:
+        return
+    if build is not None and not build["maps"]:
+        raise FracterraError("--engine cuts an eroded set's splat maps from the set's erosion maps: add --maps")
+
+
+def _cut_for_engine(folder, engine, engine_size, region_size):
+    """The finished set cut for a game engine into folder/ENGINE (ft_tileset_cut_for_engine); its sidecar."""
+    cut_for_engine(folder, engine, os.path.join(folder, engine), engine_size, region_size)
+    with open(os.path.join(folder, engine, f"{engine}.json"), encoding="utf-8") as f:
+        side = json.load(f)
+    return {"folder": os.path.join(folder, engine), "tile_samples": side["tile_samples"],
+            "columns": side["columns"], "rows": side["rows"]}
 
 
 def _add_sums(parts):
@@ -166,12 +226,16 @@ def measure_tileset(settings, tile, client, method="variogram_aligned", referenc
     return hurst_from_sums(settings, sums, counts, method, reference)
 
 
-def _settings_parser():
-    """argparse flags for every terrain setting, from the library's parameter table."""
-    parser = argparse.ArgumentParser(
-        prog="python3 -m fracterra.tiles",
-        description="Write a terrain larger than memory as a tile set on Dask (one task per tile).")
-    for p in params_mod.library_params("terrain"):
+# Erosion settings that are the terrain's, as for `fracterra tiles`: its threads, the torus of a
+# terrain that tiles, its landform's sea.
+_TERRAINS_OWN = {"periodic", "threads", "sea", "sea_level", "sea_fraction"}
+
+
+def _add_param_flags(parser, kind, skip=()):
+    """argparse flags for every setting of the library's struct `kind`, from its parameter table."""
+    for p in params_mod.library_params(kind):
+        if p.name in skip:
+            continue
         flag = "--" + p.name.replace("_", "-")
         if p.kind == "enum":
             parser.add_argument(flag, dest=p.name, choices=[i[0].lower() for i in p.items], help=p.description)
@@ -179,9 +243,34 @@ def _settings_parser():
             parser.add_argument(flag, dest=p.name, action="store_const", const=True, help=p.description)
         else:
             parser.add_argument(flag, dest=p.name, type=int if p.kind == "int" else float, help=p.description)
+
+
+def _settings_parser():
+    """argparse flags for every terrain and erosion setting, from the library's parameter tables."""
+    parser = argparse.ArgumentParser(
+        prog="python3 -m fracterra.tiles",
+        description="Write a terrain larger than memory as a tile set on Dask (one task per tile), generated "
+                    "or eroded.")
+    _add_param_flags(parser, "terrain")
+    erosion = parser.add_argument_group("erosion", "as fracterra tiles --erode: every tile a window of the "
+                                                   "eroded whole")
+    presets = [p.lower() for p in enum_values("build", "erosion_preset")]
+    erosion.add_argument("--erode", "--erosion-preset", dest="erosion_preset", type=str.lower, choices=presets,
+                         help="erode with a preset (its settings, then the erosion flags given over them)")
+    _add_param_flags(erosion, "erosion", _TERRAINS_OWN)
+    erosion.add_argument("--maps", action="store_true",
+                         help="also write the maps (drainage area, slope, curvature, water depth, eroded, "
+                              "deposited) as float32 GeoTIFF tiles OUT/maps/MAP/ with a mosaic OUT/maps/MAP.vrt")
+    for flag in ("--falloff-mask", "--erosion-mask", "--rain-map"):
+        erosion.add_argument(flag, help="a raster spanning the whole terrain (as fracterra tiles takes it)")
     parser.add_argument("--tile", type=int, default=4096, help="cells per tile side (tiles hold tile + 1 samples)")
     parser.add_argument("--format", default="png16", choices=sorted(FORMATS))
     parser.add_argument("--out", required=True, help="the tile set's folder (a rerun resumes)")
+    parser.add_argument("--engine", choices=ENGINES,
+                        help="also cut the finished set for a game engine into OUT/ENGINE (with an eroded set's "
+                             "splat maps; docs/engines.md)")
+    parser.add_argument("--engine-size", type=int, default=0, help="samples per engine tile side (0: the default)")
+    parser.add_argument("--region-size", type=int, default=256, help="--engine godot: Terrain3D's region size")
     parser.add_argument("--scheduler", help="tcp://HOST:8786 of a running `dask scheduler`; default: a LocalCluster")
     parser.add_argument("--workers", type=int, default=2, help="LocalCluster worker processes")
     parser.add_argument("--memory-limit", default="3GB", help="LocalCluster memory limit per worker")
@@ -193,16 +282,38 @@ def _settings_parser():
     return parser
 
 
+def _mask(path):
+    """(width, height, values) of a mask raster, or None."""
+    if not path:
+        return None
+    from .core.raster import read_heightfield
+    with read_heightfield(path) as hf:
+        return hf.width, hf.height, hf.to_array()
+
+
 def main(argv=None):
     args = _settings_parser().parse_args(argv)
+    values = vars(args)
     names = {p.name for p in params_mod.library_params("terrain")}
-    settings = {k: (v.upper() if isinstance(v, str) else v) for k, v in vars(args).items()
+    settings = {k: (v.upper() if isinstance(v, str) else v) for k, v in values.items()
                 if k in names and v is not None}
+    erosion_names = {p.name for p in params_mod.library_params("erosion")} - _TERRAINS_OWN
+    erosion = {k: (v.upper() if isinstance(v, str) else v) for k, v in values.items()
+               if k in erosion_names and v is not None} or None
     try:
+        falloff_mask = _mask(args.falloff_mask)
+        if falloff_mask is not None:
+            settings["falloff"] = "CUSTOM"
+        erosion_mask, rain_map = _mask(args.erosion_mask), _mask(args.rain_map)
+        if erosion is None and (erosion_mask or rain_map):
+            erosion = {}
         client = connect(args.scheduler, args.workers, args.memory_limit, args.connect_timeout)
         try:
             summary = build_tileset(settings, args.out, args.tile, args.format, client=client,
-                                    progress=not args.quiet, task_threads=args.task_threads)
+                                    progress=not args.quiet, task_threads=args.task_threads, erosion=erosion,
+                                    preset=args.erosion_preset or "NONE", maps=args.maps,
+                                    falloff_mask=falloff_mask, erosion_mask=erosion_mask, rain_map=rain_map,
+                                    engine=args.engine, engine_size=args.engine_size, region_size=args.region_size)
             if args.measure:
                 summary["measure"] = measure_tileset(dict(settings, threads=args.task_threads), args.tile, client)
         finally:

@@ -147,7 +147,7 @@ class SplatColoursAreTheLibrarys(unittest.TestCase):
             with self.assertRaises(RuntimeError) as e:  # a script sees the error report as RuntimeError
                 bpy.ops.object.fracterra_terrain_regenerate()
             message = str(e.exception)
-            self.assertIn("Splat Rules", message)
+            self.assertIn("Material Rules", message)
             self.assertIn(said, message)
             self.assertNotIn("Traceback", message)
             self.assertIn(said, settings.last_error)

@@ -1,6 +1,6 @@
 """Undo, cancel and failure of the add-on's operators, and what a second Add
 starts from: after each, the settings on the object are those of the mesh
-that is there (issue 24). Blender keeps no undo stack in background mode, so
+that is there. Blender keeps no undo stack in background mode, so
 ctest runs this one in a real window under Xvfb (xvfb-run). The steps run
 from a timer, through Blender's event loop, as a user's clicks do: a
 background job (Regenerate from the sidebar) advances only there, and the
@@ -105,6 +105,37 @@ def undo_of_regenerate_brings_back_the_settings_of_the_mesh():
     terrain = bpy.data.objects[name]
     check(vertex_hash(terrain) != before and terrain.fracterra_terrain.seed == 7,
           "redo brings the regenerated mesh back with its seed (7)")
+
+
+def undo_of_an_auto_update_edit_brings_the_final_back():
+    """A Final, then an Auto Update edit (the Preview shown, the Final kept
+    beside it): Ctrl+Z puts the Final back on the object with its settings and
+    nothing kept; redo brings the Preview and the kept Final again."""
+    yield from add_terrain(levels=6, preview_levels=4, seed=1)
+    terrain = bpy.context.active_object
+    name, final_name, before = terrain.name, terrain.data.name, vertex_hash(terrain)
+    bpy.ops.ed.undo_push(message="before the edit")
+    settings = terrain.fracterra_terrain
+    settings.auto_update = True
+    settings.seed = 7  # Auto Update: the Preview
+    bpy.ops.ed.undo_push(message="Seed")
+    yield STEP
+    check(len(terrain.data.vertices) == 17 * 17 and terrain.fracterra_final is not None
+          and terrain.fracterra_final.name == final_name, "the Auto Update edit keeps the Final beside the Preview")
+    with in_view3d():
+        bpy.ops.ed.undo()
+    yield STEP
+    terrain = bpy.data.objects[name]
+    check(len(terrain.data.vertices) == 65 * 65 and vertex_hash(terrain) == before and terrain.fracterra_final is None,
+          "undo brings the Final back on the object, nothing kept")
+    check(terrain.fracterra_terrain.seed == 1, f"undo shows the Final's seed (1), not {terrain.fracterra_terrain.seed}")
+    with in_view3d():
+        bpy.ops.ed.redo()
+    yield STEP
+    terrain = bpy.data.objects[name]
+    check(len(terrain.data.vertices) == 17 * 17 and terrain.fracterra_final is not None
+          and terrain.fracterra_terrain.seed == 7, "redo brings the Preview and the kept Final back")
+    terrain.fracterra_terrain.auto_update = False
 
 
 def cancelled_regenerate_keeps_the_settings_of_the_mesh():
@@ -260,6 +291,7 @@ def scenario():
     check(not bpy.app.background, "this test runs with a window (xvfb-run)")
     for step in (undo_removes_the_added_terrain, undo_removes_an_eroded_terrain,
                  undo_of_regenerate_brings_back_the_settings_of_the_mesh,
+                 undo_of_an_auto_update_edit_brings_the_final_back,
                  cancelled_regenerate_keeps_the_settings_of_the_mesh,
                  failed_regenerate_keeps_the_settings_of_the_mesh,
                  a_second_add_does_not_inherit_erosion, a_long_redo_hands_over_to_the_progress_bar,

@@ -3,7 +3,8 @@
 find_program(FT_BLENDER blender)
 if(FT_BLENDER)
   set(FT_BLENDER_ZIP ${PROJECT_BINARY_DIR}/blender_addon/fracterra.zip)
-  foreach(name addon missing_library params dem tiles erosion pov_export preview rivers planet splat_material)
+  foreach(name addon missing_library params dem tiles erosion pov_export preview rivers planet splat_material
+               children)
     set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_${name})
     add_test(NAME blender_${name}
       COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch}
@@ -14,7 +15,7 @@ if(FT_BLENDER)
   endforeach()
   # The installed add-on must use its bundled library, except in the test of a missing one.
   set_tests_properties(blender_addon blender_params blender_dem blender_tiles blender_erosion blender_pov_export
-    blender_preview blender_rivers blender_planet blender_splat_material
+    blender_preview blender_rivers blender_planet blender_splat_material blender_children
     PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
   # The Erode step is checked against the CLI, another front end of the library's pipeline.
   set_tests_properties(blender_erosion PROPERTIES ENVIRONMENT "FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>")
@@ -35,7 +36,8 @@ if(FT_BLENDER)
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_preview
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_rivers
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_planet
-            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_splat_material)
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_splat_material
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_children)
   set_tests_properties(blender_scratch_clean PROPERTIES FIXTURES_SETUP blender_scratch LABELS blender)
 endif()
 

@@ -191,6 +191,72 @@ def test_the_command_line_driver_writes_the_same_bytes(reference, tmp_path):
         assert got[name] == reference[name], name
 
 
+# An eroded 257^2 mountain with its maps in 16 tiles of 65^2 (Rugged Mountains, Strength 0.7).
+ERODED = {"method": "MIDPOINT", "levels": 8, "seed": 5, "sigma": 2.0, "levelling": 1.0, "height_offset": 1.5,
+          "falloff": "RADIAL", "falloff_width": 0.9, "world_size": 10.0}
+ERODED_FLAGS = ["--method", "midpoint", "--levels", "8", "--seed", "5", "--sigma", "2", "--levelling", "1",
+                "--height-offset", "1.5", "--falloff", "radial", "--falloff-width", "0.9", "--world-size", "10",
+                "--erode", "land", "--strength", "0.7", "--maps"]
+
+
+def all_files(folder):
+    """{relative name: bytes} of every file under a tile set folder (its maps too)."""
+    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(Path(folder).rglob("*")) if p.is_file()}
+
+
+@pytest.fixture(scope="module")
+def eroded_reference(tmp_path_factory):
+    out = tmp_path_factory.mktemp("cli-eroded") / "set"
+    subprocess.run([CLI, "tiles", *ERODED_FLAGS, "--tile", "64", "--quiet", "--out", str(out)], check=True,
+                   capture_output=True)
+    return all_files(out)
+
+
+def test_an_eroded_set_on_dask_is_the_one_process_set_even_with_a_worker_killed(eroded_reference, client,
+                                                                               tmp_path):
+    # The range pass (one task per tile, each keeping its eroded tile) and the
+    # writing pass run on the cluster; a worker is killed while a tile task is
+    # provably running on it (as in test_a_killed_worker_changes_nothing). Every
+    # file, heights, maps, manifest and mosaics, equals the CLI's.
+    marks = tmp_path / "marks"
+    marks.mkdir()
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])
+    client.register_worker_plugin(TaskMarkers(str(marks)), name="task-markers")
+    victim = sorted(client.run(os.getpid).values())[0]
+    lost = []
+
+    def kill_one(c, done, total):
+        if lost:
+            return
+        os.kill(victim, signal.SIGSTOP)
+        running = marked(marks, victim, "start") - marked(marks, victim, "end")
+        if running:
+            os.kill(victim, signal.SIGKILL)
+            lost.extend(running)
+        else:
+            os.kill(victim, signal.SIGCONT)
+
+    try:
+        summary = tiles.build_tileset(ERODED, tmp_path / "set", 64, client=client, progress=False,
+                                      preset="LAND", erosion={"strength": 0.7}, maps=True, on_tile=kill_one)
+    finally:
+        client.unregister_worker_plugin("task-markers")
+    assert "range_seconds" in summary
+    assert summary["written"] == 16
+    assert lost, "the worker never had a tile task in flight when a tile finished"
+    got = all_files(tmp_path / "set")
+    assert sorted(got) == sorted(eroded_reference)  # nothing left over: no pending folder, no temporary file
+    for name in eroded_reference:
+        assert got[name] == eroded_reference[name], name
+
+
+def test_another_erosion_is_refused(client, tmp_path):
+    tiles.build_tileset(ERODED, tmp_path / "set", 64, client=client, progress=False, preset="LAND", maps=True)
+    with pytest.raises(FracterraError, match=r"erosion strength: 0.9 here, 0.5 in the folder"):
+        tiles.build_tileset(ERODED, tmp_path / "set", 64, client=client, progress=False, preset="LAND",
+                            erosion={"strength": 0.9}, maps=True)
+
+
 def test_unreachable_scheduler_is_a_clear_error():
     with socket.socket() as s:  # a port nobody listens on
         s.bind(("127.0.0.1", 0))

@@ -23,8 +23,11 @@ from .ui import properties as props
 from .ui import erosion_layout
 from .ops import terrain as terrain_ops
 from .ops import planet as planet_ops
+from .ops import tiles_build as tiles_build_op
 from .ops import tiles_import as tiles_import_op
 from .ui.menus import MENUS
+from .build import kept_final
+from .build.children import VISIBILITY_POLL, follow_visibility, poll_visibility
 from .build.objects import restore_after_undo
 from .build.terrain import final_for_render
 
@@ -35,6 +38,7 @@ classes = (
     props.FRACTERRA_PG_planet,
     terrain_ops.FRACTERRA_OT_terrain_add,
     terrain_ops.FRACTERRA_OT_terrain_regenerate,
+    terrain_ops.FRACTERRA_OT_back_to_final,
     terrain_ops.FRACTERRA_OT_reference_image_open,
     planet_ops.FRACTERRA_OT_planet_add,
     planet_ops.FRACTERRA_OT_planet_regenerate,
@@ -48,6 +52,7 @@ classes = (
     dem_io_ops.FRACTERRA_OT_import_dem,
     dem_io_ops.FRACTERRA_OT_export_heights,
     tiles_import_op.FRACTERRA_OT_import_tiles,
+    tiles_build_op.FRACTERRA_OT_export_tiles,
     panels.FRACTERRA_PT_terrain,
     rivers_panel.FRACTERRA_PT_rivers,
     panels.FRACTERRA_PT_planet,
@@ -60,6 +65,9 @@ def on_register():
     for handlers in (bpy.app.handlers.undo_post, bpy.app.handlers.redo_post):
         handlers.append(restore_after_undo)
     bpy.app.handlers.render_pre.append(final_for_render)
+    bpy.app.handlers.depsgraph_update_post.append(follow_visibility)
+    bpy.app.timers.register(poll_visibility, first_interval=VISIBILITY_POLL, persistent=True)
+    kept_final.register()
     bpy.types.Object.fracterra_terrain = bpy.props.PointerProperty(type=props.FRACTERRA_PG_terrain)
     bpy.types.Object.fracterra_measures = bpy.props.PointerProperty(type=props.FRACTERRA_PG_measures)
     bpy.types.Object.fracterra_polyline = bpy.props.PointerProperty(type=props.FRACTERRA_PG_polyline)
@@ -77,6 +85,11 @@ def on_unregister():
             handlers.remove(restore_after_undo)
     if final_for_render in bpy.app.handlers.render_pre:
         bpy.app.handlers.render_pre.remove(final_for_render)
+    if follow_visibility in bpy.app.handlers.depsgraph_update_post:
+        bpy.app.handlers.depsgraph_update_post.remove(follow_visibility)
+    if bpy.app.timers.is_registered(poll_visibility):
+        bpy.app.timers.unregister(poll_visibility)
+    kept_final.unregister()
     erosion_layout.unregister()
     del bpy.types.Object.fracterra_planet
     del bpy.types.Object.fracterra_polyline

@@ -318,9 +318,10 @@ def _blender_terrain_params(dyadic):
               "Fade the object's outline inward over the Falloff Width (a smoothstep); off: a step at the "
               "outline"),
         # The terrain's colours (the material's Base Color, the POV-Ray export's texture).
-        Param("splat_rules", "string", "", "Splat Rules",
-              "Layer rules JSON ({\"layers\": [{\"name\": ..., \"slope_min\": ...}]}, as fracterra splat --rules "
-              "reads it) that colour the terrain; blank: the built-in grass, rock, sediment and snow",
+        Param("splat_rules", "string", "", "Material Rules",
+              "Splat rules: a JSON file of layers ({\"layers\": [{\"name\": ..., \"slope_min\": ...}]}, as "
+              "fracterra splat --rules reads it) that colour the terrain by height, slope and erosion; blank: the "
+              "built-in grass, rock, sediment and snow",
               subtype="FILE_PATH"),
         # Mesh options.
         Param("uvs", "bool", True, "UVs", "Add a UV map spanning the grid 0..1", geometry=True),
@@ -423,7 +424,9 @@ def _blender_planet_params():
         Param("preview_level", "int", 6, "Preview Level",
               "Auto Update (and the redo panel) builds at this level so editing stays interactive; the Preview "
               "is the Final's every 2^k-th sample, the same planet with less detail", min=0, max=top),
-        Param("vertical_scale", "float", 20.0, "Exaggeration",
+        # 60: the default planet's land rises 1.25 % of its radius above the sea, whose
+        # shading the default view shows (at 20, 0.4 %: a flat disc of colour).
+        Param("vertical_scale", "float", 60.0, "Exaggeration",
               "Heights times this: at 1 an Earth's 8 km mountains are 0.1 % of its radius, invisible from space",
               min=0.0, soft_max=200.0, precision=1),
         Param("scene_radius", "float", 1.0, "Scene Radius",

@@ -8,6 +8,8 @@
 #define FRACTERRA_TILES_H
 
 #include "core.h"
+#include "pipeline.h"
+#include "splat.h"
 #include "terrain.h"
 
 #ifdef __cplusplus
@@ -80,6 +82,67 @@ FT_API ft_status ft_tileset_read_window(const char* dir, int32_t lod, int64_t x0
 /// sample falls outside [height_min, height_max].
 FT_API ft_status ft_tile_write(const ft_terrain_params* p, int32_t tile, int32_t format, double height_min,
                                double height_max, const char* dir, int32_t column, int32_t row, uint32_t* crc32);
+
+/// Tile sets of built terrains (ABI 2.26): the terrain, its landform and its
+/// erosion as ft_terrain_build makes them (`p`), each tile the window of the
+/// built terrain (ft_terrain_build_window), bit-identical to the same samples
+/// of the whole, so an eroded set has no seams. p's progress is ignored.
+/// With `maps` non-zero the set also holds the maps (ft_erosion_map order),
+/// each tile's as a float32 GeoTIFF maps/<map>/tile_rRRR_cCCC.tif, mosaicked
+/// in maps/<map>.vrt (needs GDAL). The manifest records the erosion (the
+/// preset and every setting it erodes with) and the maps: a folder holding a
+/// set of another terrain, erosion or maps is refused naming the first
+/// difference. An eroded set's height range is the exact union of its
+/// tiles', so it is always pending here when new (*range_pending = 1) unless
+/// `defer` is 0, which runs the pass in this call. Without erosion and maps
+/// the set is byte-identical to ft_tileset_open_deferred's.
+FT_API ft_status ft_tileset_open_build(const ft_build_params* p, int32_t tile, int32_t format, int32_t maps,
+                                       int32_t defer, const char* dir, ft_tileset** out, int32_t* range_pending);
+/// The range pass's task for a set of ft_tileset_open_build (any process, any
+/// order, safe to retry): the exact height range of tile (column, row). An
+/// eroded tile is built once here and kept in the set's folder `dir` (a
+/// hidden .pending-XXXXXXXX folder named after the set), where
+/// ft_tile_write_build takes it instead of building it again; the set's
+/// finish removes the folder. Arguments as ft_tileset_open_build's. (ABI 2.26)
+FT_API ft_status ft_tile_build_range(const ft_build_params* p, int32_t tile, int32_t format, int32_t maps,
+                                     const char* dir, int32_t column, int32_t row, double* min, double* max);
+/// Writes tile (column, row) of a set of ft_tileset_open_build into `dir`:
+/// its heights, and its maps when `maps` is non-zero (temporary names, then
+/// renamed). `crcs` receives `crc_count` CRC-32s: the heights file's, then
+/// with maps one per map in ft_erosion_map order; crc_count must be 1, or
+/// 1 + FT_MAP_COUNT with maps. The same arguments give the same bytes in any
+/// process. Fails if a sample falls outside [height_min, height_max]. (ABI 2.26)
+FT_API ft_status ft_tile_write_build(const ft_build_params* p, int32_t tile, int32_t format, int32_t maps,
+                                     double height_min, double height_max, const char* dir, int32_t column,
+                                     int32_t row, uint32_t* crcs, int32_t crc_count);
+/// Records a tile's CRC-32s as ft_tile_write_build gave them (crc_count 1, or
+/// 1 + FT_MAP_COUNT for a set with maps). (ABI 2.26)
+FT_API ft_status ft_tileset_record_tile(ft_tileset* set, int32_t column, int32_t row, const uint32_t* crcs,
+                                        int32_t crc_count);
+/// As ft_tileset_read_window, for map `map` (FT_MAP_*) of a finished set with
+/// maps: exact float32 values in the map's units. (ABI 2.26)
+FT_API ft_status ft_tileset_read_map_window(const char* dir, int32_t map, int32_t lod, int64_t x0, int64_t y0,
+                                            int32_t width, int32_t height, ft_heightfield** out);
+/// The colours of splat rules `layers` (splat.h; layer_count of them) over the
+/// window of ft_tileset_read_window, in linear RGBA as
+/// ft_splat_colors_linear_rgba gives them (rgba: 4 width height floats), equal
+/// to the whole's: the rules see the whole set's height range and area, its
+/// maps' deposits and flow (a set without maps: none) and slopes across the
+/// window's edges. (ABI 2.26)
+FT_API ft_status ft_tileset_window_colors(const char* dir, int32_t lod, int64_t x0, int64_t y0, int32_t width,
+                                          int32_t height, const ft_splat_params* layers, int32_t layer_count,
+                                          float* rgba, size_t rgba_count);
+/// Cuts the finished set in `dir` the way game engine `engine` ("unity",
+/// "unreal", "godot") imports a large terrain in pieces, into `out_dir`
+/// (created) with `out_dir/<engine>.json` (docs/engines.md): engine tiles of
+/// `side` samples (0: the set's own tiles when the engine takes them, else
+/// the largest that cuts the set), Godot regions of `region_size`. An eroded
+/// set with its maps gets the default splat rules' maps per tile too (Unity:
+/// an RGBA alphamap, Unreal: a weight map per layer, Godot: a control map),
+/// equal to the whole's. What the engine cannot take is refused before
+/// anything is written. (ABI 2.26)
+FT_API ft_status ft_tileset_cut_for_engine(const char* dir, const char* engine, int32_t side, int32_t region_size,
+                                           const char* out_dir);
 
 #ifdef __cplusplus
 }

@@ -14,9 +14,12 @@
 namespace ft::engines {
 namespace {
 
-// The Terrain3D control map of `hf`: at each sample the two layers with the
-// largest weights (default splat rules) as base and overlay, and the
-// overlay's share of the two as the blend.
+std::string control_path(const std::string& out) {
+  return platform::sibling_path(out, "_control.exr");
+}
+
+}  // namespace
+
 Heightfield control_map(const Heightfield& hf, const splat::SplatInputs& maps) {
   const auto layers = splat::default_layers();
   const int32_t n = int32_t(layers.size());
@@ -38,12 +41,6 @@ Heightfield control_map(const Heightfield& hf, const splat::SplatInputs& maps) {
   }
   return control;
 }
-
-std::string control_path(const std::string& out) {
-  return platform::sibling_path(out, "_control.exr");
-}
-
-}  // namespace
 
 const char* engine_extension(Engine e) {
   switch (e) {

@@ -33,6 +33,12 @@ std::pair<int32_t, int32_t> engine_size(const Heightfield& hf, const EngineOptio
 // Refuses, before any work, a region size, side or extension the engine does not take.
 void check_engine_output(const EngineOptions& o, const std::string& out);
 
+// The Terrain3D control map of `hf`: at each sample the two layers with the
+// largest weights (default splat rules over `maps`, whose terrain is `hf`'s
+// and whose maps may be null) as base and overlay, and the overlay's share of
+// the two as the blend.
+Heightfield control_map(const Heightfield& hf, const splat::SplatInputs& maps);
+
 // Writes `hf` (and for Godot its control map, by the default splat rules
 // over `maps`, which may hold null maps) to `out`, whose extension must be
 // the engine's. Returns the sidecar (also written to out + ".json").

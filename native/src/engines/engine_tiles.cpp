@@ -1,6 +1,7 @@
 #include "engines/engine_tiles.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 
 #include "core/error.hpp"
@@ -9,6 +10,7 @@
 #include "io/exr.hpp"
 #include "io/png_image.hpp"
 #include "io/raw16.hpp"
+#include "splat/splat_files.hpp"
 #include "tiles/manifest.hpp"
 #include "tiles/tile_writer.hpp"
 #include "tiles/tileset_reader.hpp"
@@ -76,6 +78,79 @@ std::string tile_name(Engine e, const std::string& name, int32_t x, int32_t y) {
   }
 }
 
+// The default splat rules' inputs over an engine tile of an eroded set:
+// heights, deposits and drainage area read with one sample of margin where
+// the set has one (so that slopes at the tile's edges are the whole's), and
+// the whole's height range and area (so that a tile's weights are the
+// whole's). `ox`, `oy`: where the tile starts in the grown window.
+struct TileSplat {
+  Heightfield terrain, deposited, area;
+  splat::SplatFrame frame;
+  int32_t ox = 0, oy = 0;
+  splat::SplatInputs inputs() const { return {&terrain, &deposited, &area, &frame}; }
+};
+
+TileSplat read_tile_splat(const std::string& dir, const nlohmann::json& m, int64_t x0, int64_t y0, int32_t side) {
+  const int64_t width = m["width"].get<int64_t>(), height = m["height"].get<int64_t>();
+  const int64_t gx0 = std::max<int64_t>(0, x0 - 1), gy0 = std::max<int64_t>(0, y0 - 1);
+  const int64_t gx1 = std::min<int64_t>(width, x0 + side + 1), gy1 = std::min<int64_t>(height, y0 + side + 1);
+  const int32_t gw = int32_t(gx1 - gx0), gh = int32_t(gy1 - gy0);
+  TileSplat t;
+  t.terrain = tiles::read_tileset_window(dir, 0, gx0, gy0, gw, gh);
+  t.deposited = tiles::read_tileset_map_window(dir, "deposited", 0, gx0, gy0, gw, gh);
+  t.area = tiles::read_tileset_map_window(dir, "drainage_area", 0, gx0, gy0, gw, gh);
+  const double lo = m["height_range"]["min"].get<double>(), hi = m["height_range"]["max"].get<double>();
+  const double s = m["sample_spacing"].get<double>();
+  t.frame = {lo, hi - lo, s * s * double(width - 1) * double(height - 1)};
+  t.ox = int32_t(x0 - gx0), t.oy = int32_t(y0 - gy0);
+  return t;
+}
+
+// Rows [oy, oy + side) and columns [ox, ox + side) of a sample-major array of `n` values per sample.
+template <class T>
+std::vector<T> crop(const std::vector<T>& v, int32_t width, int32_t n, int32_t ox, int32_t oy, int32_t side) {
+  std::vector<T> out(size_t(side) * size_t(side) * size_t(n));
+  for (int32_t j = 0; j < side; ++j)
+    std::copy_n(v.begin() + std::ptrdiff_t((size_t(oy + j) * size_t(width) + size_t(ox)) * size_t(n)),
+                size_t(side) * size_t(n), out.begin() + std::ptrdiff_t(size_t(j) * size_t(side) * size_t(n)));
+  return out;
+}
+
+// The splat files of engine tile (x, y), named after its heights file; returns them for the sidecar.
+nlohmann::json write_tile_splat(Engine e, const TileSplat& t, int32_t side, const std::string& out_dir,
+                                const std::string& name, int32_t x, int32_t y) {
+  const std::vector<ft_splat_params> layers = splat::default_layers();
+  const int32_t n = int32_t(layers.size()), gw = t.terrain.width();
+  const std::string xs = std::to_string(x), ys = std::to_string(y);
+  if (e == Engine::godot) {
+    const Heightfield control = control_map(t.terrain, t.inputs());
+    Heightfield tile(side, side);
+    std::vector<uint32_t> bits(control.size());  // the control words moved as integers, never as floats
+    std::memcpy(bits.data(), control.data(), bits.size() * sizeof(uint32_t));
+    const std::vector<uint32_t> cropped = crop(bits, gw, 1, t.ox, t.oy, side);
+    std::memcpy(tile.data(), cropped.data(), cropped.size() * sizeof(uint32_t));
+    const std::string file = name + "_x" + xs + "_y" + ys + "_control.exr";
+    io::write_exr(tile, platform::join_path(out_dir, file), "R");
+    return {{"control_file", file}};
+  }
+  const std::vector<uint16_t> w = crop(splat::splat_weights(t.inputs(), layers.data(), n, 255), gw, n, t.ox, t.oy, side);
+  if (e == Engine::unity) {  // one RGBA alphamap per terrain, layers in R, G, B, A
+    const std::string file = name + "_" + xs + "_" + ys + "_splat.png";
+    splat::write_splat_pngs(platform::join_path(out_dir, file), w, side, side, n, 8);
+    return {{"splat_file", file}};
+  }
+  // Unreal imports one grayscale weight map per layer, tiled by the same _x_y suffix.
+  nlohmann::json files = nlohmann::json::object();
+  for (int32_t k = 0; k < n; ++k) {
+    io::ChannelImage img{side, side, 1, 8, std::vector<uint16_t>(size_t(side) * size_t(side))};
+    for (size_t i = 0; i < img.samples.size(); ++i) img.samples[i] = w[i * size_t(n) + size_t(k)];
+    const std::string file = name + "_" + layers[size_t(k)].name + "_x" + xs + "_y" + ys + ".png";
+    io::write_png_channels(platform::join_path(out_dir, file), img);
+    files[layers[size_t(k)].name] = file;
+  }
+  return {{"weight_files", files}};
+}
+
 }  // namespace
 
 nlohmann::json write_engine_tiles(const std::string& set_dir, const std::string& out_dir, const EngineOptions& o,
@@ -91,6 +166,8 @@ nlohmann::json write_engine_tiles(const std::string& set_dir, const std::string&
   const double lo = m["height_range"]["min"].get<double>(), hi = m["height_range"]["max"].get<double>();
   const double spacing = m["sample_spacing"].get<double>();
   std::filesystem::create_directories(platform::fs_path(out_dir));
+  // An eroded set with its maps gets the splat maps of the default rules with its tiles.
+  const bool with_splat = m.contains("maps") && m.contains("erosion");
 
   nlohmann::json files = nlohmann::json::array();
   for (int32_t y = 0; y < rows; ++y)
@@ -113,6 +190,10 @@ nlohmann::json write_engine_tiles(const std::string& set_dir, const std::string&
                        {"x", x},
                        {"y", y},
                        {"position", {{"x", double(x) * step * spacing}, {"z", double(y) * step * spacing}}}});
+      if (with_splat)
+        files.back().update(write_tile_splat(o.engine, read_tile_splat(set_dir, m, int64_t(x) * step,
+                                                                       int64_t(y) * step, side),
+                                             side, out_dir, name, x, y));
     }
 
   const double range = hi - lo, tile_size = spacing * (side - 1);
@@ -128,6 +209,11 @@ nlohmann::json write_engine_tiles(const std::string& set_dir, const std::string&
                       {"sample_spacing", spacing},
                       {"units", "metres (1 world unit = 1 m)"},
                       {"files", files}};
+  if (with_splat) {
+    nlohmann::json names = nlohmann::json::array();
+    for (const auto& l : splat::default_layers()) names.push_back(l.name);
+    j["splat_layers"] = names;
+  }
   switch (o.engine) {
     case Engine::unity:
       j["unity"] = {{"depth", "Bit 16"},

@@ -93,6 +93,7 @@ Rules rules_of(const SplatInputs& in, const ft_splat_params* given, int32_t n) {
   r.low = s.min, r.range = s.max - s.min;
   r.spacing = hf.world_size() > 0 && hf.width() > 1 ? hf.world_size() / (hf.width() - 1) : 1.0;
   r.area = r.spacing * r.spacing * double(hf.width() - 1) * double(std::max(hf.height() - 1, 1));
+  if (in.frame) r.low = in.frame->low, r.range = in.frame->range, r.area = in.frame->area;
   return r;
 }
 

@@ -15,10 +15,18 @@ namespace ft::splat {
 // What the rules look at: the terrain and, optionally, two erosion maps of
 // its size (deposited thickness in world units, drainage area in world
 // units^2; null: their conditions see 0).
+// A window's whole terrain (a tile of a tile set): the rules' height fractions
+// and flow areas are the whole's, not the window's own.
+struct SplatFrame {
+  double low = 0, range = 0;  // the whole's lowest height and relief
+  double area = 1;            // the whole's area, world units^2
+};
+
 struct SplatInputs {
   const Heightfield* terrain = nullptr;
   const Heightfield* deposited = nullptr;
   const Heightfield* drainage_area = nullptr;
+  const SplatFrame* frame = nullptr;  // null: the terrain is the whole
 };
 
 // The built-in rule set: grass, rock, sediment, snow (R, G, B, A).

@@ -197,9 +197,9 @@ constexpr ft_param_info kTerrainRows[] = {
      .doc = "k x k points of the plane averaged per sample (anti-aliasing the boundary; k^2 times the work)",
      .methods = kMandelbrot},
     {ROW(levelling, FT_PARAM_DOUBLE), .since = kAbi26, .element_kind = -1, .default_value = 0, .hard_min = 0,
-     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Levelling",
-     .doc = "How much of the tilt to remove: the bilinear surface through the whole terrain's four corners "
-            "(1: every corner at height 0, a level terrain)",
+     .hard_max = 1, .soft_min = 0, .soft_max = 1, .unit = "", .label = "Remove Tilt",
+     .doc = "Levelling: how much of the tilt to remove, the bilinear surface through the whole terrain's four "
+            "corners (1: every corner at height 0, a level terrain)",
      .methods = FT_PARAM_ALL_METHODS},
     {ROW(height_offset, FT_PARAM_DOUBLE), .since = kAbi26, .element_kind = -1, .default_value = 0,
      .hard_min = -kMaxLandformHeight, .hard_max = kMaxLandformHeight, .soft_min = -100, .soft_max = 100,

@@ -33,8 +33,20 @@ double midpoint_bound_margin(int levels, int m, double hurst, double sigma) {
   return kGaussianBound * sum;
 }
 
-HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& grid) {
+HeightRange tileset_height_range(const TileTerrain& t, const TileSpec& spec, const std::string& dir) {
+  const ft_terrain_params& p = t.terrain;
+  const TileGrid& grid = spec.grid;
   HeightRange r;
+  if (t.erodes()) {  // erosion moves every height: the exact pass, keeping what it builds
+    r = {INFINITY, -INFINITY, "exact"};
+    for (int32_t row = 0; row < grid.rows(); ++row)
+      for (int32_t col = 0; col < grid.columns(); ++col) {
+        const HeightRange h = tile_height_range(t, spec, dir, col, row);
+        r.min = std::min(r.min, h.min);
+        r.max = std::max(r.max, h.max);
+      }
+    return r;
+  }
   if (const auto formula = terrain::terrain_method(p.method).height_range) {
     r.how = "formula";
     formula(p, &r.min, &r.max);
@@ -59,8 +71,23 @@ HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& gri
   return r;
 }
 
+HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& grid) {
+  TileSpec spec;
+  spec.grid = grid;
+  return tileset_height_range(TileTerrain::of(p), spec, "");
+}
+
 bool needs_exact_pass(const ft_terrain_params& p) {
   return !terrain::terrain_method(p.method).height_range && !has_midpoint_bound(p);
+}
+
+bool needs_exact_pass(const TileTerrain& t) { return t.erodes() || needs_exact_pass(t.terrain); }
+
+HeightRange tile_height_range(const TileTerrain& t, const TileSpec& spec, const std::string& dir, int32_t col,
+                              int32_t row) {
+  if (!t.erodes()) return tile_height_range(t.terrain, spec.grid, col, row);
+  const auto [lo, hi] = build_pending_tile(t, spec, dir, col, row);
+  return {lo, hi, "exact"};
 }
 
 HeightRange tile_height_range(const ft_terrain_params& p, const TileGrid& grid, int32_t col, int32_t row) {

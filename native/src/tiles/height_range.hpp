@@ -19,12 +19,16 @@
 //  - every other method (additions move old points at every stage, fbm and
 //    interpolated have no cheap coarse stage): exact, by generating every
 //    tile once before writing (generation costs twice).
+//  - an eroded terrain: exact, by building every tile once before writing;
+//    what is built is kept for the writing pass (tile_writer.hpp), so
+//    erosion runs once per tile.
 #pragma once
 
 #include <string>
 
 #include "terrain/terrain.hpp"  // ft_terrain_params
 #include "tiles/tile_grid.hpp"
+#include "tiles/tile_writer.hpp"
 
 namespace ft::tiles {
 
@@ -33,13 +37,21 @@ struct HeightRange {
   std::string how;  // "exact", "bound" or "formula", for the manifest
 };
 
+// The range of set `spec` of terrain `t` in folder `dir` (where an eroded
+// set's range pass keeps its tiles).
+HeightRange tileset_height_range(const TileTerrain& t, const TileSpec& spec, const std::string& dir);
+// A generated terrain's (never eroded: no folder needed).
 HeightRange tileset_height_range(const ft_terrain_params& p, const TileGrid& grid);
 
-// Whether p's range comes from the exact pass over every tile (the last case
-// above), and that pass's unit of work: one tile's exact range, which any
-// process can compute (Dask runs one task per tile; the union is the set's).
+// Whether the range comes from the exact pass over every tile (the last two
+// cases above), and that pass's unit of work: one tile's exact range, which
+// any process can compute (Dask runs one task per tile; the union is the
+// set's). An eroded set's unit (build_pending_tile) keeps the tile in `dir`.
 bool needs_exact_pass(const ft_terrain_params& p);
+bool needs_exact_pass(const TileTerrain& t);
 HeightRange tile_height_range(const ft_terrain_params& p, const TileGrid& grid, int32_t col, int32_t row);
+HeightRange tile_height_range(const TileTerrain& t, const TileSpec& spec, const std::string& dir, int32_t col,
+                              int32_t row);
 
 // The widening of the bound above after coarse stage m of a midpoint terrain
 // of `levels` levels: 5.9 sum_{k = 2m + 1}^{2 levels} sigma 2^(-k H / 2).

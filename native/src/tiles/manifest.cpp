@@ -10,6 +10,9 @@
 #include "core/error.hpp"
 #include "core/platform.hpp"
 #include "io/atomic_file.hpp"
+#include "erosion/erosion_params.hpp"
+#include "pipeline/build_params.hpp"
+#include "pipeline/terrain_build.hpp"
 #include "terrain/terrain_params.hpp"
 
 namespace ft::tiles {
@@ -40,6 +43,10 @@ nlohmann::json value_of(const ft_param_info& row, const void* p) {
   }
 }
 
+uint32_t crc_of_floats(const float* v, size_t n) {
+  return uint32_t(crc32_z(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(v), n * sizeof(float)));
+}
+
 }  // namespace
 
 nlohmann::json terrain_identity(const ft_terrain_params& p) {
@@ -60,10 +67,43 @@ nlohmann::json terrain_identity(const ft_terrain_params& p) {
   if (p.falloff == FT_FALLOFF_CUSTOM && p.falloff_mask != nullptr) {
     // Another mask makes another terrain: its tiles must not be reused.
     const size_t n = size_t(p.falloff_mask_width) * size_t(p.falloff_mask_height);
-    const uLong crc =
-        crc32_z(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(p.falloff_mask), n * sizeof(float));
-    j["falloff_mask"] = {{"width", p.falloff_mask_width}, {"height", p.falloff_mask_height}, {"crc32", uint32_t(crc)}};
+    j["falloff_mask"] = {{"width", p.falloff_mask_width},
+                         {"height", p.falloff_mask_height},
+                         {"crc32", crc_of_floats(p.falloff_mask, n)}};
   }
+  return j;
+}
+
+nlohmann::json erosion_identity(const TileTerrain& t) {
+  if (!t.erodes()) return nullptr;
+  const std::string preset = pipeline::erosion_preset_name(t.preset);
+  // What the pipeline erodes with: the preset over the given settings (the
+  // presets need no terrain to be fitted to).
+  const ft_erosion_params e = pipeline::erosion_settings(t.has_erosion ? &t.erosion : nullptr, preset, Heightfield());
+  nlohmann::json j = {{"preset", preset.empty() ? "none" : preset}};
+  for (const ft_param_info& row : erosion::erosion_param_table().rows) {
+    if ((row.flags & (FT_PARAM_FLAG_STRUCT_SIZE | FT_PARAM_FLAG_DATA)) || row.count != 1 ||
+        row.type == FT_PARAM_POINTER || row.type == FT_PARAM_STRING || row.type == FT_PARAM_CALLBACK)
+      continue;
+    // The pipeline's own rules set these (threads, the torus of a terrain that tiles).
+    if (std::strcmp(row.name, "threads") == 0 || std::strcmp(row.name, "periodic") == 0) continue;
+    j[row.name] = value_of(row, &e);
+  }
+  if (e.erosion_mask)
+    j["erosion_mask"] = {{"width", e.erosion_mask_width},
+                         {"height", e.erosion_mask_height},
+                         {"crc32", crc_of_floats(e.erosion_mask, size_t(e.erosion_mask_width) * e.erosion_mask_height)}};
+  if (e.rain_map)
+    j["rain_map"] = {{"width", e.rain_map_width},
+                     {"height", e.rain_map_height},
+                     {"crc32", crc_of_floats(e.rain_map, size_t(e.rain_map_width) * e.rain_map_height)}};
+  return j;
+}
+
+nlohmann::json tileset_identity(const TileTerrain& t, int64_t tile, const std::string& format) {
+  nlohmann::json j = {{"terrain", terrain_identity(t.terrain)}, {"tile", tile}, {"tile_format", format}};
+  if (t.erodes()) j["erosion"] = erosion_identity(t);
+  if (t.maps) j["maps"] = kMapNames;
   return j;
 }
 
@@ -96,6 +136,16 @@ std::string manifest_problem(const nlohmann::json& m) {
         !count(t, "y0", 0) || !t.contains("crc32") || !(t["crc32"].is_null() || t["crc32"].is_number_unsigned()) ||
         (t["crc32"].is_number_unsigned() && t["crc32"].get<uint64_t>() > UINT32_MAX))
       return "a tile is not an object with \"file\", \"x0\", \"y0\" and \"crc32\"";
+  if (m.contains("maps")) {
+    if (!m["maps"].is_array() || m["maps"].size() != kMapNames.size()) return "\"maps\" is not the list of maps";
+    for (const nlohmann::json& t : m["tiles"]) {
+      const nlohmann::json c = t.value("maps_crc32", nlohmann::json());
+      if (c.is_null()) continue;
+      if (!c.is_array() || c.size() != kMapNames.size()) return "a tile's \"maps_crc32\" is not one CRC-32 per map";
+      for (const nlohmann::json& v : c)
+        if (!v.is_number_unsigned() || v.get<uint64_t>() > UINT32_MAX) return "a tile's \"maps_crc32\" is not one CRC-32 per map";
+    }
+  }
   return "";
 }
 
@@ -119,9 +169,12 @@ void write_manifest(const std::string& dir, const nlohmann::json& m) {
   io::write_file_atomically(platform::join_path(dir, kManifestName), m.dump(1) + "\n");
 }
 
-void append_journal(const std::string& dir, int32_t col, int32_t row, uint32_t crc) {
+void append_journal(const std::string& dir, int32_t col, int32_t row, uint32_t crc,
+                    const std::array<uint32_t, FT_MAP_COUNT>* maps) {
   const std::string path = platform::join_path(dir, kJournalName);
-  const std::string line = nlohmann::json{{"column", col}, {"row", row}, {"crc32", crc}}.dump() + "\n";
+  nlohmann::json e = {{"column", col}, {"row", row}, {"crc32", crc}};
+  if (maps) e["maps_crc32"] = *maps;
+  const std::string line = e.dump() + "\n";
   const std::string why = platform::append_synced(path, line);
   if (!why.empty()) fail(FT_ERR_IO, "cannot append to '" + path + "': " + why);
 }
@@ -141,7 +194,13 @@ int64_t replay_journal(const std::string& dir, nlohmann::json& m) {
       continue;  // not a line this writes: skipped, the tile is redone
     const int64_t col = e["column"].get<int64_t>(), row = e["row"].get<int64_t>();
     if (col < 0 || col >= columns || row < 0 || row >= rows) continue;
-    tiles[size_t(row * columns + col)]["crc32"] = e["crc32"].get<uint32_t>();
+    nlohmann::json& tile = tiles[size_t(row * columns + col)];
+    if (m.contains("maps")) {  // a set with maps: a line without its maps' CRCs is not this set's
+      const nlohmann::json c = e.value("maps_crc32", nlohmann::json());
+      if (!c.is_array() || c.size() != kMapNames.size()) continue;
+      tile["maps_crc32"] = c;
+    }
+    tile["crc32"] = e["crc32"].get<uint32_t>();
     ++applied;
   }
   return applied;
@@ -153,6 +212,21 @@ void remove_journal(const std::string& dir) {
   if (ec) fail(FT_ERR_IO, "cannot remove '" + platform::join_path(dir, kJournalName) + "': " + ec.message());
 }
 
+namespace {
+
+// The first key whose value differs between two flat objects, in words.
+std::string object_difference(const nlohmann::json& a, const nlohmann::json& b, const std::string& prefix) {
+  for (auto it = a.begin(); it != a.end(); ++it)
+    if (!b.contains(it.key()) || b[it.key()] != it.value())
+      return prefix + it.key() + ": " + it.value().dump() + " here, " +
+             (b.contains(it.key()) ? b[it.key()].dump() : "none") + " in the folder";
+  for (auto it = b.begin(); it != b.end(); ++it)
+    if (!a.contains(it.key())) return prefix + it.key() + ": none here, " + it.value().dump() + " in the folder";
+  return "";
+}
+
+}  // namespace
+
 std::string identity_difference(const nlohmann::json& wanted, const nlohmann::json& existing) {
   if (!existing.is_object() || existing.value("format", "") != "fracterra-tileset")
     return "the folder's manifest.json is not a fracterra tile set manifest";
@@ -161,14 +235,20 @@ std::string identity_difference(const nlohmann::json& wanted, const nlohmann::js
       return std::string(key) + ": " + wanted[key].dump() + " here, " + existing.value(key, nlohmann::json()).dump() +
              " in the folder";
   }
-  const nlohmann::json& a = wanted["terrain"];
-  const nlohmann::json b = existing.value("terrain", nlohmann::json::object());
-  for (auto it = a.begin(); it != a.end(); ++it)
-    if (!b.contains(it.key()) || b[it.key()] != it.value())
-      return it.key() + ": " + it.value().dump() + " here, " + (b.contains(it.key()) ? b[it.key()].dump() : "none") +
-             " in the folder";
-  for (auto it = b.begin(); it != b.end(); ++it)
-    if (!a.contains(it.key())) return it.key() + ": none here, " + it.value().dump() + " in the folder";
+  if (std::string d = object_difference(wanted["terrain"], existing.value("terrain", nlohmann::json::object()), "");
+      !d.empty())
+    return d;
+  const nlohmann::json none = nlohmann::json::object();
+  const nlohmann::json ea = wanted.value("erosion", nlohmann::json()), eb = existing.value("erosion", nlohmann::json());
+  if (ea.is_null() != eb.is_null() || (!ea.is_null() && ea.value("preset", "") != eb.value("preset", "")))
+    return "erosion: " + (ea.is_null() ? std::string("none") : "preset " + ea.value("preset", std::string("none"))) +
+           " here, " + (eb.is_null() ? std::string("none") : "preset " + eb.value("preset", std::string("none"))) +
+           " in the folder";
+  if (std::string d = object_difference(ea.is_null() ? none : ea, eb.is_null() ? none : eb, "erosion "); !d.empty())
+    return d;
+  const bool ma = wanted.contains("maps"), mb = existing.contains("maps");
+  if (ma != mb)
+    return std::string("maps: ") + (ma ? "kept" : "none") + " here, " + (mb ? "kept" : "none") + " in the folder";
   return "";
 }
 

@@ -37,17 +37,23 @@ struct ConfigOption {
 
 }  // namespace
 
-void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
+namespace {
+
+// A VRT of `files` (relative to `dir`) at `final_vrt` (relative), with its
+// overviews in .ovr when `overviews`; temporary names, then renamed.
+void build_vrt(const TileSpec& spec, const std::string& dir, const std::vector<std::string>& files,
+               const std::string& final_name, bool scaled, bool overviews) {
   namespace fs = std::filesystem;
-  const std::string final_vrt = platform::join_path(dir, kMosaicName);
-  const std::string temp_vrt = platform::join_path(dir, ".mosaic.tmp.vrt");
+  const std::string final_vrt = platform::join_path(dir, final_name);
+  const fs::path final_path = platform::fs_path(final_vrt);
+  const std::string temp_vrt =
+      platform::utf8_of(final_path.parent_path() / ("." + platform::utf8_of(final_path.stem()) + ".tmp.vrt"));
   fs::remove(platform::fs_path(temp_vrt));
   fs::remove(platform::fs_path(temp_vrt + ".ovr"));
 
   io::GdalSession session;
   StringList sources;
-  for (int32_t row = 0; row < spec.grid.rows(); ++row)
-    for (int32_t col = 0; col < spec.grid.columns(); ++col) sources.add(platform::join_path(dir, tile_file_name(spec, col, row)));
+  for (const std::string& f : files) sources.add(platform::join_path(dir, f));
   {
     GDALBuildVRTOptions* options = GDALBuildVRTOptionsNew(nullptr, nullptr);
     int usage_error = 0;
@@ -55,7 +61,7 @@ void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
     GDALBuildVRTOptionsFree(options);
     if (!vrt) session.fail(FT_ERR_IO, "GDAL could not build the mosaic '" + final_vrt + "'");
     GDALRasterBandH band = GDALGetRasterBand(vrt.get(), 1);
-    if (spec.format == TileFormat::png16) {
+    if (scaled) {
       GDALSetRasterOffset(band, spec.height_min);
       GDALSetRasterScale(band, (spec.height_max - spec.height_min) / 65535.0);
     }
@@ -67,7 +73,7 @@ void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
   // otherwise (the bytes do not depend on it); one thread took half of a
   // 65537^2 set's wall time.
   std::vector<int> factors;
-  for (int f = 2; std::max(spec.grid.width, spec.grid.height) / f >= 256; f *= 2) factors.push_back(f);
+  for (int f = 2; overviews && std::max(spec.grid.width, spec.grid.height) / f >= 256; f *= 2) factors.push_back(f);
   if (!factors.empty()) {
     ConfigOption compress("COMPRESS_OVERVIEW", "DEFLATE");
     const std::string count = CPLGetConfigOption("GDAL_NUM_THREADS", "ALL_CPUS");  // a copy: set below
@@ -80,7 +86,23 @@ void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
   }
   if (!factors.empty()) fs::rename(platform::fs_path(temp_vrt + ".ovr"), platform::fs_path(final_vrt + ".ovr"));
   else fs::remove(platform::fs_path(final_vrt + ".ovr"));
-  fs::rename(platform::fs_path(temp_vrt), platform::fs_path(final_vrt));
+  fs::rename(platform::fs_path(temp_vrt), final_path);
+}
+
+}  // namespace
+
+void write_mosaic_vrt(const TileSpec& spec, const std::string& dir) {
+  std::vector<std::string> files;
+  for (int32_t row = 0; row < spec.grid.rows(); ++row)
+    for (int32_t col = 0; col < spec.grid.columns(); ++col) files.push_back(tile_file_name(spec, col, row));
+  build_vrt(spec, dir, files, kMosaicName, spec.format == TileFormat::png16, true);
+}
+
+void write_map_vrt(const TileSpec& spec, const std::string& dir, int k) {
+  std::vector<std::string> files;
+  for (int32_t row = 0; row < spec.grid.rows(); ++row)
+    for (int32_t col = 0; col < spec.grid.columns(); ++col) files.push_back(map_file_name(spec, k, col, row));
+  build_vrt(spec, dir, files, map_vrt_name(k), false, false);
 }
 
 Heightfield read_mosaic_preview(const std::string& dir, int32_t max_side) {

@@ -17,6 +17,10 @@ namespace ft::tiles {
 inline constexpr const char* kMosaicName = "mosaic.vrt";
 
 void write_mosaic_vrt(const TileSpec& spec, const std::string& dir);
+// "maps/deposited.vrt": the mosaic of map k (kMapNames order) of a set with
+// maps, float32 in the map's units, without overviews.
+inline std::string map_vrt_name(int k) { return std::string("maps/") + kMapNames[size_t(k)] + ".vrt"; }
+void write_map_vrt(const TileSpec& spec, const std::string& dir, int k);
 
 // A coarse preview of a finished tile set's whole terrain in real heights,
 // at most max_side samples a side (aspect kept), read through the mosaic and

@@ -9,6 +9,9 @@ namespace ft::tiles {
 void write_mosaic_vrt(const TileSpec&, const std::string& dir) {
   needs("the VRT mosaic of tile set '" + dir + "'", "GDAL");
 }
+void write_map_vrt(const TileSpec&, const std::string& dir, int) {
+  needs("the map mosaics of tile set '" + dir + "'", "GDAL");
+}
 Heightfield read_mosaic_preview(const std::string& dir, int32_t) {
   needs("a preview of tile set '" + dir + "' (its VRT mosaic)", "GDAL");
 }

@@ -24,12 +24,10 @@ void make_folder(const std::string& dir) {
   if (ec) fail(FT_ERR_IO, "cannot create the folder '" + dir + "': " + ec.message());
 }
 
-nlohmann::json new_manifest(const nlohmann::json& terrain, const TileSpec& s, const HeightRange& r) {
-  nlohmann::json m = {{"format", "fracterra-tileset"},
+nlohmann::json new_manifest(const nlohmann::json& identity, const TileSpec& s, const HeightRange& r) {
+  nlohmann::json m = identity;
+  m.update({{"format", "fracterra-tileset"},
                       {"version", 1},
-                      {"terrain", terrain},
-                      {"tile", s.grid.tile},
-                      {"tile_format", format_name(s.format)},
                       {"width", s.grid.width},
                       {"height", s.grid.height},
                       {"columns", s.grid.columns()},
@@ -37,7 +35,7 @@ nlohmann::json new_manifest(const nlohmann::json& terrain, const TileSpec& s, co
                       {"sample_spacing", s.spacing},
                       {"world_size", {s.spacing * double(s.grid.width - 1), s.spacing * double(s.grid.height - 1)}},
                       {"height_range", {{"min", r.min}, {"max", r.max}, {"how", r.how}}},
-                      {"complete", false}};
+                      {"complete", false}});
   nlohmann::json tiles = nlohmann::json::array();
   for (int32_t row = 0; row < s.grid.rows(); ++row)
     for (int32_t col = 0; col < s.grid.columns(); ++col) {
@@ -50,6 +48,7 @@ nlohmann::json new_manifest(const nlohmann::json& terrain, const TileSpec& s, co
                        {"width", w.width},
                        {"height", w.height},
                        {"crc32", nullptr}});
+      if (s.maps) tiles.back()["maps_crc32"] = nullptr;
     }
   m["tiles"] = std::move(tiles);
   return m;
@@ -57,19 +56,21 @@ nlohmann::json new_manifest(const nlohmann::json& terrain, const TileSpec& s, co
 
 }  // namespace
 
-TileSet::TileSet(const ft_terrain_params& p, int64_t tile, TileFormat format, std::string dir, bool defer_exact_pass)
+TileSet::TileSet(const TileTerrain& t, int64_t tile, TileFormat format, std::string dir, bool defer_exact_pass)
     : dir_(std::move(dir)) {
-  spec_ = make_tile_spec(p, tile, format);
+  spec_ = make_tile_spec(t, tile, format);
   if (dir_.empty()) invalid("give the tile set's folder");
-  make_folder(dir_);
-
-  terrain_ = terrain_identity(p);
-  const nlohmann::json wanted = {{"terrain", terrain_}, {"tile", spec_.grid.tile}, {"tile_format", format_name(format)}};
-  if (std::optional<nlohmann::json> old = read_manifest(dir_)) {
-    const std::string diff = identity_difference(wanted, *old);
+  identity_ = tileset_identity(t, spec_.grid.tile, format_name(format));
+  // A folder holding another set is refused before anything is written in it.
+  std::optional<nlohmann::json> old = read_manifest(dir_);
+  if (old) {
+    const std::string diff = identity_difference(identity_, *old);
     if (!diff.empty())
       invalid("the folder '" + dir_ + "' holds another tile set (" + diff +
               "); choose another folder or remove its manifest.json and tiles");
+  }
+  make_folder(dir_);
+  if (old) {
     manifest_ = std::move(*old);
     spec_.height_min = manifest_["height_range"]["min"].get<double>();
     spec_.height_max = manifest_["height_range"]["max"].get<double>();
@@ -79,15 +80,16 @@ TileSet::TileSet(const ft_terrain_params& p, int64_t tile, TileFormat format, st
     remove_journal(dir_);
     return;
   }
-  if (defer_exact_pass && needs_exact_pass(p)) {
+  remove_stale_pending(spec_, dir_);  // what another set's range pass left here belongs to no set
+  if (defer_exact_pass && needs_exact_pass(t)) {
     range_pending_ = true;
     return;
   }
-  const HeightRange r = tileset_height_range(p, spec_.grid);
+  const HeightRange r = tileset_height_range(t, spec_, dir_);
   spec_.height_min = r.min;
   spec_.height_max = r.max;
   remove_journal(dir_);  // a stale one of a removed manifest belongs to no set
-  manifest_ = new_manifest(terrain_, spec_, r);
+  manifest_ = new_manifest(identity_, spec_, r);
   write_manifest(dir_, manifest_);
 }
 
@@ -99,7 +101,7 @@ void TileSet::set_height_range(double min, double max) {
   spec_.height_min = min;
   spec_.height_max = max;
   remove_journal(dir_);
-  manifest_ = new_manifest(terrain_, spec_, HeightRange{min, max, "exact"});
+  manifest_ = new_manifest(identity_, spec_, HeightRange{min, max, "exact"});
   write_manifest(dir_, manifest_);
   range_pending_ = false;
 }
@@ -120,16 +122,26 @@ bool TileSet::done(int32_t col, int32_t row) const {
   if (range_pending_) return false;
   const nlohmann::json& e = manifest_["tiles"][size_t(row) * size_t(spec_.grid.columns()) + size_t(col)];
   if (e["crc32"].is_null()) return false;
-  const std::string path = platform::utf8_of(platform::fs_path(dir_) / platform::fs_path(e["file"].get<std::string>()));
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(platform::fs_path(path), ec)) return false;
-  return file_crc32(path) == e["crc32"].get<uint32_t>();
+  auto matches = [&](const std::string& file, uint32_t crc) {
+    const std::string path = platform::utf8_of(platform::fs_path(dir_) / platform::fs_path(file));
+    std::error_code ec;
+    return std::filesystem::is_regular_file(platform::fs_path(path), ec) && file_crc32(path) == crc;
+  };
+  if (!matches(e["file"].get<std::string>(), e["crc32"].get<uint32_t>())) return false;
+  if (!spec_.maps) return true;
+  const nlohmann::json c = e.value("maps_crc32", nlohmann::json());
+  if (!c.is_array()) return false;
+  for (int k = 0; k < FT_MAP_COUNT; ++k)
+    if (!matches(map_file_name(spec_, k, col, row), c[size_t(k)].get<uint32_t>())) return false;
+  return true;
 }
 
-void TileSet::record(int32_t col, int32_t row, uint32_t crc) {
+void TileSet::record(int32_t col, int32_t row, const TileCrcs& crcs) {
   check_range_fixed("recording tiles");
-  entry(col, row)["crc32"] = crc;
-  append_journal(dir_, col, row, crc);
+  nlohmann::json& e = entry(col, row);
+  e["crc32"] = crcs.heights;
+  if (spec_.maps) e["maps_crc32"] = crcs.maps;
+  append_journal(dir_, col, row, crcs.heights, spec_.maps ? &crcs.maps : nullptr);
 }
 
 int64_t TileSet::recorded() const {
@@ -147,7 +159,9 @@ void TileSet::finish() {
   if (kHaveGdal) {  // without GDAL (Windows) the set is complete without its mosaic
     write_mosaic_vrt(spec_, dir_);
     manifest_["vrt"] = kMosaicName;
+    for (int k = 0; spec_.maps && k < FT_MAP_COUNT; ++k) write_map_vrt(spec_, dir_, k);
   }
+  if (!spec_.pending.empty()) remove_pending(spec_, dir_);
   manifest_["complete"] = true;
   write_manifest(dir_, manifest_);
   remove_journal(dir_);

@@ -9,9 +9,10 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
-#include "terrain/terrain.hpp"  // ft_terrain_params
 #include "tiles/height_range.hpp"
+#include "tiles/tile_terrain.hpp"
 #include "tiles/tile_writer.hpp"
 
 namespace ft::tiles {
@@ -27,7 +28,10 @@ class TileSet {
   // without one (range_pending()) and nothing is written until
   // set_height_range() gives it: a driver runs that pass elsewhere, one task
   // per tile (tile_height_range, Dask).
-  TileSet(const ft_terrain_params& p, int64_t tile, TileFormat format, std::string dir, bool defer_exact_pass = false);
+  TileSet(const TileTerrain& t, int64_t tile, TileFormat format, std::string dir, bool defer_exact_pass = false);
+  // A generated terrain's set (no erosion, no maps).
+  TileSet(const ft_terrain_params& p, int64_t tile, TileFormat format, std::string dir, bool defer_exact_pass = false)
+      : TileSet(TileTerrain::of(p), tile, format, std::move(dir), defer_exact_pass) {}
 
   const TileSpec& spec() const noexcept { return spec_; }
   const std::string& dir() const noexcept { return dir_; }
@@ -37,13 +41,17 @@ class TileSet {
   // writes the new manifest. Refused when the range is not pending or is
   // not finite and ordered.
   void set_height_range(double min, double max);
-  // True when the tile's file exists and its CRC-32 is the one recorded.
+  // True when the tile's files (heights, and maps when the set has them)
+  // exist and their CRC-32s are the ones recorded.
   bool done(int32_t col, int32_t row) const;
-  // Records a written tile's CRC-32 in the manifest's journal (manifest.hpp).
-  void record(int32_t col, int32_t row, uint32_t crc);
+  // Records a written tile's CRC-32s in the manifest's journal (manifest.hpp).
+  void record(int32_t col, int32_t row, const TileCrcs& crcs);
+  void record(int32_t col, int32_t row, uint32_t heights_crc) { record(col, row, TileCrcs{heights_crc, {}}); }
   // Tiles with a recorded CRC-32.
   int64_t recorded() const;
-  // Every tile recorded: writes the VRT mosaic and marks the manifest complete.
+  // Every tile recorded: writes the VRT mosaics (heights, and each map's:
+  // maps/<map>.vrt, without overviews), removes the range pass's pending
+  // folder and marks the manifest complete.
   void finish();
 
  private:
@@ -51,7 +59,7 @@ class TileSet {
   void check_range_fixed(const char* what) const;
   TileSpec spec_;
   std::string dir_;
-  nlohmann::json terrain_, manifest_;
+  nlohmann::json identity_, manifest_;
   bool range_pending_ = false;
 };
 

@@ -4,6 +4,7 @@ heights, and the settings its mesh was built from (so that after a cancel, an
 undo or a failure the sidebar shows the settings of the mesh that is there)."""
 
 import array
+import contextlib
 import json
 import zlib
 
@@ -15,6 +16,15 @@ from ...core import params
 from ...core.params import grid_shape
 from .curve import spline_nodes
 from ..common.reporting import SettingsError
+
+
+def active_object(context):
+    """The active object, hidden or not (the 3D view's context gives None for a
+    hidden one; the sidebar still edits it)."""
+    obj = context.active_object
+    if obj is None and getattr(context, "view_layer", None) is not None:
+        obj = context.view_layer.objects.active
+    return obj
 
 
 def is_terrain(obj):
@@ -126,12 +136,18 @@ def geometry_fingerprint(obj):
 
 
 def sea_height(settings, lowest):
-    """The height of a terrain's flat sea (None without one): its Sea Level, or
-    for a sea given as a fraction the terrain's lowest height, where the
+    """The height of a terrain's flat sea (None without one), of its settings
+    (a PropertyGroup): sea_height_of its Sea and Sea Level."""
+    return sea_height_of(settings.sea, settings.sea_level, lowest)
+
+
+def sea_height_of(sea, sea_level, lowest):
+    """The height of a flat sea (None without one): Sea Level for sea HEIGHT,
+    for a sea given as a FRACTION the terrain's lowest height, where the
     library flattened it (`lowest`: the minimum of its heights)."""
-    if settings.sea == "HEIGHT":
-        return settings.sea_level
-    if settings.sea == "FRACTION":
+    if sea == "HEIGHT":
+        return sea_level
+    if sea == "FRACTION":
         return lowest
     return None
 
@@ -154,9 +170,49 @@ def built_settings(mesh):
     return json.loads(text) if isinstance(text, str) else None
 
 
+def _as_built(values, kind, planet):
+    """What of settings `values` a mesh of `kind` (Preview or Final) is made from:
+    a Preview's its Preview level, never the other level's setting."""
+    if planet:
+        values = params.planet_preview_values(values) if kind == "Preview" else values
+        other = "preview_level"
+    else:
+        values = params.preview_values(values) if kind == "Preview" else values
+        other = "preview_levels"
+    return {k: tuple(v) if isinstance(v, (list, tuple)) else v for k, v in values.items() if k != other}
+
+
+def out_of_date(obj, mesh=None):
+    """The labels of the settings of terrain or planet `obj` that no longer match
+    those its mesh (or `mesh`: its kept Final) was built from ([]: they match,
+    or the mesh recorded none)."""
+    editable = editable_settings(obj)
+    mesh = obj.data if mesh is None else mesh
+    built = built_settings(mesh) if editable is not None else None
+    level = ("Final",) if built is not None and mesh is not obj.data else (mesh_level(obj) if built else None)
+    if level is None:
+        return []
+    settings, param_list = editable
+    planet = is_planet(obj)
+    now = _as_built(params.values_of(settings, param_list), level[0], planet)
+    then = _as_built({**now, **built}, level[0], planet)
+    by_name = {p.name: p for p in param_list}
+    return [by_name[k].label for k in now if k in by_name and now[k] != then.get(k)]
+
+
 def restoring():
-    """True while restore_settings writes settings: no Auto Update may run then."""
+    """True while restore_settings (or quietly) writes settings: no Auto Update may run then."""
     return bool(_restoring)
+
+
+@contextlib.contextmanager
+def quietly(obj):
+    """Settings of `obj` written inside this block run no Auto Update."""
+    _restoring.append(obj.name)
+    try:
+        yield
+    finally:
+        _restoring.pop()
 
 
 def restore_settings(obj):
@@ -170,8 +226,7 @@ def restore_settings(obj):
         return []
     settings, param_list = editable
     changed = []
-    _restoring.append(obj.name)
-    try:
+    with quietly(obj):
         for p in param_list:  # the preset before the passes it fills
             if p.name in built:
                 value = tuple(built[p.name]) if p.kind == "vector" else built[p.name]
@@ -179,8 +234,6 @@ def restore_settings(obj):
                 if (tuple(current) if p.kind == "vector" else current) != value:
                     setattr(settings, p.name, value)
                     changed.append(p.name)
-    finally:
-        _restoring.pop()
     return changed
 
 

@@ -23,32 +23,51 @@ def default_radius(base):
     return max(chord, 1e-3) / 200
 
 
+def used_values(values):
+    """Only the settings the method uses: the library refuses e.g. branching for a
+    Koch curve, and the settings stored on an object keep every field."""
+    return {p.name: values[p.name] for p in params.POLYLINE_PARAMS if params.is_used(p, values["method"])}
+
+
+def generate_lines(values, base, threads, progress=None):
+    """LineArrays of the polyline of `values` along `base` (bpy-free: a job's worker)."""
+    with core.generate_polylines(used_values(values), base=base, progress=progress, threads=threads) as pl:
+        return LineArrays(pl)
+
+
+def build_data(values, lines):
+    """Build steps of the curve (or, for IFS, the mesh of points) of `lines`;
+    returns (data, summary). Nothing is left if it is cancelled."""
+    summary = f"{lines.line_count} line(s), {lines.vertex_count} vertices"
+    if values["method"] == "IFS":
+        return point_cloud_from_arrays("Fractal Points", lines.xyz), summary
+    curve = new_curve("Fractal Polyline", values["bevel"])
+    try:
+        yield from fill_curve_steps(curve, lines)
+    except BaseException:  # GeneratorExit too: a cancel leaves no curve behind
+        bpy.data.curves.remove(curve)
+        raise
+    return curve, summary
+    yield  # noqa: unreachable - a generator even for IFS
+
+
 def polyline_job(values, base, context, label="Generating polyline"):
     """A progress.Job whose value is (data, summary): a new curve, or a mesh of
     points for IFS, for `values` along `base`. Nothing is left if it is cancelled."""
-    # Only what the method uses: the library refuses e.g. branching for a Koch curve,
-    # and the settings stored on an object keep every field.
-    values = {p.name: values[p.name] for p in params.POLYLINE_PARAMS if params.is_used(p, values["method"])}
     threads = library_threads(context)
+    return Job(label, lambda progress: generate_lines(values, base, threads, progress),
+               lambda lines: build_data(values, lines))
 
-    def work(progress):
-        with core.generate_polylines(values, base=base, progress=progress, threads=threads) as pl:
-            return LineArrays(pl)
 
-    def build(lines):
-        summary = f"{lines.line_count} line(s), {lines.vertex_count} vertices"
-        if values["method"] == "IFS":
-            return point_cloud_from_arrays("Fractal Points", lines.xyz), summary
-        curve = new_curve("Fractal Polyline", values["bevel"])
-        try:
-            yield from fill_curve_steps(curve, lines)
-        except BaseException:  # GeneratorExit too: a cancel leaves no curve behind
-            bpy.data.curves.remove(curve)
-            raise
-        return curve, summary
-        yield  # noqa: unreachable - a generator even for IFS
-
-    return Job(label, work, build)
+def swap_data(obj, data):
+    """Gives polyline object `obj` its new curve or point mesh `data`, with the old
+    one's materials; the old one goes when nothing else uses it."""
+    old = obj.data
+    for mat in old.materials:
+        data.materials.append(mat)
+    obj.data = data
+    if old.users == 0:
+        (bpy.data.meshes if isinstance(old, bpy.types.Mesh) else bpy.data.curves).remove(old)
 
 
 def polyline_data(values, base, context):
@@ -81,12 +100,7 @@ def regenerate_job(obj, context):
 
     def build(lines):
         data, summary = yield from make(lines)
-        old = obj.data
-        for mat in old.materials:
-            data.materials.append(mat)
-        obj.data = data
-        if old.users == 0:
-            (bpy.data.meshes if wants == "MESH" else bpy.data.curves).remove(old)
+        swap_data(obj, data)
         return summary
 
     return Job(job.label, job.work, build)

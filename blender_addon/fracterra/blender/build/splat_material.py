@@ -24,7 +24,7 @@ ROUGHNESS = 0.85  # dry ground: a broad, faint highlight
 # --- in the main thread, before the job
 
 def rules_of(values):
-    """The splat rules of a terrain's settings: its Splat Rules file (blank:
+    """The splat rules of a terrain's settings: its Material Rules file (blank:
     the library's built-in set), read and checked by the library. A bad file
     is a SettingsError with the library's message (file, layer and field)."""
     path = values.get("splat_rules", "")
@@ -32,12 +32,12 @@ def rules_of(values):
         return splat.default_rules()
     path = bpy.path.abspath(path)
     if not os.path.isfile(path):
-        raise SettingsError(f"Splat Rules: no file '{path}' (leave it blank for the built-in grass, rock, sediment "
+        raise SettingsError(f"Material Rules: no file '{path}' (leave it blank for the built-in grass, rock, sediment "
                             "and snow)")
     try:
         return splat.read_rules(path)
     except core.FracterraError as e:
-        raise SettingsError(f"Splat Rules: {e}") from e
+        raise SettingsError(f"Material Rules: {e}") from e
 
 
 # --- in the job's worker thread (no bpy here)

@@ -7,11 +7,11 @@ from .objects import is_terrain
 
 
 def surface_below(context, point):
-    """The highest point of a fractal terrain's surface straight below (or above)
-    world point `point` (a Vector), in world coordinates; None when no terrain
-    lies under it."""
+    """(world point, terrain): the highest point of a fractal terrain's surface
+    straight below (or above) world point `point` (a Vector), and that terrain;
+    (None, None) when no terrain lies under it."""
     depsgraph = context.evaluated_depsgraph_get()
-    best = None
+    best, terrain = None, None
     for obj in context.visible_objects:
         if not is_terrain(obj):
             continue
@@ -23,19 +23,19 @@ def surface_below(context, point):
         if hit:
             world = obj.matrix_world @ where
             if best is None or world.z > best.z:
-                best = world
-    return best
+                best, terrain = world, obj
+    return best, terrain
 
 
 def strike_base(context, matrix, start, end):
-    """(start, end) in the frame `matrix` (the new object's world matrix) with
-    the end moved onto the terrain surface under it and the start moved by as
-    much, so the bolt keeps its length above the ground; unchanged with no
-    terrain below."""
+    """(start, end, terrain) in the frame `matrix` (the new object's world
+    matrix) with the end moved onto the surface of the terrain under it and
+    the start moved by as much, so the bolt keeps its length above the
+    ground; unchanged, and terrain None, with no terrain below."""
     end_world = matrix @ Vector(end)
-    hit = surface_below(context, end_world)
+    hit, terrain = surface_below(context, end_world)
     if hit is None:
-        return start, end
+        return start, end, None
     new_end = matrix.inverted() @ hit
     shift = new_end - Vector(end)
-    return tuple(Vector(start) + shift), tuple(new_end)
+    return tuple(Vector(start) + shift), tuple(new_end), terrain

@@ -20,6 +20,8 @@ from . import falloff_mask
 from . import mesh as mesh_build
 from . import planet as planet_build
 from . import splat_material
+from . import children
+from . import kept_final
 from . import water as water_build
 from .objects import mesh_level, remember_settings
 from ..common.images import image_luminance
@@ -108,7 +110,7 @@ def terrain_work(values, context, topology=True, frame=None, terrain_name=None):
     terrain object, refused as its own mask). `topology`: False when only the
     vertex positions are needed (an in-place rewrite). The erosion mask and
     the rain map are read too (from the terrain's own vertex groups, or
-    images); `work.maps` holds them (erosion_masks.maps_for). The Splat Rules
+    images); `work.maps` holds them (erosion_masks.maps_for). The Material Rules
     file is read and checked here too (a bad one is refused before the job).
     """
     check_grid(*grid_shape(values))
@@ -195,48 +197,109 @@ def new_terrain_mesh(values, context, name="Fractal Terrain", frame=None):
     return mesh, f"{summary} in {time.perf_counter() - t0:.2f} s"
 
 
-def _build_in_place(obj, g, values, settings, groups=None):
-    """Build steps of a regenerated terrain. The same grid: its positions are
-    rewritten in one step. Another grid: a new mesh is built aside and swapped
-    in at the end, so a cancel never leaves the object half-built; `groups`
-    ({name: weights}, erosion_masks.carried_groups) are painted onto it."""
-    mesh = obj.data
-    if len(mesh.vertices) == g.vertex_count and len(mesh.polygons) == g.face_count:
-        mesh_build.rewrite_positions(mesh, g.co)
-        mesh_build.set_height_slope(mesh, g.height, g.slope)
-        erosion_ui.set_maps(mesh, g.erosion_maps)
-        splat_material.set_colors(mesh, g.colors)
-        if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
-            mesh_build.set_uvs(mesh, g.uv if values["uvs"] else None)
-        mesh_build.set_smooth(mesh, values["smooth"])
-        remember_settings(mesh, settings)
-        return _with_water(f"{g.nx} x {g.ny} terrain heights rewritten", build_water(obj, _water_of(g)))
-    new, _summary = yield from _build_new_mesh(g, values, mesh.name, settings)
-    mesh_build.swap_mesh(obj, new)
-    splat_material.give_material(obj.data)  # the old eroded material, carried over, gives way
-    erosion_masks.carry_groups(obj, groups or {}, g.nx, g.ny)
-    return _with_water(f"{g.nx} x {g.ny} terrain mesh rebuilt", build_water(obj, water_build.take(new)))
+def _rewrite(mesh, g, values, settings):
+    """The same grid: every position and attribute rewritten, one step each."""
+    mesh_build.rewrite_positions(mesh, g.co)
+    mesh_build.set_height_slope(mesh, g.height, g.slope)
+    erosion_ui.set_maps(mesh, g.erosion_maps)
+    splat_material.set_colors(mesh, g.colors)
+    if values["uvs"] != (mesh.uv_layers.get(mesh_build.UV_NAME) is not None):
+        mesh_build.set_uvs(mesh, g.uv if values["uvs"] else None)
+    mesh_build.set_smooth(mesh, values["smooth"])
+    remember_settings(mesh, settings)
+
+
+def _build_in_place(obj, g, values, settings, groups, plan):
+    """Build steps of a regenerated terrain (`plan`: regenerate_job's Plan). Its
+    children's new curves are made aside first. Then the mesh: the same grid
+    (the object's, or the kept Final's for Build Final) is rewritten in one
+    step; another grid is built aside and swapped in at the end, so a cancel
+    never leaves the object half-built; `groups` ({name: weights},
+    erosion_masks.carried_groups) are painted onto it. A Preview over a Final
+    keeps the Final (kept_final.py)."""
+    made = yield from children.build_steps(g.children, settings, g.nx, g.ny)
+    try:
+        target = plan.target
+        if len(target.vertices) == g.vertex_count and len(target.polygons) == g.face_count:
+            _rewrite(target, g, values, settings)
+            if target is not obj.data:  # the kept Final, rewritten: back on the object
+                kept_final.bring_back(obj)
+                erosion_masks.carry_groups(obj, groups or {}, g.nx, g.ny)
+            elif plan.final:
+                kept_final.drop(obj)
+            summary = f"{g.nx} x {g.ny} terrain heights rewritten"
+            water = _water_of(g)
+        else:
+            name = f"{obj.data.name} Preview" if plan.keep else obj.data.name
+            new, _summary = yield from _build_new_mesh(g, values, name, settings)
+            water = water_build.take(new)
+            if plan.keep:
+                kept_final.keep(obj)
+            elif plan.final:
+                kept_final.drop(obj)
+            mesh_build.swap_mesh(obj, new)
+            splat_material.give_material(obj.data)  # the old eroded material, carried over, gives way
+            erosion_masks.carry_groups(obj, groups or {}, g.nx, g.ny)
+            summary = f"{g.nx} x {g.ny} terrain mesh rebuilt"
+    except BaseException:
+        for _name, data, _extra in made:
+            bpy.data.curves.remove(data)
+        raise
+    summary = _with_water(summary, build_water(obj, water))
+    return _with_water(summary, children.commit(made))
 
 
 def _with_water(summary, water):
     return f"{summary}; {water}" if water else summary
 
 
+class Plan:
+    """What a regenerate builds into: `target` the mesh rewritten when its grid
+    is the new one (the object's, or its kept Final's for a Final), `keep` True
+    when a Preview is built over the Final the object holds (kept beside it),
+    `final` True when the Final itself is built."""
+
+    def __init__(self, obj, settings, values):
+        self.final = values is settings
+        nx, ny = grid_shape(values)
+        mesh, kept = obj.data, kept_final.kept(obj)
+        level = mesh_level(obj)
+        self.keep = (not self.final and kept is None and level is not None and level[0] == "Final"
+                     and len(mesh.vertices) != nx * ny)
+        self.target = kept if self.final and kept is not None and len(kept.vertices) == nx * ny else mesh
+        if self.keep:
+            self.target = None
+        self.same_grid = self.target is not None and len(self.target.vertices) == nx * ny and \
+            len(self.target.polygons) == (nx - 1) * (ny - 1)
+        if self.target is None:
+            self.target = mesh  # never its grid: a new mesh is built
+        self.adds_uvs = values["uvs"] and self.target.uv_layers.get(mesh_build.UV_NAME) is None
+
+
 def regenerate_job(obj, context, preview=False):
     """A progress.Job that regenerates terrain object `obj` from its stored
-    settings (at its Preview level when `preview`); its value is a summary.
-    When the grid size is unchanged only the vertex positions are rewritten."""
+    settings (at its Preview level when `preview`), and its children with it
+    (children.py); its value is a summary. When the grid size is unchanged
+    only the vertex positions are rewritten."""
     settings = params.values_of(obj.fracterra_terrain)
     values = params.preview_values(settings) if preview else settings
-    nx, ny = grid_shape(values)
-    mesh = obj.data
-    same_grid = len(mesh.vertices) == nx * ny and len(mesh.polygons) == (nx - 1) * (ny - 1)
-    adds_uvs = values["uvs"] and mesh.uv_layers.get(mesh_build.UV_NAME) is None
-    work = terrain_work(values, context, topology=not same_grid or adds_uvs, frame=obj.matrix_world.copy(),
-                        terrain_name=obj.name)
-    label = "Regenerating terrain (Preview)" if values is not settings else "Regenerating terrain"
-    groups = erosion_masks.carried_groups(values, work.maps)
-    return Job(label, work, lambda g: _build_in_place(obj, g, values, settings, groups))
+    plan = Plan(obj, settings, values)
+    inner = terrain_work(values, context, topology=not plan.same_grid or plan.adds_uvs,
+                         frame=obj.matrix_world.copy(), terrain_name=obj.name)
+    follow = children.plan(obj)
+    threads = library_threads(context)
+
+    def work(progress):
+        g = inner(lambda f: progress(CHILDREN_FROM * f))
+        g.children = children.remake(follow, g, values["world_size"], threads)
+        return g
+    label = "Regenerating terrain (Preview)" if not plan.final else "Regenerating terrain"
+    groups = erosion_masks.carried_groups(values, inner.maps)
+    return Job(label, work, lambda g: _build_in_place(obj, g, values, settings, groups, plan))
+
+
+# The work's bar: the terrain, then its children (coastlines, a bolt: short).
+CHILDREN_FROM = 0.97
 
 
 def regenerate_object(obj, context, preview=False):

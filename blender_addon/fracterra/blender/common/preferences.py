@@ -26,7 +26,7 @@ class FracterraPreferences(bpy.types.AddonPreferences):
     def draw(self, context):
         layout = self.layout
         if not draw_library_problem(layout):
-            draw_wrapped(layout, core.status()[1], icon="CHECKMARK")
+            draw_wrapped(layout, core.status()[1], icon="CHECKMARK", width=60)
         layout.prop(self, "threads")
 
 

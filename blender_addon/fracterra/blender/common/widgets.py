@@ -7,7 +7,12 @@ from ... import core
 from ...core import mesh_limits, params
 
 
-def draw_wrapped(layout, text, icon="NONE", width=60, alert=False):
+# Characters of a label that the sidebar shows whole at its default width and
+# Blender's default UI scale (tests/blender/test_addon.py checks every label).
+SIDEBAR_CHARACTERS = 30
+
+
+def draw_wrapped(layout, text, icon="NONE", width=SIDEBAR_CHARACTERS, alert=False):
     """`text` as wrapped labels (Blender labels do not wrap themselves)."""
     col = layout.column(align=True)
     col.alert = alert
@@ -30,7 +35,7 @@ def draw_size(layout, values):
     if reason:
         draw_wrapped(layout, "Too large: " + reason, icon="ERROR", alert=True)
     elif nx * ny >= mesh_limits.SHOW_ESTIMATE_FROM:
-        layout.label(text=mesh_limits.estimate(nx, ny), icon="INFO")
+        draw_wrapped(layout, mesh_limits.estimate(nx, ny), icon="INFO", width=SIDEBAR_CHARACTERS)
 
 
 def unit_label(p, label=None):
@@ -43,17 +48,35 @@ def unit_label(p, label=None):
     return f"{label} ({scale}{p.unit_text})"
 
 
+# A length in metres from this on is shown in km (an Earth's radius read "6371000.00").
+KM_FROM = 1e5
+
+
+def shows_km(p):
+    """True for a setting in metres whose values are shown in km (ui/properties.km_property)."""
+    return p is not None and p.kind == "float" and p.unit_text == "metres" and p.default >= KM_FROM
+
+
+def km_name(name):
+    return f"{name}_km"
+
+
 def draw_setting(layout, data, name, p=None):
     """A setting as a field; with a unit Blender cannot show (years, 1/yr, ...), its
     label and unit on a row above the field, wrapped to the narrow sidebar, so
     neither is cut off. A value too small for Blender's 6 decimals is drawn
-    scaled (ui/properties.display_property), the scale with the unit."""
+    scaled (ui/properties.display_property), the scale with the unit; a large
+    length in km."""
     shown = params.shown_name(name) if p is not None and p.display_scale else name
     if p is None or not p.unit_text:
         layout.prop(data, shown)
         return
     col = layout.column(align=True)
-    draw_wrapped(col, unit_label(p), width=30)
+    if shows_km(p):
+        draw_wrapped(col, f"{p.label} (km)")
+        col.prop(data, km_name(name), text="")
+        return
+    draw_wrapped(col, unit_label(p))
     col.prop(data, shown, text="")
 
 

@@ -35,7 +35,7 @@ def _flipped(hf, world_size, scale=1.0):
 class FRACTERRA_OT_import_dem(bpy.types.Operator, ImportHelper):
     """Import a DEM (GeoTIFF, .hgt, ASCII grid, EXR, RAW16, ...) as a terrain mesh, optionally refined"""
     bl_idname = "import_scene.fracterra_dem"
-    bl_label = "Import DEM as Terrain (fracterra)"
+    bl_label = "Import DEM"
     bl_options = {"REGISTER", "UNDO", "PRESET"}
 
     filter_glob: bpy.props.StringProperty(
@@ -97,7 +97,7 @@ class FRACTERRA_OT_import_dem(bpy.types.Operator, ImportHelper):
 class FRACTERRA_OT_export_heights(bpy.types.Operator, ExportHelper):
     """Export the active fracterra terrain's heights (.tif COG, .exr, .raw/.r16, .png, .pgm, .npy)"""
     bl_idname = "export_scene.fracterra_heights"
-    bl_label = "Export Terrain Heights (fracterra)"
+    bl_label = "Export Heights"
     bl_options = {"REGISTER", "PRESET"}
 
     filename_ext = ".tif"

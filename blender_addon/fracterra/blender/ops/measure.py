@@ -9,7 +9,7 @@ from mathutils import Matrix
 from ... import core
 from ..build.curve import curve_polylines
 from ..common.reporting import REPORTED, SettingsError
-from ..build.objects import geometry_fingerprint, heightfield_of, is_measurable
+from ..build.objects import active_object, geometry_fingerprint, heightfield_of, is_measurable
 
 
 class FRACTERRA_OT_measure(bpy.types.Operator):
@@ -20,10 +20,10 @@ class FRACTERRA_OT_measure(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        return is_measurable(context.active_object)
+        return is_measurable(active_object(context))
 
     def execute(self, context):
-        obj = context.active_object
+        obj = active_object(context)
         m = obj.fracterra_measures
         try:
             if obj.type == "CURVE":

@@ -10,14 +10,15 @@ from mathutils import Matrix
 from ... import core
 from ...core import params
 from ..ui import properties as props
-from ..build.curve import LineArrays, fill_curve_steps, link_new_object, new_curve, spline_nodes
+from ..build.curve import link_new_object, spline_nodes
 from ..build.polyline import default_radius, polyline_job, regenerate_job
 from ..build.strike import strike_base
 from ..common.jobs import Job, JobOperator
 from ..common.reporting import SettingsError
 from ..common.widgets import draw_placement
 from ..ui.settings_layout import draw_polyline_settings
-from ..build.objects import heightfield_of, is_polyline, sea_height
+from ..build import children, coastline
+from ..build.objects import active_object, heightfield_of, is_polyline, sea_height_of
 from ..build.water import terrain_of
 
 
@@ -84,16 +85,37 @@ class FRACTERRA_OT_polyline_add(JobOperator, bpy.types.Operator, object_utils.Ad
         if self.base_source == "POINTS":
             draw_placement(self.layout, self)
 
+    def fill_base(self, context):
+        """Start, End and Radius from the method's own defaults (METHOD_BASES)
+        unless the caller gave them or they were edited by hand: a Koch curve
+        chosen after a bolt lies flat, not on the bolt's vertical. The default
+        bolt over a terrain strikes its surface under the 3D cursor. What was
+        filled in is kept in `filled` (JSON) to tell it from an edit."""
+        is_set = self.properties.is_property_set
+        method = self.method
+        record = json.loads(self.filled) if self.filled else None
+        if record is None and (is_set("start") or is_set("end")):
+            return None  # the caller's own points
+        now = [list(self.start), list(self.end), self.radius]
+        if record is not None and (now != record["base"] or record["method"] == method):
+            return record["struck"] if now == record["base"] else None  # kept, or edited by hand
+        start, end = METHOD_BASES.get(method, FLAT_BASE)
+        struck = None
+        if method == "FPL3D":
+            start, end, terrain = strike_base(context, object_utils.add_object_align_init(context, self), start, end)
+            struck = terrain.name if terrain is not None else None
+        self.start, self.end = start, end
+        if record is not None or not is_set("radius"):
+            self.radius = default_radius([start, end])
+        self.filled = json.dumps({"method": method, "struck": struck,
+                                  "base": [list(self.start), list(self.end), self.radius]})
+        return struck
+
     # From the menu it runs in the background with a progress bar (Esc cancels);
     # the redo panel and scripts run execute() (progress.JobOperator).
     def make_job(self, context):
+        self._struck = self.fill_base(context) if self.base_source == "POINTS" else None
         values = params.values_of(self, params.POLYLINE_PARAMS)
-        is_set = self.properties.is_property_set
-        if values["base_source"] == "POINTS" and not (is_set("start") or is_set("end")):
-            # The default bolt over a terrain strikes its surface under the 3D cursor.
-            self.start, self.end = strike_base(context, object_utils.add_object_align_init(context, self),
-                                               values["start"], values["end"])
-            values = params.values_of(self, params.POLYLINE_PARAMS)
         base, self._matrix = base_polyline(values, context)
         if not self.properties.is_property_set("radius"):
             self.radius = values["radius"] = default_radius(base)
@@ -114,11 +136,33 @@ class FRACTERRA_OT_polyline_add(JobOperator, bpy.types.Operator, object_utils.Ad
         settings.is_polyline = True
         # How exporters should show it (POV-Ray: glowing lightning or a plain tube).
         obj["fracterra_kind"] = "LIGHTNING" if values["method"] == "FPL3D" else "LINE"
+        terrain = bpy.data.objects.get(self._struck) if self._struck else None
+        if terrain is not None:
+            # A child of the terrain it struck: aimed again when the terrain re-generates.
+            world = obj.matrix_world.copy()
+            obj.parent = terrain
+            obj.matrix_parent_inverse = terrain.matrix_world.inverted()
+            obj.matrix_world = world
+            children.remember_strike(obj)
         self.report({"INFO"}, f"Fractal polyline: {summary} in {self.job_seconds:.2f} s")
         return {"FINISHED"}
 
 
-FRACTERRA_OT_polyline_add.__annotations__ = props.terrain_annotations(param_list=params.POLYLINE_PARAMS)
+# Each method's own base when the caller gives none: the bolt falls from 10 m
+# onto the 3D cursor; the plane curves (Koch, dragon, ...) and the profile lie
+# flat along x, 10 m long, centred on it (on a vertical base they show edge-on, a bar).
+METHOD_BASES = {"FPL3D": ((0.0, 0.0, 10.0), (0.0, 0.0, 0.0))}
+FLAT_BASE = ((-5.0, 0.0, 0.0), (5.0, 0.0, 0.0))
+
+
+# A new Add starts from its method's base and radius, never the last Add's (SKIP_SAVE).
+FRACTERRA_OT_polyline_add.__annotations__ = {
+    **props.terrain_annotations(param_list=params.POLYLINE_PARAMS),
+    **props.terrain_annotations(param_list=[p for p in params.POLYLINE_PARAMS if p.name in ("start", "end", "radius")],
+                                options={"SKIP_SAVE"}),
+    "filled": bpy.props.StringProperty(name="Filled", default="", options={"HIDDEN", "SKIP_SAVE"},
+                                       description="The method whose own base fills Start, End and Radius (JSON)"),
+}
 
 
 class FRACTERRA_OT_polyline_regenerate(JobOperator, bpy.types.Operator):
@@ -129,15 +173,15 @@ class FRACTERRA_OT_polyline_regenerate(JobOperator, bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        return is_polyline(context.active_object) and context.mode == "OBJECT"
+        return is_polyline(active_object(context)) and context.mode == "OBJECT"
 
     def make_job(self, context):
-        self._obj = context.active_object
+        self._obj = active_object(context)
         self._obj.fracterra_polyline.last_error = ""
         return regenerate_job(self._obj, context)
 
     def _refuse(self, e):
-        obj = bpy.context.active_object
+        obj = active_object(bpy.context)
         if is_polyline(obj):
             obj.fracterra_polyline.last_error = str(e)
         return super()._refuse(e)
@@ -147,17 +191,6 @@ class FRACTERRA_OT_polyline_regenerate(JobOperator, bpy.types.Operator):
         obj["fracterra_kind"] = "LIGHTNING" if obj.fracterra_polyline.method == "FPL3D" else "LINE"
         self.report({"INFO"}, f"Fractal polyline: {summary} in {self.job_seconds:.2f} s")
         return {"FINISHED"}
-
-
-def land_quantile(hf, sea, q):
-    """The height with the fraction `q` of the land (heights above the flat sea
-    at `sea`) below it. The flat sea is left out: when it covers more than half
-    the map, a quantile of all heights would fall on it and find no coast."""
-    z = np.frombuffer(hf.to_array(), dtype=np.float32)
-    land = np.sort(z[z > sea])
-    if land.size == 0:
-        raise SettingsError(f"no land above the sea at {sea:g}: the whole terrain is sea; lower its Sea Level")
-    return float(land[min(land.size - 1, int(q * land.size))])
 
 
 # Why Terrain Coastline is greyed out, shown in its tooltip.
@@ -193,66 +226,47 @@ class FRACTERRA_OT_coastline_add(JobOperator, bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        if context.mode == "OBJECT" and coastline_terrain(context.active_object) is not None:
+        if context.mode == "OBJECT" and coastline_terrain(active_object(context)) is not None:
             return True
         cls.poll_message_set(COASTLINE_NEEDS)
         return False
 
-    def defaults_from(self, settings, sea):
-        """What the caller left unset comes from the terrain: its sea (height
-        `sea`, None without one) when it has one, and a tube visible at its size."""
+    def request(self, settings, hf):
+        """What the coastline is traced for: the operator's level, or what the
+        caller left unset from the terrain: its sea when it has one (the level
+        then follows the sea when the terrain re-generates)."""
         is_set = self.properties.is_property_set
-        if sea is not None and not (is_set("use_quantile") or is_set("quantile") or is_set("level")):
-            self.use_quantile, self.level = False, sea
+        from_sea = settings.sea != "NONE" and not (is_set("use_quantile") or is_set("quantile") or is_set("level"))
+        if from_sea:
+            self.use_quantile = False
+            self.level = sea_height_of(settings.sea, settings.sea_level, float(np.frombuffer(hf.to_array(), dtype=np.float32).min()))
         if not is_set("radius"):
             self.radius = settings.world_size / 500
+        return {"use_quantile": self.use_quantile, "quantile": self.quantile, "level": self.level,
+                "level_from_sea": from_sea, "sea": settings.sea, "sea_level": settings.sea_level}
 
     def make_job(self, context):
-        terrain = coastline_terrain(context.active_object)
+        terrain = coastline_terrain(active_object(context))
         settings = terrain.fracterra_terrain
         hf = heightfield_of(terrain)  # read here (it needs bpy); freed by the work
         try:
             nx, ny = hf.width, hf.height
-            world_size_x, world_size_y = core.grid_size(settings.world_size, nx, ny)
-            s = hf.stats()
-            sea = sea_height(settings, s["min"])
-            self.defaults_from(settings, sea)
-            level = self.quantile if self.use_quantile else self.level
-            by_quantile = self.use_quantile
-            if by_quantile and sea is not None:
-                level = land_quantile(hf, sea, self.quantile)
-                by_quantile = False
-            if not by_quantile and sea is not None and level <= sea:
-                # The flattened sea lies exactly at the sea level and counts as land
-                # there (land: height >= level): take the level just above it.
-                level = sea + 1e-5 * max(s["max"] - s["min"], 1e-6)
+            request = self.request(settings, hf)
         except BaseException:
             hf.close()
             raise
 
         def work(progress):
-            with hf, core.coastline(hf, level, quantile=by_quantile) as pl:
-                if pl.line_count == 0:
-                    # Not an empty curve without a word: say why.
-                    what = f"quantile {level:g}" if by_quantile else f"level {level:g}"
-                    raise SettingsError(f"no coastline at {what}: the terrain's heights are "
-                                        f"[{s['min']:g}, {s['max']:g}] and no cell crosses it")
-                return LineArrays(pl, unit_radius=True)
+            with hf:
+                return coastline.trace(hf, request)
 
-        def to_local(x, y, z):
-            return (x / (nx - 1) - 0.5) * world_size_x, (y / (ny - 1) - 0.5) * world_size_y, z
+        transform = coastline.to_local(nx, ny, core.grid_size(settings.world_size, nx, ny))
 
         def build(lines):
-            curve = new_curve("Coastline", bevel=False)
-            try:
-                yield from fill_curve_steps(curve, lines, transform=to_local)
-            except BaseException:  # GeneratorExit too: a cancel leaves no curve behind
-                bpy.data.curves.remove(curve)
-                raise
-            curve.bevel_depth = self.radius  # times each point's radius of 1
+            curve = yield from coastline.build_curve(lines, self.radius, transform)
             return curve, lines.line_count
 
-        self._terrain = terrain
+        self._terrain, self._request = terrain, request
         return Job("Tracing coastline", work, build, work_share=0.3)
 
     def job_done(self, context, value):
@@ -261,6 +275,7 @@ class FRACTERRA_OT_coastline_add(JobOperator, bpy.types.Operator):
         obj = link_new_object(context, f"{terrain.name} Coastline", curve, terrain.matrix_world.copy())
         obj.parent = terrain
         obj.matrix_parent_inverse = terrain.matrix_world.inverted()
-        obj["fracterra_kind"] = "COASTLINE"
+        obj["fracterra_kind"] = coastline.KIND
+        coastline.remember(obj, self._request, self.radius)
         self.report({"INFO"}, f"Coastline: {lines} line(s)")
         return {"FINISHED"}

@@ -84,7 +84,7 @@ def terrain_colors(obj):
 class FRACTERRA_OT_export_pov(bpy.types.Operator, ExportHelper):
     """Export the fractal terrain and curves as a POV-Ray scene (optionally render it)"""
     bl_idname = "export_scene.fracterra_pov"
-    bl_label = "Export POV-Ray"  # the file browser's button; the menu names fracterra
+    bl_label = "Export POV-Ray"
     bl_options = {"REGISTER", "UNDO", "PRESET"}
 
     filename_ext = ".pov"

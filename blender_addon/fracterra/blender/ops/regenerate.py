@@ -5,7 +5,7 @@ failure the sidebar shows the settings of the mesh that is there."""
 import bpy
 
 from ..common.jobs import JobOperator
-from ..build.objects import editable_settings, restore_settings
+from ..build.objects import active_object, editable_settings, restore_settings
 
 
 class RegenerateOperator(JobOperator):
@@ -25,17 +25,17 @@ class RegenerateOperator(JobOperator):
 
     @classmethod
     def poll(cls, context):
-        return context.mode == "OBJECT" and cls.target_of(context.active_object) is not None
+        return context.mode == "OBJECT" and cls.target_of(active_object(context)) is not None
 
     def make_job(self, context):
-        obj = self.target_of(context.active_object)
+        obj = self.target_of(active_object(context))
         editable_settings(obj)[0].last_error = ""
         self._target_name = obj.name
         return self.regenerate_job(obj, context)
 
     def _target(self):
         obj = bpy.data.objects.get(getattr(self, "_target_name", ""))
-        return obj if obj is not None else self.target_of(bpy.context.active_object)
+        return obj if obj is not None else self.target_of(active_object(bpy.context))
 
     def job_cancelled(self, context):
         # The mesh is the one from before: so are the settings shown.

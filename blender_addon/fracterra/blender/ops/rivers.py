@@ -5,7 +5,7 @@ and Regenerate retraces them; water.py builds the objects."""
 
 import bpy
 
-from ..build.objects import restore_settings
+from ..build.objects import active_object, mesh_level, restore_settings
 from ..build.terrain import regenerate_job
 from ..build.water import remove_water, terrain_of
 from ..common.jobs import JobOperator
@@ -25,14 +25,14 @@ class FRACTERRA_OT_rivers(JobOperator, bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        if context.mode == "OBJECT" and terrain_of(context.active_object) is not None:
+        if context.mode == "OBJECT" and terrain_of(active_object(context)) is not None:
             return True
         cls.poll_message_set(RIVERS_NEEDS)
         return False
 
     def execute(self, context):
         if self.remove:
-            terrain = terrain_of(context.active_object)
+            terrain = terrain_of(active_object(context))
             terrain.fracterra_terrain.rivers = False
             remove_water(terrain)
             if context.view_layer.objects.active is None:
@@ -47,12 +47,15 @@ class FRACTERRA_OT_rivers(JobOperator, bpy.types.Operator):
         return super().invoke(context, event)
 
     def make_job(self, context):
-        terrain = terrain_of(context.active_object)
+        terrain = terrain_of(active_object(context))
         self._terrain_name = terrain.name
         settings = terrain.fracterra_terrain
         settings.last_error = ""
         settings.rivers = True
-        return regenerate_job(terrain, context)
+        # At the level the artist sees: over a Preview, the Preview (never a
+        # Final built unasked); Build Final then traces the Final's.
+        level = mesh_level(terrain)
+        return regenerate_job(terrain, context, preview=level is not None and level[0] == "Preview")
 
     def _terrain(self):
         return bpy.data.objects.get(getattr(self, "_terrain_name", ""))

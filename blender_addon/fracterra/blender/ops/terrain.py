@@ -11,7 +11,12 @@ from ..common.jobs import JobOperator
 from ..ui.settings_layout import draw_settings
 from .regenerate import RegenerateOperator
 from ..build.terrain import build_water, new_terrain_job, regenerate_job
+from ..build import children, kept_final
+from ..build.objects import active_object, mesh_level, restore_settings
 from ..build.water import take as take_water, terrain_of
+from ..common.jobs import run_job
+from ..common.preferences import library_threads
+from ..common.reporting import REPORTED
 from ..common.widgets import draw_placement, draw_size
 
 
@@ -82,6 +87,33 @@ class FRACTERRA_OT_terrain_regenerate(RegenerateOperator, bpy.types.Operator):
     regenerate_job = staticmethod(regenerate_job)
 
 
+class FRACTERRA_OT_back_to_final(bpy.types.Operator):
+    """Show the Final kept beside the Preview again, with the settings it was built from (the Preview and the edits since are dropped; Build Final builds a new Final instead)"""
+    bl_idname = "object.fracterra_back_to_final"
+    bl_label = "Back to Final"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        terrain = terrain_of(active_object(context))
+        return context.mode == "OBJECT" and terrain is not None and kept_final.kept(terrain) is not None
+
+    def execute(self, context):
+        terrain = terrain_of(active_object(context))
+        kept_final.bring_back(terrain, water=True)
+        restore_settings(terrain)
+        terrain.fracterra_terrain.last_error = ""
+        try:
+            summary = run_job(children.follow_job(terrain, library_threads(context)))
+        except REPORTED as e:
+            self.report({"ERROR"}, str(e))
+            return {"CANCELLED"}
+        level = mesh_level(terrain)
+        shown = f"{level[1]} x {level[2]}" if level else "its mesh"
+        self.report({"INFO"}, f"'{terrain.name}': back to its Final, {shown}" + (f"; {summary}" if summary else ""))
+        return {"FINISHED"}
+
+
 class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
     """Open an image file for the active terrain: its reference (brightness becomes the heights), its falloff mask, where it erodes or where rain falls"""
     bl_idname = "object.fracterra_reference_image_open"
@@ -99,7 +131,7 @@ class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
 
     @classmethod
     def poll(cls, context):
-        obj = context.active_object
+        obj = active_object(context)
         return obj is not None and obj.type == "MESH" and obj.fracterra_terrain.is_terrain
 
     def execute(self, context):
@@ -108,7 +140,7 @@ class FRACTERRA_OT_reference_image_open(bpy.types.Operator, ImportHelper):
         except RuntimeError as e:  # Blender's own message: missing file, unknown format
             self.report({"ERROR"}, f"cannot open '{self.filepath}' as an image: {e}")
             return {"CANCELLED"}
-        settings = context.active_object.fracterra_terrain
+        settings = active_object(context).fracterra_terrain
         if self.target == "FALLOFF_MASK":
             settings.falloff_mask_image = image.name
             settings.falloff_mask_source = "IMAGE"

@@ -28,6 +28,7 @@ from ...core import mesh_limits
 from ...core import tiles as core_tiles
 from ...core.grid import grid_arrays
 from ..build import mesh as mesh_build
+from ..build import splat_material
 from ..common.reporting import REPORTED, SettingsError
 
 
@@ -93,7 +94,7 @@ def _pieces(m, lod, x0, y0, w, h, per_tile):
 class FRACTERRA_OT_import_tiles(bpy.types.Operator, ImportHelper):
     """Import a window of a fracterra tile set (its manifest.json) at a level of detail, as one mesh or one object per tile"""
     bl_idname = "import_scene.fracterra_tiles"
-    bl_label = "Import Tile Set (fracterra)"
+    bl_label = "Import Tile Set"
     bl_options = {"REGISTER", "UNDO", "PRESET"}
 
     filename_ext = ".json"
@@ -116,6 +117,10 @@ class FRACTERRA_OT_import_tiles(bpy.types.Operator, ImportHelper):
     size: bpy.props.FloatProperty(
         name="Size", default=0.0, min=0.0, subtype="DISTANCE",
         description="Extent of the window along x in scene units, heights scaled alike (0: the set's own units)")
+    splat_rules: bpy.props.StringProperty(
+        name="Splat Rules", default="", subtype="FILE_PATH",
+        description="The colours' rules file (fracterra splat --print-rules); blank: the built-in grass, rock, "
+                    "sediment and snow")
 
     def execute(self, context):
         try:
@@ -137,6 +142,7 @@ class FRACTERRA_OT_import_tiles(bpy.types.Operator, ImportHelper):
             raise SettingsError(f"Import tile set: the window ({self.x0}, {self.y0}) + {w} x {h} is not inside the "
                                 f"set's {ew} x {eh} samples at level of detail {self.lod} (at least 2 x 2)")
         mesh_limits.check_grid(w, h)
+        rules = splat_material.rules_of({"splat_rules": self.splat_rules})
         spacing = m["sample_spacing"] * 2 ** self.lod
         scale = self.size / (spacing * (w - 1)) if self.size > 0 else 1.0
         collection = bpy.data.collections.new(os.path.basename(os.path.normpath(folder)) or "tiles")
@@ -151,11 +157,14 @@ class FRACTERRA_OT_import_tiles(bpy.types.Operator, ImportHelper):
             if scale != 1.0:
                 g.co = array.array("f", (np.frombuffer(g.co, dtype=np.float32) * scale).tobytes())
             normals = _normals(margin * scale, (ox, oy), pw, ph, spacing * scale, spacing * scale)
+            colors = core_tiles.window_colors(folder, rules, self.lod, self.x0 + a, self.y0 + b, pw, ph)
+            colors = np.ascontiguousarray(colors.reshape(ph, pw, 4)[::-1]).ravel()  # north up, as the mesh
             name = f"{collection.name} r{self.y0 + b} c{self.x0 + a}" if len(pieces) > 1 else collection.name
             mesh = bpy.data.meshes.new(name)
             try:
                 mesh_build.fill_grid_mesh(mesh, g, smooth=True)
                 _set_normals(mesh, normals)
+                splat_material.set_colors(mesh, colors)
             except BaseException:
                 bpy.data.meshes.remove(mesh)
                 raise

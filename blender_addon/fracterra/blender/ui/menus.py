@@ -16,6 +16,7 @@ def menu_curve_add(self, context):
 def menu_file_export(self, context):
     self.layout.operator("export_scene.fracterra_pov", text="POV-Ray (fracterra) (.pov)")
     self.layout.operator("export_scene.fracterra_heights", text="Terrain Heights (fracterra) (.tif/.exr/.raw)")
+    self.layout.operator("export_scene.fracterra_tiles", text="Build Tile Set (fracterra) (folder)")
 
 
 def menu_file_import(self, context):

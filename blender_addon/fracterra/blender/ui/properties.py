@@ -13,6 +13,7 @@ from ..build.polyline import regenerate_polyline
 from ..build.objects import restore_settings, restoring
 from ..build.terrain import preview_regenerate
 from ..build import planet as planet_build
+from ..common.widgets import km_name, shows_km
 
 
 def bpy_property(p, update=None, options=None):
@@ -66,6 +67,21 @@ def display_property(p):
     return FloatProperty(name=f"{p.label} \u00d71e-{power}", get=get, set=set, precision=3, options={"SKIP_SAVE"},
                          description=f"{p.description}. Shown times 1e{power}: {p.default * scale:g} here is "
                                      f"{p.default:g}", **kw)
+
+
+def km_property(p):
+    """Setting `p` (in metres) as Blender draws it in km, read from and written
+    to the setting itself, as display_property does."""
+    def get(self):
+        return getattr(self, p.name) / 1000.0
+
+    def set(self, value):
+        setattr(self, p.name, value * 1000.0)
+
+    kw = {key: getattr(p, key) / 1000.0 for key in ("min", "max", "soft_min", "soft_max") if getattr(p, key) is not None}
+    return FloatProperty(name=f"{p.label} (km)", get=get, set=set, precision=1, options={"SKIP_SAVE"},
+                         description=f"{p.description}. Shown in km: {p.default / 1000:g} here is {p.default:g} m",
+                         **kw)
 
 
 def reference_image_choices(images):
@@ -132,6 +148,8 @@ def terrain_annotations(update=None, param_list=None, options=None):
         out[p.name] = bpy_property(p, own, options)
         if p.display_scale is not None:
             out[params.shown_name(p.name)] = display_property(p)
+        if shows_km(p):
+            out[km_name(p.name)] = km_property(p)
     if "reference_image" in out:
         out["reference_image_pick"] = reference_image_picker(update)
     if "falloff_mask_image" in out:

@@ -5,6 +5,7 @@ and Lakes settings and the operator that traces them (by its id string)."""
 import bpy
 
 from .rivers_layout import draw_rivers
+from ..build.objects import active_object
 from ..build.water import terrain_of, water_objects
 from ..common.widgets import draw_library_problem
 
@@ -19,12 +20,12 @@ class FRACTERRA_PT_rivers(bpy.types.Panel):
 
     @classmethod
     def poll(cls, context):
-        return terrain_of(context.active_object) is not None
+        return terrain_of(active_object(context)) is not None
 
     def draw(self, context):
         layout = self.layout
         draw_library_problem(layout)
-        terrain = terrain_of(context.active_object)
+        terrain = terrain_of(active_object(context))
         settings = terrain.fracterra_terrain
         made = water_objects(terrain)
         col = layout.column(align=True)

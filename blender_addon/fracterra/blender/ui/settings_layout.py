@@ -9,15 +9,32 @@ from . import erosion_layout
 from ..common.widgets import draw_setting
 
 
+# The characters of an enum's label that its 40 % of the sidebar row shows whole.
+ENUM_LABEL_CHARACTERS = 12
+
+
 def setting_prop(layout, data, name, p=None):
     """layout.prop, except that without the property split (the narrow sidebar)
-    an enum gets its label beside it (Blender would drop it). `p`: the setting's
+    an enum gets its label beside it (Blender would drop it) and a file path
+    its label above it. `p`: the setting's
     Param (a terrain's, by its name, unless given)."""
-    if layout.use_property_split or data.bl_rna.properties[name].type != "ENUM":
+    prop = data.bl_rna.properties[name]
+    if not layout.use_property_split and prop.type == "STRING" and prop.subtype == "FILE_PATH":
+        # A path beside its label leaves room for neither: the label above it.
+        col = layout.column(align=True)
+        col.label(text=prop.name)
+        col.prop(data, name, text="")
+        return
+    if layout.use_property_split or prop.type != "ENUM":
         draw_setting(layout, data, name, p if p is not None else params.PARAMS_BY_NAME.get(name))
         return
+    if len(prop.name) > ENUM_LABEL_CHARACTERS:  # beside its menu it would be cut: above it
+        col = layout.column(align=True)
+        col.label(text=prop.name)
+        col.prop(data, name, text="")
+        return
     row = layout.split(factor=0.4, align=True)
-    row.label(text=data.bl_rna.properties[name].name)
+    row.label(text=prop.name)
     row.prop(data, name, text="")
 
 
@@ -89,7 +106,9 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
         elif data.reference_source == "DEM":
             _prop(box, data, "reference_file")
             _prop(box, data, "reference_levels")
-            box.prop(data, "reference_height", text="Relief if not georeferenced")
+            relief = box.column(align=True)
+            relief.label(text="Relief if not georeferenced")
+            relief.prop(data, "reference_height", text="")
             _prop(box, data, "reference_scale")
     erosion_layout.draw_erosion(col, data)
     _prop(col.column(align=True), data, "splat_rules")
