@@ -8,7 +8,7 @@
 #   native/bench/readme_figures.sh [BUILD_DIR] [OUT_DIR] [SECTION ...]
 #
 # SECTIONS: terrain window noise polyline povray subdiv blender erosion
-# fluvial land (default: all). Each writes OUT_DIR/SECTION.txt.
+# fluvial land (default: all), and eroded_tiles (only when named). Each writes OUT_DIR/SECTION.txt.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=$(realpath "${1:-build}")
@@ -63,6 +63,13 @@ for s in "${sections[@]}"; do
           run land "$build/native/fracterra" erode --in "$out/fbm_$n.npy" --preset land --threads 2 --stats
         done
       done ;;
+    eroded_tiles)
+      # docs/measurements/scale.md: an eroded set on Dask (2 workers) against the in-memory erosion
+      # of the same terrain, alternated, 3 of each (not in the default list: minutes at 2049^2,
+      # an hour at 8193^2; add 8193 with --levels 13 --memory-limit 10GB on a quiet machine).
+      run eroded_tiles env PYTHONPATH="$build/python/stage" FRACTERRA_LIBRARY="$build/native/libfracterra.so" \
+        /usr/bin/python3 native/bench/tiles_dask_bench.py --erode land --levels 11 --tile 1024 --workers 2 \
+        --memory-limit 4GB --reps 3 --out "$out/eroded2049" ;;
     *) echo "unknown section: $s" >&2; exit 2 ;;
   esac
 done
