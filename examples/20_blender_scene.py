@@ -3,13 +3,13 @@
     blender -b --factory-startup --python examples/20_blender_scene.py -- --out demo-out/blender
 
 Builds a terrain with the fracterra add-on (installed, or straight from this
-source tree with the library from build/native), gives it a
-material by height and slope (the add-on's point attributes), eroded, with its
-rivers and lakes (Rivers and Lakes), a sea plane, a
-sun, a sky graded from zenith to haze and a camera, adds a branching fractal
-lightning bolt and a river-like fractal polyline over it, saves scene.blend,
-renders preview.png with Cycles (small and few samples: seconds on a CPU) and
-exports the POV-Ray scene (scene.pov; --pov-render renders it with povray).
+source tree with the library from build/native) in its splat material (the
+library's colour map), eroded, with its rivers and lakes (Rivers and Lakes), a
+sea plane, a sun, a sky and a camera, adds a branching fractal lightning bolt
+and a river-like fractal polyline over it, saves scene.blend, renders
+preview.png with Cycles (small and few samples: seconds on a CPU) and exports
+the POV-Ray scene (scene.pov; --pov-render renders it with povray into
+scene.png: the same scene, docs/povray.md).
 Exits non-zero with a message on any error.
 """
 
@@ -162,6 +162,15 @@ def sky(world):
     links.new(mix.outputs["Color"], background.inputs["Color"])
 
 
+def even_sky(world, color):
+    """A sky of one colour: what the camera sees behind the terrain and what lights it, so the
+    POV-Ray export's background and ambient light are this colour too."""
+    world.use_nodes = True
+    background = world.node_tree.nodes["Background"]
+    background.inputs["Color"].default_value = (*color, 1.0)
+    background.inputs["Strength"].default_value = 1.0
+
+
 def water(size, level):
     bpy.ops.mesh.primitive_plane_add(size=size, location=(0, 0, level + 1e-3))
     plane = bpy.context.active_object
@@ -254,10 +263,7 @@ def main():
             raise RuntimeError(f"Rivers and Lakes: {result}")
         bpy.context.view_layer.objects.active = terrain
     print(f"20_blender_scene: terrain {len(terrain.data.vertices)} vertices in {time.perf_counter() - t0:.2f} s")
-    mat = terrain_material()
     zs = [v.co.z for v in terrain.data.vertices]
-    terrain.data.materials.clear()  # in place of the terrain's splat material
-    terrain.data.materials.append(mat)
     if args.sea_level is not None:
         water(args.size, args.sea_level)
         bpy.context.view_layer.objects.active = terrain
@@ -278,7 +284,8 @@ def main():
     scene.camera = camera
     world = scene.world or bpy.data.worlds.new("World")
     scene.world = world
-    sky(world)
+    even_sky(world, (0.42, 0.56, 0.80))
+    scene.view_settings.view_transform = "Standard"  # plain sRGB, as POV-Ray writes (Filmic would tone it)
 
     blend = out / "scene.blend"
     bpy.ops.wm.save_as_mainfile(filepath=str(blend), check_existing=False)

@@ -8,7 +8,8 @@
 #   native/bench/readme_figures.sh [BUILD_DIR] [OUT_DIR] [SECTION ...]
 #
 # SECTIONS: terrain window noise polyline povray subdiv blender erosion
-# fluvial land memory (default: all; memory is not in the README's table). Each writes OUT_DIR/SECTION.txt.
+# fluvial land memory (default: all; memory is not in the README's table), and eroded_tiles
+# (only when named). Each writes OUT_DIR/SECTION.txt.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=$(realpath "${1:-build}")
@@ -71,6 +72,13 @@ for s in "${sections[@]}"; do
           --erode land --threads 2 --out "$out/memory_$levels.npy"
         rm -f "$out/memory_$levels.npy"
       done ;;
+    eroded_tiles)
+      # docs/measurements/scale.md: an eroded set on Dask (2 workers) against the in-memory erosion
+      # of the same terrain, alternated, 3 of each (not in the default list: minutes at 2049^2,
+      # an hour at 8193^2; add 8193 with --levels 13 --memory-limit 10GB on a quiet machine).
+      run eroded_tiles env PYTHONPATH="$build/python/stage" FRACTERRA_LIBRARY="$build/native/libfracterra.so" \
+        /usr/bin/python3 native/bench/tiles_dask_bench.py --erode land --levels 11 --tile 1024 --workers 2 \
+        --memory-limit 4GB --reps 3 --out "$out/eroded2049" ;;
     *) echo "unknown section: $s" >&2; exit 2 ;;
   esac
 done

@@ -7,6 +7,13 @@ in-memory generator in the same run.
         /usr/bin/python3 native/bench/tiles_dask_bench.py --levels 16 --tile 4096 \\
         --workers 2 --memory-limit 3GB --out /work/scratch/tiles65537
 
+With --erode PRESET: an eroded set of a levels-L terrain (Dask, end to end: range pass, tiles,
+manifest, mosaics, and with --engine the engine cut) against the in-memory erosion of the same
+terrain (ft_terrain_build, all cores), alternated in the same run, --reps of each:
+
+    ... tiles_dask_bench.py --erode land --levels 13 --tile 4096 --workers 2 --memory-limit 10GB \
+        --reps 3 --out /work/scratch/eroded8193 [--maps --engine unreal]
+
 Reports (JSON on stdout, medians of --reps runs where it says so):
   in-memory samples/s   ft_terrain_generate of a levels-13 terrain (8193^2), all cores, median of reps;
   generation samples/s  tile windows generated on the cluster and dropped (no encoding), the first
@@ -58,7 +65,12 @@ def main():
     ap.add_argument("--out", required=True, help="scratch folder for the tile set (removed first)")
     ap.add_argument("--keep", action="store_true", help="keep the tile set afterwards")
     ap.add_argument("--measure", action="store_true", help="also H and D of the whole from per-tile sums")
+    ap.add_argument("--erode", help="an erosion preset (land, ...): the eroded set against the in-memory erosion")
+    ap.add_argument("--maps", action="store_true", help="--erode: the set with its maps")
+    ap.add_argument("--engine", help="--erode: also cut the set for this engine (unity, unreal, godot)")
     a = ap.parse_args()
+    if a.erode:
+        return eroded(a)
     settings = {"method": "MIDPOINT", "levels": a.levels, "hurst": a.hurst, "seed": 1, "threads": 1}
     report = {"levels": a.levels, "tile": a.tile, "workers": a.workers, "memory_limit": a.memory_limit,
               "uptime_before": subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()}
@@ -116,6 +128,51 @@ def main():
         if not a.keep:
             shutil.rmtree(a.out, ignore_errors=True)
     report["uptime_after"] = subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
+    print(json.dumps(report, indent=1))
+    return 0
+
+
+def _uptime():
+    return subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
+
+
+def eroded(a):
+    """The eroded set on Dask against the in-memory erosion of the same terrain, alternated."""
+    from fracterra.core import build_terrain
+    settings = {"method": "MIDPOINT", "levels": a.levels, "hurst": a.hurst, "seed": 1, "world_size": 10.0,
+                "sigma": 1.0}
+    report = {"levels": a.levels, "tile": a.tile, "workers": a.workers, "memory_limit": a.memory_limit,
+              "preset": a.erode, "maps": a.maps, "engine": a.engine, "uptime_before": _uptime()}
+    w, h = tiles.terrain_extent(settings, None)
+    memory, dask, summaries, loads = [], [], [], []
+    client = tiles.connect(workers=a.workers, memory_limit=a.memory_limit)
+    try:
+        for _ in range(a.reps):
+            t = time.perf_counter()
+            hf, _maps = build_terrain(settings, preset=a.erode.upper(), maps=a.maps, threads=0)
+            hf.close()
+            memory.append(time.perf_counter() - t)
+            shutil.rmtree(a.out, ignore_errors=True)
+            t = time.perf_counter()
+            summaries.append(tiles.build_tileset(settings, a.out, a.tile, client=client, progress=False,
+                                                 preset=a.erode.upper(), maps=a.maps, engine=a.engine))
+            dask.append(time.perf_counter() - t)
+            loads.append(_uptime())
+        report["worker_peak_rss_mib"] = sorted(client.run(tiles._peak_rss_mib).values())
+    finally:
+        cluster = client.cluster
+        client.close()
+        cluster.close()
+    report.update({"samples": w * h, "in_memory_seconds": memory, "dask_seconds": dask, "loads": loads,
+                   "in_memory_samples_per_s": w * h / statistics.median(memory),
+                   "dask_samples_per_s": w * h / statistics.median(dask),
+                   "range_seconds": [sm.get("range_seconds") for sm in summaries],
+                   "finish_seconds": [sm["finish_seconds"] for sm in summaries],
+                   "engine_seconds": [sm.get("engine_seconds") for sm in summaries]})
+    report["dask_vs_in_memory"] = report["dask_samples_per_s"] / report["in_memory_samples_per_s"]
+    if not a.keep:
+        shutil.rmtree(a.out, ignore_errors=True)
+    report["uptime_after"] = _uptime()
     print(json.dumps(report, indent=1))
     return 0
 

@@ -287,11 +287,11 @@ def principled_excess(roughness, samples=32):
     """How much brighter Cycles' Principled BSDF (base 0.3, Specular 0.5, this roughness) is than
     a Lambertian surface of the same colour, which is what the export writes: the log ratio of
     the two on a flat plane under a sun, over views from 20 to 75 degrees off the normal and sun
-    elevations of 40 and 70 degrees. Returns (smallest, largest)."""
+    elevations of 15, 40 and 70 degrees. Returns (smallest, largest)."""
     ratios = []
     scene = bpy.context.scene
     for view in (20, 50, 75):
-        for tilt in (20, 50):
+        for tilt in (20, 50, 75):
             values = []
             for shader in ("ShaderNodeBsdfPrincipled", "ShaderNodeBsdfDiffuse"):
                 clear_scene()
@@ -346,9 +346,9 @@ class OneSceneTwoRenderers(unittest.TestCase):
     whose edges and noise average out, in [-(rho_hi + 3 n), -rho_lo + 3 n + 0.05].
     Hue (blocks whose chroma is over 0.15 in both): the renderers share the colours, so hue moves
     only with noise (3 times the seeds' largest difference) and with the Principled excess, which
-    brightens the lights' share of a block against the sky's: measured by rendering POV-Ray again
-    with every light exp(rho_hi) times brighter; that shift plus the noise plus 2 degrees (the
-    8-bit images' rounding of dark colours) is allowed."""
+    brightens one light's share of a block against the other lights' and the sky's: measured by
+    rendering POV-Ray again with each light, then all, exp(rho_hi) times brighter; the largest
+    shift plus the noise plus 2 degrees (the 8-bit images' rounding of dark colours) is allowed."""
 
     @classmethod
     def setUpClass(cls):
@@ -398,8 +398,9 @@ class OneSceneTwoRenderers(unittest.TestCase):
         return read_rgba(self.dir / f"{name}.png")[..., :3]
 
     def renders(self, terrain):
-        """Linear RGB of the scene: Cycles, Cycles with another seed, POV-Ray, and POV-Ray with every
-        light exp(rho_hi) times as strong."""
+        """Linear RGB of the scene: Cycles, Cycles with another seed, POV-Ray, and POV-Ray with one
+        light at a time exp(rho_hi) times as strong (each light, then all: the Principled excess
+        may favour any of them against the others and the sky)."""
         images = []
         for seed in (1, 2):
             png = self.dir / f"cycles{seed}.png"
@@ -407,18 +408,21 @@ class OneSceneTwoRenderers(unittest.TestCase):
             images.append(read_rgba(png)[..., :3])
         images.append(self.export_render(terrain, "povray"))
         lights = [o.data for o in bpy.context.scene.objects if o.type == "LIGHT"]
-        for data in lights:
-            data.energy *= math.exp(self.rho_hi)
-        try:
-            images.append(self.export_render(terrain, "povray-brighter"))
-        finally:
-            for data in lights:
-                data.energy /= math.exp(self.rho_hi)
+        brighter = []
+        for k, chosen in enumerate([[data] for data in lights] + ([lights] if len(lights) > 1 else [])):
+            for data in chosen:
+                data.energy *= math.exp(self.rho_hi)
+            try:
+                brighter.append(self.export_render(terrain, f"povray-brighter{k}"))
+            finally:
+                for data in chosen:
+                    data.energy /= math.exp(self.rho_hi)
         self.assertEqual(images[2].shape, images[0].shape)
-        return images
+        return images + [brighter]
 
     def compare(self, cycles, cycles_again, pov, pov_brighter, what):
-        blocks = [block_means(x) for x in (cycles, cycles_again, pov, pov_brighter)]
+        blocks = [block_means(x) for x in (cycles, cycles_again, pov)]
+        brighter = [block_means(x) for x in pov_brighter]
         floor = 0.004  # linear luminance below which blocks are black to the eye (8-bit sRGB 12)
         y = [luminance(b) + floor for b in blocks]
         ratio = np.log(y[2] / y[0])
@@ -434,7 +438,8 @@ class OneSceneTwoRenderers(unittest.TestCase):
         def turn(a, b):
             return np.degrees(np.abs(np.angle(np.exp(1j * (a - b)))))[coloured]
         dh = turn(hue[2][0], hue[0][0])
-        hue_tolerance = 3 * turn(hue[1][0], hue[0][0]).max() + turn(hue[3][0], hue[2][0]).max() + 2.0
+        excess = max(turn(hue_and_chroma(b)[0], hue[2][0]).max() for b in brighter)
+        hue_tolerance = 3 * turn(hue[1][0], hue[0][0]).max() + excess + 2.0
         print(f"{what}: log luminance POV-Ray / Cycles median {median:+.3f} (allowed {median_lo:+.3f} .. "
               f"{median_hi:+.3f}), blocks {ratio.min():+.3f} .. {ratio.max():+.3f} (allowed {lo:+.3f} .. {hi:+.3f}); "
               f"hue over {coloured.sum()} blocks up to {dh.max():.1f} deg (allowed {hue_tolerance:.1f})", flush=True)
@@ -466,6 +471,18 @@ class OneSceneTwoRenderers(unittest.TestCase):
         sun.energy, sun.color = 3.0, (1.0, 0.85, 0.65)
         bpy.context.scene.world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.25, 0.32, 0.5, 1)
         self.compare(*self.renders(terrain), "sun and sky")
+
+    def test_spot_and_area_lights(self):
+        terrain = self.terrain()
+        self.factory("CAMERA")
+        bpy.ops.object.light_add(type="SPOT", location=(3.0, -3.0, 6.0), rotation=(0.55, 0.0, 0.8))
+        spot = bpy.context.active_object.data
+        spot.energy, spot.color, spot.spot_size, spot.spot_blend = 3000.0, (1.0, 0.8, 0.6), math.radians(50), 0.3
+        bpy.ops.object.light_add(type="AREA", location=(-2.0, 1.0, 7.0), rotation=(0.2, -0.25, 0.0))
+        area = bpy.context.active_object.data
+        area.energy, area.shape, area.size, area.size_y = 2000.0, "RECTANGLE", 2.0, 1.0
+        area.color = (0.7, 0.85, 1.0)
+        self.compare(*self.renders(terrain), "spot and area lights")
 
     def test_rivers_lakes_and_sea(self):
         terrain = self.terrain(erode_preset="VALLEYS", sea="FRACTION", sea_fraction=0.45)

@@ -1,7 +1,10 @@
 """File > Import > fracterra tile set in real Blender, through the installed
 add-on: a window of a 4 x 4 tile set at a level of detail, as one mesh and as
 one object per tile; north up; neighbouring tile objects share their edge
-vertices; a bad window is an error report, not a traceback."""
+vertices; a bad window is an error report, not a traceback. Build Tile Set
+on an eroded terrain object writes the object's own terrain (the same
+heights and colours at Finer By 0, the same grid at its level of detail one
+level finer), and the imported pieces carry the whole set's splat colours."""
 
 import array
 import os
@@ -149,6 +152,56 @@ class TilesImportTest(unittest.TestCase):
             bpy.ops.import_scene.fracterra_tiles(filepath=self.manifest(), x0=120, width=20)
         self.assertIn("not inside", str(cm.exception))
         self.assertNotIn("Traceback", str(cm.exception))
+
+
+def attribute(obj, name="fracterra_color", width=4):
+    layer = obj.data.attributes[name]
+    out = array.array("f", [0.0]) * (width * len(obj.data.vertices))
+    layer.data.foreach_get("color", out)
+    return out
+
+
+class BuildTileSetTest(unittest.TestCase):
+    """File > Export > Build Tile Set on an eroded terrain (Rugged Mountains, 65^2)."""
+
+    def setUp(self):
+        for obj in list(bpy.data.objects):
+            bpy.data.objects.remove(obj)
+        self.assertEqual(bpy.ops.mesh.fracterra_terrain_add(levels=6, seed=5, erode_preset="LAND"), {"FINISHED"})
+        self.terrain = bpy.context.active_object
+        self.folder = os.path.join(tempfile.mkdtemp(prefix="ft_build_tiles_"), "set")
+
+    def build(self, **kw):
+        self.terrain.select_set(True)
+        bpy.context.view_layer.objects.active = self.terrain
+        result = bpy.ops.export_scene.fracterra_tiles(filepath=self.folder + os.sep, **kw)
+        self.assertEqual(result, {"FINISHED"})
+        imported = bpy.context.active_object
+        self.assertIsNot(imported, self.terrain)
+        return imported
+
+    def test_finer_by_zero_is_the_objects_own_terrain_heights_and_colours(self):
+        # Every tile is a window of what the object's build made: the same float heights (tiff tiles),
+        # and the same colours (the whole set's splat rules: its range, area, deposits and flow).
+        imported = self.build(finer_by=0, tile=16, tile_format="tiff")
+        a = array.array("f", [0.0]) * (3 * len(self.terrain.data.vertices))
+        b = array.array("f", [0.0]) * (3 * len(imported.data.vertices))
+        self.terrain.data.vertices.foreach_get("co", a)
+        imported.data.vertices.foreach_get("co", b)
+        self.assertEqual(len(a), len(b))
+        self.assertEqual(max(abs(x - y) for x, y in zip(a[2::3], b[2::3])), 0.0)
+        ca, cb = attribute(self.terrain), attribute(imported)
+        self.assertLess(max(abs(x - y) for x, y in zip(ca, cb)), 1e-6)
+        self.assertEqual(imported.data.materials[0].name.split(".")[0], "Fracterra Terrain")
+        manifest = addon_harness.submodule("core.tiles").manifest(self.folder)
+        self.assertEqual(manifest["erosion"]["preset"], "land")
+        self.assertEqual(manifest["columns"], 4)
+
+    def test_finer_by_one_has_twice_the_samples_and_imports_at_the_objects_grid(self):
+        imported = self.build(finer_by=1, tile=32)
+        manifest = addon_harness.submodule("core.tiles").manifest(self.folder)
+        self.assertEqual(manifest["width"], 129)
+        self.assertEqual(len(imported.data.vertices), len(self.terrain.data.vertices))  # imported at lod 1
 
 
 if __name__ == "__main__":

@@ -199,7 +199,7 @@ TEST(PovCapi, RejectsBadArgumentsWithMessages) {
   ft_pov_scene_params p;
   ASSERT_EQ(ft_pov_scene_params_init(&p), FT_OK);
   EXPECT_EQ(ft_pov_write_scene(&p, (t / "s.pov").c_str()), FT_ERR_INVALID_ARGUMENT);  // nothing to show
-  EXPECT_NE(std::string(ft_last_error()).find("terrain or at least one polyline"), std::string::npos);
+  EXPECT_NE(std::string(ft_last_error()).find("a terrain, a polyline set or a mesh"), std::string::npos);
   EXPECT_EQ(ft_pov_write_scene(nullptr, "x.pov"), FT_ERR_INVALID_ARGUMENT);
   EXPECT_EQ(ft_pov_write_scene(&p, nullptr), FT_ERR_INVALID_ARGUMENT);
   p.struct_size = 8;
@@ -243,6 +243,78 @@ TEST(PovCapi, LowerLevelWritersForOtherExporters) {
   EXPECT_NE(slurp(t / "b.inc").find("#declare Bolt = object {\nsphere_sweep { linear_spline 3,"), std::string::npos);
   ft_polylines_free(pl);
   ft_heightfield_free(hf);
+}
+
+}  // namespace
+
+namespace {
+
+// Another program's scene through the ABI (2.26): a mesh in a material under a
+// point light writes the converted light and a mesh2; bad lights, materials
+// and meshes are refused naming what is wrong, and nothing is written.
+struct BlenderScene {
+  TempDir t;
+  ft_mesh* mesh = nullptr;
+  ft_pov_light light{};
+  ft_pov_scene_mesh entry{};
+  ft_pov_scene_params p{};
+  BlenderScene() {
+    const float positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    const int32_t sizes[] = {4}, indices[] = {0, 1, 2, 3};
+    EXPECT_EQ(ft_mesh_create(positions, 4, sizes, 1, indices, nullptr, nullptr, 0, &mesh), FT_OK) << ft_last_error();
+    light.kind = FT_POV_LIGHT_POINT;
+    light.color[0] = light.color[1] = light.color[2] = 1;
+    light.power = 1000;
+    light.location[2] = 3;
+    light.direction[2] = -1;
+    light.shadows = 1;
+    entry.mesh = mesh;
+    entry.material = {{0.5, 0.4, 0.3}, {0, 0, 0}, 0.5, 0.5, 0};
+    ft_pov_scene_params_init(&p);
+    p.has_scene_light = 1;
+    p.lights = &light;
+    p.light_count = 1;
+    p.meshes = &entry;
+    p.mesh_count = 1;
+  }
+  ~BlenderScene() { ft_mesh_free(mesh); }
+  ft_status write() { return ft_pov_write_scene(&p, (t / "b.pov").c_str()); }
+};
+
+TEST(PovCapi, AnotherProgramsLightsAndMeshesAreWrittenConverted) {
+  BlenderScene s;
+  ASSERT_EQ(s.write(), FT_OK) << ft_last_error();
+  const std::string sdl = slurp(s.t / "b.pov");
+  EXPECT_NE(sdl.find("fade_power 2"), std::string::npos);
+  EXPECT_NE(sdl.find("mesh2 {"), std::string::npos);
+  EXPECT_EQ(sdl.find("plane { y"), std::string::npos) << "another program's scene gets no ground of fracterra's";
+}
+
+TEST(PovCapi, BadLightsMaterialsAndMeshesAreRefusedNamingTheField) {
+  const struct {
+    const char* what;
+    void (*spoil)(BlenderScene&);
+  } cases[] = {
+      {"light kind", [](BlenderScene& s) { s.light.kind = 7; }},
+      {"light power", [](BlenderScene& s) { s.light.power = NAN; }},
+      {"light color", [](BlenderScene& s) { s.light.color[1] = -1; }},
+      {"direction", [](BlenderScene& s) { s.light.kind = FT_POV_LIGHT_SPOT, s.light.direction[2] = 0; }},
+      {"spot_size_deg", [](BlenderScene& s) { s.light.kind = FT_POV_LIGHT_SPOT, s.light.spot_size_deg = 200; }},
+      {"area_u", [](BlenderScene& s) { s.light.kind = FT_POV_LIGHT_AREA; }},
+      {"lights", [](BlenderScene& s) { s.p.lights = nullptr; }},
+      {"light_count", [](BlenderScene& s) { s.p.light_count = -1; }},
+      {"mesh material color", [](BlenderScene& s) { s.entry.material.color[0] = 2; }},
+      {"mesh material roughness", [](BlenderScene& s) { s.entry.material.roughness = NAN; }},
+      {"meshes[i].mesh", [](BlenderScene& s) { s.entry.mesh = nullptr; }},
+      {"mesh_count", [](BlenderScene& s) { s.p.mesh_count = 70000; }},
+  };
+  for (const auto& c : cases) {
+    BlenderScene s;
+    c.spoil(s);
+    EXPECT_EQ(s.write(), FT_ERR_INVALID_ARGUMENT) << c.what;
+    EXPECT_NE(std::string(ft_last_error()).find(c.what), std::string::npos) << ft_last_error();
+    EXPECT_FALSE(fs::exists(s.t / "b.pov")) << c.what;
+  }
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/mesh.hpp"
 #include "io/atomic_file.hpp"
 #include "io/png_image.hpp"
 #include "povray/heightfield_export.hpp"
@@ -537,6 +538,93 @@ FT_River(P, R)
 FT_Lake(L, 0.01, 0.005)
 )";
   expect_not_blank(render(path("w.pov")), "ft_water.inc");
+}
+
+}  // namespace
+}  // namespace ft
+
+namespace ft {
+namespace {
+
+// Another program's lights in their physical units (Blender's Cycles: W, or
+// W/m^2 for a sun) light a grey Lambertian plane, seen from straight above, to
+// albedo x E / pi, with E the irradiance the formulas of docs/povray.md give;
+// the render is read back through sRGB. Tolerance: 1.5% (an 8-bit sRGB step at
+// these levels is 0.4-0.8%, and the patch read is 1/10 of the frame across,
+// whose off-axis cosines lower a point light's mean by at most 0.5%).
+class PovLightsTest : public PovTest {
+ protected:
+  static constexpr double kAlbedo = 0.18;
+  static constexpr double kPi = 3.14159265358979323846;
+  // Linear value of the frame's central 10% square.
+  double centre(const pov::SceneLight& light, double h_extent = 4) {
+    Mesh plane;
+    plane.positions = {-50, -50, 0, 50, -50, 0, 50, 50, 0, -50, 50, 0};
+    plane.face_sizes = {4};
+    plane.face_indices = {0, 1, 2, 3};
+    pov::SceneParams p;
+    pov::SceneMaterial grey;
+    grey.color = {kAlbedo, kAlbedo, kAlbedo};
+    grey.roughness = 1, grey.specular = 0;
+    p.meshes.push_back({&plane, grey, false});
+    p.scene_light = true;
+    p.lights = {light};
+    p.camera_given = true;
+    p.camera_pose = {{0, 0, 10}, {0, 0, -10}, {h_extent, 0, 0}, {0, h_extent, 0}};
+    pov::write_scene(p, path("lit.pov"));
+    const io::ChannelImage img = io::read_png_channels(render_rgb(path("lit.pov"), 40, 40));
+    double sum = 0;
+    int n = 0;
+    for (int y = 18; y < 22; ++y)
+      for (int x = 18; x < 22; ++x, ++n) {
+        const double v = img.samples[(size_t(y) * img.width + x) * img.channels] / double((1 << img.bit_depth) - 1);
+        sum += v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+      }
+    return sum / n;
+  }
+  std::string render_rgb(const std::string& scene, int w, int h) {
+    pov::RenderOptions o;
+    o.width = w, o.height = h, o.antialias = 0;
+    const std::string out = path("lit.png");
+    const pov::RenderResult r = pov::render_scene(scene, out, o);
+    EXPECT_EQ(r.warnings, 0) << r.messages;
+    return out;
+  }
+};
+
+TEST_F(PovLightsTest, SunOfStrengthSLightsToAlbedoTimesSOverPi) {
+  pov::SceneLight sun;
+  sun.kind = pov::LightKind::kSun, sun.power = 3, sun.direction = {0, 0, -1};
+  EXPECT_NEAR(centre(sun), kAlbedo * 3 / kPi, 0.015 * kAlbedo * 3 / kPi);
+}
+
+TEST_F(PovLightsTest, PointLightOfPowerPFollowsTheInverseSquareLaw) {
+  for (double h : {2.0, 5.0}) {
+    pov::SceneLight point;
+    point.kind = pov::LightKind::kPoint, point.power = 300, point.location = {0, 0, h};
+    const double want = kAlbedo * 300 / (4 * kPi * h * h) / kPi;
+    EXPECT_NEAR(centre(point, 0.2 * h), want, 0.015 * want) << "height " << h;
+  }
+}
+
+TEST_F(PovLightsTest, SpotLightIsThePointLightInItsConeAndDarkOutside) {
+  pov::SceneLight spot;
+  spot.kind = pov::LightKind::kSpot, spot.power = 1000, spot.location = {0, 0, 4}, spot.direction = {0, 0, -1};
+  spot.spot_size_deg = 40, spot.spot_blend = 0.2;
+  const double want = kAlbedo * 1000 / (4 * kPi * 16) / kPi;
+  EXPECT_NEAR(centre(spot, 0.8), want, 0.015 * want);
+  spot.direction = {1, 0, -0.3};  // the cone turned away from the patch
+  EXPECT_LT(centre(spot, 0.8), 0.002);
+}
+
+TEST_F(PovLightsTest, AreaLightOfFluxPIsALambertianEmitter) {
+  pov::SceneLight area;
+  area.kind = pov::LightKind::kArea, area.power = 400, area.location = {0, 0, 4}, area.direction = {0, 0, -1};
+  area.area_u = {0.2, 0, 0}, area.area_v = {0, 0.2, 0};
+  const double want = kAlbedo * 400 / (kPi * 16) / kPi;  // intensity P / pi on the axis
+  EXPECT_NEAR(centre(area, 0.8), want, 0.015 * want);
+  area.direction = {0, 0, 1};  // facing away: one-sided
+  EXPECT_LT(centre(area, 0.8), 0.002);
 }
 
 }  // namespace

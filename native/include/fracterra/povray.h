@@ -42,7 +42,8 @@ enum { FT_POV_LIGHT_SUN = 0, FT_POV_LIGHT_POINT = 1, FT_POV_LIGHT_SPOT = 2, FT_P
 typedef struct ft_pov_light {
   int32_t kind;             ///< FT_POV_LIGHT_SUN, _POINT, _SPOT or _AREA
   double color[3];          ///< linear RGB, 0..1000 each
-  double power;             ///< W (point, spot, area: Blender's Power); W/m^2 (sun: its Strength), 0..1e12
+  double power;             ///< W (point, spot: Blender's Power; area: the flux it emits, which is Blender's
+                            ///< Power from 4.0 on and pi / 4 of it before); W/m^2 (sun: its Strength), 0..1e12
   double location[3];       ///< world point (point, spot, area)
   double direction[3];      ///< world direction the light shines in (sun, spot, area: its face's normal); not zero
   double spot_size_deg;     ///< spot: the cone's full angle, 1..180 (Blender's Spot Size)

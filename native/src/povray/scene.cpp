@@ -40,7 +40,8 @@ void validate_scene_params(const SceneParams& p) {
     check_range("sky_color", p.sky_color[size_t(k)], 0, 1000);
     check_range("sun_color", p.sun_color[size_t(k)], 0, 1000);
   }
-  if (!p.terrain && p.lines.empty()) invalid("a scene needs a terrain or at least one polyline set");
+  if (!p.terrain && p.lines.empty() && p.meshes.empty())
+    invalid("a scene needs a terrain, a polyline set or a mesh");
   for (const SceneLight& l : p.lights) validate_light(l);
   for (const auto& l : p.lines)
     if (l.material) validate_material(*l.material, "line material");

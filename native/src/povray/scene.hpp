@@ -39,7 +39,7 @@ enum class LightKind : int32_t { kSun = 0, kPoint = 1, kSpot = 2, kArea = 3 };
 struct SceneLight {
   LightKind kind = LightKind::kSun;
   Vec3 color{1, 1, 1};        // linear RGB
-  double power = 1;           // W (point, spot, area); W/m^2 on a surface facing it (sun)
+  double power = 1;           // W (point, spot; area: its emitted flux); W/m^2 on a surface facing it (sun)
   Vec3 location{};            // point, spot, area
   Vec3 direction{0, 0, -1};   // where it shines (sun, spot, area)
   double spot_size_deg = 45;  // spot: the cone's full angle, 1..180

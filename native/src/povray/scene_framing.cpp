@@ -1,5 +1,5 @@
 // Framing: what the camera frames (the land above the sea on a lattice of the
-// terrain, and every polyline vertex), the content box and the camera.
+// terrain, every polyline and mesh vertex), the content box and the camera.
 #include <algorithm>
 #include <cmath>
 
@@ -48,7 +48,12 @@ SceneContext frame_scene(const SceneParams& p, const std::string& pov_path, Scen
       if (l.kind == LineKind::kCoastline && p.has_sea) q[1] = c.water;
       frame.push_back(q);
     }
-  if (frame.empty()) invalid("the scene is empty: the polyline sets hold no vertices");
+  for (const SceneMesh& m : p.meshes)
+    for (size_t v = 0; v < m.mesh->vertex_count(); ++v) {
+      const auto q = m.mesh->vertex(v);
+      frame.push_back(to_pov({q[0], q[1], q[2]}));
+    }
+  if (frame.empty()) invalid("the scene is empty: its polyline sets and meshes hold no vertices");
   for (const Vec3& q : frame) grow(lo, hi, q);
   c.lo = sum.lo = lo;
   c.hi = sum.hi = hi;

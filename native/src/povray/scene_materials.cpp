@@ -78,12 +78,12 @@ Vec3 light_color(const SceneLight& l, double fade) {
   //   sun      E = S                         C = S / pi
   //   point    E = P / (4 pi d^2)            C = P / (8 pi^2 D^2)
   //   spot     the point's, in its cone
-  //   area     E = P / (4 d^2) on its axis   C = P / (8 pi D^2)
-  // (Cycles' area light of power P has radiance P / (4 A): measured, a
-  // point light's pi times on its axis; docs/povray.md.)
+  //   area     E = P / (pi d^2) on its axis  C = P / (2 pi^2 D^2)
+  // (an area light is a Lambertian emitter of flux P: its intensity on its
+  // axis is P / pi; docs/povray.md.)
   double k = l.power / kPi;
   if (l.kind == LightKind::kPoint || l.kind == LightKind::kSpot) k = l.power / (8 * kPi * kPi * fade * fade);
-  if (l.kind == LightKind::kArea) k = l.power / (8 * kPi * fade * fade);
+  if (l.kind == LightKind::kArea) k = l.power / (2 * kPi * kPi * fade * fade);
   return scaled(l.color, k);
 }
 

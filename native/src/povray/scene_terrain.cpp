@@ -1,6 +1,7 @@
 // The terrain of a scene, in one of three kinds: a tile set's height_fields
 // edge to edge, one terrain PNG (coloured by its colours PNG, or by altitude
-// and slope), or, for polylines alone, a ground to catch their shadows.
+// and slope), or, for fracterra's polylines alone, a ground to catch their
+// shadows.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -98,7 +99,8 @@ std::string ground_sdl(const SceneContext& c) {
 std::string terrain_sdl(const SceneContext& c, SceneSummary& sum) {
   if (c.p.terrain && c.p.tiles) return tiles_sdl(c, sum);
   if (c.p.terrain) return one_terrain_sdl(c, sum);
-  return ground_sdl(c);
+  // Another program's scene has the ground it shows, or none.
+  return c.p.scene_light ? std::string() : ground_sdl(c);
 }
 
 }  // namespace ft::pov::detail

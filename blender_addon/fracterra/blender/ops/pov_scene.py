@@ -20,6 +20,9 @@ DEFAULT_GREY = (0.8, 0.8, 0.8)
 # Cycles before Blender 4.0 multiplies a spot light by the cosine from its
 # axis inside the cone (measured: docs/povray.md, "Lights").
 SPOT_COS_POWER = 1.0 if bpy.app.version < (4, 0, 0) else 0.0
+# The flux an area light of Power 1 W emits: Cycles before 4.0 gives it the
+# radiance P / (4 A), so pi / 4 W; from 4.0 on, 1 W (measured: docs/povray.md).
+AREA_FLUX_PER_WATT = math.pi / 4 if bpy.app.version < (4, 0, 0) else 1.0
 
 
 def _input(node, *names):
@@ -137,6 +140,7 @@ def light_of(obj, frame, shift):
         light["spot_blend"] = data.spot_blend
         light["spot_cos_power"] = SPOT_COS_POWER
     if data.type == "AREA":
+        light["power"] *= AREA_FLUX_PER_WATT
         size_y = data.size_y if data.shape in ("RECTANGLE", "ELLIPSE") else data.size
         light["area_u"] = tuple(to_frame @ (world.to_3x3() @ Vector((data.size, 0.0, 0.0))))
         light["area_v"] = tuple(to_frame @ (world.to_3x3() @ Vector((0.0, size_y, 0.0))))

@@ -142,9 +142,10 @@ class FRACTERRA_OT_export_tiles(JobOperator, bpy.types.Operator, ExportHelper):
         message = (f"Tile set in {self._folder_path}: {summary['tiles']} tiles ({summary['written']} written) "
                    f"in {self.job_seconds:.1f} s")
         if self.import_set:
-            # In the set's own units, which are the terrain mesh's: beside the object, one width to the east.
+            # In the set's own units and row order, which are the terrain mesh's: beside the object, one
+            # width to the east.
             result = bpy.ops.import_scene.fracterra_tiles(filepath=os.path.join(self._folder_path, "manifest.json"),
-                                                          lod=self.finer_by)
+                                                          lod=self.finer_by, north_up=False)
             if "FINISHED" not in result:
                 return {"CANCELLED"}
             obj, imported = bpy.data.objects.get(self._object_name), context.view_layer.objects.active

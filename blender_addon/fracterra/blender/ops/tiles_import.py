@@ -32,11 +32,12 @@ from ..build import splat_material
 from ..common.reporting import REPORTED, SettingsError
 
 
-def _north_up(values, world_size):
+def _north_up(values, world_size, north_up=True):
     """A new core.Heightfield (caller closes) of `values` (rows from the north) with its rows
-    reversed (north up)."""
+    reversed (north up), or as they are (row 0 at -y, as the add-on's terrain objects lie)."""
     h, w = values.shape
-    flipped = core.Heightfield.from_values(w, h, array.array("f", values[::-1].astype(np.float32).tobytes()))
+    rows = values[::-1] if north_up else values
+    flipped = core.Heightfield.from_values(w, h, array.array("f", rows.astype(np.float32).tobytes()))
     flipped._lib.ft_heightfield_set_world_size(flipped.handle, world_size)
     return flipped
 
@@ -51,7 +52,7 @@ def _read_with_margin(folder, lod, x, y, w, h, ew, eh):
     return values, (x - mx0, y - my0)
 
 
-def _normals(margin, offset, w, h, step_x, step_y):
+def _normals(margin, offset, w, h, step_x, step_y, north_up=True):
     """Unit normals (w h x 3, vertex order of the north-up mesh) of the window at `offset` in
     `margin`, whose z is already scaled: central differences of the set's samples (one-sided
     only at the set's own borders); step_x, step_y: scene units per column east and per row
@@ -59,8 +60,9 @@ def _normals(margin, offset, w, h, step_x, step_y):
     g_rows, g_cols = np.gradient(margin)  # per row (southwards) and per column (eastwards)
     ox, oy = offset
     dzdx = g_cols[oy:oy + h, ox:ox + w] / step_x
-    dzdy = -g_rows[oy:oy + h, ox:ox + w] / step_y
-    n = np.dstack((-dzdx, -dzdy, np.ones_like(dzdx)))[::-1]
+    dzdy = (-1.0 if north_up else 1.0) * g_rows[oy:oy + h, ox:ox + w] / step_y
+    n = np.dstack((-dzdx, -dzdy, np.ones_like(dzdx)))
+    n = n[::-1] if north_up else n
     n /= np.linalg.norm(n, axis=2, keepdims=True)
     return n.reshape(-1, 3).astype(np.float32)
 
@@ -117,6 +119,10 @@ class FRACTERRA_OT_import_tiles(bpy.types.Operator, ImportHelper):
     size: bpy.props.FloatProperty(
         name="Size", default=0.0, min=0.0, subtype="DISTANCE",
         description="Extent of the window along x in scene units, heights scaled alike (0: the set's own units)")
+    north_up: bpy.props.BoolProperty(
+        name="North Up", default=True,
+        description="The set's first row (its north edge) towards +y, as maps are drawn; off: towards -y, as "
+                    "the add-on's terrain objects lie (Build Tile Set imports so, beside its object)")
     splat_rules: bpy.props.StringProperty(
         name="Splat Rules", default="", subtype="FILE_PATH",
         description="The colours' rules file (fracterra splat --print-rules); blank: the built-in grass, rock, "
@@ -152,13 +158,14 @@ class FRACTERRA_OT_import_tiles(bpy.types.Operator, ImportHelper):
         for a, b, pw, ph in pieces:
             margin, (ox, oy) = _read_with_margin(folder, self.lod, self.x0 + a, self.y0 + b, pw, ph, ew, eh)
             world = spacing * (pw - 1)
-            with _north_up(margin[oy:oy + ph, ox:ox + pw], world) as flipped:
+            with _north_up(margin[oy:oy + ph, ox:ox + pw], world, self.north_up) as flipped:
                 g = grid_arrays(flipped, world)
             if scale != 1.0:
                 g.co = array.array("f", (np.frombuffer(g.co, dtype=np.float32) * scale).tobytes())
-            normals = _normals(margin * scale, (ox, oy), pw, ph, spacing * scale, spacing * scale)
+            normals = _normals(margin * scale, (ox, oy), pw, ph, spacing * scale, spacing * scale, self.north_up)
             colors = core_tiles.window_colors(folder, rules, self.lod, self.x0 + a, self.y0 + b, pw, ph)
-            colors = np.ascontiguousarray(colors.reshape(ph, pw, 4)[::-1]).ravel()  # north up, as the mesh
+            colors = colors.reshape(ph, pw, 4)
+            colors = np.ascontiguousarray(colors[::-1] if self.north_up else colors).ravel()  # as the mesh
             name = f"{collection.name} r{self.y0 + b} c{self.x0 + a}" if len(pieces) > 1 else collection.name
             mesh = bpy.data.meshes.new(name)
             try:
@@ -171,8 +178,9 @@ class FRACTERRA_OT_import_tiles(bpy.types.Operator, ImportHelper):
             obj = bpy.data.objects.new(name, mesh)
             # Meshes are centred on their own middle: place each at its middle's offset from the
             # window's (north up: rows go towards -y).
+            middle_y = (h - 1) / 2 - (b + (ph - 1) / 2)
             obj.location = (scale * spacing * (a + (pw - 1) / 2 - (w - 1) / 2),
-                            scale * spacing * ((h - 1) / 2 - (b + (ph - 1) / 2)), 0.0)
+                            scale * spacing * (middle_y if self.north_up else -middle_y), 0.0)
             collection.objects.link(obj)
             last = obj
         if last is not None:
