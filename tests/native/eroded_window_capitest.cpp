@@ -179,9 +179,10 @@ std::vector<Case> cases() {
 int32_t width_of(const Case& c) { return c.terrain.method == FT_TERRAIN_FBM ? c.terrain.width : ft_terrain_side(c.terrain.levels); }
 int32_t height_of(const Case& c) { return c.terrain.method == FT_TERRAIN_FBM ? c.terrain.height : ft_terrain_side(c.terrain.levels); }
 
-// A window costs the whole while an eroded window is the whole cropped
-// (pipeline.h): sixteen windows on two cases, four (the first of the
-// sixteen: corners and edge lines) on the others, to keep the test to
+// Each eroded window runs the landscape model on its coarse grid (about a
+// third of a second at this size) before its own samples, and its maps
+// still cost the whole: sixteen windows on two cases, four (the first of
+// the sixteen: corners and edge lines) on the others, to keep the test to
 // seconds.
 TEST(ErodedWindow, SixteenOddWindowsAreTheWholesSamples) {
   for (const Case& c : cases()) {
