@@ -8,7 +8,8 @@
 #   native/bench/readme_figures.sh [BUILD_DIR] [OUT_DIR] [SECTION ...]
 #
 # SECTIONS: terrain window noise polyline povray subdiv blender erosion
-# fluvial land (default: all), and eroded_tiles (only when named). Each writes OUT_DIR/SECTION.txt.
+# fluvial land memory (default: all; memory is not in the README's table), and eroded_tiles
+# (only when named). Each writes OUT_DIR/SECTION.txt.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=$(realpath "${1:-build}")
@@ -62,6 +63,14 @@ for s in "${sections[@]}"; do
         for rep in 1 2 3; do
           run land "$build/native/fracterra" erode --in "$out/fbm_$n.npy" --preset land --threads 2 --stats
         done
+      done ;;
+    memory)
+      # Peak RSS of `terrain --erode land` (the pipeline in memory, no maps)
+      # at levels 12 and 13 (docs/measurements/eroded_windows.md).
+      for levels in 12 13; do
+        run memory /usr/bin/time -v "$build/native/fracterra" terrain --method midpoint --levels "$levels" --seed 1 \
+          --erode land --threads 2 --out "$out/memory_$levels.npy"
+        rm -f "$out/memory_$levels.npy"
       done ;;
     eroded_tiles)
       # docs/measurements/scale.md: an eroded set on Dask (2 workers) against the in-memory erosion

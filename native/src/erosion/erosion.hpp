@@ -133,13 +133,18 @@ D8Grid grid_of(const Heightfield& hf, bool periodic);
 // outside [0, 1], a grid smaller than 3 x 3, heights that are not finite or
 // beyond +-kMaxErosionHeight, a total uplift (rate x dt x steps) beyond it.
 void validate(const ErosionConfig& c, const Heightfield& hf);
+// What validate checks of the settings alone (not of the terrain).
+void validate_settings(const ErosionConfig& c);
 
 // A map resampled bilinearly to the grid (empty for a null map).
 std::vector<float> resample_map(const MapInput& m, int32_t width, int32_t height);
 
-// The landscape model on the terrain's grid `z` (in place): coarse to fine
-// (see landscape.cpp). `budget` may be null.
-void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* budget, const Progress& progress);
+// The landscape model on the terrain's grid: `in` eroded into `out` (both
+// g.size(); they may not overlap), coarse to fine (landscape.cpp,
+// landscape_window.hpp), the samples at or below `sea_level` (NaN: none)
+// kept as the sea. `budget` may be null.
+void landscape(const D8Grid& g, const float* in, float* out, const ErosionConfig& c, double sea_level,
+               MassBudget* budget, const Progress& progress);
 
 // The processes one by one, in place. `budget` may be null.
 void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& progress);

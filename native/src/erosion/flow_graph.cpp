@@ -18,20 +18,6 @@ int32_t periodic_sink(const D8Grid& g, const float* z) {
 
 namespace {
 
-// Rho8's weight of a diagonal drop: 1 / rho, rho = 2 - r uniform in (1, 2),
-// the diagonal's run in spacings. On a plane whose fall line makes the angle
-// a (0 <= a <= 45 degrees) with a row, the diagonal's drop per run
-// (cos a + sin a) / rho beats the row's cos a when rho < 1 + tan a: with
-// probability tan a, so a path's mean step (1, tan a) lies along the fall
-// line (Fairfield & Leymarie 1991).
-// Kept strictly above 1/2, so that every positive drop stays positive: for
-// r < 2^-24, 2 - r rounds to 2 and the weight to exactly 1/2, and half the
-// smallest subnormal drop (2^-149) rounds to 0. Erosion wears a plain
-// towards a base level of 0 into subnormal heights; a cell whose only lower
-// neighbours were diagonals 2^-149 below then had no positive drop, so the
-// routing called it a pit, while the fills (which compare heights) saw it
-// drain and left it alone: route_and_fill looped forever (issue 24's hang).
-inline float diagonal_weight(float r) { return std::max(1.0f / (2.0f - r), 0x1.000002p-1f); }
 
 // Steepest descent on cells x0 .. x1 - 1 of an interior row (all eight
 // neighbours at the offsets `off`): selects instead of branches, restrict
@@ -52,7 +38,7 @@ template <bool kRho8>
   int64_t pits = 0;
   for (int32_t x = x0; x < x1; ++x) {
     const int32_t i = int32_t(row + x);
-    const float w = kRho8 ? diagonal_weight(random[i]) : inv_diag;
+    const float w = kRho8 ? rho8_diagonal_weight(random[i]) : inv_diag;
     // Only the slope and the direction are selected in the loop (the
     // offset and run from tables after it): one float and one integer
     // select per direction, which GCC makes branch-free; three selects
@@ -77,7 +63,7 @@ template <bool kRho8>
 // The general path: cell (x, y) of any row; returns 1 for a new pit.
 int route_cell(const D8Grid& g, const float* z, int32_t sink, FlowGraph& graph, int32_t x, int32_t y) {
   const size_t i = size_t(y) * g.width + x;
-  const float w = graph.random.empty() ? float(1.0 / M_SQRT2) : diagonal_weight(graph.random[i]);
+  const float w = graph.random.empty() ? float(1.0 / M_SQRT2) : rho8_diagonal_weight(graph.random[i]);
   int32_t best = int32_t(i);
   int best_k = -1;
   float best_slope = 0.0f;  // drop per unit of spacing

@@ -6,6 +6,7 @@
 // time step, so a step allocates nothing.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -71,6 +72,27 @@ void draw_rho8(const D8Grid& g, int32_t origin, uint32_t step, FlowGraph& graph)
 void draw_cell_uniforms(const D8Grid& g, int32_t origin, uint32_t level, Stream stream, std::vector<float>& out);
 // Row y of what draw_cell_uniforms draws, into row[0 .. width).
 void draw_row_uniforms(const D8Grid& g, int32_t origin, uint32_t level, Stream stream, int32_t y, float* row);
+
+// Rho8's weight of a diagonal drop: 1 / rho, rho = 2 - r uniform in (1, 2),
+// the diagonal's run in spacings. On a plane whose fall line makes the angle
+// a (0 <= a <= 45 degrees) with a row, the diagonal's drop per run
+// (cos a + sin a) / rho beats the row's cos a when rho < 1 + tan a: with
+// probability tan a, so a path's mean step (1, tan a) lies along the fall
+// line (Fairfield & Leymarie 1991).
+// Kept strictly above 1/2, so that every positive drop stays positive: for
+// r < 2^-24, 2 - r rounds to 2 and the weight to exactly 1/2, and half the
+// smallest subnormal drop (2^-149) rounds to 0. Erosion wears a plain
+// towards a base level of 0 into subnormal heights; a cell whose only lower
+// neighbours were diagonals 2^-149 below then had no positive drop, so the
+// routing called it a pit, while the fills (which compare heights) saw it
+// drain and left it alone: route_and_fill looped forever (issue 24's hang).
+inline float rho8_diagonal_weight(float r) { return std::max(1.0f / (2.0f - r), 0x1.000002p-1f); }
+
+// The numbers draw_row_uniforms gives columns x0 .. x0 + count - 1 (wrapped
+// into the grid) of row y, with the origin at (ox, oy): for a region of the
+// grid (erosion/detail_run.hpp), keyed by position as the whole draws them.
+void draw_uniforms_at(const D8Grid& g, int64_t ox, int64_t oy, uint32_t level, Stream stream, int64_t y, int64_t x0,
+                      int32_t count, float* out);
 
 // Receivers by steepest descent (ties: the first direction in kDx order),
 // diagonal drops over a run of 2 - r spacings when graph.random is drawn

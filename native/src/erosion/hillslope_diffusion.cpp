@@ -136,7 +136,11 @@ void diffuse(const D8Grid& g, T* z, double r) {
 
 // r times the smallest non-zero eigenvalue of a cyclic line's Laplacian,
 // 2 - 2 cos(2 pi / len): how far its slowest mode is damped (by 1 / (1 + it)).
-double slowest_damping(int32_t len, double r) { return r * (2.0 - 2.0 * std::cos(2.0 * M_PI / len)); }
+// r times the smallest non-zero eigenvalue of a line's Laplacian: 2 - 2 cos(2 pi / len)
+// on a cyclic line, 2 - 2 cos(pi / len) on an open one (no flux past its ends).
+double slowest_damping(int32_t len, double r, bool cyclic) {
+  return r * (2.0 - 2.0 * std::cos((cyclic ? 2.0 : 1.0) * M_PI / len));
+}
 
 // Solves `count` lines side by side (element j of line c at u[j * count + c],
 // e likewise), in place, in double:
@@ -250,22 +254,29 @@ void hillslope_diffusion(const D8Grid& g, float* z, double diffusivity_dt, const
     diffuse_weighted(g, z, r, weight);
     return;
   }
-  if (!g.periodic) {
+  // Where r times a line's slowest mode exceeds this, every mode but its
+  // mean is damped below float's resolution, and the factors' last pivot
+  // (about the line's length, the difference of terms of order r) is lost
+  // to rounding: an open line of 17 at r = 1e20 got a pivot of 0 and turned
+  // into NaN (the erosion fuzzer). Such a line becomes its mean.
+  constexpr double kBeyondFloat = 1e8;
+  const bool flat_x = slowest_damping(g.width, r, g.periodic) > kBeyondFloat;
+  const bool flat_y = slowest_damping(g.height, r, g.periodic) > kBeyondFloat;
+  if (!g.periodic && !flat_x && !flat_y) {
     diffuse(g, z, r);
     return;
   }
   const size_t n = g.size();
   std::vector<double> zd(z, z + n);
   const size_t w = size_t(g.width);
-  constexpr double kBeyondFloat = 1e8;
-  if (slowest_damping(g.width, r) > kBeyondFloat && slowest_damping(g.height, r) > kBeyondFloat) {
-    // Both sweeps flatten their lines: the whole torus becomes its mean.
+  if (flat_x && flat_y) {
+    // Both sweeps flatten their lines: the whole grid becomes its mean.
     double mean = 0;
     for (double v : zd) mean += v;
     std::fill(z, z + n, float(mean / double(n)));
     return;
   }
-  if (slowest_damping(g.width, r) > kBeyondFloat) {
+  if (flat_x) {
     for (int32_t y = 0; y < g.height; ++y) {  // rows become their means, then the columns' solve
       double mean = 0;
       for (size_t x = 0; x < w; ++x) mean += zd[y * w + x];
@@ -273,13 +284,13 @@ void hillslope_diffusion(const D8Grid& g, float* z, double diffusivity_dt, const
     }
     std::vector<double> col(g.height);
     for (int32_t y = 0; y < g.height; ++y) col[y] = zd[y * w];
-    const LineSolver<double> along_y(g.height, r, false);
+    const LineSolver<double> along_y(g.height, r, g.periodic);
     along_y.solve(col.data());
     for (size_t i = 0; i < n; ++i) z[i] = float(col[i / w]);
     return;
   }
-  if (slowest_damping(g.height, r) > kBeyondFloat) {
-    const LineSolver<double> along_x(g.width, r, false);
+  if (flat_y) {
+    const LineSolver<double> along_x(g.width, r, g.periodic);
     std::vector<double> mean(w, 0.0);
     for (int32_t y = 0; y < g.height; ++y) along_x.solve(zd.data() + y * w);
     for (size_t i = 0; i < n; ++i) mean[i % w] += zd[i];

@@ -45,17 +45,12 @@
 #include "erosion/basin_graph.hpp"
 #include "erosion/flow_graph.hpp"
 #include "erosion/lake_fill.hpp"
+#include "erosion/landscape_parts.hpp"
+#include "erosion/model_constants.hpp"
 
 namespace ft::erosion {
 namespace {
 
-// A deposit stays this slope (rise over run) below the cell its sediment
-// came from, so a fan slopes away from its apex.
-constexpr double kFanSlope = 0.01;
-// An edge cell that gathers the water of this many cells or more is where
-// water leaves the map (an outlet). At 8 cells, edge cells that became
-// outlets later in the run had risen first: outlets rose by up to 5 cm.
-constexpr double kOutletCells = 2.0;
 // Scree: the excess of a slope over the talus angle sheds with this e-folding
 // time (years), so a run wears cliffs back in proportion to its length
 // instead of cutting every steep slope at once.
@@ -67,7 +62,9 @@ constexpr double kScreeYears = 1e5;
 // 0.995 with the run at 4 and its mean differed by 0.8 %; at 16 cells,
 // 0.988 and 7 %.
 constexpr double kCellsPerStep = 8.0;
-constexpr int32_t kMinSteps = 2, kMaxSteps = 32, kMaxDetailSteps = 3;
+constexpr int32_t kMinSteps = 2, kMaxSteps = kMaxModelSteps;
+
+}  // namespace
 
 int32_t steps_for(const D8Grid& g, const ErosionConfig& c, double years, int32_t most) {
   const double map_area = double(g.width - 1) * (g.height - 1) * g.spacing * g.spacing;
@@ -77,7 +74,7 @@ int32_t steps_for(const D8Grid& g, const ErosionConfig& c, double years, int32_t
 }
 
 // Bilinear sample of a w x h grid at fractional (fx, fy), clamped or wrapped.
-float sample(const float* v, int32_t w, int32_t h, double fx, double fy, bool wrap) {
+float bilinear(const float* v, int32_t w, int32_t h, double fx, double fy, bool wrap) {
   auto split = [wrap](double f, int32_t n, int32_t& i0, int32_t& i1, double& t) {
     if (wrap) {
       f -= std::floor(f / n) * n;
@@ -108,7 +105,7 @@ std::vector<float> resample(const float* from, const D8Grid& a, const D8Grid& b)
 #pragma omp parallel for schedule(static)
   for (int32_t y = 0; y < b.height; ++y)
     for (int32_t x = 0; x < b.width; ++x)
-      out[size_t(y) * b.width + x] = sample(from, a.width, a.height, x * sx, y * sy, a.periodic);
+      out[size_t(y) * b.width + x] = bilinear(from, a.width, a.height, x * sx, y * sy, a.periodic);
   return out;
 }
 
@@ -201,6 +198,8 @@ float bury(float z, float seen, double sd, double d, float erodible) {
   }
   return std::max(z, float(seen + sd * l));
 }
+
+namespace {
 
 struct Run {
   const D8Grid& g;
@@ -403,102 +402,9 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
 
 }  // namespace
 
-std::vector<float> resample_map(const MapInput& m, int32_t width, int32_t height) {
-  if (!m.values) return {};
-  D8Grid from, to;
-  from.width = m.width, from.height = m.height;
-  to.width = width, to.height = height;
-  std::vector<float> out = resample(m.values, from, to);
-  for (float& v : out) v = std::clamp(v, 0.0f, 1.0f);
-  return out;
-}
-
-void landscape(const D8Grid& g, float* z, const ErosionConfig& c, MassBudget* budget, const Progress& progress) {
-  const double years = c.model.strength * c.model.duration;
-  if (!(years > 0)) return;
-  const size_t n = g.size();
-  const float top = *std::max_element(z, z + n);
-  const int32_t edge = g.periodic ? 0 : 1;
-  const int32_t side = std::max(g.width, g.height) - edge;
-  const std::vector<float> mask = resample_map(c.erosion_mask, g.width, g.height);
-  const std::vector<float> rain = resample_map(c.rain_map, g.width, g.height);
-  const float* mask_or_null = mask.empty() ? nullptr : mask.data();
-  const float* rain_or_null = rain.empty() ? nullptr : rain.data();
-  if (side <= kModelCells) {
-    evolve({g, c, mask_or_null, rain_or_null, budget, true, nullptr}, z, years, steps_for(g, c, years, kMaxSteps), 0, progress);
-    return;
-  }
-  // The model's grid: kModelCells across the longer side, the same extent.
-  const double factor = double(side) / kModelCells;
-  D8Grid coarse = g;
-  coarse.width = std::max(3, int32_t(std::lround((g.width - edge) / factor)) + edge);
-  coarse.height = std::max(3, int32_t(std::lround((g.height - edge) / factor)) + edge);
-  coarse.spacing = g.spacing * double(g.width - edge) / (coarse.width - edge);
-  const std::vector<float> smooth = box_mean(z, g, int32_t(factor / 2));
-  std::vector<float> before = resample(smooth.data(), g, coarse), after = before;
-  // The model's sea: its cells whose nearest terrain sample is sea (their
-  // averaged heights mix in the coast, so the level would miss them).
-  std::vector<uint8_t> coarse_sea;
-  if (g.sea) {
-    coarse_sea.resize(coarse.size());
-    const double sx = double(g.width - edge) / (coarse.width - edge), sy = double(g.height - edge) / (coarse.height - edge);
-    for (int32_t y = 0; y < coarse.height; ++y)
-      for (int32_t x = 0; x < coarse.width; ++x) {
-        const int32_t fx = std::min(int32_t(std::lround(x * sx)), g.width - 1);
-        const int32_t fy = std::min(int32_t(std::lround(y * sy)), g.height - 1);
-        coarse_sea[size_t(y) * coarse.width + x] = g.sea[size_t(fy) * g.width + fx];
-      }
-    coarse.sea = coarse_sea.data();
-  }
-  const std::vector<float> coarse_mask = resample_map(c.erosion_mask, coarse.width, coarse.height);
-  const std::vector<float> coarse_rain = resample_map(c.rain_map, coarse.width, coarse.height);
-  // Shares of the bar: the model's run and the detail run cost about alike.
-  const ProgressPart model_part(progress, 0.0, 0.5), detail_part(progress, 0.5, 0.5);
-  std::vector<float> crept(coarse_mask.empty() ? 0 : coarse.size(), 0.0f);
-  evolve({coarse, c, coarse_mask.empty() ? nullptr : coarse_mask.data(),
-          coarse_rain.empty() ? nullptr : coarse_rain.data(), budget, true, nullptr, crept.empty() ? nullptr : crept.data()},
-         after.data(), years, steps_for(coarse, c, years, kMaxSteps), 0, model_part.progress());
-  for (size_t i = 0; i < after.size(); ++i) after[i] -= before[i];
-  const std::vector<float> change = resample(after.data(), coarse, g);
-  const std::vector<float> crept_here = crept.empty() ? std::vector<float>() : resample(crept.data(), coarse, g);
-  // What the model saw, here: the texture is what it did not (see bury).
-  const std::vector<float> seen = resample(before.data(), coarse, g);
-  std::vector<float> spread(n);
-#pragma omp parallel for schedule(static)
-  for (int64_t i = 0; i < int64_t(n); ++i) spread[i] = (z[i] - seen[i]) * (z[i] - seen[i]);
-  spread = box_mean(spread.data(), g, int32_t(factor / 2));
-  // The resampled change blurs across the mask's edge (the model samples the
-  // mask coarser): creep and what lowers are scaled by the terrain's own
-  // mask, so where it is 0 the land only rises, where sediment was laid
-  // (a creeping model node, blurred onto the masked-off column beside it,
-  // raised it by up to 0.12). Where it rises it buries the texture; it
-  // never lifts a cell above the input's highest, and leaves the sea as it
-  // is (it blurs across the coast too).
-#pragma omp parallel for schedule(static)
-  for (int64_t i = 0; i < int64_t(n); ++i) {
-    if (g.in_sea(size_t(i))) continue;
-    float d = change[i];
-    if (mask_or_null) {
-      const float rest = d - crept_here[i];  // detachment, scree and deposits
-      d = mask_or_null[i] * crept_here[i] + (rest < 0 ? mask_or_null[i] * rest : rest);
-    }
-    z[i] = std::min(top, d > 0 ? bury(z[i], seen[i], std::sqrt(spread[i]), d, mask_or_null ? mask_or_null[i] : 1.0f) : z[i] + d);
-  }
-  const double detail_years = years * g.spacing / coarse.spacing;
-  // No talus here: a fractal's slopes steepen as its cell shrinks, so the
-  // talus angle at this cell size would wear the whole landform down (the
-  // model's run has set the slopes at its own cell size).
-  // Creep acts on what the detail run does, not on the detail itself: the
-  // detail below the model's cell stands for the rock's texture, which the
-  // model does not resolve. Creep on z at the preset's D over the run
-  // (sqrt(D t): 4 cells at 513^2, 5 at 2049^2) wiped it out: issue 24's
-  // demo lost its finest detail (its energy on hillslopes fell to 0.4-2 %
-  // of the input's), and the smoothed interior left the edge rows (held
-  // fixed) twice as rough as it. The channels the run cuts are still
-  // rounded by creep at its full rate.
-  const std::vector<float> texture(z, z + n);
-  evolve({g, c, mask_or_null, rain_or_null, nullptr, false, texture.data()}, z, detail_years,
-         steps_for(g, c, detail_years, kMaxDetailSteps), 1, detail_part.progress());
+void model_run(const D8Grid& g, const ErosionConfig& c, const float* mask, const float* rain, MassBudget* budget,
+               float* crept, float* z, double years, int32_t steps, const Progress& progress) {
+  evolve({g, c, mask, rain, budget, true, nullptr, crept}, z, years, steps, 0, progress);
 }
 
 }  // namespace ft::erosion

@@ -23,6 +23,19 @@ void draw_row_uniforms(const D8Grid& g, int32_t origin, uint32_t level, Stream s
   if (ox > 0) uniform_fill(kRho8Seed, c, uint64_t(g.width - ox), size_t(ox), row);
 }
 
+void draw_uniforms_at(const D8Grid& g, int64_t ox, int64_t oy, uint32_t level, Stream stream, int64_t y, int64_t x0,
+                      int32_t count, float* out) {
+  const int64_t ry = ((y - oy) % g.height + g.height) % g.height;
+  const Counter c{uint32_t(ry), level, stream};
+  int64_t rx = ((x0 - ox) % g.width + g.width) % g.width;
+  for (int32_t done = 0; done < count;) {  // in runs up to the grid's edge
+    const int32_t run = int32_t(std::min<int64_t>(count - done, g.width - rx));
+    uniform_fill(kRho8Seed, c, uint64_t(rx), size_t(run), out + done);
+    done += run;
+    rx = 0;
+  }
+}
+
 void draw_cell_uniforms(const D8Grid& g, int32_t origin, uint32_t level, Stream stream, std::vector<float>& out) {
   out.resize(g.size());
 #pragma omp parallel for schedule(static)

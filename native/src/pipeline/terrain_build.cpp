@@ -1,10 +1,13 @@
 #include "pipeline/terrain_build.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstring>
 
 #include "core/error.hpp"
 #include "erosion/erosion_params.hpp"
+#include "erosion/landscape_window.hpp"
 #include "erosion/presets.hpp"
 #include "hydrology/hydrology_params.hpp"
 #include "pipeline/build_params.hpp"
@@ -177,6 +180,46 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
 
 namespace {
 
+// The generated terrain (with its landform) as erosion's source, by
+// generation windows: the whole's samples, on the grid erosion takes (a
+// dyadic torus without its repeated last row and column).
+class GeneratedSource : public erosion::HeightSource {
+ public:
+  GeneratedSource(const ft_terrain_params& t, const erosion::D8Grid& g) : t_(t), g_(g) {
+    t_.progress = nullptr, t_.progress_user = nullptr;
+  }
+  void read(int64_t x0, int64_t y0, int32_t w, int32_t h, float* out) const override {
+    // In pieces that do not cross a periodic grid's edge.
+    for (int32_t j = 0; j < h;) {
+      const int64_t y = wrapped(y0 + j, g_.height);
+      const int32_t rows = int32_t(std::min<int64_t>(h - j, g_.height - y));
+      for (int32_t i = 0; i < w;) {
+        const int64_t x = wrapped(x0 + i, g_.width);
+        const int32_t cols = int32_t(std::min<int64_t>(w - i, g_.width - x));
+        const Heightfield piece = terrain::generate_terrain_window(t_, 0, x, y, cols, rows);
+        for (int32_t r = 0; r < rows; ++r)
+          std::memcpy(out + size_t(j + r) * w + i, piece.data() + size_t(r) * cols, sizeof(float) * cols);
+        i += cols;
+      }
+      j += rows;
+    }
+  }
+  void read_subgrid(int32_t step, int32_t w, int32_t h, float* out) const override {
+    // A level of detail is every 2^lod-th sample of the whole (for midpoint,
+    // exactly its coarser stage: it costs that stage).
+    const int lod = std::countr_zero(uint32_t(step));
+    if (!terrain::terrain_method(t_.method).lod || (int32_t(1) << lod) != step)
+      return erosion::HeightSource::read_subgrid(step, w, h, out);
+    const Heightfield sub = terrain::generate_terrain_window(t_, lod, 0, 0, w, h);
+    std::memcpy(out, sub.data(), sizeof(float) * size_t(w) * h);
+  }
+
+ private:
+  int64_t wrapped(int64_t v, int64_t n) const { return g_.periodic ? ((v % n) + n) % n : v; }
+  ft_terrain_params t_;
+  erosion::D8Grid g_;
+};
+
 // Samples [x0, x0 + w) x [y0, y0 + h) of `hf`, with the window's share of its world size.
 Heightfield crop(const Heightfield& hf, int64_t x0, int64_t y0, int32_t w, int32_t h) {
   Heightfield out(w, h);
@@ -204,20 +247,55 @@ Heightfield build_terrain_window(const ft_build_params& given, int64_t x0, int64
     invalid("the window [" + std::to_string(x0) + ", " + std::to_string(x0 + w) + ") x [" + std::to_string(y0) +
             ", " + std::to_string(y0 + h) + ") lies outside the terrain's " + std::to_string(ew) + " x " +
             std::to_string(eh) + " samples");
-  if (!erodes(p) && !maps) {
+  const bool erode = erodes(p);
+  ft_erosion_params e;
+  if (erode) {
+    // The presets are in world units and years: nothing of the terrain to fit.
+    e = erosion_settings(p.erosion, erosion_preset_name(p.erosion_preset), Heightfield());
+    e.periodic = terrain::tiles_periodically(t);
+    e.threads = p.threads;
+    if (t.sea == FT_SEA_HEIGHT) e.sea = FT_WATER_SEA_HEIGHT, e.sea_level = t.sea_level;
+  }
+  const erosion::ErosionConfig c = erode ? erosion::from_c(e) : erosion::ErosionConfig();
+  if (maps || (erode && !erosion::erodes_by_windows(c))) {
+    // The maps' drainage area and the expert passes read the whole grid:
+    // the whole, cropped (exact by construction).
+    erosion::ErosionMaps whole_maps;
+    const Heightfield whole = build_terrain(p, maps ? &whole_maps : nullptr);
+    if (maps)
+      for (auto [from, to] : {std::pair{&whole_maps.drainage_area, &maps->drainage_area},
+                              std::pair{&whole_maps.slope, &maps->slope}, std::pair{&whole_maps.curvature, &maps->curvature},
+                              std::pair{&whole_maps.water_depth, &maps->water_depth},
+                              std::pair{&whole_maps.eroded, &maps->eroded}, std::pair{&whole_maps.deposited, &maps->deposited}})
+        *to = crop(*from, x0, y0, w, h);
+    return crop(whole, x0, y0, w, h);
+  }
+  if (!erode) {
     // Generation alone: the terrain's own windows, in memory of the window.
     t.progress = p.progress, t.progress_user = p.progress_user;
     return terrain::generate_terrain_window(t, 0, x0, y0, w, h);
   }
-  // The whole, cropped: exact by construction (memory of the whole).
-  erosion::ErosionMaps whole_maps;
-  const Heightfield whole = build_terrain(p, maps ? &whole_maps : nullptr);
-  if (maps)
-    for (auto [from, to] : {std::pair{&whole_maps.drainage_area, &maps->drainage_area},
-                            std::pair{&whole_maps.slope, &maps->slope}, std::pair{&whole_maps.curvature, &maps->curvature},
-                            std::pair{&whole_maps.water_depth, &maps->water_depth},
-                            std::pair{&whole_maps.eroded, &maps->eroded}, std::pair{&whole_maps.deposited, &maps->deposited}})
-      *to = crop(*from, x0, y0, w, h);
-  return crop(whole, x0, y0, w, h);
+  // The landscape model by windows, on the grid erode_terrain erodes: a
+  // dyadic torus without its repeated last row and column.
+  erosion::validate_settings(c);
+  const int overlap = c.periodic ? terrain::terrain_method(t.method).period_overlap : 0;
+  erosion::D8Grid g;
+  g.width = int32_t(ew) - overlap, g.height = int32_t(eh) - overlap;
+  g.periodic = c.periodic;
+  g.spacing = t.world_size / double(ew - 1);
+  const GeneratedSource src(t, g);
+  const erosion::ThreadScope threads(p.threads);
+  const Progress progress(p.progress, p.progress_user);
+  const ProgressPart model_part(progress, 0.0, 0.4), window_part(progress, 0.4, 0.6);
+  const double sea_level = c.sea == erosion::Sea::kHeight ? c.sea_level : NAN;
+  const erosion::LandscapeModel m = erosion::landscape_model(g, src, c, sea_level, nullptr, model_part.progress());
+  erosion::ErosionConfig wc = c;
+  wc.progress = window_part.progress();
+  Heightfield out(w, h);
+  std::vector<float> before(size_t(w) * h);
+  erosion::erode_window(m, src, wc, x0, y0, w, h, before.data(), out.data());
+  out.set_world_size(t.world_size * double(w - 1) / double(ew - 1));
+  progress.report(1.0);
+  return out;
 }
 }  // namespace ft::pipeline

@@ -1,0 +1,449 @@
+// The detail run on a region (see detail_run.hpp).
+#include "erosion/detail_run.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/rng.hpp"
+#include "erosion/flow_graph.hpp"
+#include "erosion/model_constants.hpp"
+
+namespace ft::erosion {
+namespace {
+
+// How many receivers down water and sediment are followed within a step,
+// and how many the implicit incision solves along. (A 4097^2 terrain's
+// model cell is 16 samples across: the detail run resolves what lies below
+// it, the model what lies above.)
+constexpr int32_t kHops = 12;
+constexpr int32_t kCutHops = 6;
+// Passes that lift the small pits of the surface water routes over.
+constexpr int32_t kPitPasses = 3;
+constexpr uint8_t kSelf = 8;  // a receiver of its own: a base level or a pit
+
+// Creep's kernel along one axis: `count` passes, each either a box of
+// 2 radius + 1 samples or, where the step's variance is small, the
+// three-tap [a, 1 - 2a, a].
+struct CreepKernel {
+  int32_t count = 0;
+  int32_t radius[4] = {};
+  float tap = 0;  // a of the three-tap passes (0: boxes)
+  int32_t reach() const {
+    int32_t r = 0;
+    for (int32_t k = 0; k < count; ++k) r += tap > 0 ? 1 : radius[k];
+    return r;
+  }
+};
+
+// The passes whose variance is the implicit step's, 2 r (r = D dt /
+// spacing^2, samples^2): up to four three-taps below a variance of 2, else
+// three boxes of odd widths w_l and w_l + 2 (Kovesi 2010, "Fast almost-
+// Gaussian filtering"), so the run creeps as far as the model's would.
+CreepKernel creep_kernel(double r) {
+  CreepKernel k;
+  const double variance = 2 * r;
+  if (!(variance > 1e-9)) return k;
+  if (variance <= 2) {
+    k.count = int32_t(std::ceil(variance / 0.5));
+    k.tap = float(variance / (2 * k.count));
+    for (int32_t p = 0; p < k.count; ++p) k.radius[p] = 1;
+    return k;
+  }
+  const int32_t n = 3;
+  int32_t wl = int32_t(std::floor(std::sqrt(12 * variance / n + 1)));
+  if (wl % 2 == 0) --wl;
+  const int32_t m = int32_t(std::lround((12 * variance - n * wl * wl - 4 * n * wl - 3 * n) / (-4.0 * wl - 4)));
+  k.count = n;
+  for (int32_t p = 0; p < n; ++p) k.radius[p] = ((p < m ? wl : wl + 2) - 1) / 2;
+  return k;
+}
+
+double creep_r(const D8Grid& g, const ErosionConfig& c, double dt) {
+  return c.fluvial.diffusion * dt / (g.spacing * g.spacing);
+}
+
+// One detail run's state on its region.
+class DetailRun {
+ public:
+  DetailRun(const Region& r, const ErosionConfig& c, double years, int32_t steps, const DetailInputs& in, float* z)
+      : r_(r), c_(c), in_(in), z_(z), w_(r.width), h_(r.height), n_(r.size()), steps_(steps),
+        cell_(r.whole.spacing * r.whole.spacing), dt_(years / steps), k_dt_(c.fluvial.erodibility * dt_),
+        m_(c.fluvial.area_exponent), G_(c.model.deposition), own_rain_(c.model.rainfall * cell_),
+        kernel_(creep_kernel(creep_r(r.whole, c, dt_))), texture_(z, z + n_), start_(n_), random_(n_), dir_(n_),
+        q_(n_), front_(n_), next_(n_), cut_(n_), room_(n_), laid_(n_), donors_(n_) {
+    for (int k = 0; k < 8; ++k) off_[k] = kDy[k] * w_ + kDx[k];
+  }
+
+  void step(int32_t s) {
+    std::copy(z_, z_ + n_, start_.begin());
+    draw(s);
+    route();
+    find_donors();
+    discharge();
+    incise();
+    deposit();
+    if (kernel_.count > 0) creep();
+    if (in_.sea) {
+#pragma omp parallel for schedule(static)
+      for (int64_t i = 0; i < int64_t(n_); ++i)
+        if (in_.sea[i]) z_[i] = start_[i];
+    }
+    keep_outlets();
+  }
+
+ private:
+  bool inside(int32_t x, int32_t y) const { return x >= 0 && y >= 0 && x < w_ && y < h_; }
+  bool interior(int32_t x, int32_t y) const { return x > 0 && y > 0 && x < w_ - 1 && y < h_ - 1; }
+  bool base(int32_t x, int32_t y, size_t i) const { return r_.on_whole_edge(x, y) || (in_.sea && in_.sea[i]); }
+  float run_of(uint8_t d) const { return float((d & 1) ? r_.whole.spacing * M_SQRT2 : r_.whole.spacing); }
+  double rain(size_t i) const { return own_rain_ * (in_.rain ? double(in_.rain[i]) : 1.0); }
+
+  // Rho8's numbers of this step, keyed by the samples' positions in the whole.
+  void draw(int32_t s) {
+    const uint32_t level = 1 * uint32_t(kMaxModelSteps) + uint32_t(s);
+#pragma omp parallel for schedule(static)
+    for (int32_t y = 0; y < h_; ++y)
+      draw_uniforms_at(r_.whole, in_.origin_x, in_.origin_y, level, Stream::kFluvialRouting, r_.y0 + y, r_.x0, w_,
+                       random_.data() + size_t(y) * w_);
+  }
+
+  // The surface water routes over: z with its small pits raised, each pass
+  // lifting every cell with no lower neighbour a float step above its
+  // lowest (a pit of the rock's texture then passes its water on; what a
+  // few passes do not drain keeps it). Into `out`, using `scratch`.
+  void routing_surface(std::vector<float>& out, std::vector<float>& scratch) {
+    std::copy(z_, z_ + n_, out.begin());
+    for (int32_t pass = 0; pass < kPitPasses; ++pass) {
+      const std::vector<float>& from = out;
+#pragma omp parallel for schedule(static)
+      for (int32_t y = 0; y < h_; ++y)
+        for (int32_t x = 0; x < w_; ++x) {
+          const size_t i = size_t(y) * w_ + x;
+          float lowest = std::numeric_limits<float>::infinity();
+          if (!base(x, y, i)) {
+            const bool all = interior(x, y);
+            for (int k = 0; k < 8; ++k)
+              if (all || inside(x + kDx[k], y + kDy[k])) lowest = std::min(lowest, from[i + off_[k]]);
+          }
+          scratch[i] = from[i] <= lowest && !std::isinf(lowest) ? std::nextafter(lowest, INFINITY) : from[i];
+        }
+      out.swap(scratch);
+    }
+  }
+
+  // Steepest descent on the routing surface (ties: the first direction),
+  // diagonals over 2 - r.
+  void route() {
+    std::vector<float>& zr = cut_;  // free until incise()
+    routing_surface(zr, next_);
+#pragma omp parallel for schedule(static)
+    for (int32_t y = 0; y < h_; ++y)
+      for (int32_t x = 0; x < w_; ++x) {
+        const size_t i = size_t(y) * w_ + x;
+        uint8_t best_k = kSelf;
+        if (!base(x, y, i)) {
+          const float wd = rho8_diagonal_weight(random_[i]);
+          const bool all = interior(x, y);
+          float best = 0.0f;
+          for (int k = 0; k < 8; ++k) {
+            if (!all && !inside(x + kDx[k], y + kDy[k])) continue;
+            const float drop = (zr[i] - zr[i + off_[k]]) * ((k & 1) ? wd : 1.0f);
+            if (drop > best) best = drop, best_k = uint8_t(k);
+          }
+        }
+        dir_[i] = best_k;
+      }
+  }
+
+  // Each cell's donors, one bit per direction: the neighbours that drain to it.
+  void find_donors() {
+#pragma omp parallel for schedule(static)
+    for (int32_t y = 0; y < h_; ++y)
+      for (int32_t x = 0; x < w_; ++x) {
+        const size_t i = size_t(y) * w_ + x;
+        const bool all = interior(x, y);
+        uint8_t bits = 0;
+        for (int k = 0; k < 8; ++k)
+          if ((all || inside(x + kDx[k], y + kDy[k])) && dir_[i + off_[k]] == ((k + 4) & 7)) bits |= uint8_t(1u << k);
+        donors_[i] = bits;
+      }
+  }
+
+  // What the donors of cell i send (front_), in direction order.
+  float pull(size_t i) const {
+    float in = 0.0f;
+    for (unsigned bits = donors_[i]; bits; bits &= bits - 1) in += front_[i + off_[std::countr_zero(bits)]];
+    return in;
+  }
+
+  // kHops waves down the receivers from front_ (what each cell sends at
+  // the first): each hop every cell takes what its donors send, and
+  // absorb(i, in) returns what it sends on (nothing from a cell that is its
+  // own receiver). absorb(i, 0) must change nothing and return 0.
+  template <class Absorb>
+  void wave(Absorb absorb) {
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n_); ++i)
+      if (dir_[i] == kSelf) front_[i] = 0.0f;
+    for (int32_t hop = 0; hop < kHops; ++hop) {
+      int64_t moving = 0;
+#pragma omp parallel for schedule(static) reduction(+ : moving)
+      for (int64_t i = 0; i < int64_t(n_); ++i) {
+        float out = 0.0f;
+        if (donors_[i]) {
+          const float in = pull(size_t(i));
+          if (in != 0.0f) out = absorb(size_t(i), in);
+        }
+        next_[i] = dir_[i] == kSelf ? 0.0f : out;
+        moving += next_[i] != 0.0f;
+      }
+      front_.swap(next_);
+      if (moving == 0) break;
+    }
+  }
+
+  // Discharge: the rain of every cell whose way down reaches this one within kHops.
+  void discharge() {
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n_); ++i) q_[i] = front_[i] = float(rain(size_t(i)));
+    wave([this](size_t i, float in) {
+      q_[i] += in;
+      return in;
+    });
+  }
+
+  // Stream power, implicit along the next kCutHops receivers: each sweep
+  // solves every cell against its receiver's last height.
+  void incise() {
+    std::vector<float>& f = room_;  // the factors, until deposit() needs the room
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n_); ++i) {
+      const uint8_t d = dir_[i];
+      const double w = in_.mask ? double(in_.mask[i]) : 1.0;
+      f[i] = d == kSelf ? 0.0f
+                        : float(w * k_dt_ * (m_ == 0.5 ? std::sqrt(double(q_[i])) : std::pow(double(q_[i]), m_)) /
+                                run_of(d));
+      cut_[i] = start_[i];
+    }
+    for (int32_t sweep = 0; sweep < kCutHops; ++sweep) {
+      const float* last = sweep % 2 == 0 ? cut_.data() : z_;
+      float* out = sweep % 2 == 0 ? z_ : cut_.data();
+#pragma omp parallel for schedule(static)
+      for (int64_t i = 0; i < int64_t(n_); ++i) {
+        const uint8_t d = dir_[i];
+        const float zi = start_[i];
+        if (d == kSelf) {
+          out[i] = zi;
+          continue;
+        }
+        const float b = last[i + off_[d]];
+        out[i] = zi > b ? float((double(zi) + double(f[i]) * b) / (1.0 + double(f[i]))) : zi;
+      }
+    }
+    if (kCutHops % 2 == 0) std::copy(cut_.begin(), cut_.end(), z_);
+  }
+
+  // What was detached flows down at most kHops receivers, each cell laying
+  // its share up to the room below the cells it came from.
+  void deposit() {
+    const float inf = std::numeric_limits<float>::infinity();
+#pragma omp parallel for schedule(static)
+    for (int32_t y = 0; y < h_; ++y)
+      for (int32_t x = 0; x < w_; ++x) {
+        const size_t i = size_t(y) * w_ + x;
+        const bool all = interior(x, y);
+        float cap = inf, lowest = inf;
+        for (int k = 0; k < 8; ++k) {
+          if (!all && !inside(x + kDx[k], y + kDy[k])) continue;
+          const size_t j = i + off_[k];
+          lowest = std::min(lowest, z_[j]);
+          if (donors_[i] >> k & 1) cap = std::min(cap, float(z_[j] - kFanSlope * run_of(dir_[j])));
+        }
+        float top = std::isinf(cap) ? start_[i] : cap;
+        const bool pit = dir_[i] == kSelf && !base(x, y, i);
+        if (pit) top = std::min(top, lowest);  // a pit fills to its spill
+        room_[i] = float(std::max(0.0, double(top) - z_[i]) * cell_);
+        laid_[i] = 0.0f;
+        front_[i] = float(std::max(0.0, double(start_[i]) - z_[i]) * cell_);
+        cut_[i] = dir_[i] == kSelf ? (pit ? float(std::min(1.0, G_)) : 0.0f)
+                                   : float(std::min(1.0, G_ * rain(i) / std::max(double(q_[i]), 1e-30)));
+      }
+    // The first hop: each cell's own loss, where it was detached.
+    const std::vector<float>& share = cut_;
+    auto lay = [this, &share](size_t i, float in) {
+      const float laid = std::min(share[i] * in, room_[i]);
+      room_[i] -= laid;
+      laid_[i] += laid;
+      return in - laid;
+    };
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n_); ++i) front_[i] = lay(size_t(i), front_[i]);
+    wave(lay);
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n_); ++i) z_[i] = float(z_[i] + double(laid_[i]) / cell_);
+  }
+
+  // Creep of what the run did, a deposit as it lies (landscape.cpp's rule:
+  // sediment has no rock texture), and a sample beside a deposit never
+  // lifted above where plain creep puts it.
+  void creep() {
+    std::vector<float>& diffused = front_;
+    std::vector<float>& plain = next_;
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n_); ++i) {
+      diffused[i] = z_[i] - texture_[i];
+      plain[i] = z_[i];
+    }
+    blur(diffused);
+    blur(plain);
+    auto beside_deposit = [&](int32_t x, int32_t y, size_t i) {
+      for (int k = 0; k < 8; k += 2)
+        if (inside(x + kDx[k], y + kDy[k]) && z_[i + off_[k]] > texture_[i + off_[k]]) return true;
+      return false;
+    };
+    std::vector<float>& next = cut_;
+#pragma omp parallel for schedule(static)
+    for (int32_t y = 0; y < h_; ++y)
+      for (int32_t x = 0; x < w_; ++x) {
+        const size_t i = size_t(y) * w_ + x;
+        float v = plain[i];
+        if (!(z_[i] > texture_[i])) {
+          v = diffused[i] + texture_[i];
+          if (beside_deposit(x, y, i)) v = std::min(v, std::max(z_[i], plain[i]));
+        }
+        next[i] = v;
+      }
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n_); ++i) z_[i] += next[i] - z_[i];
+  }
+
+  // The kernel along rows, then along columns; under a mask the change is
+  // scaled by it (where it is 0, creep changes nothing).
+  void blur(std::vector<float>& f) {
+    std::vector<float>& original = laid_;  // free after deposit()
+    if (in_.mask) std::copy(f.begin(), f.end(), original.begin());
+    for (int32_t p = 0; p < kernel_.count; ++p) pass_along_rows(f, kernel_.radius[p]);
+    for (int32_t p = 0; p < kernel_.count; ++p) pass_along_columns(f, kernel_.radius[p]);
+    if (in_.mask) {
+#pragma omp parallel for schedule(static)
+      for (int64_t i = 0; i < int64_t(n_); ++i) f[i] = original[i] + in_.mask[i] * (f[i] - original[i]);
+    }
+  }
+
+  // Local index of position v + d along an axis of `len` samples whose first
+  // is `first` in a whole of `whole` samples: mirrored past a bounded
+  // whole's edge (closed: no flux), clamped at the region's own edge.
+  int32_t along(int32_t v, int32_t d, int32_t len, int64_t first, int32_t whole) const {
+    int64_t g = first + v + d;
+    if (!r_.whole.periodic) {
+      if (g < 0) g = -g - 1;
+      if (g >= whole) g = 2 * int64_t(whole) - g - 1;
+    }
+    return int32_t(std::clamp<int64_t>(g - first, 0, len - 1));
+  }
+
+  void pass_along_rows(std::vector<float>& f, int32_t radius) {
+    const bool tap = kernel_.tap > 0;
+    const float a = kernel_.tap, inv = 1.0f / float(2 * radius + 1);
+#pragma omp parallel
+    {
+      std::vector<float> ext(size_t(w_) + 2 * size_t(radius));
+#pragma omp for schedule(static)
+      for (int32_t y = 0; y < h_; ++y) {
+        float* row = f.data() + size_t(y) * w_;
+        std::copy(row, row + w_, ext.begin() + radius);
+        for (int32_t x = -radius; x < 0; ++x) ext[size_t(x + radius)] = row[along(x, 0, w_, r_.x0, r_.whole.width)];
+        for (int32_t x = w_; x < w_ + radius; ++x) ext[size_t(x + radius)] = row[along(x, 0, w_, r_.x0, r_.whole.width)];
+        if (tap) {
+          for (int32_t x = 0; x < w_; ++x) row[x] = a * ext[x] + (1 - 2 * a) * ext[x + 1] + a * ext[x + 2];
+          continue;
+        }
+        for (int32_t x = 0; x < w_; ++x) row[x] = 0.0f;
+        for (int32_t d = 0; d <= 2 * radius; ++d)
+          for (int32_t x = 0; x < w_; ++x) row[x] += ext[size_t(x + d)];
+        for (int32_t x = 0; x < w_; ++x) row[x] *= inv;
+      }
+    }
+  }
+
+  void pass_along_columns(std::vector<float>& f, int32_t radius) {
+    const bool tap = kernel_.tap > 0;
+    const float a = kernel_.tap, inv = 1.0f / float(2 * radius + 1);
+    std::vector<float>& out = columns_;
+    out.resize(n_);
+#pragma omp parallel for schedule(static)
+    for (int32_t y = 0; y < h_; ++y) {
+      float* dst = out.data() + size_t(y) * w_;
+      if (tap) {
+        const float* up = f.data() + size_t(along(y, -1, h_, r_.y0, r_.whole.height)) * w_;
+        const float* mid = f.data() + size_t(y) * w_;
+        const float* down = f.data() + size_t(along(y, 1, h_, r_.y0, r_.whole.height)) * w_;
+        for (int32_t x = 0; x < w_; ++x) dst[x] = a * up[x] + (1 - 2 * a) * mid[x] + a * down[x];
+        continue;
+      }
+      for (int32_t x = 0; x < w_; ++x) dst[x] = 0.0f;
+      for (int32_t d = -radius; d <= radius; ++d) {
+        const float* src = f.data() + size_t(along(y, d, h_, r_.y0, r_.whole.height)) * w_;
+        for (int32_t x = 0; x < w_; ++x) dst[x] += src[x];
+      }
+      for (int32_t x = 0; x < w_; ++x) dst[x] *= inv;
+    }
+    f.swap(out);
+  }
+
+  // Where water leaves a bounded map, the edge cell is its base level:
+  // creep may lower it, never raise it (landscape.cpp).
+  void keep_outlets() {
+    if (r_.whole.periodic) return;
+    const double outlet = kOutletCells * own_rain_;
+#pragma omp parallel for schedule(static)
+    for (int32_t y = 0; y < h_; ++y)
+      for (int32_t x = 0; x < w_; ++x) {
+        const size_t i = size_t(y) * w_ + x;
+        if (r_.on_whole_edge(x, y) && q_[i] >= outlet) z_[i] = std::min(z_[i], start_[i]);
+      }
+  }
+
+  const Region& r_;
+  const ErosionConfig& c_;
+  const DetailInputs& in_;
+  float* z_;
+  const int32_t w_, h_;
+  const size_t n_;
+  const int32_t steps_;
+  const double cell_, dt_, k_dt_, m_, G_, own_rain_;
+  const CreepKernel kernel_;
+  int32_t off_[8];
+  const std::vector<float> texture_;
+  std::vector<float> start_, random_;
+  std::vector<uint8_t> dir_;
+  std::vector<float> q_, front_, next_, cut_, room_, laid_;
+  std::vector<uint8_t> donors_;
+  std::vector<float> columns_;  // creep's scratch
+};
+
+}  // namespace
+
+int32_t detail_reach(const D8Grid& g, const ErosionConfig& c, double years, int32_t steps) {
+  if (!(years > 0) || steps < 1) return 0;
+  // Per step: the routing (its pit passes and 1), discharge (kHops + 1), the incision's chain
+  // (kCutHops), the sediment's way (kHops, its caps 1), creep (its kernel,
+  // and the deposits beside a sample, 1), and a sample of margin.
+  const int32_t creep = c.fluvial.diffusion > 0 ? creep_kernel(creep_r(g, c, years / steps)).reach() : 0;
+  return steps * (kPitPasses + 1 + kHops + 1 + kCutHops + kHops + 1 + creep + 1 + 1);
+}
+
+void detail_run(const Region& r, const ErosionConfig& c, double years, int32_t steps, const DetailInputs& in, float* z,
+                const Progress& progress) {
+  if (!(years > 0) || steps < 1 || r.size() == 0) return;
+  DetailRun run(r, c, years, steps, in, z);
+  for (int32_t s = 0; s < steps; ++s) {
+    run.step(s);
+    progress.report(double(s + 1) / steps);
+  }
+}
+
+}  // namespace ft::erosion
