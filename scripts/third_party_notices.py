@@ -8,7 +8,8 @@ Run by the bundling step (blender_addon/CMakeLists.txt, python/CMakeLists.txt)
 with what it just bundled, so the notices cannot go stale:
 
     python3 third_party_notices.py OUT
-        --bundled DIR                  the folder of bundled shared libraries (each file in it)
+        --bundled LIST                 the bundled shared libraries: lines "NAME SOURCE-PATH"
+                                       (blender_addon/bundle_libs.cmake's RECORD)
         --link-map FILE                a linker map (-Wl,-Map): the static archives it pulled members from
         --compiled-in FILE...          headers of header-only libraries compiled in
         --windows-map FILE             the map of fracterra.dll's link, when the package carries it
@@ -61,11 +62,17 @@ def copyright_text(package):
     return path.read_text(encoding="utf-8", errors="replace") if path.is_file() else None
 
 
+# Free-form copyright files (no DEP-5 fields) whose licence a phrase names.
+FREE_FORM = [("GCC RUNTIME LIBRARY EXCEPTION", "GPL-3+ with the GCC Runtime Library Exception 3.1")]
+
+
 def licences(text):
     """The licence names of a machine-readable (DEP-5) copyright file's Files
-    paragraphs, in order; [] for a free-form one."""
-    if not text or not re.match(r"Format:", text):
+    paragraphs, in order; for a free-form one, what FREE_FORM recognises ([] else)."""
+    if not text:
         return []
+    if not re.match(r"Format:", text):
+        return [name for phrase, name in FREE_FORM if phrase in text.upper()]
     names = []
     for para in re.split(r"\n\s*\n", text):
         if re.search(r"^Files:", para, re.M):
@@ -104,11 +111,10 @@ def main(argv):
     # (what the package carries, how) -> package; one notice per package.
     entries = []  # (package, item, how, note)
     if args.bundled:
-        for f in sorted(Path(args.bundled).iterdir()):
-            if f.suffix == ".dll" or f.name.startswith("libfracterra"):
-                continue
-            pkg, note = package_of(f)
-            entries.append((pkg, f.name, "shared library bundled as lib/" + f.name, note, f))
+        for line in Path(args.bundled).read_text().splitlines():
+            name, source = line.split(" ", 1)
+            pkg, note = package_of(source)
+            entries.append((pkg, name, "shared library bundled as lib/" + name, note, source))
     if args.link_map:
         for a in archives_of_map(args.link_map):
             pkg, note = package_of(a)
