@@ -17,6 +17,8 @@ setup(
     version=os.environ["FT_VERSION"],
     description="The native library of the fracterra Blender add-on (loaded by ctypes)",
     license="GPL-3.0-or-later",
+    license_files=["LICENSE"],  # staged beside this file
+    classifiers=["License :: OSI Approved :: GNU General Public License v3 or later (GPLv3+)"],
     python_requires=">=3.8",
     packages=["fracterra_native"],
     package_data={"fracterra_native": ["lib/*", "THIRD_PARTY_NOTICES"]},
