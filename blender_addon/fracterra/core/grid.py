@@ -75,24 +75,32 @@ def grid_arrays(hf, world_size, z_floor=NO_FLOOR, uvs=True, progress=None):
     report = progress or (lambda _fraction: None)
     g = GridArrays(hf.width, hf.height)
     world_size_x, world_size_y = grid_size(world_size, g.nx, g.ny)
-    g.co = vertices(hf, world_size_x, world_size_y, z_floor)
+    # All the arrays are views of one block: freed together, the block is one
+    # run of huge-page memory that Blender's own copy of the mesh (the
+    # depsgraph's, right after the build) can reuse whole.
+    sizes = {"co": 3 * g.vertex_count, "loop_vertices": g.loop_count, "loop_edges": g.loop_count,
+             "edge_vertices": 2 * g.edge_count, "loop_starts": g.face_count, "loop_totals": g.face_count,
+             "uv": 2 * g.loop_count if uvs else 0}
+    block = _buffer(sum(sizes.values()), "uint32")  # the library's int32 in 0..2^31-1: same bits
+    start = 0
+    for name, n in sizes.items():
+        view = block[start:start + n]
+        start += n
+        setattr(g, name, view.view("float32") if name in ("co", "uv") else view)
+    g.uv = g.uv if uvs else None
+    vertices(hf, world_size_x, world_size_y, z_floor, out=g.co)
     report(0.2)
     # The topology an array at a time (ft_grid_topology skips a NULL buffer),
     # with a report after each: all at once took 2.7 s of a 4097^2 build at
     # load 4-6 without one.
-    sizes = {"loop_vertices": g.loop_count, "loop_edges": g.loop_count, "edge_vertices": 2 * g.edge_count,
-             "loop_starts": g.face_count, "loop_totals": g.face_count}
     parts = (("loop_vertices",), ("loop_edges",), ("edge_vertices",), ("loop_starts", "loop_totals"))
     for k, names in enumerate(parts):
-        for name in names:
-            setattr(g, name, _buffer(sizes[name], "uint32"))  # the library's int32 in 0..2^31-1: same bits
         p = {name: _pointer(getattr(g, name), c_int32) for name in names}
         lib.check(lib.ft_grid_topology(g.nx, g.ny, p.get("loop_vertices"), p.get("loop_edges"), g.loop_count,
                                        p.get("edge_vertices"), 2 * g.edge_count, p.get("loop_starts"),
                                        p.get("loop_totals"), g.face_count))
         report(0.2 + 0.5 * (k + 1) / len(parts))
     if uvs:
-        g.uv = _buffer(2 * g.loop_count, "float32")
         lib.check(lib.ft_grid_uvs(g.nx, g.ny, _pointer(g.uv, c_float), len(g.uv)))
     report(1.0)
     return g
