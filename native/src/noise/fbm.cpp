@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/error.hpp"
@@ -215,8 +216,13 @@ FT_INLINE void row_body(const Plan& p, int64_t width, int64_t height, int64_t y,
 }
 #undef FT_INLINE
 
-// Runtime dispatch: the same source compiled twice. Hand-rolled rather than
-// target_clones so a test can force the baseline path and compare bits.
+// Runtime dispatch: the same source compiled three times (AVX-512 with
+// 512-bit vectors, AVX2, the x86-64 baseline). Hand-rolled rather than
+// target_clones so a test can force a path and compare bits.
+[[gnu::flatten]] __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,prefer-vector-width=512"))) void
+row_avx512(const Plan& p, int64_t w, int64_t h, int64_t y, int64_t xb, int32_t n, float* row) {
+  row_body(p, w, h, y, xb, n, row);
+}
 [[gnu::flatten]] __attribute__((target("avx2"))) void row_avx2(const Plan& p, int64_t w, int64_t h, int64_t y,
                                                                int64_t xb, int32_t n, float* row) {
   row_body(p, w, h, y, xb, n, row);
@@ -229,8 +235,14 @@ FT_INLINE void row_body(const Plan& p, int64_t width, int64_t height, int64_t y,
 std::atomic<SimdPath> g_path{SimdPath::kAuto};
 
 using RowFn = void (*)(const Plan&, int64_t, int64_t, int64_t, int64_t, int32_t, float*);
+// The fastest path the CPU has (and FT_DISPATCH allows: ft::detail::dispatch_path),
+// capped by set_simd_path.
 RowFn pick_row_fn() {
-  if (g_path.load() == SimdPath::kAuto && __builtin_cpu_supports("avx2")) return row_avx2;
+  const SimdPath cap = g_path.load();
+  if (cap == SimdPath::kBaseline) return row_baseline;
+  const std::string_view best = ft::detail::dispatch_path();
+  if (best == "avx512" && cap == SimdPath::kAuto) return row_avx512;
+  if (best != "baseline") return row_avx2;
   return row_baseline;
 }
 
@@ -314,7 +326,10 @@ Heightfield fbm_window(const FbmConfig& c, int64_t x0, int64_t y0, int32_t w, in
 
 namespace detail {
 void set_simd_path(SimdPath path) { g_path.store(path); }
-const char* active_simd_path() { return pick_row_fn() == row_avx2 ? "avx2" : "baseline"; }
+const char* active_simd_path() {
+  const RowFn f = pick_row_fn();
+  return f == row_avx512 ? "avx512" : f == row_avx2 ? "avx2" : "baseline";
+}
 }  // namespace detail
 
 }  // namespace ft::noise
