@@ -118,12 +118,11 @@ enum Isa { kIsaBaseline, kIsaAvx2, kIsaAvx512 };
 // octave loop. v_const: every v[i] is v[0] (no warp before this octave).
 template <int kIsa, int kBasis, bool kPeriodic>
 FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v, bool v_const, float* out) {
-  if constexpr (!kPeriodic && kIsa != kIsaBaseline && (kBasis == kBasisValue || kBasis == kBasisGradient)) {
-    constexpr bool kValue = kBasis == kBasisValue;
-    if constexpr (kIsa == kIsaAvx512)
-      return (kValue ? value_row_avx512 : gradient_row_avx512)(o, n, u, v, v_const, out);
-    else
-      return (kValue ? value_row_avx2 : gradient_row_avx2)(o, n, u, v, v_const, out);
+  if constexpr (!kPeriodic && kIsa != kIsaBaseline && kBasis <= kBasisSimplex) {
+    using Row = void (*)(const Octave&, int, const float*, const float*, bool, float*);
+    constexpr Row kAvx512[] = {simd_avx512::value_row, simd_avx512::gradient_row, simd_avx512::simplex_row};
+    constexpr Row kAvx2[] = {simd_avx2::value_row, simd_avx2::gradient_row, simd_avx2::simplex_row};
+    return (kIsa == kIsaAvx512 ? kAvx512 : kAvx2)[kBasis](o, n, u, v, v_const, out);
   }
   const float a11 = o.a11, a12 = o.a12, a21 = o.a21, a22 = o.a22, ox = o.ox, oy = o.oy;
   const uint32_t key = o.key;
