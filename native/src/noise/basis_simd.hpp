@@ -9,12 +9,14 @@
 // by two register permutes instead of selects and sign flips, and the
 // v-products of a row computed once.
 //
-// simd_avx2::X_row and simd_avx512::X_row (X = value, gradient, simplex):
-//   X_row(o, n, u, v, v_const, out)
-// noise(M (u, v) + o) for the n <= 256 samples at u[i], v[i] into out[i],
-// as basis.hpp's value_noise, gradient_noise<false> and simplex_noise give
-// them. v_const: every v[i] equals v[0] (a row without warp). Each is
-// compiled for its instruction set: call it only where the CPU has it.
+// simd_avx2::noise_row and simd_avx512::noise_row(basis, o, n, u, v, v_const, mode, amp, out):
+// noise(M (u, v) + o) of basis 0, 1 or 2 (value, gradient, simplex) for the
+// n <= 256 samples at u[i], v[i], as basis.hpp's value_noise,
+// gradient_noise<false> and simplex_noise give them, into out[i] (mode
+// kStore), or as the standard fbm's octave sum: out[i] = amp * noise
+// (kFirst), out[i] += amp * noise (kAdd). v_const: every v[i] equals v[0]
+// (a row without warp). Each is compiled for its instruction set: call it
+// only where the CPU has it.
 #pragma once
 
 #include <immintrin.h>
@@ -30,6 +32,11 @@
 #endif
 
 namespace ft::noise::detail {
+
+// What a row does with its noise: stores it, or (the standard fbm's octave
+// sum, octave_sum.hpp's add_octave fused in) stores amp * noise for the
+// first octave and adds amp * noise to out[] for the others.
+enum RowMode { kStore, kFirst, kAdd };
 
 #pragma GCC push_options
 #pragma GCC target("avx2")

@@ -114,16 +114,24 @@ constexpr int kChunk = 256;  // samples per chunk: 5 arrays of 1 KiB stay in L1
 // called only from their own set's copy.
 enum Isa { kIsaBaseline, kIsaAvx2, kIsaAvx512 };
 
+// Whether a copy has basis_simd.hpp's rows (value, gradient, simplex; not periodic).
+template <int kIsa, bool kPeriodic>
+constexpr bool kSimdRows = kIsa != kIsaBaseline && !kPeriodic;
+template <int kIsa>
+FT_INLINE void simd_noise_row(int basis, const Octave& o, int n, const float* u, const float* v, bool v_const,
+                              int mode, float amp, float* out) {
+  if constexpr (kIsa == kIsaAvx512)
+    simd_avx512::noise_row(basis, o, n, u, v, v_const, mode, amp, out);
+  else
+    simd_avx2::noise_row(basis, o, n, u, v, v_const, mode, amp, out);
+}
+
 // noise(M (u, v) + o) for n samples into out[]: the one noise call of the
 // octave loop. v_const: every v[i] is v[0] (no warp before this octave).
 template <int kIsa, int kBasis, bool kPeriodic>
 FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v, bool v_const, float* out) {
-  if constexpr (!kPeriodic && kIsa != kIsaBaseline && kBasis <= kBasisSimplex) {
-    using Row = void (*)(const Octave&, int, const float*, const float*, bool, float*);
-    constexpr Row kAvx512[] = {simd_avx512::value_row, simd_avx512::gradient_row, simd_avx512::simplex_row};
-    constexpr Row kAvx2[] = {simd_avx2::value_row, simd_avx2::gradient_row, simd_avx2::simplex_row};
-    return (kIsa == kIsaAvx512 ? kAvx512 : kAvx2)[kBasis](o, n, u, v, v_const, out);
-  }
+  if constexpr (kSimdRows<kIsa, kPeriodic> && kBasis <= kBasisSimplex)
+    return simd_noise_row<kIsa>(kBasis, o, n, u, v, v_const, kStore, 1.0f, out);
   const float a11 = o.a11, a12 = o.a12, a21 = o.a21, a22 = o.a22, ox = o.ox, oy = o.oy;
   const uint32_t key = o.key;
   const int32_t px = o.px, py = o.py;
@@ -173,6 +181,14 @@ FT_INLINE void noise_row(int basis, const Octave& o, int n, const float* u, cons
 template <int kIsa, bool kPeriodic>
 FT_INLINE void octave_loop(const std::vector<Octave>& octs, int basis, int variant, float offset, int n,
                            const float* u, const float* v, bool v_const, float* sum) {
+  if constexpr (kSimdRows<kIsa, kPeriodic>) {
+    if (variant == kFbmStandard && basis <= kBasisSimplex) {  // the octave sum fused into the rows
+      for (size_t k = 0; k < octs.size(); ++k)
+        simd_noise_row<kIsa>(basis, octs[k], n, u, v, v_const, k == 0 ? kFirst : kAdd,
+                             octs[k].amp, sum);
+      return;
+    }
+  }
   float noise[kChunk], weight[kChunk];
   for (size_t k = 0; k < octs.size(); ++k) {
     const Octave& o = octs[k];
