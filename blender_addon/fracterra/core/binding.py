@@ -19,7 +19,7 @@ from pathlib import Path
 from .errors import LibraryNotFoundError, error_for_status
 
 ABI_MAJOR = 2
-ABI_MINOR_MIN = 26  # what each minor added: CHANGES.md, "ABI history"
+ABI_MINOR_MIN = 27  # what each minor added: CHANGES.md, "ABI history"
 ENV_VAR = "FRACTERRA_LIBRARY"
 # The library of each platform the add-on zip can carry one for (docs/windows.md).
 LIBRARY_NAMES = {("linux", "x86_64"): "libfracterra.so", ("win32", "amd64"): "fracterra.dll"}
@@ -319,6 +319,8 @@ SIGNATURES = {
     "ft_river_network_segments": (c_int32, [c_void_p, c_void_p, c_int32]),
     "ft_river_network_lakes": (c_int32, [c_void_p, c_void_p, c_int32]),
     "ft_river_network_lake_rings": (c_int32, [c_void_p, POINTER(c_void_p)]),
+    # (ABI 2.27) the minimum water depth it was traced with (0 given: 1% of the relief).
+    "ft_river_network_min_depth": (c_int32, [c_void_p, _F64P]),
     "ft_river_network_water_mask": (c_int32, [c_void_p, POINTER(c_int32), c_int64]),
     "ft_rivers_carve": (c_int32, [_HF, c_void_p, POINTER(_HF)]),
     # planet.h (ABI 2.18): fractal planets; heightfields, or meshes into caller-allocated arrays.
