@@ -139,6 +139,7 @@ FIXTURES = (
     ("bolt.csv", 'fracterra polyline --method fpl3d --base "0,0,1;0.1,0,0" --depth 6 --out bolt.csv'),
     ("coast.csv", 'fracterra polyline --method fpl --base "0,0;1,0" --depth 6 --out coast.csv'),
     ("rivers.json", "fracterra rivers --in t.png --out rivers.json"),
+    ("carved.npy", "fracterra terrain --levels 7 --seed 7 --rivers r.json --out carved.npy"),  # and r.json
     ("rules.json", "fracterra splat --print-rules > rules.json"),
     ("scene.pov", "fracterra terrain --levels 5 --out scene.png --pov scene.pov"),
 )
