@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Gives every source file of the project its SPDX licence line,
 `SPDX-License-Identifier: GPL-3.0-or-later` (LICENSE), as a comment in the
 file's own syntax: first, or after a `#!` line and a Python encoding line.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs every fracterra test: installs what it needs, builds, and runs ctest
 # (native GoogleTest suites, Python ctypes tests, real Blender and POV-Ray),
 # then the C ABI suites, fuzz replays and a few native programs again under

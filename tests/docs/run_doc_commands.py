@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Runs every example command of the README and the user guides, as written.
 
 A guide's code blocks (indented by four spaces, or fenced) hold two kinds of

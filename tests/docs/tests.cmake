@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Every command of the README and the user guides runs as written
 # (run_doc_commands.py: examples run, synopses are skipped, the few left out
 # say why in its NOT_RUN), with the built CLI first on PATH and the Python
