@@ -267,13 +267,17 @@ def main():
         env["FRACTERRA_LIBRARY"] = str(args.library.resolve())
     if args.python_path:
         env["PYTHONPATH"] = f"{args.python_path.resolve()}:{env.get('PYTHONPATH', '')}"
-    fixtures = make_fixtures(bindir / "fixtures", env)
     failures, count, skipped = [], 0, 0
-    for doc in args.docs:
-        items = examples(doc)
-        skipped += sum(not_run(doc, text) is not None for _, _, text in items)
-        count += len(items)
-        failures += run(doc, items, env, args.keep, args.timeout, fixtures)
+    try:
+        fixtures = make_fixtures(bindir / "fixtures", env)
+        for doc in args.docs:
+            items = examples(doc)
+            skipped += sum(not_run(doc, text) is not None for _, _, text in items)
+            count += len(items)
+            failures += run(doc, items, env, args.keep, args.timeout, fixtures)
+    finally:
+        if not args.keep:  # the CLI's link, the staged package, the fixtures
+            subprocess.run(["rm", "-rf", str(bindir)])
     if failures:
         print(f"\n{len(failures)} of {count - skipped} documented examples failed:\n")
         print("\n\n".join(failures))
