@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Checks that the native code's includes point only downwards.
 
 native/src/ is layered by capability, one folder per layer; native/cli/ is the

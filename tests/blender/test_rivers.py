@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Rivers and Lakes of a terrain in real Blender: the operator traces them
 through the library's pipeline, so they are the rivers `fracterra terrain
 --rivers` writes for the same settings (the CLI, another front end), a tiling

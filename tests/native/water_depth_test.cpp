@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The water depth rule (native/src/hydrology): no lake surface lies flush
 // with the ground (a lake is where its level covers the ground by more than
 // the minimum depth, 1% of the relief by default, and its shoreline runs where

@@ -1,13 +1,17 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Finding and loading libfracterra.so (fracterra.dll on Windows), and the ctypes signature of every symbol.
 
 Search order: the path in the FRACTERRA_LIBRARY environment variable (when
 set, it is the only candidate: an explicit choice must not silently fall back),
-then the copy bundled in the add-on's `lib/` folder. The library is loaded
+then the copy bundled in the add-on's `lib/` folder (the legacy zip, the Python
+wheel), then the one in the fracterra_native wheel that Blender 4.2+ installs
+from the extension (its site-packages). The library is loaded
 on first use, so the add-on registers even when it is missing and can say
 what to do. A library whose ABI major version differs is refused.
 """
 
 import ctypes
+import importlib.util
 import os
 import platform
 import sys
@@ -26,9 +30,11 @@ LIBRARY_NAMES = {("linux", "x86_64"): "libfracterra.so", ("win32", "amd64"): "fr
 PLATFORM = (sys.platform, platform.machine().lower())
 LIBRARY_NAME = LIBRARY_NAMES.get(PLATFORM, "libfracterra.so")
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
+WHEEL_PACKAGE = "fracterra_native"  # blender_addon/native_wheel
 
 HOW_TO_FIX = (
-    "Install the add-on zip built by `cmake --build build --target fracterra_blender_addon` "
+    "Install the extension of this platform (Blender 4.2+: built by `cmake --build build --target "
+    "fracterra_extensions`) or the add-on zip built by `cmake --build build --target fracterra_blender_addon` "
     f"(it bundles lib/{LIBRARY_NAME}), or set the environment variable "
     f"{ENV_VAR} to the full path of {LIBRARY_NAME} before starting Blender."
 )
@@ -469,10 +475,27 @@ _lock = threading.Lock()
 _library = None
 
 
+def wheel_library_path():
+    """The library in the installed fracterra_native wheel (found, not imported), or None."""
+    try:
+        spec = importlib.util.find_spec(WHEEL_PACKAGE)
+    except (ImportError, ValueError):
+        return None
+    if spec is None or not spec.origin:
+        return None
+    return Path(spec.origin).resolve().parent / "lib" / LIBRARY_NAME
+
+
 def library_path():
-    """The path that will be tried: FRACTERRA_LIBRARY if set, else the bundled copy."""
+    """The path that will be tried: FRACTERRA_LIBRARY if set, else the bundled copy,
+    else the extension's wheel's (the bundled path when neither exists, for the message)."""
     env = os.environ.get(ENV_VAR)
-    return Path(env) if env else BUNDLED_PATH
+    if env:
+        return Path(env)
+    if BUNDLED_PATH.is_file():
+        return BUNDLED_PATH
+    wheel = wheel_library_path()
+    return wheel if wheel is not None and wheel.is_file() else BUNDLED_PATH
 
 
 def library():

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // platform.hpp on Windows (built with mingw-w64; see docs/windows.md).
 #ifdef _WIN32
 #ifndef NOMINMAX
@@ -226,6 +227,16 @@ std::vector<std::string> utf8_arguments(int argc, char** argv) {
   for (int i = 0; i < n; ++i) out.push_back(narrow(w[i]));
   LocalFree(w);
   return out;
+}
+
+void* open_library(const std::string& name, std::string& error) {
+  HMODULE h = LoadLibraryW(wide(name).c_str());
+  if (!h) error = "LoadLibrary failed with error " + std::to_string(GetLastError());
+  return reinterpret_cast<void*>(h);
+}
+
+void* library_symbol(void* library, const char* symbol) noexcept {
+  return reinterpret_cast<void*>(GetProcAddress(static_cast<HMODULE>(library), symbol));
 }
 
 }  // namespace ft::platform

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rasters through GDAL: any raster GDAL reads (GeoTIFF, SRTM .hgt, ESRI
 // ASCII grid, VRT, ...) as a heightfield, and heightfields written as
 // Cloud-Optimized GeoTIFF. Band 1 is read as float32; the geotransform and
@@ -21,6 +22,12 @@
 #include "core/heightfield.hpp"
 
 namespace ft::io {
+
+// How a refusal names a raster format: "GeoTIFF (.tif)", "'.hgt'".
+inline std::string raster_format_name(const std::string& extension) {
+  if (extension == ".tif" || extension == ".tiff") return "GeoTIFF (" + extension + ")";
+  return extension.empty() ? std::string("a file without an extension") : "'" + extension + "'";
+}
 
 enum class NodataPolicy { refuse, fill, keep };
 

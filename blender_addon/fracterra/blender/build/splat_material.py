@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A terrain's colour in Blender: the library's splat colour map (core/splat.py,
 the rules `fracterra splat` and the POV-Ray export use) as a point colour
 attribute, and the node material that reads it. The colours are computed in
@@ -13,6 +14,7 @@ import numpy as np
 from ... import core
 from ...core import splat
 from ..common.reporting import SettingsError
+from . import huge_pages
 
 COLOR_ATTRIBUTE = "fracterra_color"  # linear RGB(A), one per vertex, in the grid's order
 MATERIAL_NAME = "Fracterra Terrain"
@@ -72,6 +74,7 @@ def set_colors(mesh, rgba):
         layer = None
     if layer is None:
         layer = mesh.attributes.new(COLOR_ATTRIBUTE, "FLOAT_COLOR", "POINT")
+        huge_pages.advise(layer.data)
     layer.data.foreach_set("color", rgba)
     # The viewport's Attribute colour (Solid mode) shows it too.
     colors = getattr(mesh, "color_attributes", None)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Rivers and Lakes of a terrain object: the library's network (core.rivers.
 WaterArrays, traced by the pipeline's last stage) as Blender objects parented
 to the terrain, in its local frame:
