@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fbm speed against libnoise (Debian libnoise-dev) and FastNoise2 in the
 // same run: 2D fbm, 2048^2 samples x 8 octaves. Counters per sample per
 // octave: wall_ns (wall time) and cpu_ns (CPU time of the whole process,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the benchmarks behind the README's speed table one after another, in
 # one run, each with its baseline, and logs the load average before and after
 # each: the source of the table's figures (medians of 3 repetitions, or 5 for

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The numpy API: terrain(), erode(), analyze(), splat(), save(), load().
 
 Everything goes through the add-on's ctypes binding (fracterra.core, the same

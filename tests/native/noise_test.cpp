@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The noise layer: fbm octave noise (bases, variants, warp, periodic),
 // spectral synthesis and the interpolated (lacunarity) method, measured
 // through generate_terrain as the C ABI and the CLI use it. Spectra are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The value, gradient and simplex bases of flat, non-periodic fbm written
 // with explicit AVX2 and AVX-512 vectors (the octave loop's hottest rows),
 // for the dispatch paths of fbm.cpp (its only includer: they are defined

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fBm octave noise (Quilez, seed 004) in the FastNoiseLite style: one config,
 // one dispatcher; every fractal variant is the same octave loop around one
 // noise call, and domain warping is a separate pass over the coordinates.

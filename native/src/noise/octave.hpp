@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One octave of a flat fbm, as the octave loop (fbm.cpp) and the explicit
 // SIMD rows (basis_simd.cpp) read it.
 #pragma once
