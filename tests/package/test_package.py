@@ -85,8 +85,10 @@ def test_save_and_load_round_trip(tmp_path):
         ft.save(z, tmp_path / name)
         back = ft.load(tmp_path / name)
         assert np.array_equal(back, z), name
-    # The formats that record a world size give it back (.npy holds the samples only).
+    # Every format records the world size (.npy in its sidecar t.npy.json).
     assert ft.load(tmp_path / "t.exr").world_size == pytest.approx(250)
+    assert ft.load(tmp_path / "t.npy").world_size == pytest.approx(250)
+    assert json.loads((tmp_path / "t.npy.json").read_text())["world_size"] == pytest.approx(250)
     ft.save(z, tmp_path / "t.png")
     assert ft.load(tmp_path / "t.png").world_size == pytest.approx(250)
     ft.save(np.zeros((3, 4)), tmp_path / "plain.npy")  # any 2-D array

@@ -114,6 +114,13 @@ FT_API ft_status ft_river_network_water_mask(const ft_river_network* net, int32_
 /// The terrain lowered along each river to its depth over its width (a smooth
 /// cos^2 profile under the water surface); lakes and sea are left as they are.
 FT_API ft_status ft_rivers_carve(const ft_heightfield* terrain, const ft_river_network* net, ft_heightfield** out);
+/// Writes the network to `path` as `fracterra rivers --out` does (ABI 2.27), by its extension:
+/// .csv, .json, .geojson or .gpkg (rivers and lakes; the last two need a build with GDAL). With
+/// `lakes_only` non-zero, the lakes alone as `--lakes` writes them (.geojson, .gpkg or .json).
+/// `terrain` (may be NULL) gives the georeference: GeoJSON and GeoPackage are then in its CRS
+/// and map coordinates. Written atomically.
+FT_API ft_status ft_river_network_write(const ft_river_network* net, const ft_heightfield* terrain, const char* path,
+                                        int32_t lakes_only);
 
 #ifdef __cplusplus
 }

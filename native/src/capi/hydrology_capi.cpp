@@ -8,6 +8,7 @@
 #include "fracterra/fracterra.h"
 #include "hydrology/hydrology.hpp"
 #include "hydrology/hydrology_params.hpp"
+#include "hydrology/river_files.hpp"
 
 using ft::capi::guarded;
 
@@ -144,6 +145,17 @@ FT_API ft_status ft_rivers_carve(const ft_heightfield* terrain, const ft_river_n
     auto h = std::make_unique<ft_heightfield>();
     h->hf = ft::hydrology::carve(terrain->hf, net->net);
     *out = h.release();
+  });
+}
+
+FT_API ft_status ft_river_network_write(const ft_river_network* net, const ft_heightfield* terrain, const char* path,
+                                        int32_t lakes_only) {
+  return guarded([&] {
+    ft::check_not_null("net", net);
+    ft::check_not_null("path", path);
+    const ft::GeoReference geo = terrain ? terrain->hf.georef() : ft::GeoReference();
+    if (lakes_only) ft::hydrology::write_lakes(net->net, geo, path);
+    else ft::hydrology::write_rivers(net->net, geo, path);
   });
 }
 
