@@ -33,20 +33,28 @@ from .core.errors import (CancelledError, FracterraError, InvalidArgumentError, 
                           LibraryNotFoundError, TooLargeError, UnsupportedError)
 from .arrays import Terrain  # noqa: E402
 from .api import analyze, load, save, splat, version  # noqa: E402
-from .pipeline import Build, erode, rivers, terrain  # noqa: E402
+from .meshes import fractalize  # noqa: E402
+from .pipeline import Build, erode, rivers, terrain, window  # noqa: E402
+from .planets import planet  # noqa: E402
+from .polylines import Lines, coastline, fpl_study, polyline  # noqa: E402
 from .rivers import Rivers  # noqa: E402
+from .scenes import clouds, pov_scene, render  # noqa: E402
+from . import tiles  # noqa: E402  (the module is callable: ft.tiles(out_dir, ...) writes a tile set here)
 
-__all__ = ["Terrain", "Build", "Rivers", "terrain", "erode", "rivers", "analyze", "save", "load", "splat", "version",
-           "FracterraError", "InvalidArgumentError", "TooLargeError", "CancelledError", "UnsupportedError",
-           "LibraryNotFoundError"]
+__all__ = ["Terrain", "Build", "Rivers", "Lines", "terrain", "window", "erode", "rivers", "analyze", "polyline",
+           "fpl_study", "coastline", "clouds", "planet", "pov_scene", "render", "fractalize", "tiles", "splat", "save",
+           "load", "version", "FracterraError", "InvalidArgumentError", "TooLargeError", "CancelledError",
+           "UnsupportedError", "LibraryNotFoundError"]
 
 
 def _annotate():
+    """Signatures and docs from the library's tables (when it loads; else the calls will say why)."""
     from .core.errors import LibraryNotFoundError as _Missing
-    from . import pipeline
+    from . import meshes, pipeline, planets, polylines, scenes
     try:
-        pipeline._annotate()
-    except _Missing:  # the calls will say why; help() then shows the plain docs
+        for module in (pipeline, polylines, planets, scenes, meshes):
+            module._annotate()
+    except _Missing:
         pass
 
 

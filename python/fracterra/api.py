@@ -23,25 +23,39 @@ PathLike = Union[str, os.PathLike]
 
 
 def analyze(z, method: str = "auto", *, drainage: bool = True, periodic: Optional[bool] = None,
-            min_area_cells: float = 20.0) -> dict:
-    """Measures `z`: {'hurst', 'dimension', 'std_error', 'estimator', 'reason',
-    'band_lo', 'band_hi', 'points', 'min', 'max', 'mean', 'std'} and, with
+            min_area_cells: float = 20.0, points: bool = False, rivers: bool = False) -> dict:
+    """Measures a terrain or a polyline set.
+
+    A terrain `z`: {'hurst', 'dimension', 'std_error', 'estimator', 'reason',
+    'band_lo', 'band_hi', 'points', 'min', 'max', 'mean', 'std'}; with
     drainage=True, 'drainage': {'hack_h', 'hack_h_stderr', 'theta',
     'theta_stderr', 'hack_bins', 'theta_bins'} (Hack's law and the slope-area
     concavity over channels of at least min_area_cells cells; cells of filled
-    lakes count in neither, and theta is fitted from the slope-area turnover up).
-
+    lakes count in neither, and theta is fitted from the slope-area turnover
+    up); with points=True, 'fit': {'x', 'y'}, the points the estimate fitted
+    (lags and the variogram or madogram; with method='spectral', frequencies in
+    cycles per record and the rows' and columns' averaged periodogram, ~ f^-(2H + 1)); with
+    rivers=True, 'rivers': ft.rivers(z).measures() (Horton's ratios, drainage
+    density, Hack's h of the network).
     method: auto (the library's choice for the grid, as `fracterra analyze`),
     variogram, variogram_aligned, madogram_aligned or spectral.
     periodic: route the drainage on a torus; None: as z tiles (a Terrain's
     period_overlap: its repeated last row and column are left out).
+
+    A fracterra.Lines (ft.polyline()'s): seed 003's measures, as
+    ft.polylines.measure: eta, chi, gamma, mass and box-counting dimensions.
     """
+    from .polylines import Lines, measure
+    if isinstance(z, Lines):
+        return measure(z)
     lib = library()
     with to_library(z) as hf:
         out = hurst_of_heightfield(hf, method.upper())
         out.pop("struct_size", None)
         out.pop("auto_reason_text", None)
         out.update(hf.stats())
+        if points:
+            out["fit"] = _fit_points(hf, method)
     if drainage:
         from .core.binding import DrainageStats
         _ws, overlap, _sea = world_of(z)
@@ -56,7 +70,26 @@ def analyze(z, method: str = "auto", *, drainage: bool = True, periodic: Optiona
         with to_library(a, world_size=ws) as hf:
             lib.check(lib.ft_drainage_statistics(hf.handle, 1 if periodic else 0, float(min_area_cells), byref(d)))
         out["drainage"] = {name: getattr(d, name) for name, _ in DrainageStats._fields_}
+    if rivers:
+        from .pipeline import rivers as trace
+        out["rivers"] = trace(z).measures()
     return out
+
+
+def _fit_points(hf, method) -> dict:
+    from ctypes import c_double, c_int64, sizeof
+    from .core.binding import HurstResult, enum_values
+    lib = library()
+    p = lib.hurst_params_type()
+    lib.check(lib.ft_hurst_params_init(byref(p)))
+    p.method = enum_values("hurst", "method")[method.upper()]
+    r = HurstResult(struct_size=sizeof(HurstResult))
+    n = c_int64()
+    lib.check(lib.ft_hurst_heightfield_points(hf.handle, byref(p), byref(r), None, None, 0, byref(n)))
+    x, y = np.empty(n.value), np.empty(n.value)
+    lib.check(lib.ft_hurst_heightfield_points(hf.handle, byref(p), byref(r), x.ctypes.data_as(POINTER(c_double)),
+                                              y.ctypes.data_as(POINTER(c_double)), n.value, byref(n)))
+    return {"x": x, "y": y}
 
 
 def _layers(rules) -> tuple:

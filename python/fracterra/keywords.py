@@ -9,7 +9,10 @@ from __future__ import annotations
 
 import difflib
 import inspect
+import numbers
 from typing import Optional
+
+import numpy as np
 
 from .core import rows as rows_mod
 from .core.binding import library
@@ -76,7 +79,7 @@ def _c_value(row, value):
     if t == "enum":
         return rows_mod.enum_value(row, value)
     if t == "bool":
-        if not isinstance(value, (bool, int)) or isinstance(value, float):
+        if not (isinstance(value, (bool, np.bool_)) or (isinstance(value, numbers.Integral) and value in (0, 1))):
             raise TypeError("not a bool")
         return 1 if value else 0
     if row["zero_is_auto"] and isinstance(value, str) and value.lower() == "auto":

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ctypes
 import math
+import numbers
 from collections import namedtuple
 from ctypes import byref, c_int64, c_void_p
 from typing import Any, Optional
@@ -46,10 +47,12 @@ def _size(value) -> dict:
             raise InvalidArgumentError(f"size must be N, (width, height) or 'WxH' (e.g. 1024 or '2048x1024'), "
                                        f"got {value!r}")
         value = tuple(int(p) for p in parts)
-    if isinstance(value, (int,)) and not isinstance(value, bool):
-        return {"width": value, "height": value}
-    if isinstance(value, (tuple, list)) and len(value) in (1, 2) and all(isinstance(v, int) for v in value):
-        return {"width": value[0], "height": value[-1]}
+    def integer(v):
+        return isinstance(v, numbers.Integral) and not isinstance(v, bool)
+    if integer(value):
+        return {"width": int(value), "height": int(value)}
+    if isinstance(value, (tuple, list)) and len(value) in (1, 2) and all(integer(v) for v in value):
+        return {"width": int(value[0]), "height": int(value[-1])}
     raise TypeError(f"size must be N, (width, height) or 'WxH' (integers), got {value!r}")
 
 
@@ -109,8 +112,22 @@ def _maps(handles, period_overlap, sea_level) -> dict:
     return out
 
 
+def window(x0: int, y0: int, width: int, height: int, *, maps: bool = False, **kw):
+    """The samples [x0, x0 + width) x [y0, y0 + height) of what terrain(**kw)
+    makes (ft_terrain_build_window), eroded or not, heights and maps: the
+    same bits as those samples of the whole, in the memory of the window (and
+    the erosion's reach). Its world size is the window's share of the whole's.
+    Takes terrain()'s keywords but rivers; refused for spectral synthesis and
+    a sea given as a fraction (their whole defines them). Returns a Terrain,
+    or with maps=True a Build(terrain, maps, None)."""
+    if kw.get("rivers"):
+        raise InvalidArgumentError("a window has no rivers of its own: trace them on the whole (ft.rivers)")
+    return terrain(maps=maps, _window=(int(x0), int(y0), int(width), int(height)), **kw)
+
+
 def terrain(*, size=None, center=None, erode=None, maps: bool = False, rivers=False, erosion_mask=None,
-            rain_map=None, falloff_mask=None, reference=None, threads: int = 0, progress=None, **settings):
+            rain_map=None, falloff_mask=None, reference=None, threads: int = 0, progress=None, _window=None,
+            **settings):
     """A fractal terrain through the library's pipeline (ft_terrain_build),
     as `fracterra terrain` and the Blender add-on make it: the same settings
     give the same bits. Returns a Terrain (numpy float32 with its world); with
@@ -157,8 +174,12 @@ def terrain(*, size=None, center=None, erode=None, maps: bool = False, rivers=Fa
                                        f"falloff={falloff!r}")
         tables["terrain"].fill(t, {"falloff": "custom"})
     keep = [attach_reference(t, _reference(reference)), attach_falloff_mask(t, _falloff(falloff_mask))]
+    # The grid's shape, for the masks' check (a sea of the whole's quantile has no windows, so
+    # the extent is asked of the same terrain without it).
+    shaped = type(t).from_buffer_copy(t)
+    shaped.sea = 0
     w, h = c_int64(), c_int64()
-    lib.check(lib.ft_terrain_extent(byref(t), 0, byref(w), byref(h)))
+    lib.check(lib.ft_terrain_extent(byref(shaped), 0, byref(w), byref(h)))
     shape = (h.value, w.value)
     e = None
     if given["erosion"] or erosion_mask is not None or rain_map is not None:
@@ -178,8 +199,14 @@ def terrain(*, size=None, center=None, erode=None, maps: bool = False, rivers=Fa
     handles = (c_void_p * len(MAPS))()
     world = TerrainWorld()
     lib.check(lib.ft_terrain_world_init(byref(world)))
-    status = lib.ft_terrain_build_world(byref(b), byref(out), ctypes.cast(handles, ctypes.POINTER(c_void_p))
-                                        if maps else None, byref(net) if rivers else None, byref(world))
+    map_out = ctypes.cast(handles, ctypes.POINTER(c_void_p)) if maps else None
+    if _window is not None:
+        status = lib.ft_terrain_build_window(byref(b), *_window, byref(out), map_out)
+        # A window does not tile; its sea (a height: a fraction has no windows) is the terrain's.
+        world.sea_level = t.sea_level if rows_of_sea(t) == "height" else math.nan
+    else:
+        status = lib.ft_terrain_build_world(byref(b), byref(out), map_out, byref(net) if rivers else None,
+                                            byref(world))
     bridge.reraise()
     lib.check(status)
     del keep
@@ -191,6 +218,13 @@ def terrain(*, size=None, center=None, erode=None, maps: bool = False, rivers=Fa
         with RiverNetwork(net) as network:
             water = Rivers(network, z)
     return Build(z, made, water) if maps or rivers else z
+
+
+def rows_of_sea(t) -> str:
+    """The name of ft_terrain_params.sea's value in `t` ("none", "height", "fraction")."""
+    from .core import rows
+    row = next(r for r in library().param_rows["terrain"] if r["name"] == "sea")
+    return rows.enum_item(row, t.sea)["cli"]
 
 
 def _reference(reference):
@@ -303,15 +337,25 @@ def _annotate() -> None:
                                                      ("rivers", False), ("erosion_mask", None), ("rain_map", None),
                                                      ("falloff_mask", None), ("reference", None))]
     t = _tables()
+    from .core import rows
+    from .core.erosion import PRESETS
+    preset_row = next(r for r in library().param_rows["build"] if r["name"] == "erosion_preset")
+    presets = (f"Erosion presets (erode=, erode()'s preset): {rows.allowed_text(preset_row)}; the ids "
+               f"{', '.join(PRESETS)} and the labels work too, as on the command line.")
     document(terrain, own + [threads, progress],
              [("Terrain settings", t["terrain"]), ("Pipeline settings", t["build"]),
-              ("Erosion settings (with erode=, or alone)", t["erosion"])])
+              ("Erosion settings (with erode=, or alone)", t["erosion"])], presets)
     document(erode, [Parameter("z", pos, annotation=Any), Parameter("preset", pos, default=None),
                      Parameter("maps", ko, default=True, annotation=bool), Parameter("erosion_mask", ko, default=None),
                      Parameter("rain_map", ko, default=None), threads, progress],
-             [("Erosion settings", Table("erosion", skip=("threads",)))])
+             [("Erosion settings", Table("erosion", skip=("threads",)))], presets)
+    document(window, [Parameter(n, pos, annotation=int) for n in ("x0", "y0", "width", "height")] +
+             [Parameter("maps", ko, default=False)] + [q for q in own if q.name not in ("maps", "rivers")] +
+             [threads, progress],
+             [("Terrain settings", t["terrain"]), ("Pipeline settings", t["build"]),
+              ("Erosion settings (with erode=, or alone)", t["erosion"])])
     document(rivers, [Parameter("z", pos, annotation=Any), threads, progress],
              [("Rivers settings", Table("hydrology", skip=("threads",)))])
 
 
-__all__ = ["terrain", "erode", "rivers", "Build", "TerrainWorld"]
+__all__ = ["terrain", "window", "erode", "rivers", "Build"]

@@ -19,18 +19,10 @@ def run(*args):
     return r
 
 
-def formats():
-    out = ["png", "pgm", "npy", "raw"]
-    have = run("terrain", "--help").stdout
-    if ".tif" in have:
-        out.append("tif")
-    if ".exr" in have:
-        out.append("exr")
-    return out
-
-
-@pytest.mark.parametrize("ext", formats())
+@pytest.mark.parametrize("ext", ["png", "pgm", "npy", "raw", "tif", "exr"])
 def test_every_format_records_the_world_size(tmp_path, ext):
+    if f".{ext}" not in run("terrain", "--help").stdout:
+        pytest.skip(f"this build writes no .{ext} (no GDAL or OpenEXR)")
     path = tmp_path / f"t.{ext}"
     run("terrain", "--method", "midpoint", "--levels", 5, "--world-size", 20, "--out", path)
     r = run("erode", "--in", path, "--preset", "land", "--stats")

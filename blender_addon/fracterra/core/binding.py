@@ -303,6 +303,11 @@ SIGNATURES = {
     "ft_terrain_erode": (c_int32, [_Described("build"), _HF, POINTER(TerrainWorld), POINTER(_HF), POINTER(_HF)]),
     "ft_terrain_rivers": (c_int32, [_Described("build"), _HF, POINTER(TerrainWorld), POINTER(c_void_p)]),
     "ft_river_network_write": (c_int32, [c_void_p, _HF, c_char_p, c_int32]),
+    "ft_river_network_measures": (c_int32, [c_void_p, c_void_p]),
+    "ft_fpl_study": (c_int32, [c_int32, _F64P, c_int32, _I32P, c_int32, c_int32, c_uint64, c_int32, PROGRESS_FN,
+                               c_void_p, c_void_p, c_int64]),
+    "ft_hurst_heightfield_points": (c_int32, [_HF, _Described("hurst"), POINTER(HurstResult), _F64P, _F64P, c_int64,
+                                              POINTER(c_int64)]),
     # hydrology.h (ABI 2.15): rivers, lakes and the sea; the segment and lake structs as raw memory.
     "ft_hydrology_params_init": (c_int32, [_Described("hydrology")]),
     "ft_rivers_extract": (c_int32, [_HF, _Described("hydrology"), POINTER(c_void_p)]),
@@ -325,6 +330,11 @@ SIGNATURES = {
     "ft_planet_heights": (c_int32, [_Described("planet"), _F64P, c_int64, _F32P]),
     "ft_planet_sea_height": (c_int32, [_Described("planet"), _F64P]),
     "ft_planet_mesh_counts": (c_int32, [c_int32, POINTER(c_int64), POINTER(c_int64)]),
+    # (ABI 2.23) the icosphere and the angular power spectrum.
+    "ft_planet_icosphere_counts": (c_int32, [c_int32, POINTER(c_int64), POINTER(c_int64)]),
+    "ft_planet_icosphere": (c_int32, [_Described("planet"), c_int32, c_double, _F32P, c_size_t, _I32P, c_size_t,
+                                      _F32P, c_size_t]),
+    "ft_planet_power_spectrum": (c_int32, [_Described("planet"), c_int32, _F64P, c_size_t]),
     "ft_planet_mesh": (c_int32, [_Described("planet"), c_int32, c_double, _F32P, c_size_t, _I32P, c_size_t,
                                  _F32P, c_size_t]),
     # raster.h (ABI 1.4); its structs are in core/raster.py.
