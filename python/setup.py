@@ -16,7 +16,11 @@ setup(
     description="Fractal terrains, erosion and their measures (numpy API over libfracterra)",
     long_description=open("README.md", encoding="utf-8").read(),
     long_description_content_type="text/markdown",
-    license="see the project's repository",
+    # The project's licence (LICENSE at the repository's root, staged beside
+    # this file): the wheel's METADATA names it and its dist-info carries it.
+    license="GPL-3.0-or-later",
+    license_files=["LICENSE"],
+    classifiers=["License :: OSI Approved :: GNU General Public License v3 or later (GPLv3+)"],
     python_requires=">=3.8",
     install_requires=["numpy"],
     packages=["fracterra", "fracterra.core"],

@@ -88,7 +88,7 @@ int run(TerrainOptions& o) {
   if (!o.size.empty()) parse_size(o.size, p);
   if (!o.center.empty()) parse_center(o.center, p);
   o.engine.check(o.out);
-  if (o.engine.given() && p.method != FT_TERRAIN_MIDPOINT && p.method != FT_TERRAIN_ADDITIONS) {
+  if (o.engine.given() && !terrain::terrain_method(p.method).dyadic) {
     // Methods of any size are made at the engine's size (nothing to resample);
     // midpoint grids (2^n + 1) are resampled when the engine wants another size.
     if (o.engine.engine == "godot") {  // Terrain3D takes rectangles: each side on its own
@@ -163,8 +163,8 @@ Registration reg({"terrain", "Generate a fractal terrain heightfield",
                     auto& p = o->p;
                     add_param_flags(app, terrain::terrain_param_table(), &p, {"width", "height", "center_x", "center_y"});
                     app.add_option("--size", o->size,
-                                   "fbm, spectral, interpolated, mandelbrot: N (square) or WxH samples, 2..65536 per "
-                                   "side [default: 513]");
+                                   terrain::methods_that([](const terrain::TerrainMethod& m) { return !m.dyadic; }) +
+                                       ": N (square) or WxH samples, 2..65536 per side [default: 513]");
                     app.add_option("--center", o->center,
                                    "mandelbrot: centre of the view in the complex plane, X,Y in [-4, 4] "
                                    "(row 0 is the top) [default: -0.5,0]");

@@ -382,7 +382,9 @@ class DrawTest(unittest.TestCase):
         panels.FRACTERRA_PT_planet.draw(fake, bpy.context)  # a planet: its Regenerate
         for _, draw in menus.MENUS:
             draw(fake, bpy.context)
-        self.assertEqual(len(operators), 14)
+        # The terrain panel's Add buttons and Regenerate, the measures' and planet's buttons,
+        # and the menus' entries (File > Export has Build Tile Set since 0.6.0).
+        self.assertEqual(len(operators), 15)
         for idname in operators:
             self.assertTrue(operator_exists(idname), idname)
         self.assertFalse(operator_exists("mesh.fracterra_no_such_operator"))

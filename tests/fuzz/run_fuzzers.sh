@@ -6,7 +6,9 @@
 # build-fuzz/fuzz-work/<harness>/ (not committed); a crash is saved under
 # build-fuzz/fuzz-artifacts/<harness>/: copy it to
 # tests/fuzz/regressions/<harness>/ once fixed, and ctest replays it forever.
-# Usage: [FT_FUZZ_PARALLEL=1] tests/fuzz/run_fuzzers.sh SECONDS [harness ...]   (default: all)
+# SECONDS 0 only builds them (tests/run.sh builds them beside ctest, then
+# runs each for 20 s).
+# Usage: [FT_FUZZ_PARALLEL=1 [FT_FUZZ_JOBS=N]] tests/fuzz/run_fuzzers.sh SECONDS [harness ...]   (default: all)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 secs=${1:?usage: tests/fuzz/run_fuzzers.sh SECONDS [harness ...]}
@@ -22,9 +24,10 @@ fi
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S . -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
-    -DFT_FUZZ=ON -DFT_BUILD_BENCH=OFF >/dev/null
+    -DCMAKE_UNITY_BUILD=ON -DFT_FUZZ=ON -DFT_BUILD_BENCH=OFF >/dev/null
 fi
-cmake --build "$build" -j2 --target "${harnesses[@]/#/fuzz_}" >/dev/null
+cmake --build "$build" -j"${FT_FUZZ_BUILD_JOBS:-2}" --target "${harnesses[@]/#/fuzz_}" >/dev/null
+((secs > 0)) || exit 0
 
 # Leaks count as failures.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:print_stacktrace=1}
@@ -60,9 +63,20 @@ timeout=${FT_FUZZ_TIMEOUT:-10}
 printf '%-18s %8s %12s  %s\n' harness seconds executions result
 if [ "${FT_FUZZ_PARALLEL:-0}" = 1 ]; then
   nice="nice -n 19"
-  declare -A pids
-  for h in "${harnesses[@]}"; do fuzz_one "$h" & pids[$h]=$!; done
-  for h in "${harnesses[@]}"; do rc=0; wait "${pids[$h]}" || rc=$?; report "$h" "$rc"; done
+  # FT_FUZZ_JOBS=N: at most N at once (the long runs: two at a time, each
+  # with a core of its own on 2 cores), reported as each ends.
+  jobs=${FT_FUZZ_JOBS:-${#harnesses[@]}}
+  declare -A names
+  running=0
+  for h in "${harnesses[@]}"; do
+    if ((running >= jobs)); then
+      rc=0; wait -n -p done_pid || rc=$?; report "${names[$done_pid]}" "$rc"; running=$((running - 1))
+    fi
+    fuzz_one "$h" & names[$!]=$h; running=$((running + 1))
+  done
+  while ((running > 0)); do
+    rc=0; wait -n -p done_pid || rc=$?; report "${names[$done_pid]}" "$rc"; running=$((running - 1))
+  done
 else
   for h in "${harnesses[@]}"; do rc=0; fuzz_one "$h" || rc=$?; report "$h" "$rc"; done
 fi

@@ -235,6 +235,39 @@ TEST(HurstEstimator, RejectsNanConstantShortInputAndEmptyBands) {
   EXPECT_EQ(status([&] { analysis::estimate_hurst_surface(hf, t); }), FT_ERR_INVALID_ARGUMENT);
 }
 
+// The capi_params fuzz finding (tests/fuzz/regressions/capi_params/
+// hurst_band_int_overflow): a subnormal lag_min passed the range check, and
+// the lag ladder lo 2^(k/4) overflowed to infinity before reaching lag_max,
+// so its counter ran to INT_MAX (undefined behaviour, and a hang). Bounds in
+// (0, 1) are refused, and the ladder stops on its lag whatever the band.
+TEST(HurstEstimator, RefusesLagBoundsBelowOneSampleAndTheLadderEnds) {
+  const auto w = midpoint_profile(8, 0.5, 1);
+  for (double lo : {0.5, 5e-324, 1e-310}) {
+    analysis::HurstOptions o;
+    o.method = analysis::HurstMethod::kVariogram;
+    o.lag_min = lo;
+    // ASSERT: without the check, 5e-324 hangs the next call.
+    try {
+      analysis::estimate_hurst_profile(w.data(), w.size(), o);
+      FAIL() << "lag_min " << lo << " was accepted";
+    } catch (const Error& e) {
+      ASSERT_EQ(e.status(), FT_ERR_INVALID_ARGUMENT);
+      EXPECT_NE(std::string(e.what()).find("lag_min must be 0 (the default) or at least 1 sample"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  analysis::HurstOptions o;
+  o.lag_max = 0.5;
+  EXPECT_THROW(analysis::estimate_hurst_profile(w.data(), w.size(), o), Error);
+  // The ladder itself ends on any band: a subnormal start climbs past the
+  // end (or to infinity) and stops, holding too few lags.
+  EXPECT_THROW(analysis::detail::lags_in_band(analysis::HurstMethod::kVariogram, {5e-324, 64}), Error);
+  // Its lags are as before: quarter octaves from 1, rounded, distinct.
+  const std::vector<int64_t> lags = analysis::detail::lags_in_band(analysis::HurstMethod::kMadogram, {1, 16});
+  EXPECT_EQ(lags, (std::vector<int64_t>{1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 13, 16}));
+}
+
 // ------------------------------------------------------------ levels, clouds
 
 TEST(LevelSpec, QuantilesInterpolateOrderStatistics) {

@@ -35,6 +35,17 @@ def test_imported_from_the_venv_with_the_wheels_library():
     assert ft.__version__ == lib.version
 
 
+def test_the_wheel_names_its_licence_and_carries_it():
+    from importlib import metadata
+    dist = metadata.distribution("fracterra")
+    assert dist.metadata["License"] == "GPL-3.0-or-later"
+    assert "License :: OSI Approved :: GNU General Public License v3 or later (GPLv3+)" in (
+        dist.metadata.get_all("Classifier") or [])
+    licence = [f for f in dist.files if f.name == "LICENSE"]
+    assert licence, [str(f) for f in dist.files if "dist-info" in str(f)]
+    assert "GNU GENERAL PUBLIC LICENSE" in licence[0].read_text()
+
+
 def test_terrain_is_the_clis_terrain(tmp_path):
     z = ft.terrain(method="midpoint", levels=7, hurst=0.8, seed=7)
     assert isinstance(z, np.ndarray) and isinstance(z, ft.Terrain)

@@ -22,26 +22,26 @@ typedef enum ft_erosion_map {
   FT_MAP_COUNT = 6
 } ft_erosion_map;
 
-/// Fill with ft_erosion_params_init (every process off: counts 0) or
-/// ft_erosion_preset. Counts are 0..100000; rates >= 0 and finite.
+/// Fill with ft_erosion_params_init (every process off: counts 0; the defaults are the parameter
+/// table's, `fracterra params`) or ft_erosion_preset. Counts are 0..100000; rates >= 0 and finite.
 typedef struct ft_erosion_params {
   uint32_t struct_size;          ///< sizeof(ft_erosion_params)
   int32_t fluvial_steps;         ///< stream-power time steps; 0 = off
-  double fluvial_dt;             ///< years per step (> 0); default 1000
-  double erodibility;            ///< stream-power K (>= 0); default 2e-4
-  double area_exponent;          ///< m in K A^m S (0..2, n = 1); default 0.5
-  double diffusion;              ///< hillslope diffusivity, world units^2 / yr (>= 0); default 1e-7
-  double uplift;                 ///< world units / yr (>= 0); bounded edges erode towards the lowest input height; default 0
+  double fluvial_dt;             ///< years per step (> 0)
+  double erodibility;            ///< stream-power K (>= 0)
+  double area_exponent;          ///< m in K A^m S (0..2, n = 1)
+  double diffusion;              ///< hillslope diffusivity, world units^2 / yr (>= 0)
+  double uplift;                 ///< world units / yr (>= 0); bounded edges erode towards the lowest input height
   int32_t hydraulic_iterations;  ///< virtual-pipe passes; 0 = off
-  double hydraulic_dt;           ///< seconds per pass (1e-6..1); default 0.02
-  double rain;                   ///< water depth per pass, world units (>= 0); default 0.01
-  double evaporation;            ///< fraction per pass, 0..1; default 0.02
-  double capacity;               ///< sediment capacity constant (>= 0); default 1
-  double dissolve;               ///< 0..1; default 0.3
-  double deposit;                ///< 0..1; default 0.3
+  double hydraulic_dt;           ///< seconds per pass (1e-6..1)
+  double rain;                   ///< water depth per pass, world units (>= 0)
+  double evaporation;            ///< fraction per pass, 0..1
+  double capacity;               ///< sediment capacity constant (>= 0)
+  double dissolve;               ///< 0..1
+  double deposit;                ///< 0..1
   int32_t thermal_iterations;    ///< talus passes; 0 = off
-  double talus_degrees;          ///< angle of repose, 0..89; default 33
-  double thermal_rate;           ///< fraction of the excess moved per pass, (0, 1]; default 0.5
+  double talus_degrees;          ///< angle of repose, 0..89
+  double thermal_rate;           ///< fraction of the excess moved per pass, (0, 1]
   int32_t periodic;              ///< non-zero: the terrain tiles (eroded as a torus, stays seamless)
   int32_t threads;               ///< 0: all cores; output never depends on it
   ft_progress_fn progress;       ///< may be NULL; return non-zero to cancel (FT_ERR_CANCELLED)
@@ -49,11 +49,11 @@ typedef struct ft_erosion_params {
   int32_t uplift_follows_terrain;  ///< non-zero: each cell's uplift is `uplift` x its input height above the
                                    ///< lowest over the input's relief (the landform keeps its shape; ABI 2.12)
   /* ABI 2.14: the landscape model, in world units and years (docs/erosion.md). */
-  double strength;               ///< 0..1: how far the run goes (the run is strength x duration); default 0.5
+  double strength;               ///< 0..1: how far the run goes (the run is strength x duration)
   double duration;               ///< years of landscape evolution (channels, talus, fans); 0: off; presets set it
   double deposition;             ///< 0..1: share of the carried sediment a channel lays down per upstream area
-                                 ///< (G of Yuan et al. 2019): 0 carves only, 1 builds wide fans; default 0.5
-  double rainfall;               ///< world units of water per year on every cell (x rain_map); default 1
+                                 ///< (G of Yuan et al. 2019): 0 carves only, 1 builds wide fans
+  double rainfall;               ///< world units of water per year on every cell (x rain_map)
   const float* erosion_mask;     ///< erosion_mask_width x erosion_mask_height values in [0, 1], row-major, corner
                                  ///< to corner, resampled bilinearly: where erosion acts (material still flows
                                  ///< out of it); NULL: everywhere
@@ -65,9 +65,9 @@ typedef struct ft_erosion_params {
   /* ABI 2.21: the sea, a base level like the map's edge (erosion/sea.hpp). */
   int32_t sea;                   ///< FT_WATER_SEA_* (hydrology.h): every cell at or below the sea's level is sea:
                                  ///< rivers end there and cut no lower, what reaches it is carried away, the sea
-                                 ///< floor stays; default FT_WATER_SEA_NONE
-  double sea_level;              ///< FT_WATER_SEA_HEIGHT: the sea's height, world units; default 0
-  double sea_fraction;           ///< FT_WATER_SEA_FRACTION: share of the samples below the sea, [0, 1); default 0.3
+                                 ///< floor stays
+  double sea_level;              ///< FT_WATER_SEA_HEIGHT: the sea's height, world units
+  double sea_fraction;           ///< FT_WATER_SEA_FRACTION: share of the samples below the sea, [0, 1)
 } ft_erosion_params;
 
 FT_API ft_status ft_erosion_params_init(ft_erosion_params* p);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -37,6 +38,11 @@ Band resolve_band(const HurstOptions& o, size_t n) {
   if (hurst_method_uses_lags(o.method)) {
     check_range("lag_min", o.lag_min, 0, len - 2);
     check_range("lag_max", o.lag_max, 0, len - 1);
+    // Lags are whole samples: a bound in (0, 1) names none (and a subnormal
+    // lag_min made the lag ladder below climb for ever).
+    for (const auto& [name, v] : {std::pair{"lag_min", o.lag_min}, std::pair{"lag_max", o.lag_max}})
+      if (v > 0 && v < 1)
+        invalid(std::string(name) + " must be 0 (the default) or at least 1 sample, got " + format_number(v));
     Band b{o.lag_min > 0 ? o.lag_min : 1.0, o.lag_max > 0 ? o.lag_max : std::max(2.0, std::floor((len - 1) / 16))};
     if (!(b.lo < b.hi))
       invalid("the lag band [" + format_number(b.lo) + ", " + format_number(b.hi) +
@@ -60,8 +66,13 @@ std::vector<int64_t> lags_in_band(HurstMethod m, Band b) {
     for (int64_t t = 1; double(t) <= b.hi; t *= 2)
       if (double(t) >= b.lo) lags.push_back(t);
   } else {
+    // Quarter-octave steps from lo; the loop ends on the lag itself, which
+    // grows (lo >= 1): once the unrounded lag is past hi + 1/2, so is every
+    // rounded one (and llround never sees a value out of its range).
     for (int k = 0;; ++k) {
-      const int64_t t = std::llround(b.lo * std::exp2(k / 4.0));
+      const double x = b.lo * std::exp2(k / 4.0);
+      if (!(x <= b.hi + 0.5)) break;
+      const int64_t t = std::llround(x);
       if (double(t) > b.hi) break;
       if (lags.empty() || t > lags.back()) lags.push_back(t);
     }

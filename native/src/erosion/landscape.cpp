@@ -216,27 +216,61 @@ struct Run {
   float* crept = nullptr;
 };
 
-// Evolves z for `years` in `steps` implicit steps (see the file comment).
-void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t level, const Progress& progress) {
-  const D8Grid& g = run.g;
-  const ErosionConfig& c = run.c;
-  const size_t n = g.size();
-  const double cell = g.spacing * g.spacing, dt = years / steps;
-  const double k_dt = c.fluvial.erodibility * dt, m = c.fluvial.area_exponent, G = c.model.deposition;
-  const double tan_talus =
-      run.talus ? std::tan(c.thermal.talus_degrees * M_PI / 180.0) : std::numeric_limits<double>::infinity();
-  const double own_rain = c.model.rainfall * cell;  // water a cell gathers itself (x the rain map)
-  const double shed = -std::expm1(-dt / kScreeYears);  // share of the excess over the talus shed per step
+// One run of the model over its steps (see the file comment): the constants
+// of its time step, its flow graph, and the grids its stages share. Each
+// step: route(), then the stack's chunks (discharge, detachment and talus,
+// deposition), then creep().
+struct Evolution {
+  const Run& run;
+  const D8Grid& g;
+  const ErosionConfig& c;
+  float* z;
+  const int32_t steps;
+  const size_t n;
+  const double cell, dt;
+  const double k_dt, m, G;
+  const double tan_talus;
+  const double own_rain;  // water a cell gathers itself (x the rain map)
+  const double shed;      // share of the excess over the talus shed per step
   FlowGraph graph;
   BasinGraph basins;
-  const bool creep = c.fluvial.diffusion > 0;
-  std::vector<float> filled(n), start(n), cap(n), diffused(run.texture && creep ? n : 0),
-      plain(run.texture && creep ? n : 0), before_creep(run.crept && creep ? n : 0);
-  std::vector<double> discharge(n), sediment(n);
-  const int32_t sink = g.periodic ? periodic_sink(g, z) : -1;
-  auto mask = [&](int32_t i) { return run.mask ? double(run.mask[i]) : 1.0; };
+  const bool creeps;
+  std::vector<float> filled, start, cap, diffused, plain, before_creep;
+  std::vector<double> discharge, sediment;
+  const int32_t sink;
   double carried = 0, detached = 0, deposited = 0;
-  for (int32_t step = 0; step < steps; ++step) {
+
+  Evolution(const Run& r, float* heights, double years, int32_t step_count)
+      : run(r),
+        g(r.g),
+        c(r.c),
+        z(heights),
+        steps(step_count),
+        n(g.size()),
+        cell(g.spacing * g.spacing),
+        dt(years / steps),
+        k_dt(c.fluvial.erodibility * dt),
+        m(c.fluvial.area_exponent),
+        G(c.model.deposition),
+        tan_talus(r.talus ? std::tan(c.thermal.talus_degrees * M_PI / 180.0)
+                          : std::numeric_limits<double>::infinity()),
+        own_rain(c.model.rainfall * cell),
+        shed(-std::expm1(-dt / kScreeYears)),
+        creeps(c.fluvial.diffusion > 0),
+        filled(n),
+        start(n),
+        cap(n),
+        diffused(r.texture && creeps ? n : 0),
+        plain(r.texture && creeps ? n : 0),
+        before_creep(r.crept && creeps ? n : 0),
+        discharge(n),
+        sediment(n),
+        sink(g.periodic ? periodic_sink(g, heights) : -1) {}
+
+  double mask(int32_t i) const { return run.mask ? double(run.mask[i]) : 1.0; }
+
+  // The step's flow graph over z, drained out of its depressions.
+  void route(int32_t step, uint32_t level, const Progress& progress) {
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n); ++i) {
       start[i] = z[i];
@@ -252,9 +286,12 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
       route_over_depressions(g, z, sink, graph, basins, filled.data(), routing.progress());
     }
     progress.report((step + 0.5) / steps);
-    // Runs of whole trees are independent: each is walked in stack order
-    // (receivers first) or against it (donors first), so the result does
-    // not depend on the thread count.
+  }
+
+  // Runs of whole trees are independent: each is walked in stack order
+  // (receivers first) or against it (donors first), so the result does
+  // not depend on the thread count.
+  void erode_and_deposit(int32_t step, const Progress& progress) {
     const int32_t chunks = int32_t(graph.chunk_start.size()) - 1;
     double carried_step = 0, detached_step = 0, deposited_step = 0;
     // In batches of chunks, with a report after each (a 4097^2 step's
@@ -267,136 +304,168 @@ void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t leve
       for (int32_t ch = from; ch < to; ++ch) {
         const int32_t first = graph.chunk_start[ch], last = graph.chunk_start[ch + 1];
         LakeFill lake(graph, filled.data(), start.data(), z, cell);
-        for (int32_t k = last - 1; k >= first; --k) {  // discharge, donors first
-          const int32_t i = graph.stack[k], r = graph.receiver[i];
-          if (r != i) discharge[r] += discharge[i];
-        }
-        for (int32_t k = first; k < last; ++k) {  // detachment and talus, receivers first
-          const int32_t i = graph.stack[k], r = graph.receiver[i];
-          // A river that runs into a lake cuts down to the lake's surface,
-          // its base level, not to the lake's floor.
-          const float base = filled[r] > start[r] ? filled[r] : z[r];
-          if (r == i || !(z[i] > base)) continue;  // a base level, or under a lake
-          const double w = mask(i);
-          const double f = w * k_dt * (m == 0.5 ? std::sqrt(discharge[i]) : std::pow(discharge[i], m)) / graph.length[i];
-          double zi = (z[i] + f * base) / (1.0 + f);
-          const double limit = base + tan_talus * graph.length[i];
-          if (zi > limit) zi -= w * shed * (zi - limit);
-          z[i] = float(zi);
-        }
-        for (int32_t k = last - 1; k >= first; --k) {  // deposition, donors first
-          const int32_t i = graph.stack[k], r = graph.receiver[i];
-          const double lost = std::max(0.0, double(start[i]) - z[i]) * cell;
-          detached_step += lost;
-          double load = sediment[i] + lost;
-          sediment[i] = 0;
-          double laid = 0;
-          if (lake.under(i)) {
-            // A lake's cells pass what they get on to its exit, which
-            // settles the lake's share at once (LakeFill). The share is
-            // G, as on land: a lake traps what settles in still water and
-            // the rest stays in suspension and flows on (a lake that kept
-            // everything filled fBm's closed basins, on half its cells,
-            // into plains, and Badlands, "little sediment kept", kept the
-            // most).
-            if (r != i && lake.in_lake_of(r, i)) {
-              sediment[r] += load;
-              continue;
-            }
-            laid = lake.fill(i, std::min(1.0, G) * load);
-          } else if (r != i) {
-            const double top = std::isinf(cap[i]) ? double(start[i]) : double(cap[i]);
-            const double share = std::min(1.0, G * own_rain / std::max(discharge[i], 1e-30));
-            laid = std::min(share * load, std::max(0.0, top - z[i]) * cell);
-            z[i] = float(z[i] + laid / cell);
-          }
-          deposited_step += laid;
-          if (r == i) {  // a base level: the load leaves (a bounded edge stays where it is)
-            carried_step += load - laid;
-            continue;
-          }
-          sediment[r] += std::max(0.0, load - laid);
-          cap[r] = std::min(cap[r], float(z[i] - kFanSlope * graph.length[i]));
-        }
+        accumulate_discharge(first, last);
+        detach_and_shed(first, last);
+        deposit(first, last, lake, carried_step, detached_step, deposited_step);
       }
       progress.report((step + 0.5 + 0.35 * (b + 1) / kBatches) / steps);
     }
     carried += carried_step, detached += detached_step, deposited += deposited_step;
-    if (creep) {
-      if (run.crept) std::copy(z, z + n, before_creep.begin());
-      // The mask scales each edge's flux: outside it creep neither fills a
-      // hollow nor rounds a crest (scaling creep's change instead let it
-      // fill the hollows of the masked-off land).
-      if (run.texture) {
-        // With a texture, a deposit (above it) creeps as it lies: sediment
-        // has no rock texture, and creep on its change would print the
-        // texture of the bed it buried onto a filled lake's flat.
-#pragma omp parallel for schedule(static)
-        for (int64_t i = 0; i < int64_t(n); ++i) {
-          diffused[i] = z[i] - run.texture[i];
-          plain[i] = z[i];
-        }
-        hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt, run.mask);
-        hillslope_diffusion(g, plain.data(), c.fluvial.diffusion * dt, run.mask);
-        // A sample of the texture beside a deposit is not lifted by the
-        // deposit's creep above where plain creep would put it: a crest
-        // standing out of a filled floor rode up with the floor (by 11 mm
-        // on example 14's top lake) and stayed a pimple on it. (On every
-        // sample, it wore the hillslopes' texture: 0.62 -> 0.54 of its
-        // energy kept, Badlands at 1025^2.)
-        auto beside_deposit = [&](int64_t i) {
-          const int32_t x = int32_t(i % g.width), y = int32_t(i / g.width);
-          for (int k = 0; k < 8; k += 2) {
-            const int64_t j = g.neighbour(x, y, k);
-            if (j >= 0 && z[j] > run.texture[j]) return true;
-          }
-          return false;
-        };
-        // Each cell's new height goes into `diffused` (it reads only its own
-        // there), since its neighbours' z are read.
-#pragma omp parallel for schedule(static)
-        for (int64_t i = 0; i < int64_t(n); ++i) {
-          float next = plain[i];
-          if (!(z[i] > run.texture[i])) {
-            next = diffused[i] + run.texture[i];
-            if (beside_deposit(i)) next = std::min(next, std::max(z[i], plain[i]));
-          }
-          diffused[i] = next;
-        }
-        // Added as a change (not assigned): the float rounding of the runs
-        // without a mask stays as it was.
-#pragma omp parallel for schedule(static)
-        for (int64_t i = 0; i < int64_t(n); ++i) z[i] += diffused[i] - z[i];
-      } else {
-        hillslope_diffusion(g, z, c.fluvial.diffusion * dt, run.mask);
-      }
-      if (g.sea) {  // the sea floor stays (creep would spread the coast over it)
-#pragma omp parallel for schedule(static)
-        for (int64_t i = 0; i < int64_t(n); ++i)
-          if (g.sea[i]) z[i] = start[i];
-      }
-      if (!g.periodic) {
-        // Where water leaves the map, the edge cell is its base level:
-        // creep may lower it, never raise it. Creep, closed at the edges,
-        // filled these notches from the edge row beside them (by a median
-        // of 2 cm on fBm 513^2, up to 7 cm) and silted the valleys' mouths
-        // into flats. The other edge cells creep as the rest.
-        const double outlet = kOutletCells * own_rain;
-        g.for_each_edge_cell([&](size_t i) {
-          if (discharge[i] >= outlet) z[i] = std::min(z[i], start[i]);
-        });
-      }
-      if (run.crept) {
-#pragma omp parallel for schedule(static)
-        for (int64_t i = 0; i < int64_t(n); ++i) run.crept[i] += z[i] - before_creep[i];
-      }
+  }
+
+  // Discharge, donors first.
+  void accumulate_discharge(int32_t first, int32_t last) {
+    for (int32_t k = last - 1; k >= first; --k) {
+      const int32_t i = graph.stack[k], r = graph.receiver[i];
+      if (r != i) discharge[r] += discharge[i];
     }
+  }
+
+  // Detachment and talus, receivers first.
+  void detach_and_shed(int32_t first, int32_t last) {
+    for (int32_t k = first; k < last; ++k) {
+      const int32_t i = graph.stack[k], r = graph.receiver[i];
+      // A river that runs into a lake cuts down to the lake's surface,
+      // its base level, not to the lake's floor.
+      const float base = filled[r] > start[r] ? filled[r] : z[r];
+      if (r == i || !(z[i] > base)) continue;  // a base level, or under a lake
+      const double w = mask(i);
+      const double f = w * k_dt * (m == 0.5 ? std::sqrt(discharge[i]) : std::pow(discharge[i], m)) / graph.length[i];
+      double zi = (z[i] + f * base) / (1.0 + f);
+      const double limit = base + tan_talus * graph.length[i];
+      if (zi > limit) zi -= w * shed * (zi - limit);
+      z[i] = float(zi);
+    }
+  }
+
+  // Deposition, donors first; adds the chunk's volumes to the three sums.
+  void deposit(int32_t first, int32_t last, LakeFill& lake, double& carried_step, double& detached_step,
+               double& deposited_step) {
+    for (int32_t k = last - 1; k >= first; --k) {
+      const int32_t i = graph.stack[k], r = graph.receiver[i];
+      const double lost = std::max(0.0, double(start[i]) - z[i]) * cell;
+      detached_step += lost;
+      double load = sediment[i] + lost;
+      sediment[i] = 0;
+      double laid = 0;
+      if (lake.under(i)) {
+        // A lake's cells pass what they get on to its exit, which
+        // settles the lake's share at once (LakeFill). The share is
+        // G, as on land: a lake traps what settles in still water and
+        // the rest stays in suspension and flows on (a lake that kept
+        // everything filled fBm's closed basins, on half its cells,
+        // into plains, and Badlands, "little sediment kept", kept the
+        // most).
+        if (r != i && lake.in_lake_of(r, i)) {
+          sediment[r] += load;
+          continue;
+        }
+        laid = lake.fill(i, std::min(1.0, G) * load);
+      } else if (r != i) {
+        const double top = std::isinf(cap[i]) ? double(start[i]) : double(cap[i]);
+        const double share = std::min(1.0, G * own_rain / std::max(discharge[i], 1e-30));
+        laid = std::min(share * load, std::max(0.0, top - z[i]) * cell);
+        z[i] = float(z[i] + laid / cell);
+      }
+      deposited_step += laid;
+      if (r == i) {  // a base level: the load leaves (a bounded edge stays where it is)
+        carried_step += load - laid;
+        continue;
+      }
+      sediment[r] += std::max(0.0, load - laid);
+      cap[r] = std::min(cap[r], float(z[i] - kFanSlope * graph.length[i]));
+    }
+  }
+
+  // Hillslope creep, implicit; the sea floor and the outlets' base levels stay.
+  void creep() {
+    if (run.crept) std::copy(z, z + n, before_creep.begin());
+    // The mask scales each edge's flux: outside it creep neither fills a
+    // hollow nor rounds a crest (scaling creep's change instead let it
+    // fill the hollows of the masked-off land).
+    if (run.texture) {
+      creep_beside_texture();
+    } else {
+      hillslope_diffusion(g, z, c.fluvial.diffusion * dt, run.mask);
+    }
+    if (g.sea) {  // the sea floor stays (creep would spread the coast over it)
+#pragma omp parallel for schedule(static)
+      for (int64_t i = 0; i < int64_t(n); ++i)
+        if (g.sea[i]) z[i] = start[i];
+    }
+    if (!g.periodic) {
+      // Where water leaves the map, the edge cell is its base level:
+      // creep may lower it, never raise it. Creep, closed at the edges,
+      // filled these notches from the edge row beside them (by a median
+      // of 2 cm on fBm 513^2, up to 7 cm) and silted the valleys' mouths
+      // into flats. The other edge cells creep as the rest.
+      const double outlet = kOutletCells * own_rain;
+      g.for_each_edge_cell([&](size_t i) {
+        if (discharge[i] >= outlet) z[i] = std::min(z[i], start[i]);
+      });
+    }
+    if (run.crept) {
+#pragma omp parallel for schedule(static)
+      for (int64_t i = 0; i < int64_t(n); ++i) run.crept[i] += z[i] - before_creep[i];
+    }
+  }
+
+  // With a texture, a deposit (above it) creeps as it lies: sediment
+  // has no rock texture, and creep on its change would print the
+  // texture of the bed it buried onto a filled lake's flat.
+  void creep_beside_texture() {
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n); ++i) {
+      diffused[i] = z[i] - run.texture[i];
+      plain[i] = z[i];
+    }
+    hillslope_diffusion(g, diffused.data(), c.fluvial.diffusion * dt, run.mask);
+    hillslope_diffusion(g, plain.data(), c.fluvial.diffusion * dt, run.mask);
+    // A sample of the texture beside a deposit is not lifted by the
+    // deposit's creep above where plain creep would put it: a crest
+    // standing out of a filled floor rode up with the floor (by 11 mm
+    // on example 14's top lake) and stayed a pimple on it. (On every
+    // sample, it wore the hillslopes' texture: 0.62 -> 0.54 of its
+    // energy kept, Badlands at 1025^2.)
+    auto beside_deposit = [&](int64_t i) {
+      const int32_t x = int32_t(i % g.width), y = int32_t(i / g.width);
+      for (int k = 0; k < 8; k += 2) {
+        const int64_t j = g.neighbour(x, y, k);
+        if (j >= 0 && z[j] > run.texture[j]) return true;
+      }
+      return false;
+    };
+    // Each cell's new height goes into `diffused` (it reads only its own
+    // there), since its neighbours' z are read.
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n); ++i) {
+      float next = plain[i];
+      if (!(z[i] > run.texture[i])) {
+        next = diffused[i] + run.texture[i];
+        if (beside_deposit(i)) next = std::min(next, std::max(z[i], plain[i]));
+      }
+      diffused[i] = next;
+    }
+    // Added as a change (not assigned): the float rounding of the runs
+    // without a mask stays as it was.
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < int64_t(n); ++i) z[i] += diffused[i] - z[i];
+  }
+};
+
+// Evolves z for `years` in `steps` implicit steps (see the file comment).
+void evolve(const Run& run, float* z, double years, int32_t steps, uint32_t level, const Progress& progress) {
+  Evolution e(run, z, years, steps);
+  for (int32_t step = 0; step < steps; ++step) {
+    e.route(step, level, progress);
+    e.erode_and_deposit(step, progress);
+    if (e.creeps) e.creep();
     progress.report(double(step + 1) / steps);
   }
   if (run.budget) {
-    run.budget->carried_out += carried;
-    run.budget->detached += detached;
-    run.budget->deposited += deposited;
+    run.budget->carried_out += e.carried;
+    run.budget->detached += e.detached;
+    run.budget->deposited += e.deposited;
   }
 }
 

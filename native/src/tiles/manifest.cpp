@@ -13,6 +13,7 @@
 #include "erosion/erosion_params.hpp"
 #include "pipeline/build_params.hpp"
 #include "pipeline/terrain_build.hpp"
+#include "terrain/terrain_method.hpp"
 #include "terrain/terrain_params.hpp"
 
 namespace ft::tiles {
@@ -59,7 +60,7 @@ nlohmann::json terrain_identity(const ft_terrain_params& p) {
     if (std::strcmp(row.name, "method") != 0 && !(row.methods & (uint64_t(1) << p.method))) continue;
     j[row.name] = value_of(row, &p);
   }
-  if (p.reference != nullptr && (p.method == FT_TERRAIN_MIDPOINT || p.method == FT_TERRAIN_ADDITIONS)) {
+  if (p.reference != nullptr && terrain::terrain_method(p.method).reference) {
     const size_t n = size_t(p.reference_size) * size_t(p.reference_size);
     const uLong crc = crc32(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(p.reference), uInt(n * sizeof(float)));
     j["reference"] = {{"size", p.reference_size}, {"crc32", uint32_t(crc)}};

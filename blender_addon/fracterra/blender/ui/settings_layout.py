@@ -18,7 +18,10 @@ def setting_prop(layout, data, name, p=None):
     an enum gets its label beside it (Blender would drop it) and a file path
     its label above it. `p`: the setting's
     Param (a terrain's, by its name, unless given)."""
-    prop = data.bl_rna.properties[name]
+    # An operator's own RNA lacks the properties given by __annotations__ after
+    # its class body (they are its OperatorProperties'): the redo panel raised here.
+    rna = data.properties.bl_rna if isinstance(data, bpy.types.Operator) else data.bl_rna
+    prop = rna.properties[name]
     if not layout.use_property_split and prop.type == "STRING" and prop.subtype == "FILE_PATH":
         # A path beside its label leaves room for neither: the label above it.
         col = layout.column(align=True)
