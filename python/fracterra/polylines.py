@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from .arrays import to_library
-from .core.binding import PolylineStats, library
+from .core.binding import FplStudyRow, library
 from .core.errors import InvalidArgumentError
 from .core.polylines import Polylines
 from .core.terrain import _ProgressBridge
@@ -119,14 +119,6 @@ def measure(lines: Lines) -> dict:
         return pl.measure()
 
 
-class _StudyRow(ctypes.Structure):
-    """ft_fpl_study_row (fracterra/polyline.h, ABI 2.27)."""
-    _fields_ = [("spread", c_double), ("depth", c_int32), ("count", c_int32)] + [
-        (name, c_double) for name in ("eta_mean", "eta_se", "chi_mean", "chi_se", "gamma_mean", "gamma_se",
-                                      "mass_dimension_mean", "mass_dimension_se", "box_dimension_mean",
-                                      "box_dimension_se", "paper_eta", "paper_chi", "paper_gamma", "paper_dimension")]
-
-
 def fpl_study(rng: str = "uniform", spreads=(0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5), depths=(8,),
               count: int = 100, seed: int = 1, box_counting: bool = True, progress=None) -> dict:
     """The FPL ensemble study of seed 003 (Nikulin), as `fracterra study fpl`
@@ -150,7 +142,7 @@ def fpl_study(rng: str = "uniform", spreads=(0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.
     if s.ndim != 1 or d.ndim != 1 or d.dtype.kind not in "iu":
         raise TypeError("spreads is a sequence of numbers and depths a sequence of integers")
     d = np.ascontiguousarray(d, dtype=np.int32)
-    rows = (_StudyRow * (len(s) * len(d)))()
+    rows = (FplStudyRow * (len(s) * len(d)))()
     bridge = _ProgressBridge(progress)
     status = lib.ft_fpl_study(_RNGS[rng.lower()], s.ctypes.data_as(POINTER(c_double)), len(s),
                               d.ctypes.data_as(POINTER(c_int32)), len(d), int(count), int(seed),
@@ -158,7 +150,7 @@ def fpl_study(rng: str = "uniform", spreads=(0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.
     bridge.reraise()
     lib.check(status)
     return {name: np.array([getattr(r, name) for r in rows], dtype=np.int32 if name in ("depth", "count") else np.float64)
-            for name, _ in _StudyRow._fields_}
+            for name, _ in FplStudyRow._fields_}
 
 
 def coastline(z, level: float = 0.0, *, quantile: bool = False, world: bool = False) -> Lines:

@@ -10,21 +10,10 @@ from ctypes import POINTER, c_double
 
 import numpy as np
 
+from .core.binding import NetworkMeasures
 from .core.rivers import LAND, SEA, RiverNetwork
 
 _ENDS = ("confluence", "sea", "lake", "edge", "sink")
-
-
-class _Measures(ctypes.Structure):
-    """ft_network_measures (fracterra/hydrology.h, ABI 2.27)."""
-    _fields_ = [("struct_size", ctypes.c_uint32), ("horton_orders", ctypes.c_int32),
-                ("horton_fitted_orders", ctypes.c_int32), ("hack_points", ctypes.c_int32)] + [
-        (n, c_double) for n in ("bifurcation_ratio", "bifurcation_ratio_stderr", "length_ratio", "length_ratio_stderr",
-                                "total_length", "land_area", "drainage_density", "hack_h", "hack_h_stderr")] + [
-        ("segments", ctypes.c_int64), ("lakes", ctypes.c_int64), ("vertices", ctypes.c_int64),
-        ("ends", ctypes.c_int32 * 5), ("reserved0", ctypes.c_int32), ("streams", ctypes.c_int64 * 32),
-        ("mean_length", c_double * 32)]
-_VALUES = ("discharge", "width", "depth", "area")
 
 
 class Rivers:
@@ -101,9 +90,9 @@ class Rivers:
         orders, streams and mean_length per order, total_length, land_area, drainage_density,
         Hack's h (hack_h, hack_h_stderr, hack_points), the counts and ends by kind."""
         lib = self._net._lib
-        m = _Measures(struct_size=ctypes.sizeof(_Measures))
+        m = NetworkMeasures(struct_size=ctypes.sizeof(NetworkMeasures))
         lib.check(lib.ft_river_network_measures(self._net.handle, ctypes.byref(m)))
-        out = {name: getattr(m, name) for name, _ in _Measures._fields_
+        out = {name: getattr(m, name) for name, _ in NetworkMeasures._fields_
                if name not in ("struct_size", "reserved0", "ends", "streams", "mean_length")}
         k = m.horton_orders
         out["streams"] = np.array(m.streams[:k], dtype=np.int64)

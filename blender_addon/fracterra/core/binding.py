@@ -158,6 +158,24 @@ class TerrainWorld(Structure):
     _fields_ = [("struct_size", c_uint32), ("period_overlap", c_int32), ("sea_level", c_double)]
 
 
+class FplStudyRow(Structure):
+    """ft_fpl_study_row (fracterra/polyline.h, ABI 2.27)."""
+    _fields_ = [("spread", c_double), ("depth", c_int32), ("count", c_int32)] + [
+        (name, c_double) for name in ("eta_mean", "eta_se", "chi_mean", "chi_se", "gamma_mean", "gamma_se",
+                                      "mass_dimension_mean", "mass_dimension_se", "box_dimension_mean",
+                                      "box_dimension_se", "paper_eta", "paper_chi", "paper_gamma", "paper_dimension")]
+
+
+class NetworkMeasures(Structure):
+    """ft_network_measures (fracterra/hydrology.h, ABI 2.27)."""
+    _fields_ = [("struct_size", c_uint32), ("horton_orders", c_int32), ("horton_fitted_orders", c_int32),
+                ("hack_points", c_int32)] + [
+        (n, c_double) for n in ("bifurcation_ratio", "bifurcation_ratio_stderr", "length_ratio", "length_ratio_stderr",
+                                "total_length", "land_area", "drainage_density", "hack_h", "hack_h_stderr")] + [
+        ("segments", c_int64), ("lakes", c_int64), ("vertices", c_int64), ("ends", c_int32 * 5),
+        ("reserved0", c_int32), ("streams", c_int64 * 32), ("mean_length", c_double * 32)]
+
+
 class PovSceneLines(Structure):
     """ft_pov_scene_lines (fracterra/povray.h): an array of them is the data that
     ft_pov_scene_params.lines points to (described as an opaque pointer)."""
@@ -335,6 +353,7 @@ SIGNATURES = {
     "ft_planet_icosphere": (c_int32, [_Described("planet"), c_int32, c_double, _F32P, c_size_t, _I32P, c_size_t,
                                       _F32P, c_size_t]),
     "ft_planet_power_spectrum": (c_int32, [_Described("planet"), c_int32, _F64P, c_size_t]),
+    "ft_planet_spectrum_hurst": (c_int32, [_Described("planet"), c_int32, c_int32, _F64P, _F64P]),
     "ft_planet_mesh": (c_int32, [_Described("planet"), c_int32, c_double, _F32P, c_size_t, _I32P, c_size_t,
                                  _F32P, c_size_t]),
     # raster.h (ABI 1.4); its structs are in core/raster.py.

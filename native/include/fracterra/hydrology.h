@@ -121,13 +121,18 @@ typedef struct ft_network_measures {
   int32_t horton_orders;           ///< highest Strahler order (0: no Horton ratios)
   int32_t horton_fitted_orders;    ///< orders in the ratios' fits
   int32_t hack_points;
-  double bifurcation_ratio, bifurcation_ratio_stderr;  ///< R_b and the standard error of its log
-  double length_ratio, length_ratio_stderr;            ///< R_l and the standard error of its log
+  double bifurcation_ratio;        ///< R_b
+  double bifurcation_ratio_stderr; ///< the standard error of log R_b
+  double length_ratio;             ///< R_l
+  double length_ratio_stderr;      ///< the standard error of log R_l
   double total_length;             ///< world units
   double land_area;                ///< world units^2: cells neither sea nor lake
   double drainage_density;         ///< total length / land area (1 / world units)
-  double hack_h, hack_h_stderr;    ///< L ~ A^h: longest upstream length against area, per segment mouth
-  int64_t segments, lakes, vertices;
+  double hack_h;                   ///< L ~ A^h: longest upstream length against area, per segment mouth
+  double hack_h_stderr;
+  int64_t segments;
+  int64_t lakes;
+  int64_t vertices;
   int32_t ends[5];                 ///< segments ending at a confluence, the sea, a lake, the edge, a sink
   int32_t reserved0;
   int64_t streams[32];             ///< N_k, streams of order k + 1 (k < horton_orders, at most 32)

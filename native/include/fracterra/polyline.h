@@ -118,10 +118,22 @@ FT_API ft_status ft_polyline_measure(const ft_polylines* p, ft_polyline_stats* o
 /// fitted values at the same spread and depth.
 typedef struct ft_fpl_study_row {
   double spread;
-  int32_t depth, count;
-  double eta_mean, eta_se, chi_mean, chi_se, gamma_mean, gamma_se;
-  double mass_dimension_mean, mass_dimension_se, box_dimension_mean, box_dimension_se;
-  double paper_eta, paper_chi, paper_gamma, paper_dimension;  ///< NaN dimension where the fit has none
+  int32_t depth;
+  int32_t count;              ///< K, lines per (spread, depth)
+  double eta_mean;            ///< max |deviation| / chord (eq. 1a)
+  double eta_se;
+  double chi_mean;            ///< mean |deviation| / chord (eq. 1a)
+  double chi_se;
+  double gamma_mean;          ///< length / chord (eq. 1b)
+  double gamma_se;
+  double mass_dimension_mean; ///< eq. 4g / 6
+  double mass_dimension_se;
+  double box_dimension_mean;  ///< NaN below depth 6 or at spread 0
+  double box_dimension_se;
+  double paper_eta;           ///< the paper's fits at this spread and depth
+  double paper_chi;
+  double paper_gamma;
+  double paper_dimension;     ///< NaN where the fit has none
 } ft_fpl_study_row;
 
 /// The FPL ensemble study (ABI 2.27), as `fracterra study fpl` runs it: for each spread (>= 0) and
