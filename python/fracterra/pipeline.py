@@ -70,6 +70,13 @@ def _preset(value) -> int:
         raise InvalidArgumentError(f"unknown erosion preset {value!r}: one of {rows.allowed_text(row)}") from None
 
 
+def _preset_name(value) -> str:
+    """ft_erosion_preset's name of a preset value ("land")."""
+    from .core import rows
+    row = next(r for r in library().param_rows["build"] if r["name"] == "erosion_preset")
+    return rows.enum_item(row, value)["name"].lower()
+
+
 def _check_mask_shape(mask, shape, what):
     """A mask spans the terrain corner to corner (the library resamples it): it must have the
     terrain's shape or its proportions (within a sample), so that a mask of another terrain is
@@ -276,8 +283,10 @@ def erode(z, preset: Optional[str] = None, *, maps: bool = True, erosion_mask=No
     bit for bit) or a 2-D array (a world of 10 units, said on stderr).
     preset: an erosion preset by id, old id or label, as terrain(erode=...):
     fitted to z, it sets the pass counts and what it changes from the
-    defaults; the settings given set the rest. periodic=True/False and sea
-    settings replace z's own.
+    defaults; the settings given override its values, as `fracterra erode
+    --preset` takes flags (terrain(erode=...) keeps a preset's values, as
+    `fracterra terrain --erode`: the same only for settings no preset sets,
+    such as strength). periodic=True/False and sea settings replace z's own.
     """
     lib = library()
     table = Table("erosion", skip=("threads",))
@@ -287,13 +296,20 @@ def erode(z, preset: Optional[str] = None, *, maps: bool = True, erosion_mask=No
     world = _world(z, periodic, sea_given)
     with to_library(z, world_size=world_size_or_default(z)) as hf:
         e = None
+        preset_value = _preset(preset)
         if given or erosion_mask is not None or rain_map is not None:
             e = lib.erosion_params_type()
-            lib.check(lib.ft_erosion_params_init(byref(e)))
+            if given and preset_value != _preset(None):
+                # As `fracterra erode --preset X --flag V`: the preset fitted to z, then the settings
+                # given over it (the pipeline alone keeps a preset's values over the given ones).
+                lib.check(lib.ft_erosion_preset_fitted(_preset_name(preset_value).encode(), hf.handle, byref(e)))
+                preset_value = _preset(None)
+            else:
+                lib.check(lib.ft_erosion_params_init(byref(e)))
             table.fill(e, given)
             keep = _attach_maps(e, erosion_mask, rain_map, (hf.height, hf.width))  # noqa: F841 (kept alive)
         bridge = _ProgressBridge(progress)
-        b = _build_struct(None, e, _preset(preset), threads, bridge)
+        b = _build_struct(None, e, preset_value, threads, bridge)
         out = c_void_p()
         handles = (c_void_p * len(MAPS))()
         status = lib.ft_terrain_erode(byref(b), hf.handle, byref(world), byref(out),

@@ -14,6 +14,7 @@ from .core.binding import NetworkMeasures
 from .core.rivers import LAND, SEA, RiverNetwork
 
 _ENDS = ("confluence", "sea", "lake", "edge", "sink")
+_VALUES = ("discharge", "width", "depth", "area")  # ft_river_network_vertex_values' order
 
 
 class Rivers:

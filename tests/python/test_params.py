@@ -133,7 +133,10 @@ def test_cli_params_json_is_the_librarys_table(lib):
                 want, got = r[key], f[key]
                 assert (got is None and want is None) or got == pytest.approx(want), (r["name"], key)
             assert [i["value"] for i in f.get("items", [])] == [i["value"] for i in r["items"]]
-            assert binding.rows.row_from_json(f) == r, r["name"]  # the snapshot reads as the library's rows
+            # The snapshot reads as the library's rows (but which struct a pointer points to).
+            snap = binding.rows.row_from_json(f)
+            assert {k: v for k, v in snap.items() if not k.startswith("element_")} == \
+                {k: v for k, v in r.items() if not k.startswith("element_")}, r["name"]
 
 
 # Which command offers each described struct's settings as flags, and the

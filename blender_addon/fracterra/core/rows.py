@@ -63,8 +63,11 @@ def row_from_info(info):
 
 
 def row_from_json(j):
-    """One field of `fracterra params --json` as a row."""
-    return _derived({**j, "items": [dict(i) for i in j.get("items") or ()]})
+    """One field of `fracterra params --json` as a row (it names no pointed-to struct: element_kind -1)."""
+    row = {k: v for k, v in j.items() if k != "flag"}
+    row.setdefault("element_kind", -1)
+    row.setdefault("element_type", None)
+    return _derived({**row, "items": [dict(i) for i in j.get("items") or ()]})
 
 
 def enum_value(row, given):
