@@ -1,6 +1,6 @@
 """Builds the fracterra wheel from the staged package (python/CMakeLists.txt
 stages it: this package's files, the add-on's bpy-free core/, lib/ with
-libfracterra and its bundled libraries). The library is loaded by ctypes, so
+libfracterra and its bundled libraries, THIRD_PARTY_NOTICES). The library is loaded by ctypes, so
 the wheel does not depend on the CPython ABI: one py3-none-<platform> wheel
 serves every Python 3. Run by CMake as
     python3 setup.py -q bdist_wheel --python-tag py3 --plat-name linux_x86_64 -d OUT
@@ -24,6 +24,6 @@ setup(
     python_requires=">=3.8",
     install_requires=["numpy"],
     packages=["fracterra", "fracterra.core"],
-    package_data={"fracterra": ["lib/*"], "fracterra.core": ["params.json"]},
+    package_data={"fracterra": ["lib/*", "THIRD_PARTY_NOTICES"], "fracterra.core": ["params.json"]},
     zip_safe=False,
 )

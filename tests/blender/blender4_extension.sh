@@ -1,17 +1,30 @@
 #!/usr/bin/env bash
-# The add-on zip in Blender 4.3 (Debian trixie's), as an artist installs it:
-# `blender --command extension install-file --repo user_default --enable`, then
-# the headless add-on tests (and Rivers and Lakes: its curves, bevel objects and
-# meshes through 4.3's API; the comparison with the CLI is skipped there) and
-# the planet's (its sea height against the CLI is skipped alike), inside a trixie root (scripts/blender4-root.sh)
-# with no host libraries and no environment variables.
-# Usage: blender4_extension.sh SOURCE_DIR ADDON_ZIP       (exit 77: skipped)
+# The Blender 4.2+ extensions as an artist meets them, in Debian trixie's
+# Blender 4.3 inside a trixie root (scripts/blender4-root.sh) with no host
+# libraries and no environment variables: the per-platform zips made
+# by Blender's own `extension build --split-platforms` and checked by its
+# `extension validate` (scripts/build-extensions.sh), their notices and size
+# budgets (check_notices.py), then the linux-x64 one installed with
+# `blender --command extension install-file --repo user_default --enable` and
+# the headless add-on tests run on it: the add-on's own, Rivers and Lakes (its
+# curves, bevel objects and meshes through 4.3's API; the comparison with the
+# CLI is skipped there), the planet's (its sea height against the CLI is
+# skipped alike), the DEM's through trixie's own GDAL (3.10, libgdal.so.36:
+# not the GDAL the library was built with), and the one of a system without
+# GDAL (FRACTERRA_GDAL naming no file: the only candidate then).
+# Usage: blender4_extension.sh SOURCE_DIR EXTENSION_FOLDER OUT_DIR      (exit 77: skipped)
 set -euo pipefail
-src=$1 zip=$2
+src=$1 folder=$2 out=$3
 root=$("$src/scripts/blender4-root.sh") || exit $?
+"$src/scripts/build-extensions.sh" "$src" "$folder" "$out"
+python3 "$src/tests/blender/check_notices.py" "$out"/*.zip
+linux=$(cd "$out" && ls fracterra-*-linux_x64.zip)
 "$src/scripts/blender4-root.sh" --run "$root" \
-  "$src/tests/blender:/ft/tests" "$(dirname "$zip"):/ft/zip" -- \
-  sh -c "blender --command extension install-file --repo user_default --enable /ft/zip/$(basename "$zip") &&
+  "$src/tests/blender:/ft/tests" "$(realpath "$out"):/ft/out" -- \
+  sh -c "blender --command extension install-file --repo user_default --enable /ft/out/$linux &&
          blender -b --python-exit-code 1 --python /ft/tests/test_addon.py -- --installed &&
          blender -b --python-exit-code 1 --python /ft/tests/test_rivers.py -- --installed &&
-         blender -b --python-exit-code 1 --python /ft/tests/test_planet.py -- --installed"
+         blender -b --python-exit-code 1 --python /ft/tests/test_planet.py -- --installed &&
+         blender -b --python-exit-code 1 --python /ft/tests/test_dem.py -- --installed &&
+         FRACTERRA_GDAL=/nonexistent/libgdal.so \
+           blender -b --python-exit-code 1 --python /ft/tests/test_without_gdal.py -- --installed"

@@ -131,11 +131,15 @@ class ChildrenFollowTest(unittest.TestCase):
             levels = {round(v.co.z, 5) for v in lakes[0].data.vertices}
             p = p[[round(z, 5) not in levels for z in p[:, 2]]]
         above = p[:, 2] - surface(terrain, p[:, :2])
-        # The rivers run over the filled surface: through a pit too small to be
-        # a lake they run at its brim (a few per cent of the points); all others
-        # lie on the ground. A river left on the old surface is off by decimetres.
-        self.assertLess(float(np.median(np.abs(above))), MM)
-        self.assertLess(float(np.mean(above > MM)), 0.05, f"{np.mean(above > MM):.1%} of the river points above the ground")
+        # In their carved bed: the ground under each river is lowered to its
+        # depth (a few mm at a channel head, centimetres downstream), so a
+        # river point lies on the ground or above it by at most a river's
+        # depth (through a pit too small to be a lake a river runs at its
+        # brim: a few per cent of the points). A river left on the old
+        # surface is off by decimetres; an uncarved one lies flush (median 0).
+        self.assertLess(float(np.mean(above < -MM)), 0.05, f"{np.mean(above < -MM):.1%} of the river points under the ground")
+        self.assertLess(float(np.mean(above > 0.05)), 0.05, f"{np.mean(above > 0.05):.1%} of the river points 5 cm over their bed")
+        self.assertGreater(float(np.median(above)), 0.2 * MM, "the bed is carved under the river")
 
     def test_a_bolt_that_struck_the_terrain_strikes_its_new_surface(self):
         terrain = add_terrain(levels=6, seed=13)

@@ -119,7 +119,7 @@ class TerrainPropertiesTest(unittest.TestCase):
         for kind, params in (("terrain", self.params.TERRAIN_PARAMS), ("polyline", self.params.POLYLINE_PARAMS)):
             rows = core().library().param_rows[kind]
             by_name = {p.name: p for p in params}
-            methods = {v: n for n, _l, _d, v in next(r for r in rows if r["name"] == "method")["items"]}
+            methods = {i["value"]: i["name"] for i in next(r for r in rows if r["name"] == "method")["items"]}
             for row in rows:
                 if row["name"] in by_name and row["methods"] != 2**64 - 1:
                     shown = {methods[v] for v in methods if row["methods"] >> v & 1}

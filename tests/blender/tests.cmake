@@ -4,7 +4,7 @@ find_program(FT_BLENDER blender)
 if(FT_BLENDER)
   set(FT_BLENDER_ZIP ${PROJECT_BINARY_DIR}/blender_addon/fracterra.zip)
   foreach(name addon missing_library params dem tiles erosion pov_export preview rivers planet splat_material
-               children)
+               children without_gdal)
     set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_${name})
     add_test(NAME blender_${name}
       COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${scratch}
@@ -23,6 +23,10 @@ if(FT_BLENDER)
   set_tests_properties(blender_rivers PROPERTIES ENVIRONMENT "FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>")
   # The planet's sea height is checked against `fracterra planet --stats`.
   set_tests_properties(blender_planet PROPERTIES ENVIRONMENT "FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>")
+  # A system without GDAL: FRACTERRA_GDAL names a file that does not exist, the only candidate then.
+  set_tests_properties(blender_without_gdal PROPERTIES
+    ENVIRONMENT "FRACTERRA_GDAL=${CMAKE_CURRENT_BINARY_DIR}/no-such-dir/libgdal.so.32"
+    ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
   set_tests_properties(blender_missing_library PROPERTIES
     ENVIRONMENT "FRACTERRA_LIBRARY=${CMAKE_CURRENT_BINARY_DIR}/no-such-dir/libfracterra.so")
   add_test(NAME blender_scratch_clean
@@ -37,7 +41,8 @@ if(FT_BLENDER)
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_rivers
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_planet
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_splat_material
-            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_children)
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_children
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_without_gdal)
   set_tests_properties(blender_scratch_clean PROPERTIES FIXTURES_SETUP blender_scratch LABELS blender)
 endif()
 
@@ -82,13 +87,20 @@ if(Python3_Interpreter_FOUND)
   add_test(NAME addon_zip_self_contained
     COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_zip.py ${FT_BLENDER_ADDON_ZIP})
   set_tests_properties(addon_zip_self_contained PROPERTIES LABELS blender TIMEOUT 60)
+  # The notices list every bundled library of the zip and the wheels; the zip is within its size budget.
+  add_test(NAME package_notices
+    COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_notices.py ${FT_BLENDER_ADDON_ZIP}
+            ${FT_PYTHON_WHEELS} ${FT_NATIVE_WHEELS})
+  set_tests_properties(package_notices PROPERTIES LABELS blender TIMEOUT 60)
 endif()
 
-# The zip as an extension in Blender 4.3, inside a Debian trixie root built once
-# into /var/cache/fracterra (about a minute on a fresh machine, then reused):
-# no host Blender, libraries or environment variables. Skipped (77) without root.
+# The per-platform extensions, built, validated and (linux-x64) installed in
+# Blender 4.3 inside a Debian trixie root built once into /var/cache/fracterra
+# (about a minute on a fresh machine, then reused): no host Blender, libraries,
+# GDAL or environment variables. Skipped (77) without root.
 add_test(NAME blender4_extension
-  COMMAND ${CMAKE_CURRENT_LIST_DIR}/blender4_extension.sh ${PROJECT_SOURCE_DIR} ${FT_BLENDER_ADDON_ZIP})
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/blender4_extension.sh ${PROJECT_SOURCE_DIR} ${FT_EXTENSION_SOURCE}
+          ${FT_EXTENSIONS_DIR})
 # (COST: it and blender_gui take over a minute each, so ctest starts them early.)
 set_tests_properties(blender4_extension PROPERTIES LABELS blender TIMEOUT 600 SKIP_RETURN_CODE 77 COST 75)
 

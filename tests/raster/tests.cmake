@@ -10,3 +10,13 @@ target_compile_definitions(dem_test PRIVATE FT_CLI_PATH="$<TARGET_FILE:fracterra
 add_dependencies(dem_test fracterra_cli)
 gtest_discover_tests(dem_test DISCOVERY_TIMEOUT 60
   PROPERTIES LABELS native FIXTURES_REQUIRED real_dem ENVIRONMENT "FT_REAL_DEM=${FT_DEM_DIR}/elev.tif")
+
+# A system without GDAL (the library opens the system's at run time): the CLI
+# refuses GeoTIFF with what to install, and PNG, OpenEXR and RAW16 work.
+find_package(Python3 COMPONENTS Interpreter)
+if(FT_WITH_GDAL AND Python3_Interpreter_FOUND)
+  add_test(NAME cli_without_gdal
+    COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_without_gdal.py $<TARGET_FILE:fracterra_cli>
+            ${CMAKE_CURRENT_BINARY_DIR}/without_gdal)
+  set_tests_properties(cli_without_gdal PROPERTIES LABELS native TIMEOUT 60)
+endif()

@@ -2,12 +2,15 @@
 
 Search order: the path in the FRACTERRA_LIBRARY environment variable (when
 set, it is the only candidate: an explicit choice must not silently fall back),
-then the copy bundled in the add-on's `lib/` folder. The library is loaded
+then the copy bundled in the add-on's `lib/` folder (the legacy zip, the Python
+wheel), then the one in the fracterra_native wheel that Blender 4.2+ installs
+from the extension (its site-packages). The library is loaded
 on first use, so the add-on registers even when it is missing and can say
 what to do. A library whose ABI major version differs is refused.
 """
 
 import ctypes
+import importlib.util
 import os
 import platform
 import sys
@@ -29,9 +32,11 @@ LIBRARY_NAMES = {("linux", "x86_64"): "libfracterra.so", ("win32", "amd64"): "fr
 PLATFORM = (sys.platform, platform.machine().lower())
 LIBRARY_NAME = LIBRARY_NAMES.get(PLATFORM, "libfracterra.so")
 BUNDLED_PATH = Path(__file__).resolve().parent.parent / "lib" / LIBRARY_NAME
+WHEEL_PACKAGE = "fracterra_native"  # blender_addon/native_wheel
 
 HOW_TO_FIX = (
-    "Install the add-on zip built by `cmake --build build --target fracterra_blender_addon` "
+    "Install the extension of this platform (Blender 4.2+: built by `cmake --build build --target "
+    "fracterra_extensions`) or the add-on zip built by `cmake --build build --target fracterra_blender_addon` "
     f"(it bundles lib/{LIBRARY_NAME}), or set the environment variable "
     f"{ENV_VAR} to the full path of {LIBRARY_NAME} before starting Blender."
 )
@@ -338,6 +343,8 @@ SIGNATURES = {
     "ft_river_network_segments": (c_int32, [c_void_p, c_void_p, c_int32]),
     "ft_river_network_lakes": (c_int32, [c_void_p, c_void_p, c_int32]),
     "ft_river_network_lake_rings": (c_int32, [c_void_p, POINTER(c_void_p)]),
+    # (ABI 2.27) the minimum water depth it was traced with (0 given: 1% of the relief).
+    "ft_river_network_min_depth": (c_int32, [c_void_p, _F64P]),
     "ft_river_network_water_mask": (c_int32, [c_void_p, POINTER(c_int32), c_int64]),
     "ft_rivers_carve": (c_int32, [_HF, c_void_p, POINTER(_HF)]),
     # planet.h (ABI 2.18): fractal planets; heightfields, or meshes into caller-allocated arrays.
@@ -492,10 +499,27 @@ _lock = threading.Lock()
 _library = None
 
 
+def wheel_library_path():
+    """The library in the installed fracterra_native wheel (found, not imported), or None."""
+    try:
+        spec = importlib.util.find_spec(WHEEL_PACKAGE)
+    except (ImportError, ValueError):
+        return None
+    if spec is None or not spec.origin:
+        return None
+    return Path(spec.origin).resolve().parent / "lib" / LIBRARY_NAME
+
+
 def library_path():
-    """The path that will be tried: FRACTERRA_LIBRARY if set, else the bundled copy."""
+    """The path that will be tried: FRACTERRA_LIBRARY if set, else the bundled copy,
+    else the extension's wheel's (the bundled path when neither exists, for the message)."""
     env = os.environ.get(ENV_VAR)
-    return Path(env) if env else BUNDLED_PATH
+    if env:
+        return Path(env)
+    if BUNDLED_PATH.is_file():
+        return BUNDLED_PATH
+    wheel = wheel_library_path()
+    return wheel if wheel is not None and wheel.is_file() else BUNDLED_PATH
 
 
 def library():

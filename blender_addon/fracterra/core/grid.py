@@ -1,16 +1,20 @@
 """Flat arrays describing a terrain as a quad grid mesh, filled by the library.
 
-The arrays are array.array buffers ready for Blender's `foreach_set` (which
-copies them with memcpy; ctypes arrays would go through a slow path). The
-index layout is documented in fracterra/mesh.h.
+The arrays are contiguous numpy buffers (float32; uint32 indices) that
+Blender's `foreach_set` copies with memcpy: its fast path needs a buffer
+whose format is the property's ('f', and 'I' for the unsigned index
+properties); anything else goes element by element, about 10x slower. numpy
+rather than array.array because numpy asks the kernel for huge pages for
+large buffers: a 1025^2 grid's 150 MB then faults in 2 MB pages, not 4 kB
+ones (docs/measurements/speed.md). The index layout is documented in
+fracterra/mesh.h.
 """
 
 import math
-from ctypes import byref, c_float, c_int32
+from ctypes import POINTER, byref, c_float, c_int32
 
 from .binding import GridCounts, library
 from .errors import FT_ERR_CANCELLED, CancelledError
-from .terrain import as_pointer, float_array, index_array
 
 NO_FLOOR = -math.inf
 
@@ -28,6 +32,19 @@ class GridArrays:
         self.uv = None
 
 
+def _buffer(n, dtype):
+    """An uninitialised contiguous numpy array of n elements (the library fills it)."""
+    # numpy here, not at the top: the rest of core is numpy-free, and scripts
+    # run by a Python without numpy (examples/maps_montage.py) import it.
+    import numpy as np  # pylint: disable=import-outside-toplevel
+    return np.empty(n, dtype=dtype)
+
+
+def _pointer(buf, ctype):
+    """A ctypes pointer to numpy array `buf`'s data (None when empty: the library's NULL)."""
+    return buf.ctypes.data_as(POINTER(ctype)) if len(buf) else None
+
+
 def grid_counts(nx, ny):
     lib = library()
     c = GridCounts()
@@ -41,12 +58,12 @@ def grid_size(world_size, nx, ny):
 
 
 def vertices(hf, world_size_x, world_size_y, z_floor=NO_FLOOR, out=None):
-    """xyz of every vertex (array.array('f'), 3 per vertex); reuses `out` if given."""
+    """xyz of every vertex (float32 numpy array, 3 per vertex); reuses `out` if given."""
     lib = library()
     n = 3 * hf.width * hf.height
     if out is None or len(out) != n:
-        out = float_array(n)
-    lib.check(lib.ft_grid_vertices(hf.handle, world_size_x, world_size_y, z_floor, as_pointer(out, c_float), len(out)))
+        out = _buffer(n, "float32")
+    lib.check(lib.ft_grid_vertices(hf.handle, world_size_x, world_size_y, z_floor, _pointer(out, c_float), len(out)))
     return out
 
 
@@ -58,25 +75,33 @@ def grid_arrays(hf, world_size, z_floor=NO_FLOOR, uvs=True, progress=None):
     report = progress or (lambda _fraction: None)
     g = GridArrays(hf.width, hf.height)
     world_size_x, world_size_y = grid_size(world_size, g.nx, g.ny)
-    g.co = vertices(hf, world_size_x, world_size_y, z_floor)
+    # All the arrays are views of one block: freed together, the block is one
+    # run of huge-page memory that Blender's own copy of the mesh (the
+    # depsgraph's, right after the build) can reuse whole.
+    sizes = {"co": 3 * g.vertex_count, "loop_vertices": g.loop_count, "loop_edges": g.loop_count,
+             "edge_vertices": 2 * g.edge_count, "loop_starts": g.face_count, "loop_totals": g.face_count,
+             "uv": 2 * g.loop_count if uvs else 0}
+    block = _buffer(sum(sizes.values()), "uint32")  # the library's int32 in 0..2^31-1: same bits
+    start = 0
+    for name, n in sizes.items():
+        view = block[start:start + n]
+        start += n
+        setattr(g, name, view.view("float32") if name in ("co", "uv") else view)
+    g.uv = g.uv if uvs else None
+    vertices(hf, world_size_x, world_size_y, z_floor, out=g.co)
     report(0.2)
     # The topology an array at a time (ft_grid_topology skips a NULL buffer),
     # with a report after each: all at once took 2.7 s of a 4097^2 build at
     # load 4-6 without one.
-    sizes = {"loop_vertices": g.loop_count, "loop_edges": g.loop_count, "edge_vertices": 2 * g.edge_count,
-             "loop_starts": g.face_count, "loop_totals": g.face_count}
     parts = (("loop_vertices",), ("loop_edges",), ("edge_vertices",), ("loop_starts", "loop_totals"))
     for k, names in enumerate(parts):
-        for name in names:
-            setattr(g, name, index_array(sizes[name]))
-        p = {name: as_pointer(getattr(g, name), c_int32) for name in names}
+        p = {name: _pointer(getattr(g, name), c_int32) for name in names}
         lib.check(lib.ft_grid_topology(g.nx, g.ny, p.get("loop_vertices"), p.get("loop_edges"), g.loop_count,
                                        p.get("edge_vertices"), 2 * g.edge_count, p.get("loop_starts"),
                                        p.get("loop_totals"), g.face_count))
         report(0.2 + 0.5 * (k + 1) / len(parts))
     if uvs:
-        g.uv = float_array(2 * g.loop_count)
-        lib.check(lib.ft_grid_uvs(g.nx, g.ny, as_pointer(g.uv, c_float), len(g.uv)))
+        lib.check(lib.ft_grid_uvs(g.nx, g.ny, _pointer(g.uv, c_float), len(g.uv)))
     report(1.0)
     return g
 
@@ -91,9 +116,7 @@ def height_slope(co, nx, ny, progress=None, bands=16):
     differences as numpy.gradient over the whole grid, central inside and
     one-sided at the edges: the same numbers to the bit. progress: None or
     callable(fraction) -> True to stop (raises CancelledError)."""
-    # numpy here, not at the top: the rest of core is numpy-free, and scripts
-    # run by a Python without numpy (examples/maps_montage.py) import it.
-    import numpy as np  # pylint: disable=import-outside-toplevel
+    import numpy as np  # pylint: disable=import-outside-toplevel (see _buffer)
 
     report = progress or (lambda _fraction: False)
     xyz = np.frombuffer(co, dtype=np.float32).reshape(ny, nx, 3)

@@ -68,6 +68,13 @@ class RiverNetwork(LibraryHandle):
         self._lib.check(self._lib.ft_river_network_grid(self.handle, byref(w), byref(h)))
         return w.value, h.value
 
+    @property
+    def min_depth(self):
+        """The minimum water depth it was traced with, world units (ABI 2.27)."""
+        out = c_double()
+        self._lib.check(self._lib.ft_river_network_min_depth(self.handle, byref(out)))
+        return out.value
+
     def water_mask(self):
         """(height, width) int32 over the network's grid: a lake's index, LAND or SEA."""
         import numpy as np  # numpy only where water is asked for: core imports without it
@@ -86,7 +93,8 @@ class WaterArrays:
     xyz (n, 3) float64 world units (x = column x spacing, y = row x spacing,
     z = water surface), radii (n,) half widths, offsets (segments + 1,),
     orders (segments,) Strahler orders; mask (ny, nx) int32: a lake's index,
-    LAND or SEA; levels (lakes,) each lake's water level; spacing."""
+    LAND or SEA; levels (lakes,) each lake's water level; spacing; min_depth:
+    water shallower than this is not drawn (world units)."""
 
     def __init__(self, net, nx, ny, spacing):
         import numpy as np  # as in water_mask
@@ -97,6 +105,7 @@ class WaterArrays:
         self.orders = np.array([s.order for s in net.segments()], dtype=np.int32)
         self.levels = np.array([lake.level for lake in net.lakes()], dtype=np.float64)
         self.spacing = spacing
+        self.min_depth = net.min_depth
         self.nx, self.ny = nx, ny
         mask = net.water_mask()
         h, w = mask.shape

@@ -10,7 +10,11 @@
  * confluences, lakes and outlets) has a Strahler order; confluences are
  * shared vertices. Coordinates are world units: x = column x spacing,
  * y = row x spacing, spacing = world_size / (width - 1) (1 when unknown);
- * z is the water surface (the terrain with its depressions filled). (ABI 2.15) */
+ * z is the water surface (the terrain with its depressions filled). Water is
+ * shown only where it has depth: a lake is the cells its level covers by more
+ * than min_depth (1% of the relief by default: a shallower one is passed
+ * through), and its shoreline runs where the ground lies min_depth below the
+ * level, so no water surface lies flush with the ground (ABI 2.27). (ABI 2.15) */
 #ifndef FRACTERRA_HYDROLOGY_H
 #define FRACTERRA_HYDROLOGY_H
 
@@ -51,6 +55,9 @@ typedef struct ft_hydrology_params {
   int32_t sink_count;
   ft_progress_fn progress;  ///< may be NULL; return non-zero to cancel
   void* progress_user;
+  double min_depth;         ///< (2.27) a depression no deeper than this is not a lake, and shorelines
+                            ///< run where the water is this deep (world units, >= 0); 0 (default):
+                            ///< 1% of the terrain's relief (max - min height)
 } ft_hydrology_params;
 
 FT_API ft_status ft_hydrology_params_init(ft_hydrology_params* p);
@@ -82,7 +89,9 @@ typedef struct ft_lake {
   double outlet_x, outlet_y;  ///< where it spills, world units
   int32_t outlet_segment;   ///< the river that leaves it, -1 if none reaches min_area
   int32_t cells;
-  int64_t first_ring, ring_count;  ///< its shoreline rings in the lake polylines (first: the outer one)
+  int64_t first_ring, ring_count;  ///< its shoreline rings in the lake polylines: first the outer ones
+                                   ///< (one per part deeper than min_depth, largest first), then its
+                                   ///< islands
 } ft_lake;
 
 typedef struct ft_river_network ft_river_network;
@@ -107,12 +116,19 @@ FT_API ft_status ft_river_network_vertex_values(const ft_river_network* net, int
                                                 int64_t count);
 FT_API ft_status ft_river_network_segments(const ft_river_network* net, ft_river_segment* out, int32_t count);
 FT_API ft_status ft_river_network_lakes(const ft_river_network* net, ft_lake* out, int32_t count);
-/// Lake shorelines (closed rings, world units, z = the level); free with ft_polylines_free.
+/// The minimum water depth the network was traced with (ABI 2.27): min_depth, or 1% of
+/// the terrain's relief when that was 0. Front ends cut their sea and lake surfaces to
+/// where the water is deeper than this.
+FT_API ft_status ft_river_network_min_depth(const ft_river_network* net, double* out);
+/// Lake shorelines (closed rings, world units, z = the level, where the ground lies
+/// min_depth under it); free with ft_polylines_free.
 FT_API ft_status ft_river_network_lake_rings(const ft_river_network* net, ft_polylines** out);
-/// Per cell: the lake index, -1 land, -2 sea (count = width x height).
+/// Per cell: the lake index, -1 land, -2 sea (count = width x height). A lake's cells are
+/// all its level floods; its rings enclose those deeper than min_depth.
 FT_API ft_status ft_river_network_water_mask(const ft_river_network* net, int32_t* out, int64_t count);
 /// The terrain lowered along each river to its depth over its width (a smooth
-/// cos^2 profile under the water surface); lakes and sea are left as they are.
+/// cos^2 profile under the water surface), never below the sea's level (2.27);
+/// lakes and sea are left as they are.
 FT_API ft_status ft_rivers_carve(const ft_heightfield* terrain, const ft_river_network* net, ft_heightfield** out);
 /// Measures of a network (ABI 2.27), as `fracterra rivers --stats` and `analyze --rivers` report
 /// them: Horton's ratios over its Strahler streams, drainage density, Hack's h.

@@ -67,7 +67,9 @@ FT_API ft_status ft_terrain_build(const ft_build_params* p, ft_heightfield** out
 /// ft_terrain_build, then its rivers, lakes and sea (ABI 2.20): `rivers` (not
 /// NULL) receives the network of the built terrain (free with
 /// ft_river_network_free), traced with p->rivers under the pipeline's rules
-/// (above). `maps` may be NULL. On failure or cancellation every output is NULL.
+/// (above). `*out` is the terrain carved along its rivers (ft_rivers_carve: each bed its river's
+/// depth under the water, never below the sea; 2.27), so no river lies flush with the ground.
+/// `maps` may be NULL. On failure or cancellation every output is NULL.
 FT_API ft_status ft_terrain_build_rivers(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps,
                                          ft_river_network** rivers);
 /// The samples [x0, x0 + width) x [y0, y0 + height) of what ft_terrain_build(p) makes, heights and

@@ -118,6 +118,14 @@ FT_API ft_status ft_river_network_lakes(const ft_river_network* net, ft_lake* ou
   });
 }
 
+FT_API ft_status ft_river_network_min_depth(const ft_river_network* net, double* out) {
+  return guarded([&] {
+    ft::check_not_null("net", net);
+    ft::check_not_null("out", out);
+    *out = net->net.water.min_depth;
+  });
+}
+
 FT_API ft_status ft_river_network_lake_rings(const ft_river_network* net, ft_polylines** out) {
   return guarded([&] {
     ft::capi::reset_out(out);

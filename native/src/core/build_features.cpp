@@ -1,13 +1,14 @@
 #include "core/build_features.hpp"
 
 #include "core/error.hpp"
+#include "core/gdal_library.hpp"
 
 namespace ft {
 
 const char* build_features() {
   static const std::string s = [] {
     std::string out;
-    for (auto [have, name] : {std::pair{kHaveGdal, "gdal"}, {kHaveOpenExr, "openexr"}, {kHaveOpenSubdiv, "opensubdiv"}})
+    for (auto [have, name] : {std::pair{have_gdal(), "gdal"}, {kHaveOpenExr, "openexr"}, {kHaveOpenSubdiv, "opensubdiv"}})
       if (have) out += (out.empty() ? "" : " ") + std::string(name);
     return out;
   }();
@@ -15,8 +16,9 @@ const char* build_features() {
 }
 
 const char* heightfield_formats() {
-  if (kHaveGdal && kHaveOpenExr) return "PNG, PGM, NPY, RAW16, GeoTIFF, OpenEXR and every raster GDAL reads";
-  if (kHaveGdal) return "PNG, PGM, NPY, RAW16, GeoTIFF and every raster GDAL reads";
+  const bool gdal = have_gdal();
+  if (gdal && kHaveOpenExr) return "PNG, PGM, NPY, RAW16, GeoTIFF, OpenEXR and every raster GDAL reads";
+  if (gdal) return "PNG, PGM, NPY, RAW16, GeoTIFF and every raster GDAL reads";
   if (kHaveOpenExr) return "PNG, PGM, NPY, RAW16 and OpenEXR";
   return "PNG, PGM, NPY and RAW16";
 }

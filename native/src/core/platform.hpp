@@ -85,4 +85,12 @@ ProcessResult run_process(const std::vector<std::string>& argv, FILE* stdout_to,
 // they are taken from the wide command line instead).
 std::vector<std::string> utf8_arguments(int argc, char** argv);
 
+// A shared library opened at run time (dlopen; LoadLibraryW on Windows), for
+// optional libraries the system may have (GDAL): `name` is a path or a name
+// the system's loader searches for. nullptr on failure, with the loader's
+// reason in `error`. Never closed: what it hands out stays valid.
+void* open_library(const std::string& name, std::string& error);
+// The address of `symbol` in a library open_library() opened (nullptr if absent).
+void* library_symbol(void* library, const char* symbol) noexcept;
+
 }  // namespace ft::platform

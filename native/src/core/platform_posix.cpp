@@ -1,5 +1,6 @@
 // platform.hpp on Linux (and any POSIX system with glibc's posix_spawn).
 #ifndef _WIN32
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -130,6 +131,19 @@ uint64_t available_memory() noexcept {
 }
 
 std::vector<std::string> utf8_arguments(int argc, char** argv) { return {argv, argv + argc}; }
+
+void* open_library(const std::string& name, std::string& error) {
+  // RTLD_LOCAL: its symbols stay out of the global namespace, where they
+  // could bind a host application's (Blender's) own libraries to them.
+  void* h = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!h) {
+    const char* e = dlerror();
+    error = e ? e : "dlopen failed";
+  }
+  return h;
+}
+
+void* library_symbol(void* library, const char* symbol) noexcept { return dlsym(library, symbol); }
 
 }  // namespace ft::platform
 #endif

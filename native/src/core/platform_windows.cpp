@@ -228,5 +228,15 @@ std::vector<std::string> utf8_arguments(int argc, char** argv) {
   return out;
 }
 
+void* open_library(const std::string& name, std::string& error) {
+  HMODULE h = LoadLibraryW(wide(name).c_str());
+  if (!h) error = "LoadLibrary failed with error " + std::to_string(GetLastError());
+  return reinterpret_cast<void*>(h);
+}
+
+void* library_symbol(void* library, const char* symbol) noexcept {
+  return reinterpret_cast<void*>(GetProcAddress(static_cast<HMODULE>(library), symbol));
+}
+
 }  // namespace ft::platform
 #endif

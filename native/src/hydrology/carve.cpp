@@ -3,7 +3,8 @@
 // the depth x cos^2(pi r / 2), r = distance / half width: the full depth on
 // the centre line, smoothly (zero slope) back to the surface at the banks.
 // The result is a minimum over segments, so the order they are drawn in
-// does not matter (deterministic on any thread count).
+// does not matter (deterministic on any thread count). Beds never go below
+// the sea's level, and sea and lake cells are never lowered.
 #include <algorithm>
 #include <cmath>
 
@@ -21,6 +22,10 @@ Heightfield carve(const Heightfield& terrain, const RiverNetwork& net) {
   out.set_georef(terrain.georef());
   std::copy(terrain.data(), terrain.data() + terrain.size(), out.data());
   float* z = out.data();
+  // Beds stop at the sea's level: lower, a river's bed near the coast would
+  // be a trench of sea floor cut into the land (and the sea's surface,
+  // which covers what lies below its level, would fill it).
+  const double floor = std::isnan(net.water.sea_level) ? -INFINITY : net.water.sea_level;
   const PolylineSet& L = net.lines;
   for (int64_t line = 0; line < L.line_count(); ++line)
     for (int64_t v = L.line_begin(line); v + 1 < L.line_end(line); ++v) {
@@ -52,7 +57,7 @@ Heightfield carve(const Heightfield& terrain, const RiverNetwork& net) {
           if (dist >= h) continue;
           const double surface = a[2] + t * (b[2] - a[2]);
           const double c = std::cos(0.5 * M_PI * dist / h);
-          const double bed = surface - (da + t * (db - da)) * c * c;
+          const double bed = std::max(floor, surface - (da + t * (db - da)) * c * c);
           z[i] = std::min(z[i], float(bed));
         }
     }

@@ -40,9 +40,13 @@ struct HydrologyConfig {
   double tolerance = 1e-4;
   bool periodic = false;
   int threads = 0;
+  double min_depth = 0;            // world units; 0: kAutoDepth of the relief (resolved_min_depth)
   std::vector<double> sinks;       // x, y pairs, world units
   Progress progress;
 };
+
+// The minimum water depth with min_depth = 0: this share of the relief.
+inline constexpr double kAutoDepth = 0.01;
 
 // Per cell: kLand, kSea, or the index of a lake (>= 0).
 inline constexpr int32_t kLand = -1, kSea = -2;
@@ -53,6 +57,7 @@ struct Lake {
   int32_t cells = 0;
   int32_t outlet_segment = -1;
   int64_t first_ring = 0, ring_count = 0;
+  int64_t outer_rings = 0;      // its first rings are shorelines (one per deep part), the rest islands
 };
 
 // The surface water: what lakes.cpp computes from the terrain.
@@ -63,6 +68,7 @@ struct Water {
   std::vector<uint8_t> base;    // 1: a base level (edge of a bounded map, sea, declared sink)
   std::vector<Lake> lakes;
   double sea_level = 0;         // NaN without a sea
+  double min_depth = 0;         // resolved (world units): lakes cover their cells by more
 };
 
 struct Segment {
@@ -92,15 +98,21 @@ inline double sea_level_of(const HydrologyConfig& c, const Heightfield& hf) {
   return erosion::sea_height(c.sea, c.sea_level, c.sea_fraction, hf);
 }
 
+// min_depth in world units: c.min_depth, or kAutoDepth of hf's relief when 0.
+double resolved_min_depth(const HydrologyConfig& c, const Heightfield& hf);
+
 // Fills every depression to its spill level (Priority-Flood from the base
 // levels: the bounded map's edge, the sea, the declared sinks, or a periodic
-// map's lowest sample) and labels each filled depression of at least
-// min_lake_area as a lake (8-connected cells under one level).
+// map's lowest sample) and labels each filled depression (8-connected cells
+// under one level) of at least min_lake_area, some of it deeper than
+// min_depth, as a lake; the others are puddles rivers run through.
 Water fill_lakes(const erosion::D8Grid& g, const float* z, const std::vector<uint8_t>& sea,
-                 const std::vector<int32_t>& sinks, double min_lake_area);
+                 const std::vector<int32_t>& sinks, double min_lake_area, double min_depth);
 
 // Shorelines of every lake as closed rings (outer ring first, then islands),
-// in world units at the lake's level; sets each lake's first_ring / ring_count.
+// where the ground lies water.min_depth under the lake's level (so the lake's
+// polygon never lies flush with the ground), in world units at that level;
+// sets each lake's first_ring / ring_count.
 PolylineSet lake_rings(const erosion::D8Grid& g, const float* z, Water& water);
 
 // Everything: sea, lakes, rivers, orders, geometry. Throws "no river reaches N
@@ -126,8 +138,9 @@ double surface_at(const erosion::D8Grid& g, const std::vector<float>& level, dou
 
 // The terrain lowered along the rivers: under each river vertex's surface by
 // its depth x cos^2(pi r / 2) at r = distance / half width (half width at
-// least 0.75 spacing, so a narrow river still has a bed); lake and sea cells
-// keep their heights.
+// least 0.75 spacing, so a narrow river still has a bed), never below the
+// sea's level (net.water.sea_level; a bed that reached it would be sea);
+// lake and sea cells keep their heights.
 Heightfield carve(const Heightfield& terrain, const RiverNetwork& net);
 
 }  // namespace ft::hydrology

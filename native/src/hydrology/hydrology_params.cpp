@@ -11,6 +11,7 @@ namespace {
 constexpr uint64_t kAll = FT_PARAM_ALL_METHODS;
 constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbi215 = 0x2000F;
+constexpr uint32_t kAbi227 = 0x2001B;  // min_depth
 constexpr double kBig = 1e12;  // areas and heights: any sane world
 static_assert(int32_t(Sea::kNone) == FT_WATER_SEA_NONE && int32_t(Sea::kHeight) == FT_WATER_SEA_HEIGHT &&
               int32_t(Sea::kFraction) == FT_WATER_SEA_FRACTION, "erosion's Sea is the C ABI's ft_water_sea");
@@ -93,6 +94,12 @@ constexpr ft_param_info kRows[] = {
      .methods = kAll},
     since(kAbi215, progress_row<ft_hydrology_params>("Called as the rivers are traced; may cancel; NULL: none")),
     since(kAbi215, progress_user_row<ft_hydrology_params>()),
+    {ROW(min_depth, FT_PARAM_DOUBLE), .since = kAbi227, .element_kind = -1, .default_value = 0, .hard_min = 0,
+     .hard_max = kBig, .soft_min = 0, .soft_max = 1, .unit = "world units", .label = "Min Water Depth",
+     .doc = "Water shallower than this is not shown: a lake is where its level covers the ground by more, "
+            "its shoreline where the ground lies this far under the level, so no water lies flush with the "
+            "ground; 0: 1% of the terrain's relief",
+     .methods = kAll},
 };
 FT_PARAM_TABLE_END
 #undef ROW
@@ -127,6 +134,7 @@ void for_each_field_pair(Params& p, Config& c, F f) {
   f(p.tolerance, c.tolerance);
   f(p.periodic, c.periodic);
   f(p.threads, c.threads);
+  f(p.min_depth, c.min_depth);
 }
 
 ft_hydrology_params to_c(const HydrologyConfig& c) {

@@ -1,6 +1,8 @@
-// Lake shorelines: marching squares (contour/) at the lake's level over the
-// lake's cells and their neighbours, so the line runs where the terrain
-// meets the water, between samples. Every neighbour of a lake cell is at or
+// Lake shorelines: marching squares (contour/) at the lake's level less the
+// minimum depth over the lake's cells and their neighbours, so the line runs
+// where the water becomes that deep, between samples (at the level itself a
+// hollow filled to a plain's height would have its shoreline, and water
+// flush with the ground, all over the plain). Every neighbour of a lake cell is at or
 // above the level (a lower one would have drained it), so the field outside
 // that ring can be anything above the level.
 //
@@ -93,7 +95,10 @@ PolylineSet lake_rings(const erosion::D8Grid& g, const float* z, Water& water) {
         const int32_t x = ((bx + x0) % g.width + g.width) % g.width, y = ((by + y0) % g.height + g.height) % g.height;
         f.at(bx, by) = near[size_t(by) * bw + bx] ? z[size_t(y) * g.width + x] : dry;
       }
-    const PolylineSet chains = contour::marching_squares(f, double(level));
+    // Where the water is min_depth deep: every lake cell lies deeper, every
+    // other cell near it shallower (or dry), so the rings close around the
+    // lake's cells and the ground inside lies under the level by more.
+    const PolylineSet chains = contour::marching_squares(f, double(level) - water.min_depth);
     // Closed loops, largest shoreline first, then the islands.
     std::vector<std::tuple<int, double, int64_t>> loops;
     for (int64_t i = 0; i < chains.line_count(); ++i) {
@@ -111,6 +116,7 @@ PolylineSet lake_rings(const erosion::D8Grid& g, const float* z, Water& water) {
       out.end_line();
     }
     lake.ring_count = out.line_count() - lake.first_ring;
+    lake.outer_rings = std::count_if(loops.begin(), loops.end(), [](const auto& l) { return std::get<0>(l) == 0; });
   }
   return out;
 }

@@ -3,7 +3,8 @@
 // and Algorithm 3's epsilon steps for a surface that drains), then labelled.
 // Two 8-neighbours under water have the same level (a lower one would drain
 // the higher through their shared edge), so a lake is an 8-connected set of
-// flooded cells.
+// flooded cells; one is a lake when some of it lies deeper than the minimum
+// depth (its shoreline, lake_rings.cpp, runs where the water is that deep).
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -14,7 +15,7 @@
 namespace ft::hydrology {
 
 Water fill_lakes(const erosion::D8Grid& g, const float* z, const std::vector<uint8_t>& sea,
-                 const std::vector<int32_t>& sinks, double min_lake_area) {
+                 const std::vector<int32_t>& sinks, double min_lake_area, double min_depth) {
   const size_t n = g.size();
   Water w;
   w.level.assign(z, z + n);
@@ -38,7 +39,11 @@ Water fill_lakes(const erosion::D8Grid& g, const float* z, const std::vector<uin
     w.graded[j] = std::nextafter(w.graded[c], INFINITY);
     return true;
   });
-  // Label the flooded cells, 8-connected, in index order.
+  // Label the flooded cells, 8-connected, in index order. A depression with
+  // no cell under water by more than min_depth is a puddle too: as a lake
+  // it would be water flush with the ground (a hollow filled up to a plain's
+  // level is mostly such a rim).
+  w.min_depth = min_depth;
   const double cell_area = g.spacing * g.spacing;
   std::vector<int32_t> todo, members;
   std::vector<uint8_t> seen(n, 0);
@@ -47,12 +52,13 @@ Water fill_lakes(const erosion::D8Grid& g, const float* z, const std::vector<uin
     members.clear();
     todo.assign(1, int32_t(s));
     seen[s] = 1;
-    double volume = 0;
+    double volume = 0, deepest = 0;
     while (!todo.empty()) {
       const int32_t c = todo.back();
       todo.pop_back();
       members.push_back(c);
       volume += (double(w.level[c]) - double(z[c])) * cell_area;
+      deepest = std::max(deepest, double(w.level[c]) - double(z[c]));
       for (int k = 0; k < 8; ++k) {
         const int64_t j = g.neighbour(c % g.width, c / g.width, k);
         if (j < 0 || seen[j] || w.base[j] || !(w.level[j] > z[j])) continue;
@@ -61,7 +67,7 @@ Water fill_lakes(const erosion::D8Grid& g, const float* z, const std::vector<uin
       }
     }
     const double area = double(members.size()) * cell_area;
-    if (area < min_lake_area) continue;  // a puddle: rivers pass through it
+    if (area < min_lake_area || !(deepest > min_depth)) continue;  // a puddle: rivers pass through it
     Lake lake;
     lake.level = w.level[s];
     lake.area = area;

@@ -1,6 +1,7 @@
 // River networks and lakes as files (see river_files.hpp).
 #include "hydrology/river_files.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -109,6 +110,16 @@ io::VectorLayer river_layer(const RiverNetwork& net) {
   return L;
 }
 
+// Even-odd: is p inside the closed ring?
+bool inside_ring(const std::vector<Vec3>& ring, const Vec3& p) {
+  bool in = false;
+  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+    if ((ring[i][1] > p[1]) != (ring[j][1] > p[1]) &&
+        p[0] < (ring[j][0] - ring[i][0]) * (p[1] - ring[i][1]) / (ring[j][1] - ring[i][1]) + ring[i][0])
+      in = !in;
+  return in;
+}
+
 io::VectorLayer lake_layer(const RiverNetwork& net) {
   io::VectorLayer L;
   L.name = "lakes";
@@ -118,12 +129,21 @@ io::VectorLayer lake_layer(const RiverNetwork& net) {
   for (size_t k = 0; k < net.water.lakes.size(); ++k) {
     const Lake& l = net.water.lakes[k];
     if (l.ring_count == 0) continue;  // a lake around the whole torus has no inside
-    std::vector<std::vector<Vec3>> rings;
-    for (int64_t r = l.first_ring; r < l.first_ring + l.ring_count; ++r)
-      rings.emplace_back(net.lake_rings.points.begin() + net.lake_rings.line_begin(r),
-                         net.lake_rings.points.begin() + net.lake_rings.line_end(r));
-    L.geometry.push_back(std::move(rings));
-    L.values.push_back({double(k), l.level, l.area, l.volume, double(l.cells), double(l.outlet_segment)});
+    auto ring = [&](int64_t r) {
+      return std::vector<Vec3>(net.lake_rings.points.begin() + net.lake_rings.line_begin(r),
+                               net.lake_rings.points.begin() + net.lake_rings.line_end(r));
+    };
+    // A Polygon per shoreline (a lake has one per part deeper than the
+    // minimum depth) with the islands inside it as holes.
+    const int64_t outers = std::max<int64_t>(1, l.outer_rings), islands = l.first_ring + outers;
+    for (int64_t o = l.first_ring; o < islands; ++o) {
+      std::vector<std::vector<Vec3>> rings{ring(o)};
+      for (int64_t r = islands; r < l.first_ring + l.ring_count; ++r)
+        if (outers == 1 || inside_ring(rings[0], net.lake_rings.points[size_t(net.lake_rings.line_begin(r))]))
+          rings.push_back(ring(r));
+      L.geometry.push_back(std::move(rings));
+      L.values.push_back({double(k), l.level, l.area, l.volume, double(l.cells), double(l.outlet_segment)});
+    }
   }
   return L;
 }

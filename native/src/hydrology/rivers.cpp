@@ -58,6 +58,12 @@ void validate(const HydrologyConfig& c, const Heightfield& hf) {
   resolve_threads(c.threads);
 }
 
+double resolved_min_depth(const HydrologyConfig& c, const Heightfield& hf) {
+  if (c.min_depth > 0) return c.min_depth;
+  const HeightStats s = hf.stats();
+  return kAutoDepth * (double(s.max) - double(s.min));
+}
+
 RiverNetwork extract_rivers(const Heightfield& hf, const HydrologyConfig& c) {
   validate(c, hf);
   const int saved = omp_get_max_threads();
@@ -82,7 +88,7 @@ RiverNetwork extract_rivers(const Heightfield& hf, const HydrologyConfig& c) {
     sinks.push_back(int32_t(std::lround(c.sinks[k + 1] / g.spacing)) * g.width +
                     int32_t(std::lround(c.sinks[k] / g.spacing)));
   c.progress.report(0.05);
-  net.water = fill_lakes(g, z, sea, sinks, c.min_lake_area);
+  net.water = fill_lakes(g, z, sea, sinks, c.min_lake_area, resolved_min_depth(c, hf));
   Water& w = net.water;
   w.sea_level = sea_level;
   c.progress.report(0.3);
@@ -98,13 +104,26 @@ RiverNetwork extract_rivers(const Heightfield& hf, const HydrologyConfig& c) {
   erosion::accumulate_area(g, graph, area);
   c.progress.report(0.5);
 
-  // 3. Channel cells: land (not sea, not a lake) whose area passes min_area.
+  // 3. Channel cells: land (not sea, not a lake) whose area passes min_area,
+  //    counting only the area that falls on its way (a cell of a flat, not
+  //    under water, adds none): on a plain the graded surface sends every
+  //    cell straight to its nearest outlet, and the plain's own cells would
+  //    start one parallel streak after another. Rivers from the slopes
+  //    still cross it, one channel per valley.
+  std::vector<double> falling(n, 0.0);
+  for (size_t k = n; k-- > 0;) {
+    const int32_t i = graph.stack[k];
+    const int32_t r = graph.receiver[i];
+    const bool flat = r != i && w.label[i] == kLand && !(w.level[i] > z[i]) && !(z[i] > z[r]);
+    if (!flat) falling[i] += cell_area;
+    if (r != i) falling[r] += falling[i];
+  }
   std::vector<uint8_t> channel(n, 0);
   double largest = 0;
   for (size_t i = 0; i < n; ++i) {
     if (w.label[i] != kLand) continue;
-    largest = std::max(largest, area[i]);
-    channel[i] = area[i] >= c.min_area;
+    largest = std::max(largest, falling[i]);
+    channel[i] = falling[i] >= c.min_area;
   }
   if (!std::any_of(channel.begin(), channel.end(), [](uint8_t v) { return v != 0; }))
     invalid("no river reaches " + format_number(std::ceil(c.min_area / cell_area)) + " cells (min_area " +

@@ -22,6 +22,12 @@
 
 namespace ft::io {
 
+// How a refusal names a raster format: "GeoTIFF (.tif)", "'.hgt'".
+inline std::string raster_format_name(const std::string& extension) {
+  if (extension == ".tif" || extension == ".tiff") return "GeoTIFF (" + extension + ")";
+  return extension.empty() ? std::string("a file without an extension") : "'" + extension + "'";
+}
+
 enum class NodataPolicy { refuse, fill, keep };
 
 Heightfield read_gdal(const std::string& path, NodataPolicy nodata = NodataPolicy::refuse);

@@ -1,15 +1,11 @@
 // Reading any GDAL raster as a heightfield (see gdal_raster.hpp).
-#include <cpl_conv.h>
-#include <cpl_vsi.h>
-#include <gdal.h>
-#include <gdal_alg.h>
-#include <ogr_srs_api.h>
 
 #include <cmath>
 #include <memory>
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "io/atomic_file.hpp"
 #include "io/gdal_raster.hpp"
 #include "io/gdal_session.hpp"
 
@@ -20,59 +16,59 @@ namespace {
 double pixel_width_in_metres(const GeoReference& g, int32_t height) {
   const double dx = std::hypot(g.transform[1], g.transform[4]);
   if (g.crs_wkt.empty()) return dx;
-  OGRSpatialReferenceH srs = OSRNewSpatialReference(g.crs_wkt.c_str());
+  OGRSpatialReferenceH srs = gdal().OSRNewSpatialReference(g.crs_wkt.c_str());
   if (srs == nullptr) return dx;
   double scale = 1.0;
-  if (OSRIsGeographic(srs)) {
+  if (gdal().OSRIsGeographic(srs)) {
     OGRErr err = OGRERR_NONE;
-    const double a = OSRGetSemiMajor(srs, &err);
+    const double a = gdal().OSRGetSemiMajor(srs, &err);
     const double lat = g.transform[3] + g.transform[5] * height * 0.5;
     const double kPi = 3.14159265358979323846;
     if (err == OGRERR_NONE && std::isfinite(lat) && std::abs(lat) < 90) scale = a * kPi / 180 * std::cos(lat * kPi / 180);
   } else {
-    scale = OSRGetLinearUnits(srs, nullptr);  // metres per CRS unit
+    scale = gdal().OSRGetLinearUnits(srs, nullptr);  // metres per CRS unit
   }
-  OSRDestroySpatialReference(srs);
+  gdal().OSRDestroySpatialReference(srs);
   return dx * scale;
 }
 
 // Fills NaN samples with GDALFillNodata on an in-memory copy of the band.
 void fill_nodata(Heightfield& hf, GdalSession& session) {
-  GDALDriverH mem = GDALGetDriverByName("MEM");
+  GDALDriverH mem = gdal().GDALGetDriverByName("MEM");
   if (mem == nullptr) session.fail(FT_ERR_UNSUPPORTED, "GDAL's MEM driver is missing");
-  GdalDataset ds(GDALCreate(mem, "", hf.width(), hf.height(), 1, GDT_Float32, nullptr));
+  GdalDataset ds(gdal().GDALCreate(mem, "", hf.width(), hf.height(), 1, GDT_Float32, nullptr));
   if (!ds) session.fail(FT_ERR_OUT_OF_MEMORY, "cannot make an in-memory copy to fill nodata");
-  GDALRasterBandH band = GDALGetRasterBand(ds.get(), 1);
-  GDALSetRasterNoDataValue(band, std::nan(""));
-  if (GDALRasterIO(band, GF_Write, 0, 0, hf.width(), hf.height(), hf.data(), hf.width(), hf.height(), GDT_Float32, 0,
+  GDALRasterBandH band = gdal().GDALGetRasterBand(ds.get(), 1);
+  gdal().GDALSetRasterNoDataValue(band, std::nan(""));
+  if (gdal().GDALRasterIO(band, GF_Write, 0, 0, hf.width(), hf.height(), hf.data(), hf.width(), hf.height(), GDT_Float32, 0,
                    0) != CE_None)
     session.fail(FT_ERR_INTERNAL, "cannot copy the heightfield to fill its nodata");
   // A search distance of the whole raster: every hole is filled (a hole
   // farther than that from any valid sample cannot exist).
   const double search = double(std::max(hf.width(), hf.height()));
-  if (GDALFillNodata(band, nullptr, search, 0, 0, nullptr, nullptr, nullptr) != CE_None ||
-      GDALRasterIO(band, GF_Read, 0, 0, hf.width(), hf.height(), hf.data(), hf.width(), hf.height(), GDT_Float32, 0,
+  if (gdal().GDALFillNodata(band, nullptr, search, 0, 0, nullptr, nullptr, nullptr) != CE_None ||
+      gdal().GDALRasterIO(band, GF_Read, 0, 0, hf.width(), hf.height(), hf.data(), hf.width(), hf.height(), GDT_Float32, 0,
                    0) != CE_None)
     session.fail(FT_ERR_INTERNAL, "GDAL could not fill the nodata");
 }
 
 Heightfield read_dataset(GDALDatasetH ds, const std::string& name, NodataPolicy policy, GdalSession& session) {
-  if (GDALGetRasterCount(ds) < 1) fail(FT_ERR_FORMAT, "'" + name + "' holds no raster band");
-  const int w = GDALGetRasterXSize(ds), h = GDALGetRasterYSize(ds);
+  if (gdal().GDALGetRasterCount(ds) < 1) fail(FT_ERR_FORMAT, "'" + name + "' holds no raster band");
+  const int w = gdal().GDALGetRasterXSize(ds), h = gdal().GDALGetRasterYSize(ds);
   if (w < 2 || h < 2)
     fail(FT_ERR_FORMAT, "'" + name + "' is " + std::to_string(w) + " x " + std::to_string(h) +
                             "; a heightfield needs at least 2 x 2 samples");
   // Checked against the memory cap (by the constructor) before anything is read.
   Heightfield hf(w, h);
-  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+  GDALRasterBandH band = gdal().GDALGetRasterBand(ds, 1);
   // Some drivers report a damaged block and still return CE_None: any failure
   // GDAL reported counts.
-  if (GDALRasterIO(band, GF_Read, 0, 0, w, h, hf.data(), w, h, GDT_Float32, 0, 0) != CE_None ||
+  if (gdal().GDALRasterIO(band, GF_Read, 0, 0, w, h, hf.data(), w, h, GDT_Float32, 0, 0) != CE_None ||
       !session.first_error().empty())
     session.fail(FT_ERR_FORMAT, "cannot read the samples of '" + name + "'");
 
   int has_nodata = 0;
-  const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
+  const double nodata = gdal().GDALGetRasterNoDataValue(band, &has_nodata);
   const float nodata_f = float(nodata);
   size_t missing = 0;
   float* z = hf.data();
@@ -90,12 +86,12 @@ Heightfield read_dataset(GDALDatasetH ds, const std::string& name, NodataPolicy 
   }
 
   GeoReference g;
-  if (const char* wkt = GDALGetProjectionRef(ds)) g.crs_wkt = wkt;
-  g.has_transform = GDALGetGeoTransform(ds, g.transform.data()) == CE_None;
+  if (const char* wkt = gdal().GDALGetProjectionRef(ds)) g.crs_wkt = wkt;
+  g.has_transform = gdal().GDALGetGeoTransform(ds, g.transform.data()) == CE_None;
   if (g.has_transform) {
     const double dx = pixel_width_in_metres(g, h);
     if (std::isfinite(dx) && dx > 0) hf.set_world_size(dx * (w - 1));
-  } else if (const char* ws = GDALGetMetadataItem(ds, "FRACTERRA_WORLD_SIZE", nullptr)) {
+  } else if (const char* ws = gdal().GDALGetMetadataItem(ds, "FRACTERRA_WORLD_SIZE", nullptr)) {
     const double v = std::strtod(ws, nullptr);
     if (std::isfinite(v) && v > 0) hf.set_world_size(v);
   }
@@ -106,25 +102,27 @@ Heightfield read_dataset(GDALDatasetH ds, const std::string& name, NodataPolicy 
 }  // namespace
 
 Heightfield read_gdal(const std::string& path, NodataPolicy nodata) {
+  gdal("reading '" + path + "' as " + raster_format_name(extension_of(path)));
   GdalSession session;
-  GdalDataset ds(GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  GdalDataset ds(gdal().GDALOpenEx(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
   if (!ds) {
     VSIStatBufL st;
-    if (VSIStatL(path.c_str(), &st) != 0) fail(FT_ERR_IO, "cannot read '" + path + "': no such file");
+    if (gdal().VSIStatL(path.c_str(), &st) != 0) fail(FT_ERR_IO, "cannot read '" + path + "': no such file");
     session.fail(FT_ERR_FORMAT, "'" + path + "' is not a raster GDAL can read");
   }
   return read_dataset(ds.get(), path, nodata, session);
 }
 
 Heightfield decode_gdal(const std::string& bytes, const std::string& extension, NodataPolicy nodata) {
+  gdal("reading " + raster_format_name(extension));
   GdalSession session;
   GdalMemFile file(extension);
   const std::string& name = file.name();
-  VSILFILE* f = VSIFileFromMemBuffer(name.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(bytes.data())),
+  VSILFILE* f = gdal().VSIFileFromMemBuffer(name.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(bytes.data())),
                                      vsi_l_offset(bytes.size()), FALSE);
   if (f == nullptr) session.fail(FT_ERR_INTERNAL, "cannot map the bytes for GDAL");
-  VSIFCloseL(f);
-  GdalDataset ds(GDALOpenEx(name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  gdal().VSIFCloseL(f);
+  GdalDataset ds(gdal().GDALOpenEx(name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
   if (!ds) session.fail(FT_ERR_FORMAT, "the bytes are not a raster GDAL can read");
   return read_dataset(ds.get(), "<memory>", nodata, session);
 }

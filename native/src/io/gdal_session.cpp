@@ -1,10 +1,5 @@
 #include "io/gdal_session.hpp"
 
-#include <cpl_conv.h>
-#include <cpl_error.h>
-#include <cpl_vsi.h>
-#include <gdal.h>
-
 #include <atomic>
 #include <mutex>
 
@@ -27,18 +22,18 @@ void CPL_STDCALL handler(CPLErr error_class, CPLErrorNum /*code*/, const char* m
 
 GdalSession::GdalSession() {
   static std::once_flag registered;
-  std::call_once(registered, [] { GDALAllRegister(); });
-  CPLPushErrorHandler(handler);
+  std::call_once(registered, [] { gdal().GDALAllRegister(); });
+  gdal().CPLPushErrorHandler(handler);
   // No ".aux.xml" beside files we only read, nor beside files we write.
-  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
+  gdal().CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");
   outer_ = current;
   current = this;
 }
 
 GdalSession::~GdalSession() {
   current = outer_;
-  if (outer_ == nullptr) CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
-  CPLPopErrorHandler();
+  if (outer_ == nullptr) gdal().CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
+  gdal().CPLPopErrorHandler();
 }
 
 void GdalSession::note_error(const char* message) {
@@ -49,13 +44,13 @@ void GdalSession::fail(ft_status status, const std::string& what) const {
   ft::fail(status, first_error_.empty() ? what : what + ": " + first_error_);
 }
 
-void GdalCloser::operator()(void* ds) const { GDALClose(ds); }
+void GdalCloser::operator()(void* ds) const { gdal().GDALClose(ds); }
 
 GdalMemFile::GdalMemFile(const std::string& extension) {
   static std::atomic<unsigned long> serial{0};
   name_ = "/vsimem/fracterra_" + std::to_string(serial++) + extension;
 }
 
-GdalMemFile::~GdalMemFile() { VSIUnlink(name_.c_str()); }
+GdalMemFile::~GdalMemFile() { gdal().VSIUnlink(name_.c_str()); }
 
 }  // namespace ft::io

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "io/gdal_api.hpp"
 
 namespace ft::io {
 

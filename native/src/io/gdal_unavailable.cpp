@@ -7,19 +7,12 @@
 #include "io/vector_io.hpp"
 
 namespace ft::io {
-namespace {
-std::string format_of(const std::string& extension) {
-  if (extension == ".tif" || extension == ".tiff") return "GeoTIFF (" + extension + ")";
-  return extension.empty() ? std::string("a file without an extension") : "'" + extension + "'";
-}
-}  // namespace
-
 Heightfield read_gdal(const std::string& path, NodataPolicy) {
-  needs("reading '" + path + "' as " + format_of(extension_of(path)), "GDAL");
+  needs("reading '" + path + "' as " + raster_format_name(extension_of(path)), "GDAL");
 }
 
 Heightfield decode_gdal(const std::string&, const std::string& extension, NodataPolicy) {
-  needs("reading " + format_of(extension), "GDAL");
+  needs("reading " + raster_format_name(extension), "GDAL");
 }
 
 void write_cog(const Heightfield&, const std::string& path) {

@@ -1,9 +1,6 @@
 // Heightfields as Cloud-Optimized GeoTIFF (see gdal_raster.hpp). GDAL's COG
 // driver writes into /vsimem/ and the finished bytes go to disk through
 // write_file_atomically, so a failure never leaves a partial file.
-#include <cpl_string.h>
-#include <cpl_vsi.h>
-#include <gdal.h>
 
 #include <cmath>
 #include <memory>
@@ -20,8 +17,8 @@ namespace {
 
 struct Options {
   char** list = nullptr;
-  ~Options() { CSLDestroy(list); }
-  void set(const char* key, const char* value) { list = CSLSetNameValue(list, key, value); }
+  ~Options() { gdal().CSLDestroy(list); }
+  void set(const char* key, const char* value) { list = gdal().CSLSetNameValue(list, key, value); }
 };
 
 }  // namespace
@@ -29,23 +26,24 @@ struct Options {
 void write_cog(const Heightfield& hf, const std::string& path) {
   const HeightStats s = hf.stats();
   if (!std::isfinite(s.min) || !std::isfinite(s.max)) invalid("the heightfield holds NaN or infinite samples");
+  gdal("writing '" + path + "' as GeoTIFF");
   GdalSession session;
-  GDALDriverH mem = GDALGetDriverByName("MEM"), cog = GDALGetDriverByName("COG");
+  GDALDriverH mem = gdal().GDALGetDriverByName("MEM"), cog = gdal().GDALGetDriverByName("COG");
   if (mem == nullptr || cog == nullptr) fail(FT_ERR_UNSUPPORTED, "this GDAL has no MEM or COG driver (GDAL >= 3.1)");
   // An in-memory copy is the source (GDAL 3.10 and later refuse to open
   // "MEM:::DATAPOINTER" names, which would have avoided the copy).
   check_allocation(checked_bytes(hf.size(), sizeof(float)), "the GeoTIFF's in-memory copy of the heightfield");
-  GdalDataset src(GDALCreate(mem, "", hf.width(), hf.height(), 1, GDT_Float32, nullptr));
+  GdalDataset src(gdal().GDALCreate(mem, "", hf.width(), hf.height(), 1, GDT_Float32, nullptr));
   if (!src) session.fail(FT_ERR_OUT_OF_MEMORY, "cannot make the in-memory copy for GDAL");
-  if (GDALRasterIO(GDALGetRasterBand(src.get(), 1), GF_Write, 0, 0, hf.width(), hf.height(),
+  if (gdal().GDALRasterIO(gdal().GDALGetRasterBand(src.get(), 1), GF_Write, 0, 0, hf.width(), hf.height(),
                    const_cast<float*>(hf.data()), hf.width(), hf.height(), GDT_Float32, 0, 0) != CE_None)
     session.fail(FT_ERR_INTERNAL, "cannot copy the heightfield for GDAL");
   const GeoReference& g = hf.georef();
-  if (g.has_transform) GDALSetGeoTransform(src.get(), const_cast<double*>(g.transform.data()));
-  if (!g.crs_wkt.empty()) GDALSetProjection(src.get(), g.crs_wkt.c_str());
+  if (g.has_transform) gdal().GDALSetGeoTransform(src.get(), const_cast<double*>(g.transform.data()));
+  if (!g.crs_wkt.empty()) gdal().GDALSetProjection(src.get(), g.crs_wkt.c_str());
   if (g.empty() && hf.world_size() > 0)
-    GDALSetMetadataItem(src.get(), "FRACTERRA_WORLD_SIZE", format_number(hf.world_size()).c_str(), nullptr);
-  GDALSetMetadataItem(src.get(), "TIFFTAG_SOFTWARE", "fracterra", nullptr);
+    gdal().GDALSetMetadataItem(src.get(), "FRACTERRA_WORLD_SIZE", format_number(hf.world_size()).c_str(), nullptr);
+  gdal().GDALSetMetadataItem(src.get(), "TIFFTAG_SOFTWARE", "fracterra", nullptr);
 
   Options o;
   o.set("COMPRESS", "DEFLATE");
@@ -55,11 +53,11 @@ void write_cog(const Heightfield& hf, const std::string& path) {
   GdalMemFile file(".tif");
   const std::string& name = file.name();
   {
-    GdalDataset out(GDALCreateCopy(cog, name.c_str(), src.get(), FALSE, o.list, nullptr, nullptr));
+    GdalDataset out(gdal().GDALCreateCopy(cog, name.c_str(), src.get(), FALSE, o.list, nullptr, nullptr));
     if (!out) session.fail(FT_ERR_IO, "GDAL could not write the GeoTIFF '" + path + "'");
   }
   vsi_l_offset length = 0;
-  GByte* bytes = VSIGetMemFileBuffer(name.c_str(), &length, FALSE);
+  GByte* bytes = gdal().VSIGetMemFileBuffer(name.c_str(), &length, FALSE);
   if (bytes == nullptr || !session.first_error().empty())
     session.fail(FT_ERR_IO, "GDAL could not write the GeoTIFF '" + path + "'");
   write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(bytes), size_t(length)));

@@ -209,7 +209,17 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
     }
     Span rivers_span = span(kRiversWeight);
     rc.progress = Progress(&Span::call, &rivers_span);
-    *rivers = overlap == 0 ? hydrology::extract_rivers(hf, rc) : hydrology::extract_rivers(torus_of(hf, overlap), rc);
+    // The ground under each river is carved to its depth (never below the
+    // sea), so no river lies flush with the ground it runs on.
+    if (overlap == 0) {
+      *rivers = hydrology::extract_rivers(hf, rc);
+      hf = hydrology::carve(hf, *rivers);
+    } else {
+      const double world_size = hf.world_size();
+      const Heightfield torus = torus_of(hf, overlap);
+      *rivers = hydrology::extract_rivers(torus, rc);
+      hf = untorus(hydrology::carve(torus, *rivers), overlap, world_size);
+    }
   }
   return hf;
 }

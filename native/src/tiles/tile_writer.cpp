@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "core/build_features.hpp"
+#include "core/gdal_library.hpp"
 #include "core/error.hpp"
 #include "core/platform.hpp"
 #include "io/atomic_file.hpp"
@@ -94,8 +95,7 @@ TileSpec make_tile_spec(const TileTerrain& t, int64_t tile, TileFormat format, d
   const ft_terrain_params& p = t.terrain;
   int64_t width = 0, height = 0;
   terrain::terrain_extent(p, 0, &width, &height);
-  if (t.maps && !kHaveGdal)
-    invalid("a tile set's maps are float32 GeoTIFFs, which need GDAL; this build has none: leave out the maps");
+  if (t.maps && !have_gdal()) needs_gdal("a tile set's maps (float32 GeoTIFFs; leave out the maps to go without)");
   if (t.erodes()) {
     check_tile_cuts(width, height, tile);
     check_mask_shape("the falloff mask", p.falloff == FT_FALLOFF_CUSTOM ? p.falloff_mask : nullptr,

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/build_features.hpp"
+#include "core/gdal_library.hpp"
 #include "core/error.hpp"
 #include "core/platform.hpp"
 #include "terrain/terrain.hpp"
@@ -156,7 +157,7 @@ void TileSet::finish() {
   if (n != spec_.grid.count())
     invalid("the tile set in '" + dir_ + "' has " + std::to_string(n) + " of " + std::to_string(spec_.grid.count()) +
             " tiles; write the rest before finishing it");
-  if (kHaveGdal) {  // without GDAL (Windows) the set is complete without its mosaic
+  if (have_gdal()) {  // without GDAL the set is complete without its mosaic
     write_mosaic_vrt(spec_, dir_);
     manifest_["vrt"] = kMosaicName;
     for (int k = 0; spec_.maps && k < FT_MAP_COUNT; ++k) write_map_vrt(spec_, dir_, k);

@@ -5,6 +5,8 @@ import array
 import bpy
 import numpy as np
 
+from . import huge_pages
+
 
 def loop_total_writable():
     # Blender 4.0 derives polygon sizes from loop_start; 3.x needs loop_total.
@@ -24,6 +26,7 @@ def fill_grid_mesh_steps(mesh, g, smooth=True):
     mesh.edges.add(g.edge_count)
     mesh.loops.add(g.loop_count)
     mesh.polygons.add(g.face_count)
+    huge_pages.advise(mesh.vertices, mesh.edges, mesh.loops, mesh.polygons)
     yield 0.1
     mesh.vertices.foreach_set("co", g.co)
     yield 0.2
@@ -105,6 +108,7 @@ def set_uvs(mesh, uv):
         return
     if layer is None:
         layer = mesh.uv_layers.new(name=UV_NAME, do_init=False)
+        huge_pages.advise(layer.data)
     layer.data.foreach_set("uv", uv)
 
 
@@ -129,7 +133,10 @@ SLOPE_ATTRIBUTE = "fracterra_slope"  # 0 flat, 1 vertical: the slope angle / 90 
 def set_point_attributes(mesh, arrays):
     """Writes float point attributes {name: one value per vertex}, made when missing."""
     for name, values in arrays.items():
-        layer = mesh.attributes.get(name) or mesh.attributes.new(name, "FLOAT", "POINT")
+        layer = mesh.attributes.get(name)
+        if layer is None:
+            layer = mesh.attributes.new(name, "FLOAT", "POINT")
+            huge_pages.advise(layer.data)
         layer.data.foreach_set("value", np.ascontiguousarray(values, dtype=np.float32).ravel())
 
 

@@ -13,6 +13,7 @@ import numpy as np
 from ... import core
 from ...core import splat
 from ..common.reporting import SettingsError
+from . import huge_pages
 
 COLOR_ATTRIBUTE = "fracterra_color"  # linear RGB(A), one per vertex, in the grid's order
 MATERIAL_NAME = "Fracterra Terrain"
@@ -72,6 +73,7 @@ def set_colors(mesh, rgba):
         layer = None
     if layer is None:
         layer = mesh.attributes.new(COLOR_ATTRIBUTE, "FLOAT_COLOR", "POINT")
+        huge_pages.advise(layer.data)
     layer.data.foreach_set("color", rgba)
     # The viewport's Attribute colour (Solid mode) shows it too.
     colors = getattr(mesh, "color_attributes", None)

@@ -4,9 +4,10 @@ to the terrain, in its local frame:
     Rivers  one curve, a POLY spline per river segment, each point's radius half
             the river's width; its bevel is a flat ellipse (a ribbon in the bed,
             not a pipe on the land), so the width follows the discharge;
-    Lakes   one flat mesh: the grid cells of each lake at its level (the banks
-            rise above it, so the shore is where the terrain meets the water);
-    Sea     one flat mesh over the terrain's footprint at the sea's level.
+    Lakes   one flat mesh: the grid cells of each lake at its level, cut to
+            where the water is deeper than the network's minimum depth (1% of
+            the relief by default), so no water lies flush with the ground;
+    Sea     one flat mesh at the sea's level over the sea's cells, cut so too.
 All share the Fracterra Water material. Each carries its kind in
 obj["fracterra_kind"]; a re-run removes the terrain's old ones first, so
 nothing is duplicated.
@@ -17,6 +18,7 @@ import numpy as np
 
 from ...core.grid import grid_size
 from ...core.rivers import LAND, SEA
+from ...core.water_surface import depth_triangles
 from .mesh import loop_total_writable
 from .objects import is_terrain
 
@@ -156,10 +158,28 @@ def _rivers(terrain, water, frame, collection):
     return put(terrain, "RIVERS", curve.name, curve, collection)
 
 
-def _cells_mesh(name, water, frame, wet, level_of):
-    """A flat mesh of the grid cells with a wet corner (wet: (ny, nx) bool), each
-    at level_of(its wet corner's label); None when no cell is wet."""
-    nx, ny = water.nx, water.ny
+def _triangle_mesh(name, frame, water, xy, z):
+    """A mesh of separate triangles: xy (n, 3, 2) grid coordinates, z (n,) heights."""
+    n = len(z)
+    x, y = frame.xy(xy[:, :, 0].ravel() * water.spacing, xy[:, :, 1].ravel() * water.spacing)
+    co = np.stack([x, y, np.repeat(z, 3)], axis=1).astype(np.float32)
+    mesh = bpy.data.meshes.new(name)
+    mesh.vertices.add(len(co))
+    mesh.vertices.foreach_set("co", co.ravel())
+    mesh.loops.add(3 * n)
+    mesh.loops.foreach_set("vertex_index", np.arange(3 * n, dtype=np.int32))
+    mesh.polygons.add(n)
+    mesh.polygons.foreach_set("loop_start", np.arange(0, 3 * n, 3, dtype=np.int32))
+    if loop_total_writable():
+        mesh.polygons.foreach_set("loop_total", np.full(n, 3, dtype=np.int32))
+    mesh.update(calc_edges=True)
+    return mesh
+
+
+def _depth_mesh(name, water, frame, heights, wet, level_of):
+    """The water over the grid cells with a wet corner (wet: (ny, nx) bool), each at
+    level_of(its wet corner's label), cut to where it is deeper than water.min_depth;
+    None when nothing is that deep."""
     corner = wet[:-1, :-1] | wet[:-1, 1:] | wet[1:, :-1] | wet[1:, 1:]
     rows, cols = np.nonzero(corner)
     if rows.size == 0:
@@ -171,33 +191,8 @@ def _cells_mesh(name, water, frame, wet, level_of):
     for dy, dx in ((0, 0), (0, 1), (1, 0), (1, 1)):
         w = wet[rows + dy, cols + dx]
         lab = np.where((lab == LAND) & w, labels[rows + dy, cols + dx], lab)
-    z = level_of(lab)
-    # Four vertices per cell (the cells of two lakes never share theirs).
-    gx = np.stack([cols, cols + 1, cols + 1, cols], axis=1).astype(np.float64)
-    gy = np.stack([rows, rows, rows + 1, rows + 1], axis=1).astype(np.float64)
-    x, y = frame.xy(gx * water.spacing, gy * water.spacing)
-    co = np.stack([x.ravel(), y.ravel(), np.repeat(z, 4)], axis=1).astype(np.float32)
-    mesh = bpy.data.meshes.new(name)
-    n = rows.size
-    mesh.vertices.add(len(co))
-    mesh.vertices.foreach_set("co", co.ravel())
-    mesh.loops.add(4 * n)
-    mesh.loops.foreach_set("vertex_index", np.arange(4 * n, dtype=np.int32))
-    mesh.polygons.add(n)
-    mesh.polygons.foreach_set("loop_start", np.arange(0, 4 * n, 4, dtype=np.int32))
-    if loop_total_writable():
-        mesh.polygons.foreach_set("loop_total", np.full(n, 4, dtype=np.int32))
-    mesh.update(calc_edges=True)
-    return mesh
-
-
-def _sea_mesh(name, frame, level):
-    """A rectangle over the terrain's footprint at the sea's level: the land hides it."""
-    mesh = bpy.data.meshes.new(name)
-    hx, hy = 0.5 * frame.wx, 0.5 * frame.wy
-    mesh.from_pydata([(-hx, -hy, level), (hx, -hy, level), (hx, hy, level), (-hx, hy, level)], [], [(0, 1, 2, 3)])
-    mesh.update()
-    return mesh
+    xy, z = depth_triangles(heights, rows, cols, np.asarray(level_of(lab), dtype=np.float64), water.min_depth)
+    return _triangle_mesh(name, frame, water, xy, z) if len(z) else None
 
 
 def build_water(terrain, water, heights=None):
@@ -217,18 +212,24 @@ def build_water(terrain, water, heights=None):
         kept |= {"RIVERS", "RIVER_PROFILE"}
         made.append(f"{water.segment_count} river segments")
     lakes = water.mask >= 0
-    if lakes.any():
+    mesh = None
+    if lakes.any() and heights is not None:
         levels = water.levels
-        mesh = _cells_mesh(f"{terrain.name} Lakes", water, frame, lakes, lambda lab: levels[lab])
+        mesh = _depth_mesh(f"{terrain.name} Lakes", water, frame, heights, lakes, lambda lab: levels[lab])
+    if mesh is not None:
         put(terrain, "LAKES", mesh.name, mesh, collection)
         kept.add("LAKES")
         made.append(f"{water.lake_count} lakes")
     sea = water.mask == SEA
+    mesh = None
     if sea.any() and heights is not None:
-        # Just above the sea floor the landform flattened (the same height would
-        # flicker against it): 1e-4 of the relief.
-        level = float(heights[sea].max()) + 1e-4 * float(np.ptp(heights))
-        put(terrain, "SEA", f"{terrain.name} Sea", _sea_mesh(f"{terrain.name} Sea", frame, level), collection)
+        # The landform flattens the sea's floor at the sea's level: the water
+        # stands twice the minimum depth over its highest floor cell, so all
+        # the floor is under more than the minimum depth.
+        level = float(heights[sea].max()) + 2.0 * water.min_depth
+        mesh = _depth_mesh(f"{terrain.name} Sea", water, frame, heights, sea, lambda lab: np.full(len(lab), level))
+    if mesh is not None:
+        put(terrain, "SEA", mesh.name, mesh, collection)
         kept.add("SEA")
         made.append("the sea")
     for obj in water_objects(terrain):
