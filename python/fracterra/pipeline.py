@@ -151,7 +151,8 @@ def terrain(*, size=None, center=None, erode=None, maps: bool = False, rivers=Fa
     eroded, deposited) of the result, as Terrains.
     rivers: True (the defaults) or a dict of ft_hydrology_params settings: the
     rivers, lakes and sea of the result (a Rivers), traced as the pipeline's
-    last stage (a terrain that tiles gives rivers that wrap; its own sea is theirs).
+    last stage (a terrain that tiles gives rivers that wrap; its own sea is
+    theirs); the terrain returned is then carved along them (Rivers.carve).
     erosion_mask, rain_map: 2-D arrays in [0, 1] spanning the terrain: where
     erosion acts, where rain falls. falloff_mask: the custom falloff's mask.
     reference: a (2^m + 1)^2 array of heights the terrain passes through
@@ -223,7 +224,7 @@ def terrain(*, size=None, center=None, erode=None, maps: bool = False, rivers=Fa
     water = None
     if rivers:
         with RiverNetwork(net) as network:
-            water = Rivers(network, z)
+            water = Rivers(network, z, carved=True)
     return Build(z, made, water) if maps or rivers else z
 
 

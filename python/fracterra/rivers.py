@@ -34,7 +34,7 @@ class Rivers:
 
     LAND, SEA = LAND, SEA
 
-    def __init__(self, net: RiverNetwork, terrain):
+    def __init__(self, net: RiverNetwork, terrain, carved: bool = False):
         self._net = RiverNetwork(net.handle)  # this object now owns the handle
         net.handle = None
         lib = self._net._lib
@@ -63,6 +63,33 @@ class Rivers:
         # A torus's mask (one sample smaller a side) is wrapped back onto the terrain's grid.
         self.water_mask = mask if (h, w) == (rows, cols) else mask[np.arange(rows) % h][:, np.arange(cols) % w]
         self.world_size = float(getattr(terrain, "world_size", 0.0))
+        self._terrain = None if carved else terrain  # a Build's terrain is carved already
+
+    def carve(self):
+        """The terrain these rivers were traced on, its ground lowered under each river to the
+        river's depth (never below the sea; lakes and the sea untouched), as the pipeline's rivers
+        stage returns it: ft.terrain(p, rivers=True).terrain is ft.rivers(ft.terrain(p)).carve(),
+        bit for bit. A terrain that tiles is carved as its torus and still tiles."""
+        from .arrays import Terrain, from_library, to_library
+        lib = self._net._lib
+        z = self._terrain
+        if z is None:
+            raise ValueError("these rivers came with ft.terrain(rivers=...), whose terrain is carved already")
+        overlap = int(getattr(z, "period_overlap", -1))
+        a = np.asarray(z)
+        ws = self.world_size
+        if overlap > 0:  # the torus it was traced on (pipeline.cpp's torus_of)
+            a = a[:-overlap, :-overlap]
+            ws = ws * (a.shape[1] - 1) / (z.shape[1] - 1)
+        out = ctypes.c_void_p()
+        with to_library(a, world_size=ws) as hf:
+            lib.check(lib.ft_rivers_carve(hf.handle, self._net.handle, ctypes.byref(out)))
+        from .core.terrain import Heightfield
+        with Heightfield(out) as carved:
+            c = np.asarray(from_library(carved))
+        if overlap > 0:  # back on the full grid: the first row and column repeated as the last
+            c = c[np.arange(z.shape[0]) % c.shape[0]][:, np.arange(z.shape[1]) % c.shape[1]]
+        return Terrain(c, self.world_size, overlap, float(getattr(z, "sea_level", np.nan)))
 
     def _rings(self, lakes) -> list:
         from .core.polylines import Polylines

@@ -97,10 +97,16 @@ def test_rivers_are_the_clis(tmp_path):
     cli("terrain", *PERIODIC_FLAGS, "--erode", "land", "--rivers", tmp_path / "cli.json")
     built.rivers.write(tmp_path / "py.json")
     assert (tmp_path / "py.json").read_bytes() == (tmp_path / "cli.json").read_bytes()
-    # The rivers stage alone on the terrain kept in numpy: the same network.
-    again = ft.rivers(built.terrain)
+    # The rivers stage alone on the eroded terrain kept in numpy: the same network, and the same
+    # terrain carved along it (the pipeline returns the terrain carved).
+    eroded = ft.terrain(**PERIODIC, erode="land")
+    again = ft.rivers(eroded)
     again.write(tmp_path / "again.json")
     assert (tmp_path / "again.json").read_bytes() == (tmp_path / "cli.json").read_bytes()
+    carved = again.carve()
+    assert np.array_equal(carved, built.terrain) and carved.period_overlap == 1
+    assert np.array_equal(built.terrain, cli_terrain(tmp_path, "t.npy", *PERIODIC_FLAGS, "--erode", "land",
+                                                     "--rivers", tmp_path / "again.csv"))
     r = built.rivers
     assert r.segment_count > 3 and r.xyz.shape == (r.offsets[-1], 3)
     assert r.water_mask.shape == built.terrain.shape
@@ -114,6 +120,8 @@ def test_rivers_with_a_sea_end_in_it(tmp_path):
     cli("terrain", *SEA_FLAGS, "--erode", "land", "--rivers", tmp_path / "cli.json")
     built.rivers.write(tmp_path / "py.json")
     assert (tmp_path / "py.json").read_bytes() == (tmp_path / "cli.json").read_bytes()
+    again = ft.rivers(ft.terrain(**SEA, erode="land"))  # the landform's sea is the rivers' too
+    assert np.array_equal(again.carve(), built.terrain)
     assert "sea" in set(built.rivers.end) and (built.rivers.water_mask == ft.Rivers.SEA).any()
 
 
