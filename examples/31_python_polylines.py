@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The library from numpy in one figure: the FPL ensemble statistics against
 the paper's table (seed 003), a terrain's Hurst exponent with the variogram
 it was fitted on, and an eroded terrain's rivers and lakes.

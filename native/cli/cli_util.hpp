@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small pieces the subcommands share: name <-> enum tables for CLI11 options,
 // and a stopwatch.
 #pragma once

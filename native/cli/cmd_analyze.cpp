@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra analyze: measure H and D of a heightfield, a profile or a set of
 // polylines, print a JSON report, and optionally plot the log-log fits.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra erode: fluvial, hydraulic and thermal erosion of a heightfield,
 // and the maps (drainage area, slope, curvature, water, eroded, deposited).
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra rivers: the rivers, lakes and sea of a heightfield as polylines
 // and polygons (CSV, JSON, GeoJSON, GeoPackage), the terrain carved along
 // them, and the network's measures.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra splat: splat (weight) maps and a colour map of a terrain by layer
 // rules (the built-in ones or a rules JSON), for game engines.
 #include <cstdio>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """fracterra for Python: fractal terrains, erosion and their measures as numpy
 arrays, on the same native library (and the same ctypes binding) as the
 Blender add-on and the `fracterra` command-line tool.

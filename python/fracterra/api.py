@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The numpy API beside the pipeline (pipeline.py: terrain, erode, rivers):
 analyze(), splat(), save(), load(), version().
 

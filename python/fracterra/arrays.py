@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """numpy arrays in and out of the library: the Terrain type (heights with
 their world) and the checks every array from a caller passes before any
 pointer to it reaches C, so that bad input is an exception naming what is

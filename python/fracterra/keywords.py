@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Keyword arguments from the library's parameter tables: each function's
 settings are the fields of its params struct (names, defaults, ranges, units
 and docs as `fracterra params` lists them), read through core/rows.py, the

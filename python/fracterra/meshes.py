@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Fractalizing polygon meshes (fracterra/subdiv.h): OpenSubdiv's
 subdivision with fractal displacements, from and to numpy arrays."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The pipeline from numpy: terrain() is ft_terrain_build (generate ->
 landform -> erode -> maps -> rivers, as `fracterra terrain` and the Blender
 add-on run it), erode() and rivers() are the pipeline's erode and rivers

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Fractal planets as numpy arrays (fracterra/planet.h): cube faces and their
 patches, equirectangular maps, the closed cube-sphere and icosphere meshes,
 heights at given directions, the sea's height and the angular spectrum."""

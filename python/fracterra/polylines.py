@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Fractal polylines as vertex arrays (fracterra/polyline.h): Nikulin's FPL in
 2D and 3D (lightning with branches), Koch, dragon, Sierpinski, IFS, the Voss
 profile; their measures (eta, chi, gamma, mass and box dimensions); the FPL

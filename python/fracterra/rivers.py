@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Rivers, lakes and the sea of a terrain as numpy arrays (fracterra/hydrology.h),
 with the CLI's writers (GeoJSON, GeoPackage, CSV, JSON: the same files as
 `fracterra rivers --out` / `--lakes`)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """POV-Ray scenes and renders (fracterra/povray.h), and Feder's clouds
 (fracterra/analysis.h): pictures of terrains and polylines."""
 

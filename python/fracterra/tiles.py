@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Tile sets on Dask for a terrain larger than memory, one task per tile:
 
     python3 -m fracterra.tiles --levels 16 --tile 4096 --out DIR [--scheduler tcp://H:8786] [--measure]

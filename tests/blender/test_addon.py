@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The installed add-on in real Blender: every operator with explicit
 parameters, vertex counts, heights bit-identical to the library's output,
 re-editing in place, presets, and error reports instead of tracebacks."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """In real Blender: the add-on's properties are the library's parameter
 tables (fracterra/params.h). Every setting of ft_terrain_params is a property
 of the Add Fractal Terrain operator and of the object's PropertyGroup, every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tile sets of eroded terrains (`fracterra tiles --erode`, tiles/ over
 // pipeline/'s windows): every tile and every map tile is the same window of
 // the whole eroded terrain, bit for bit, in any order of writing, after an

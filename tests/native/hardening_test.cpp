@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hardening: nothing is lost when a write is killed or refused midway, sizes
 // above the memory cap are refused before allocating (with the size in the
 // message), and readers refuse hostile headers cleanly. Writes are exercised

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Bad input from Python is an exception naming what is allowed (a
 FracterraError subclass, or TypeError for a wrong type or keyword), checked
 before any pointer reaches C: never a crash, never a silent wrong answer.

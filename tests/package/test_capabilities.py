@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """One function per capability of the C ABI, from numpy to numpy, each
 against the CLI on the same settings where the CLI writes a file (the same
 bits), with keywords and help() from the library's tables and the library's

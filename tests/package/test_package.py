@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The installed fracterra wheel, from outside the source tree: the numpy API
 against the CLI's files (same library, same bits), its keyword arguments and
 docs from the parameter tables, errors with the library's messages, and the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The package is the CLI's pipeline: ft.terrain() through ft_terrain_build and
 ft.erode()/ft.rivers() through the pipeline's own stages, compared with files
 the CLI writes (the same bits), and erode(terrain(p)) == terrain(p, erode=X)

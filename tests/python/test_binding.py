@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The ctypes binding of libfracterra.so, outside Blender."""
 
 import array

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The library's parameter tables (fracterra/params.h) against what is built
 from them: the ctypes Structures, the defaults that ft_*_params_init writes,
 and the add-on's parameter list (core/params.py). The library is the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """No format loses the world size: every writer records it and every reader
 gives it back, .npy in a sidecar "<file>.npy.json" (as RAW16's .raw.json);
 a file that records none is worked on in the default world, 10 units, with a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # pytest suite of the add-on's ctypes binding (blender_addon/fracterra/core),
 # run outside Blender against the freshly built libfracterra.so.
 find_program(FT_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)

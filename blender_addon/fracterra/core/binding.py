@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Finding and loading libfracterra.so (fracterra.dll on Windows), and the ctypes signature of every symbol.
 
 Search order: the path in the FRACTERRA_LIBRARY environment variable (when

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The settings of the add-on, made from the library's own description of its
 parameter structs (fracterra/params.h): names, defaults, ranges, enum items,
 labels, tooltips and which methods use each field come from the library's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The one reader of the library's parameter rows in Python (fracterra/params.h).
 
 A row describes one field of a params struct. It reaches Python from the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/analysis.h
 /// Measures: Hurst exponent and fractal dimension of profiles and
 /// heightfields, coastlines (level sets by marching squares) and Feder's

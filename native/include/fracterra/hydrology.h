@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /* fracterra hydrology: rivers, lakes and the sea of a heightfield as objects.
  * Depressions are filled to their spill level (Priority-Flood, Barnes et al.
  * 2014): a filled depression of at least min_lake_area is a lake (level,

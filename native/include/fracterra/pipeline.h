@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/pipeline.h
 /// One call for a whole terrain: generate -> landform -> erode -> maps ->
 /// rivers, with one progress callback across the stages (ABI 2.13; rivers 2.20). The CLI's

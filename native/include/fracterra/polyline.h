@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/polyline.h
 /// Fractal polylines: Nikulin's FPL (random orthogonal midpoint displacement,
 /// seed 003) in 2D and 3D with optional branching (lightning), the Voss

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/heightfield_io.hpp"
 
 #include <nlohmann/json.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Heightfields to and from files, chosen by extension:
 //   .png  16-bit grayscale, normalised to 0..65535, real min/max in tEXt
 //         ("fracterra:min", "fracterra:max");

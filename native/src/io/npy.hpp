@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // NumPy .npy arrays (format 1.0-3.0): 2D (heightfields) or 1D (profiles).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The terrain pipeline: generate -> landform -> erode -> maps -> rivers, one
 // call with one progress callback (fracterra/pipeline.h). The CLI and the C
 // ABI (so the Blender add-on) both come through here, so the stages are put
