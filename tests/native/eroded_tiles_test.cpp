@@ -356,6 +356,7 @@ TEST(ErodedTiles, BadInputIsRefusedAndWritesNothing) {
   io::write_heightfield(m, mask.string());
   refused("--erode land --tile 64 --erosion-mask " + mask.string(), "the erosion mask is 65 x 33");
   fs::remove(mask);
+  fs::remove(mask.string() + ".json");  // its sidecar (the world size)
   refused("--erode land --tile 64 --engine unity", "add --maps");
 }
 

@@ -11,4 +11,4 @@ add_test(NAME python_binding
 set_tests_properties(python_binding PROPERTIES
   LABELS python
   ENVIRONMENT "FRACTERRA_LIBRARY=$<TARGET_FILE:fracterra>;FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>;PYTHONDONTWRITEBYTECODE=1;FT_THREADS_IGNORE_LOAD=1"
-  TIMEOUT 120)
+  TIMEOUT 240)
