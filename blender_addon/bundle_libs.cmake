@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Copies into DEST the shared libraries that LIBRARY (libfracterra.so) needs
 # and an artist's machine may lack, each as a real file under the name the
 # loader asks for (zip archives keep no symlinks). Left out: glibc, and the

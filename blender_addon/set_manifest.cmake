@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Writes into a staged Blender 4.2+ manifest the platforms the package carries
 # a library for ("linux-x64", plus "windows-x64" when fracterra.dll is there)
 # and, for the extension's source folder, the wheels that carry it.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Cross-compiles for Windows x64 with Debian's mingw-w64, posix thread model
 # (std::thread and OpenMP need winpthreads): scripts/build-windows.sh passes
 # this file, and FT_MINGW_PREFIX, where scripts/mingw-deps.sh installed the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra example 10: a lightning bolt from the pure-SDL FPL macro.
 // Render: povray +L../povray_macros +W640 +H480 +A0.3 10_pov_fpl_lightning.pov
 // Uses FT_FPL (ft_fpl.inc), FT_Sweep and FT_Sweep_Taper (ft_sweep.inc).

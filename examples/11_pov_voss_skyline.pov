@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra example 11: mountain skylines from the pure-SDL Voss profile.
 // Render: povray +L../povray_macros +W640 +H480 +A0.3 11_pov_voss_skyline.pov
 // Uses FT_Voss_Profile (ft_voss.inc) and FT_Sweep_Uniform (ft_sweep.inc).

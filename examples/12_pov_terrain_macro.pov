@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra example 12: a fracterra terrain PNG with FT_Terrain, its
 // materials by altitude and slope, a sea, and an FPL coastline path.
 // Render: povray +L../povray_macros +W640 +H480 +A0.3 12_pov_terrain_macro.pov

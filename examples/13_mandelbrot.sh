@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Mandelbrot set as a terrain with its curves of equal escape time,
 # rendered by POV-Ray (docs/images/mandelbrot-pov.png):
 #   bash examples/13_mandelbrot.sh OUT_DIR

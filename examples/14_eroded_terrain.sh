@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # An fBm terrain before and after erosion (the "land" preset: fluvial,
 # hydraulic, thermal), its maps, and POV-Ray renders of both; the eroded one
 # is textured by the maps (sediment where the hydraulic pass deposited,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Every erosion preset on the add-on's default mountain (midpoint, sigma 2,
 # levelling 1, height offset 1.5, radial falloff 0.9; 10 world units) on
 # three seeds, as shaded reliefs, beside the uneroded terrain, at the default

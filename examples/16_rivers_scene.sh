@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # docs/images/rivers-scene.png: an fBm terrain (513^2, H = 0.8, seed 7, 10
 # world units) eroded by the valleys preset (Gentle Valleys), its rivers and
 # lakes (min area 0.03) carved into it, 20% sea, rendered by POV-Ray from above

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Headless Blender demo: a fractal terrain scene, saved and rendered.
 
     blender -b --factory-startup --python examples/20_blender_scene.py -- --out demo-out/blender

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Headless Blender: the Mandelbrot set as a terrain, with its level curves.
 
     blender -b --factory-startup --python examples/21_blender_mandelbrot.py -- --out demo-out/mandelbrot

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Headless Blender: the add-on's default terrain and every terrain preset, rendered
 one by one, beside A.N.T. Landscape's default (Blender's bundled add-on), and
 the default shaped by a custom falloff mask from an object and from an image.

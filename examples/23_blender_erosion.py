@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Headless Blender: a fractal terrain before and after the add-on's Erode step.
 
     blender -b --factory-startup --python examples/23_blender_erosion.py -- --out OUT [--size 257]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Headless Blender: one eroded terrain rendered in Blender and in POV-Ray,
 coloured alike by the splat rules.
 

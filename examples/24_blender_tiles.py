@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Headless Blender: a tile set imported as one mesh and as one object per tile,
 at two levels of detail, rendered side by side to look for cracks and seams.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Headless Blender: a fractal planet with its sea, rendered from space.
 
     blender -b --factory-startup --python examples/25_blender_planet.py -- --out demo-out/planet

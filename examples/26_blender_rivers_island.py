@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Headless Blender: the add-on's Island preset eroded by Gentle Valleys, with
 its Rivers and Lakes, rendered by Cycles (docs/images/rivers-blender.png).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Generate, erode and measure a terrain from Python, and plot its variogram
 with the Hurst exponent the library fits.
 

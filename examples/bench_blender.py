@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Times fracterra against Blender's bundled A.N.T. Landscape in one Blender process.
 
     blender -b --factory-startup --python examples/bench_blender.py -- [--repeat 3] [--levels 10]

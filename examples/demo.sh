@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The fracterra demo, end to end: a Voss midpoint terrain (16-bit heightmap
 # and shaded relief), its coastline, a lightning bolt striking its highest
 # peak, all rendered by POV-Ray; an eroded archipelago, its maps, rivers and

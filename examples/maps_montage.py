@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Four erosion maps side by side as one 16-bit grey PNG, for docs/erosion.md:
 drainage area (log scale), slope, eroded depth and deposited sediment, each
 scaled to its own range and halved in size.

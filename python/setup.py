@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Builds the fracterra wheel from the staged package (python/CMakeLists.txt
 stages it: this package's files, the add-on's bpy-free core/, lib/ with
 libfracterra and its bundled libraries, THIRD_PARTY_NOTICES). The library is loaded by ctypes, so

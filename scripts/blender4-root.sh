@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds, or reuses, a Debian trixie root holding Debian's Blender 4.3, so the
 # add-on zip can be tested in the Blender most artists run without touching
 # the host. The root lives outside the repository (default

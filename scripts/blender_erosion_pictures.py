@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Blender pictures of docs/erosion.md, taken in the real GUI the way a user
 makes them: Add > Fractal Terrain from the menu (a background job), the
 sidebar's settings (each edit its own undo step, as the UI pushes it),

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """How steadily the bar moves: Add Terrain at Detail Levels N with an erosion
 preset, driven as the modal operator drives it (jobs.Runner: the worker
 thread, then build steps within 0.05 s ticks). Prints the library's progress

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Makes one Blender extension per platform from the staged extension folder
 # (blender_addon/CMakeLists.txt: the add-on, wheels/ with the native library,
 # the manifest listing them) with Blender's own tools:

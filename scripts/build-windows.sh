@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Cross-compiles fracterra for Windows x64 with Debian's mingw-w64 into
 # ${FT_WINDOWS_BUILD_DIR:-build-windows}: bin/fracterra.dll, bin/fracterra.exe
 # and the C ABI test program, all linked statically against the C++ runtime,

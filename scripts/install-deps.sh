@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the Debian packages fracterra needs to build, test and run its
 # demo. Packages already present are skipped, so a second run costs nothing.
 # Usage: scripts/install-deps.sh [build|test|demo|windows]   (default: test, the

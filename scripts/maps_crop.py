@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A before/after picture of one window of two erosion maps runs, for the docs:
 the drainage area (log scale, as `fracterra erode --maps` writes it) above the
 splat colour map (`fracterra splat --color`), before on the left, after on the

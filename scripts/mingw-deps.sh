@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the static mingw-w64 (Windows x64) libraries that fracterra.dll links
 # and Debian ships no mingw package of: libpng and FFTW (float and double),
 # from Debian's own source packages (`apt-get source`, verified by apt's

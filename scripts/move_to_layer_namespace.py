@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Moves a layer, native/src/X/, from the plain namespace `ft` into `ft::X` and
 qualifies its names in every other C++ file (other layers, cli/, capi/,
 native/bench, tests/). Used for every layer (issue 25), terrain/ and polyline/

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Gives every source file of the project its SPDX licence line,
 `SPDX-License-Identifier: GPL-3.0-or-later` (LICENSE), as a comment in the
 file's own syntax: first, or after a `#!` line and a Python encoding line.
@@ -10,8 +11,8 @@ file's own syntax: first, or after a `#!` line and a Python encoding line.
 Source files are C, C++, Python, shell, CMake, TOML and POV-Ray files, tracked
 by git or not yet (`git ls-files --cached --others --exclude-standard`, so
 build trees and ignored files are left out); outside a git checkout, the tree
-without build*/ and hidden directories. Data (pictures, grids, fuzz inputs)
-and Markdown carry no header. ctest runs --check (tests/licence)."""
+without build*/ and hidden directories. Data (pictures, grids, fuzz inputs,
+and the EXCLUDED folders' files) and Markdown carry no header. ctest runs --check (tests/licence)."""
 
 import argparse
 import os
@@ -31,6 +32,11 @@ LINE_COMMENT = {
 NAMED = {"CMakeLists.txt": "#"}
 # How far into a file the line may be (after a shebang, an encoding line).
 HEAD_LINES = 5
+# Folders of files that have a source file's name but are data, and why.
+EXCLUDED = {
+    "blender_addon/fracterra/presets/": "Blender operator presets, copied into the user's preset folder as theirs",
+    "tests/blender/data/": "test inputs known byte for byte (the retired presets' SHA-256, common/presets.py)",
+}
 
 
 def comment_of(path: Path):
@@ -49,6 +55,8 @@ def source_files(root: Path):
             dirs[:] = [d for d in dirs if not d.startswith(".") and not (rel == Path(".") and d.startswith("build"))]
             names += [str(rel / f) for f in files]
     for name in sorted(names):
+        if any(Path(name).as_posix().startswith(folder) for folder in EXCLUDED):
+            continue
         path = root / name
         if comment_of(path) and path.is_file():  # a deleted but tracked file is not there
             yield path
@@ -107,6 +115,8 @@ def self_test() -> int:
         (root / "c.py").write_text(f'# {TAG} {LICENCE}\n"""Has it."""\n')
         (root / "e.py").write_text(f'"""Names {TAG} {LICENCE} in its text only."""\n')
         (root / "d.png").write_bytes(b"\x89PNG")  # data: no header
+        (root / "tests/blender/data").mkdir(parents=True)
+        (root / "tests/blender/data/old.py").write_text("import bpy\n")  # an EXCLUDED folder
         found = sorted(p.name for p in missing(root))
         assert found == ["a.cpp", "b.sh", "e.py"], found
         add(root)

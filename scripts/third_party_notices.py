@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Writes THIRD_PARTY_NOTICES for what a package carries: every bundled shared
 library, every static archive linked into fracterra's library and every
 header-only library compiled into it, each with its Debian package, that

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs every fracterra test: installs what it needs, builds, and runs ctest
 # (native GoogleTest suites, Python ctypes tests, real Blender and POV-Ray),
 # then the C ABI suites, fuzz replays and a few native programs again under
@@ -31,7 +32,7 @@
 # beside ctest at nice 19, in the cores the tests leave idle (Blender
 # waiting on its window, the last tests), which the estimate does not count.
 # Each stage prints its start, so a CI log shows where time goes.
-# FT_WINDOWS=0 leaves the Windows stage out.
+# FT_WINDOWS=0 leaves the Windows stage out, FT_FUZZ=0 the fuzzing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
@@ -53,18 +54,55 @@ fi
 # build's CPU (scripts/build.sh -DFT_BUILD_BENCH=ON brings them back).
 stage "Release build"
 scripts/build.sh -DCMAKE_UNITY_BUILD=ON -DFT_BUILD_BENCH=OFF
-# The sanitizer build runs beside the Release ctest at the lowest priority,
-# so it takes a core only while the tests leave one idle (Blender waiting on
-# its window, the last long tests finishing alone); the sanitizer tests run
-# after it. Its own process group, so that a failing ctest stops it too.
-stage "ctest (the sanitizer build beside it, nice 19)"
+# The sanitizer build, then the libFuzzer harnesses' build (clang, in
+# build-fuzz), run beside the Release ctest at the lowest priority, so they
+# take a core only while the tests leave one idle (Blender waiting on its
+# window, the last long tests finishing alone). The sanitizer tests run once
+# their build is done; beside them, once the fuzz build is done too, every
+# harness fuzzes for 20 s, all at once at nice 19 (a new finding fails the
+# run: its input is in build-fuzz/fuzz-artifacts/, tests/fuzz/run_fuzzers.sh
+# says how to keep it as a regression). Their own process groups, so that a
+# failing ctest stops them too.
+stage "ctest (the sanitizer and fuzz builds beside it, nice 19)"
 asan_log=$PWD/build/sanitizer-build.log
-setsid --wait nice -n 19 tests/sanitize.sh build >"$asan_log" 2>&1 &
-asan_build=$!
-trap 'kill -- -"$asan_build" 2>/dev/null || true' EXIT
+fuzz_build_log=$PWD/build/fuzz-build.log
+fuzz_log=$PWD/build/fuzz-run.log
+asan_built=$PWD/build/sanitizer-build.done
+fuzz_built=$PWD/build/fuzz-build.done
+ended=$PWD/build/background-builds.ended
+rm -f "$asan_built" "$fuzz_built" "$ended"
+# FT_FUZZ=0 leaves the fuzz stage out (its build is about 520 s of CPU, cold).
+fuzz=${FT_FUZZ:-1}
+setsid --wait nice -n 19 bash -c 'trap "touch \"$5\"" EXIT
+  tests/sanitize.sh build >"$1" 2>&1 || exit 1
+  touch "$2"
+  [ "$6" != 0 ] || exit 0
+  tests/fuzz/run_fuzzers.sh 0 >"$3" 2>&1 || exit 2
+  touch "$4"' _ "$asan_log" "$asan_built" "$fuzz_build_log" "$fuzz_built" "$ended" "$fuzz" &
+background=$!
+trap 'kill -- -"$background" 2>/dev/null || true' EXIT
 (cd build && ctest --output-on-failure -j"$(nproc)" --timeout 600)
-stage "sanitizers (the rest of their build, then their tests)"
-wait "$asan_build" || { cat "$asan_log"; echo "tests/run.sh: the sanitizer build failed" >&2; exit 1; }
+stage "sanitizers (the rest of their build, then their tests; the fuzz build, then 20 s of fuzzing, beside)"
+while [ ! -e "$asan_built" ] && [ ! -e "$ended" ]; do sleep 1; done
+if [ ! -e "$asan_built" ]; then
+  cat "$asan_log"; echo "tests/run.sh: the sanitizer build failed" >&2; exit 1
+fi
+(
+  [ "$fuzz" != 0 ] || { echo "FT_FUZZ=0: no fuzzing"; exit 0; }
+  while [ ! -e "$fuzz_built" ] && [ ! -e "$ended" ]; do sleep 1; done
+  [ -e "$fuzz_built" ] || { cat "$fuzz_build_log"; echo "tests/run.sh: the fuzz harnesses' build failed" >&2; exit 1; }
+  # 120 s per input: at nice 19 beside the sanitizer tests, 13 harnesses share
+  # 2 cores, and a slow EXR input (2.7 s of CPU under ASan) took 60 s of wall.
+  FT_FUZZ_PARALLEL=1 FT_FUZZ_TIMEOUT=${FT_FUZZ_TIMEOUT:-120} tests/fuzz/run_fuzzers.sh "${FT_FUZZ_SECONDS:-20}"
+) >"$fuzz_log" 2>&1 &
+fuzzing=$!
+asan_rc=0
+tests/sanitize.sh test || asan_rc=$?
+fuzz_rc=0
+wait "$fuzzing" || fuzz_rc=$?
 trap - EXIT
-tests/sanitize.sh test
+stage "fuzzing (every harness for ${FT_FUZZ_SECONDS:-20} s)"
+cat "$fuzz_log"
+((asan_rc == 0)) || { echo "tests/run.sh: the sanitizer tests failed" >&2; exit 1; }
+((fuzz_rc == 0)) || { echo "tests/run.sh: fuzzing failed (a finding, or the fuzz build)" >&2; exit 1; }
 stage "done"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the native tests with AddressSanitizer + UndefinedBehaviorSanitizer
 # (gcc, -O0, in ${FT_ASAN_BUILD_DIR:-build-asan}) and runs them: the C ABI
 # suites, the unit tests named below, the CLI they drive and the fuzz corpus

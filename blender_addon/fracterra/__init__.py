@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """fracterra: fractal terrains for Blender on the native libfracterra core.
 
 A thin entry point: the bpy-free binding lives in `core/`, the operators,

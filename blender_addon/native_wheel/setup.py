@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Builds fracterra_native, the wheel that carries the add-on's native library
 to Blender 4.2+ (blender_manifest.toml's `wheels`): fracterra_native/lib/
 holds libfracterra.so with the libraries it bundles (py3-none-linux_x86_64)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The speed anchor of issue 15: A.N.T. Landscape's eroder, timed in Blender.
 
 Run headless:  blender -b --factory-startup --python native/bench/ant_eroder_anchor.py -- OUTDIR 257 513 1025

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Erosion speed (issue 15).
 //   AntPasses/N   A.N.T.'s eroder defaults done by ours on the same grid: 30
 //                 hydraulic passes, 5 diffusion passes, 5 thermal passes and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // FPL generation speed: the library's blocked breadth-first fill of a
 // 2^20-segment FPL against the printed recursion appending every vertex to a
 // std::vector (the baseline), and against memcpy / a plain store of the same

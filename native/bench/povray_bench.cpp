@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // POV-Ray speed, measured with the real povray in one run:
 //   1. a polyline of 4097 and 16385 points as chunked sphere_sweeps (32
 //      segments per piece) against one sweep, traced at 320 x 240;

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the benchmarks behind the README's speed table one after another, in
 # one run, each with its baseline, and logs the load average before and after
 # each: the source of the table's figures (medians of 3 repetitions, or 5 for
@@ -38,7 +39,15 @@ for s in "${sections[@]}"; do
     window)
       run window "$build/native/terrain_bench" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
         --benchmark_filter='MidpointWindow/threads:1|FracterraMidpoint/levels:12/threads:1' ;;
-    noise) run noise "$build/native/noise_bench" "${gb[@]}" ;;
+    noise)
+      # fbm against FastNoise2 (issue 40; its rows need -DFT_FASTNOISE2_DIR) in
+      # alternating rounds, medians of 7; passive OpenMP waits, so that a
+      # 2-thread run's spinning worker does not bill the next run, and every
+      # asked-for thread however loaded the machine (FT_THREADS_IGNORE_LOAD).
+      OMP_WAIT_POLICY=passive FT_THREADS_IGNORE_LOAD=1 run noise "$build/native/noise_bench" \
+        --benchmark_repetitions=7 --benchmark_enable_random_interleaving=true \
+        --benchmark_report_aggregates_only=true --benchmark_filter='Fracterra|FastNoise2'
+      run noise "$build/native/noise_bench" "${gb[@]}" --benchmark_filter='Libnoise|Spectral' ;;
     polyline) run polyline "$build/native/polyline_bench" "${gb[@]}" ;;
     povray) run povray "$build/native/povray_bench" --repetitions 3 ;;
     subdiv) (cd "$build/native" && run subdiv ./subdiv_bench "${gb[@]}") ;;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Counter-based Gaussian variates: fracterra's vectorised Philox + Box-Muller
 // on each dispatch path, against std::mt19937 + std::normal_distribution.
 //   build/native/rng_bench

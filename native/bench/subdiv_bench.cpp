@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fractalization against its baseline in the same run: plain OpenSubdiv
 // uniform refinement + primvar interpolation of the same mesh to the same
 // level (what any consumer of OpenSubdiv pays to get a refined mesh out),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Midpoint displacement at 1025^2, 4097^2 and 8193^2: fracterra against a
 // naive sequential diamond-square (std::mt19937 + std::normal_distribution,
 // as most tutorials write it), in the same run. Windows: a 4097^2 tile of a

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The tile-set benchmark of docs/scale.md: a midpoint terrain far larger than the
 workers' memory written as 16-bit tiles through Dask on this machine, against the
 in-memory generator in the same run.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Erosion on 1 and 2 threads, idle and under a fixed background load of one
 # busy-loop process per core (started and killed here): medians of ROUNDS
 # wall times of `fracterra erode --preset land` on an fBm terrain of SIZE^2.

@@ -1,11 +1,15 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small pieces the subcommands share: name <-> enum tables for CLI11 options,
 // and a stopwatch.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstdio>
 #include <map>
 #include <string>
+
+#include "core/heightfield.hpp"
 
 namespace ft::cli {
 
@@ -23,5 +27,16 @@ class Stopwatch {
  private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
+
+// The world size a heightfield read from `path` is worked on in: `given` (--world-size, when > 0),
+// else the file's own, else 10 world units, said on stderr (erosion and rivers are in world
+// units: a silent default would make another terrain).
+inline void settle_world_size(Heightfield& hf, double given, const std::string& path) {
+  if (given > 0) return hf.set_world_size(given);
+  if (hf.world_size() > 0) return;
+  hf.set_world_size(10.0);
+  std::fprintf(stderr, "fracterra: warning: '%s' records no world size; using the default, 10 world units "
+               "(give --world-size)\n", path.c_str());
+}
 
 }  // namespace ft::cli

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra analyze: measure H and D of a heightfield, a profile or a set of
 // polylines, print a JSON report, and optionally plot the log-log fits.
 #include <cmath>
@@ -212,11 +213,11 @@ int run(const AnalyzeCli& c) {
       analysis::BoxCountResult coast;
       report["coastline"] = coastline_report(hf, &coast);
       if (c.drainage) {
-        if (hf.world_size() <= 0) hf.set_world_size(10.0);
+        settle_world_size(hf, 0, c.file);
         report["drainage"] = drainage_report(hf, c.periodic);
       }
       if (c.rivers) {
-        if (hf.world_size() <= 0) hf.set_world_size(10.0);
+        settle_world_size(hf, 0, c.file);
         ft_hydrology_params p = c.network;
         p.periodic = c.periodic;
         const hydrology::NetworkMeasures m = hydrology::measure_network(hydrology::extract_rivers(hf, hydrology::from_c(p)));

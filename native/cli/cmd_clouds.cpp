@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra clouds: Feder's clouds (seed 001) from a heightfield.
 #include <memory>
 

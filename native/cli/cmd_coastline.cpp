@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra coastline: the level set of a heightfield as polylines (marching
 // squares), optionally drawn over a shaded relief to look at.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra erode: fluvial, hydraulic and thermal erosion of a heightfield,
 // and the maps (drainage area, slope, curvature, water, eroded, deposited).
 #include <cstdio>
@@ -80,8 +81,7 @@ Registration reg({"erode", "Erode a heightfield (channels, scree and fans over y
                       if (!o->preset.empty()) erosion::erosion_preset(o->preset);  // an unknown name fails before reading
                       o->engine.check(o->out);
                       Heightfield hf = io::read_heightfield(o->in);
-                      if (o->world_size > 0) hf.set_world_size(o->world_size);
-                      else if (hf.world_size() <= 0) hf.set_world_size(10.0);
+                      settle_world_size(hf, o->world_size, o->in);
                       const ft_erosion_params e = settings(*o, app, hf);
                       if (!o->maps.empty()) std::filesystem::create_directories(platform::fs_path(o->maps));
                       erosion::ErosionMaps maps;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra fractalize: refine an OBJ mesh with OpenSubdiv and displace it
 // fractally (Voss midpoint displacement or Feder's additions), write OBJ and
 // optionally a POV-Ray mesh2 include.

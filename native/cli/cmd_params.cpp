@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra params: the library's parameter tables (fracterra/params.h), as
 // text or as JSON for other tools (and for the test that C, CLI, Python and
 // Blender agree).

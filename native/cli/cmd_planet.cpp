@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra planet: a fractal planet (fBm or midpoint) as a cube-sphere (one
 // raster per face plus a manifest, or a closed mesh), a patch of one face at
 // any level, an equirectangular map (georeferenced in EPSG:4326 when written

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra polyline: fractal polylines (FPL 2D/3D, lightning, Koch, dragon,
 // Sierpinski arrowhead, IFS, Voss profile) as CSV/JSON, an optional SVG
 // drawing, and the measures of seed 003 as JSON.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra profile: a Voss 1D midpoint-displacement profile as CSV/NPY.
 #include <cstdio>
 #include <memory>

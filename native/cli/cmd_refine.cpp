@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra refine: a real DEM refined by midpoint displacement (or random
 // additions) from its own samples, with H and sigma measured on it.
 #include <cstdio>

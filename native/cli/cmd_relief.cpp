@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra relief: a shaded-relief preview PNG of a heightfield.
 #include <memory>
 

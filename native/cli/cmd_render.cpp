@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra render: run POV-Ray on a scene and write a PNG.
 #include <cstdio>
 #include <memory>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra rivers: the rivers, lakes and sea of a heightfield as polylines
 // and polygons (CSV, JSON, GeoJSON, GeoPackage), the terrain carved along
 // them, and the network's measures.
@@ -92,8 +93,7 @@ Registration reg({"rivers", "Rivers, lakes and the sea of a heightfield, as poly
                       ft_hydrology_params p = o->flags;
                       sea_from_flags(app, p);
                       Heightfield hf = o->tiles.empty() ? io::read_heightfield(o->in) : tiles::read_tileset_whole(o->tiles, o->lod);
-                      if (o->world_size > 0) hf.set_world_size(o->world_size);
-                      else if (hf.world_size() <= 0) hf.set_world_size(10.0);
+                      settle_world_size(hf, o->world_size, o->in.empty() ? o->tiles : o->in);
                       const hydrology::HydrologyConfig c = hydrology::from_c(p);
                       Stopwatch clock;
                       const hydrology::RiverNetwork net = hydrology::extract_rivers(hf, c);

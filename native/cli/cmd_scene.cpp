@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra scene: a terrain and polylines as one POV-Ray scene.
 #include <cmath>
 #include <cstdio>

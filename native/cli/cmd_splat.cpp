@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra splat: splat (weight) maps and a colour map of a terrain by layer
 // rules (the built-in ones or a rules JSON), for game engines.
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_util.hpp"
 #include "cli/command.hpp"
 #include "cli/path_checks.hpp"
 #include "cli/splat_sources.hpp"
@@ -33,8 +35,7 @@ int run(const SplatCli& o) {
   if (o.in.empty()) invalid("give --in TERRAIN (or --print-rules alone)");
   if (o.out.empty() && o.color.empty()) invalid("give --out SPLAT.png and/or --color COLOR.png");
   Heightfield terrain = io::read_heightfield(o.in);
-  if (o.world_size > 0) terrain.set_world_size(o.world_size);
-  else if (terrain.world_size() <= 0) terrain.set_world_size(10.0);
+  settle_world_size(terrain, o.world_size, o.in);
   const splat::SplatInputs in = src.inputs(terrain);
   const int32_t n = src.layer_count();
   nlohmann::json report = {{"layers", nlohmann::json::array()}, {"files", nlohmann::json::array()}};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra study fpl: the ensemble experiment of seed 003 (Nikulin): means
 // of eta, chi, gamma and the dimensions over K lines per (s, r), written as
 // CSV and plotted against the paper's fitted formulas.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra terrain: generate a heightfield and write it as PNG/PGM/NPY.
 #include <algorithm>
 #include <cmath>

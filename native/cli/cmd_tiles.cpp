@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fracterra tiles: a terrain too large for memory, written as a tile set
 // (tiles sharing their edge samples, one height scale, manifest.json,
 // mosaic.vrt with overviews), generated or built by the pipeline (landform,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Subcommands register themselves: each cmd_*.cpp defines one Command and a
 // static Registration, so adding a subcommand is adding a file.
 #pragma once

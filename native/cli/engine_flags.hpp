@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // --engine unity|unreal|godot, --engine-size N and --region-size N, shared
 // by `terrain` and `erode`: the output written the way the engine's
 // importer takes it (engines/engine_export.hpp), with its sidecar.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // --erosion-mask FILE and --rain-map FILE, shared by `erode` and
 // `terrain --erode`: rasters read into the erosion settings' map fields.
 #pragma once

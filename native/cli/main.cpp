@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fracterra command-line tool: every generator, measure and exporter of
 // the library without Blender.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The river network's measures as JSON, and the sea named by --sea-level or
 // --sea-fraction: shared by `rivers`, `analyze` and `terrain --rivers`.
 #pragma once

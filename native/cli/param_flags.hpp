@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A params struct's flags, built from its table (fracterra/params.h): one
 // flag per setting, named after the field (`octave_rotation` is
 // --octave-rotation), with the table's label, documentation, range, unit,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CLI11's ExistingFile and ExistingDirectory, with the path read as UTF-8:
 // CLI11 2.1 hands the string to std::filesystem as is, which on Windows reads
 // it in the ANSI code page, so "Dossier été\terrain.png" would not exist.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plots to files: .svg as written by io/svg_plot, .png through rsvg-convert
 // (Debian librsvg2-bin, a run-time package of `analyze --plot x.png`).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the splat rules read, as `fracterra splat` and `fracterra scene` take
 // it: a rules file (--rules; none: the built-in set) and the folder of
 // `fracterra erode --maps` (--maps; none: the deposit and flow conditions

@@ -1,216 +1,96 @@
-"""The numpy API: terrain(), erode(), analyze(), splat(), save(), load().
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The numpy API beside the pipeline (pipeline.py: terrain, erode, rivers):
+analyze(), splat(), save(), load(), version().
 
 Everything goes through the add-on's ctypes binding (fracterra.core, the same
-files the Blender add-on carries). The keyword arguments of terrain() and
-erode() are the rows of the library's parameter tables, so their names,
-defaults, ranges and docs are the library's; help(fracterra.terrain) lists
-them.
-"""
+files the Blender add-on carries)."""
 
 from __future__ import annotations
 
-import ctypes
-import inspect
 import os
-from ctypes import POINTER, byref, c_float, c_int32, c_uint16, c_void_p
-from typing import Any, Optional, Union
+from ctypes import POINTER, byref, c_float, c_uint16
+from typing import Optional, Union
 
 import numpy as np
 
+from .arrays import Terrain, from_library, to_library, world_of, world_size_or_default
 from .core.binding import library
-from .core.errors import InvalidArgumentError
-from .core.erosion import erode_struct
-from .core.errors import LibraryNotFoundError
 from .core.polylines import hurst_of_heightfield
 from .core.raster import read_heightfield, write_heightfield
 from .core.splat import default_rules
-from .core.terrain import Heightfield, generate_from_struct
+from .keywords import Table
 
 PathLike = Union[str, os.PathLike]
 
 
-class Terrain(np.ndarray):
-    """float32 heights, row-major (row index = y), with `world_size`: the extent
-    along x in world units (0 when unknown). Any numpy operation keeps it."""
+def analyze(z, method: str = "auto", *, drainage: bool = True, periodic: Optional[bool] = None,
+            min_area_cells: float = 20.0, points: bool = False, rivers: bool = False) -> dict:
+    """Measures a terrain or a polyline set.
 
-    world_size: float
-
-    def __new__(cls, data, world_size: float = 0.0):
-        obj = np.ascontiguousarray(data, dtype=np.float32).view(cls)
-        obj.world_size = float(world_size)
-        return obj
-
-    def __array_finalize__(self, obj):
-        self.world_size = float(getattr(obj, "world_size", 0.0))
-
-
-# --- the parameter tables as keyword arguments --------------------------------
-
-_FLAG_STRUCT_SIZE, _FLAG_DATA, _FLAG_MIN_EXCLUSIVE, _FLAG_MAX_EXCLUSIVE = 1, 2, 4, 8
-_PY_TYPES = {"uint32": int, "int32": int, "int64": int, "uint64": int, "float": float, "double": float,
-             "bool": bool, "enum": str}
-
-
-def _settings(kind: str) -> list:
-    """The rows of table `kind` a caller sets by keyword (not struct_size, data or pointers)."""
-    return [r for r in library().param_rows[kind]
-            if not r["flags"] & (_FLAG_STRUCT_SIZE | _FLAG_DATA) and r["type"] in _PY_TYPES]
-
-
-def _set_fields(struct, kind: str, values: dict, skip=()) -> None:
-    rows = {r["name"]: r for r in _settings(kind) if r["name"] not in skip}
-    for name, value in values.items():
-        row = rows.get(name)
-        if row is None:
-            raise TypeError(f"unknown setting {name!r}; the settings are: {', '.join(rows)}")
-        if row["type"] == "enum":
-            items = {ident.lower(): v for ident, _label, _doc, v in row["items"]}
-            if isinstance(value, str):
-                if value.lower() not in items:
-                    raise InvalidArgumentError(f"{name} must be one of {', '.join(items)}, got {value!r}")
-                value = items[value.lower()]
-        elif row["type"] == "bool":
-            value = 1 if value else 0
-        if row["count"] > 1:
-            getattr(struct, name)[:] = list(value)
-        else:
-            setattr(struct, name, value)
-
-
-def _default_text(row) -> str:
-    if row["type"] == "enum":
-        return next(ident.lower() for ident, _l, _d, v in row["items"] if v == int(row["default_value"]))
-    if row["type"] == "bool":
-        return str(bool(row["default_value"]))
-    if _PY_TYPES[row["type"]] is int:
-        return str(int(row["default_value"]))
-    return f"{row['default_value']:g}"
-
-
-def _range_text(row) -> str:
-    if row["type"] == "enum":
-        return "one of " + ", ".join(ident.lower() for ident, _l, _d, _v in row["items"])
-    if row["type"] == "bool":
-        return "True or False"
-    lo, hi = row["hard_min"], row["hard_max"]
-    left = "(" if row["flags"] & _FLAG_MIN_EXCLUSIVE else "["
-    right = ")" if row["flags"] & _FLAG_MAX_EXCLUSIVE else "]"
-    return f"{left}{lo:g}, {hi:g}{right}" + (f" {row['unit']}" if row["unit"] else "")
-
-
-def _document(fn, kind: str, leading: list, skip=()) -> None:
-    """Gives `fn` the signature and docstring of its leading parameters plus
-    every setting of table `kind` (keyword-only, default None = the library's)."""
-    params = list(leading)
-    lines = [inspect.getdoc(fn) or "", "", f"Settings (the library's ft_{kind} table; None keeps its default):"]
-    for row in _settings(kind):
-        if row["name"] in skip:
-            continue
-        hint = _PY_TYPES[row["type"]]
-        params.append(inspect.Parameter(row["name"], inspect.Parameter.KEYWORD_ONLY, default=None,
-                                        annotation=Optional[hint]))
-        lines.append(f"    {row['name']}: {row['label']}. {row['doc']}. Default {_default_text(row)}, "
-                     f"range {_range_text(row)}.")
-    fn.__signature__ = inspect.Signature(params, return_annotation=inspect.signature(fn).return_annotation)
-    fn.__doc__ = "\n".join(lines)
-
-
-# --- heightfields between numpy and the library -------------------------------
-
-def _to_library(z) -> Heightfield:
-    lib = library()
-    a = np.ascontiguousarray(z, dtype=np.float32)
-    if a.ndim != 2:
-        raise InvalidArgumentError(f"a terrain is a 2-D array of heights, got {a.ndim} dimensions")
-    out = c_void_p()
-    lib.check(lib.ft_heightfield_create(a.shape[1], a.shape[0], a.ctypes.data_as(POINTER(c_float)), byref(out)))
-    hf = Heightfield(out)
-    ws = float(getattr(z, "world_size", 0.0) or 0.0)
-    if ws > 0:
-        lib.check(lib.ft_heightfield_set_world_size(hf.handle, ws))
-    return hf
-
-
-def _from_library(hf: Heightfield) -> Terrain:
-    a = np.frombuffer(hf.to_array(), dtype=np.float32).reshape(hf.height, hf.width)
-    return Terrain(a, hf.world_size)
-
-
-def _strip_none(kw: dict) -> dict:
-    return {k: v for k, v in kw.items() if v is not None}
-
-
-# --- the API ------------------------------------------------------------------
-
-def terrain(*, threads: int = 0, progress=None, **settings) -> Terrain:
-    """A fractal terrain as a Terrain (numpy float32, world_size attached).
-
-    threads: worker threads, 0 for all cores (the result never depends on it).
-    progress: None or callable(fraction) returning True to cancel (raises CancelledError).
-    """
-    lib = library()
-    p = lib.terrain_params_type()
-    lib.check(lib.ft_terrain_params_init(byref(p)))
-    _set_fields(p, "terrain", _strip_none(settings), skip=("threads",))
-    p.threads = threads
-    with generate_from_struct(p, progress) as hf:
-        return _from_library(hf)
-
-
-def erode(z, preset: Optional[str] = None, *, maps: bool = True, threads: int = 0, progress=None,
-          **settings) -> tuple:
-    """Erodes `z` (a Terrain or 2-D array; its world_size, else 10): returns
-    (eroded Terrain, {map name: Terrain}) with the maps drainage_area, slope,
-    curvature, water_depth, eroded and deposited (empty with maps=False).
-
-    preset: an erosion preset (gentle_valleys, rugged_mountains, badlands,
-    alluvial_fans, scree_slopes, or their old names valleys, land, rain, scree);
-    the settings given override its values, as on the command line.
-    """
-    lib = library()
-    with _to_library(z) as hf:
-        if hf.world_size <= 0:
-            lib.check(lib.ft_heightfield_set_world_size(hf.handle, 10.0))
-        p = lib.erosion_params_type()
-        if preset:
-            lib.check(lib.ft_erosion_preset_fitted(preset.lower().encode(), hf.handle, byref(p)))
-        else:
-            lib.check(lib.ft_erosion_params_init(byref(p)))
-        _set_fields(p, "erosion", _strip_none(settings), skip=("threads",))
-        p.threads = threads
-        eroded, made = erode_struct(hf, p, progress, maps)
-        arrays = {}
-        for name, m in made.items():
-            with m:
-                arrays[name] = _from_library(m)
-        with eroded:
-            return _from_library(eroded), arrays
-
-
-def analyze(z, method: str = "auto", *, drainage: bool = True, periodic: bool = False,
-            min_area_cells: float = 20.0) -> dict:
-    """Measures `z`: {'hurst', 'dimension', 'std_error', 'estimator', 'reason',
-    'band_lo', 'band_hi', 'points', 'min', 'max', 'mean', 'std'} and, with
+    A terrain `z`: {'hurst', 'dimension', 'std_error', 'estimator', 'reason',
+    'band_lo', 'band_hi', 'points', 'min', 'max', 'mean', 'std'}; with
     drainage=True, 'drainage': {'hack_h', 'hack_h_stderr', 'theta',
     'theta_stderr', 'hack_bins', 'theta_bins'} (Hack's law and the slope-area
     concavity over channels of at least min_area_cells cells; cells of filled
-    lakes count in neither, and theta is fitted from the slope-area turnover up).
-
+    lakes count in neither, and theta is fitted from the slope-area turnover
+    up); with points=True, 'fit': {'x', 'y'}, the points the estimate fitted
+    (lags and the variogram or madogram; with method='spectral', frequencies in
+    cycles per record and the rows' and columns' averaged periodogram, ~ f^-(2H + 1)); with
+    rivers=True, 'rivers': ft.rivers(z).measures() (Horton's ratios, drainage
+    density, Hack's h of the network).
     method: auto (the library's choice for the grid, as `fracterra analyze`),
     variogram, variogram_aligned, madogram_aligned or spectral.
+    periodic: route the drainage on a torus; None: as z tiles (a Terrain's
+    period_overlap: its repeated last row and column are left out).
+
+    A fracterra.Lines (ft.polyline()'s): seed 003's measures, as
+    ft.polylines.measure: eta, chi, gamma, mass and box-counting dimensions.
     """
+    from .polylines import Lines, measure
+    if isinstance(z, Lines):
+        return measure(z)
     lib = library()
-    with _to_library(z) as hf:
+    with to_library(z) as hf:
         out = hurst_of_heightfield(hf, method.upper())
         out.pop("struct_size", None)
         out.pop("auto_reason_text", None)
         out.update(hf.stats())
-        if drainage:
-            from .core.binding import DrainageStats
-            d = DrainageStats()
+        if points:
+            out["fit"] = _fit_points(hf, method)
+    if drainage:
+        from .core.binding import DrainageStats
+        _ws, overlap, _sea = world_of(z)
+        if periodic is None:
+            periodic = overlap >= 0
+        a = np.asarray(z)
+        ws = world_size_or_default(z)
+        if periodic and overlap > 0:  # the torus of its true period, as the pipeline routes it
+            a = a[:-overlap, :-overlap]
+            ws = ws * (a.shape[1] - 1) / (np.asarray(z).shape[1] - 1)
+        d = DrainageStats()
+        with to_library(a, world_size=ws) as hf:
             lib.check(lib.ft_drainage_statistics(hf.handle, 1 if periodic else 0, float(min_area_cells), byref(d)))
-            out["drainage"] = {name: getattr(d, name) for name, _ in DrainageStats._fields_}
-        return out
+        out["drainage"] = {name: getattr(d, name) for name, _ in DrainageStats._fields_}
+    if rivers:
+        from .pipeline import rivers as trace
+        out["rivers"] = trace(z).measures()
+    return out
+
+
+def _fit_points(hf, method) -> dict:
+    from ctypes import c_double, c_int64, sizeof
+    from .core.binding import HurstResult, enum_values
+    lib = library()
+    p = lib.hurst_params_type()
+    lib.check(lib.ft_hurst_params_init(byref(p)))
+    p.method = enum_values("hurst", "method")[method.upper()]
+    r = HurstResult(struct_size=sizeof(HurstResult))
+    n = c_int64()
+    lib.check(lib.ft_hurst_heightfield_points(hf.handle, byref(p), byref(r), None, None, 0, byref(n)))
+    x, y = np.empty(n.value), np.empty(n.value)
+    lib.check(lib.ft_hurst_heightfield_points(hf.handle, byref(p), byref(r), x.ctypes.data_as(POINTER(c_double)),
+                                              y.ctypes.data_as(POINTER(c_double)), n.value, byref(n)))
+    return {"x": x, "y": y}
 
 
 def _layers(rules) -> tuple:
@@ -228,7 +108,7 @@ def _layers(rules) -> tuple:
         if name is not None:
             keep.append(str(name).encode())
             layer.name = keep[-1]
-        _set_fields(layer, "splat", rule)
+        Table("splat").fill(layer, rule)
     return arr, keep
 
 
@@ -245,7 +125,7 @@ def splat(z, maps: Optional[dict] = None, rules: Optional[list] = None, total: i
     layers, _names = _layers(rules)
     handles = []
     try:
-        hf = _to_library(z)
+        hf = to_library(z, world_size=world_size_or_default(z))
         handles.append(hf)
         extra = []
         for name in ("deposited", "drainage_area"):
@@ -253,7 +133,7 @@ def splat(z, maps: Optional[dict] = None, rules: Optional[list] = None, total: i
             if m is None:
                 extra.append(None)
                 continue
-            handles.append(_to_library(m))
+            handles.append(to_library(m))
             extra.append(handles[-1].handle)
         h, w, n = hf.height, hf.width, len(layers)
         if color:
@@ -272,37 +152,24 @@ def splat(z, maps: Optional[dict] = None, rules: Optional[list] = None, total: i
 
 def save(z, path: PathLike) -> None:
     """Writes `z` to `path` in the format of its extension (.png 16-bit, .pgm,
-    .npy, .tif COG, .exr, .raw/.r16), atomically, with its world size."""
-    with _to_library(z) as hf:
+    .npy with its sidecar .npy.json, .tif COG, .exr, .raw/.r16 with .raw.json),
+    atomically, with its world size (every format records it)."""
+    with to_library(z, allow_nan=os.fspath(path).lower().endswith(".npy")) as hf:
         write_heightfield(hf, path)
 
 
 def load(path: PathLike) -> Terrain:
     """Reads a heightfield (any format `fracterra` reads: PNG, PGM, NPY, EXR,
-    RAW16, GeoTIFF and what GDAL reads) as a Terrain in its real units."""
+    RAW16, GeoTIFF and what GDAL reads) as a Terrain in its real units, with
+    the world size the file records (0 when it records none)."""
     with read_heightfield(path) as hf:
-        return _from_library(hf)
+        return from_library(hf)
 
 
 def version() -> str:
-    """The loaded library's version and ABI, e.g. 'libfracterra 0.3.0 (ABI 2.19)'."""
+    """The loaded library's version and ABI, e.g. 'libfracterra 0.6.0 (ABI 2.27)'."""
     lib = library()
     return f"libfracterra {lib.version} (ABI {lib.abi_major}.{lib.abi_minor})"
 
 
-def _annotate() -> None:
-    threads = inspect.Parameter("threads", inspect.Parameter.KEYWORD_ONLY, default=0, annotation=int)
-    progress = inspect.Parameter("progress", inspect.Parameter.KEYWORD_ONLY, default=None)
-    _document(terrain, "terrain", [threads, progress], skip=("threads",))
-    pos = inspect.Parameter.POSITIONAL_OR_KEYWORD
-    _document(erode, "erosion",
-              [inspect.Parameter("z", pos, annotation=Any),
-               inspect.Parameter("preset", pos, default=None, annotation=Optional[str]),
-               inspect.Parameter("maps", inspect.Parameter.KEYWORD_ONLY, default=True, annotation=bool),
-               threads, progress], skip=("threads",))
-
-
-try:
-    _annotate()
-except LibraryNotFoundError:  # the calls will say why; help() then shows the plain docs
-    pass
+__all__ = ["Terrain", "analyze", "splat", "save", "load", "version"]

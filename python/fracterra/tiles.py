@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Tile sets on Dask for a terrain larger than memory, one task per tile:
 
     python3 -m fracterra.tiles --levels 16 --tile 4096 --out DIR [--scheduler tcp://H:8786] [--measure]
@@ -326,6 +327,94 @@ def main(argv=None):
         return 2
     print(json.dumps(summary))
     return 0
+
+
+def _identifiers(table, values):
+    """Keyword values as the core's settings hold them: an enum by its identifier ("MIDPOINT")."""
+    from .core import rows
+    out = {}
+    for name, value in values.items():
+        row = table.rows[name]
+        out[name] = rows.enum_item(row, rows.enum_value(row, value))["name"] if row["type"] == "enum" else value
+    return out
+
+
+def write_tiles(out_dir, *, tile=4096, format="png16", size=None, erode=None, maps=False, erosion_mask=None,
+                rain_map=None, falloff_mask=None, reference=None, threads=0, progress=None, **settings):
+    """Writes (or resumes) the tile set of a terrain on this machine, one tile after another, as
+    `fracterra tiles` does: the same folder, manifest, tiles and mosaic (byte for byte) as the
+    CLI and the Dask driver give. Keywords as ft.terrain()'s (erode=, strength=, maps=, the
+    masks as arrays spanning the whole); tile: cells per tile side (tiles hold tile + 1
+    samples); format: png16 or tiff. progress: None or callable(done, total). Returns a summary
+    dict (tiles, written, skipped, height_range, seconds)."""
+    from .arrays import mask_of
+    from .keywords import Table, split
+    from .pipeline import _size
+    start = time.monotonic()
+    tables = {"terrain": Table("terrain", skip=("threads",)), "erosion": Table("erosion", skip=tuple(_TERRAINS_OWN))}
+    given = split(settings, tables)
+    if size is not None:
+        for k, v in _size(size).items():
+            given["terrain"].setdefault(k, v)
+    terrain = _identifiers(tables["terrain"], given["terrain"])
+    terrain["threads"] = threads
+    erosion = _identifiers(tables["erosion"], given["erosion"]) or None
+
+    def as_map(m, what):
+        return None if m is None else mask_of(m, what)
+
+    fm, em, rm = as_map(falloff_mask, "the falloff mask"), as_map(erosion_mask, "the erosion mask"), \
+        as_map(rain_map, "the rain map")
+    if fm is not None:
+        terrain["falloff"] = "CUSTOM"
+    if erosion is None and (em is not None or rm is not None):
+        erosion = {}
+    ref = None
+    if reference is not None:
+        from .pipeline import _reference
+        ref = _reference(reference)
+    from .pipeline import _preset
+    from .core import rows
+    preset_row = next(r for r in library().param_rows["build"] if r["name"] == "erosion_preset")
+    preset = rows.enum_item(preset_row, _preset(erode))["name"]
+    build = recipe(terrain, ref, fm, erosion, preset, maps, em, rm)
+    if not built(build):
+        build = None
+    out = os.path.abspath(os.fspath(out_dir))
+    if build is None:
+        ts, pending = TileSet.open_deferred(terrain, out, tile, format, ref)
+    else:
+        ts, pending = TileSet.open_build(build, out, tile, format)
+    with ts:
+        cols, rows_ = ts.grid()
+        every = [(c, r) for r in range(rows_) for c in range(cols)]
+        if pending:
+            parts = [tile_height_range(c, r, terrain, ref, tile) if build is None
+                     else built_tile_range(c, r, build, tile, format, out) for c, r in every]
+            ts.set_height_range(*_range_union(parts))
+        lo, hi = ts.height_range()
+        todo = [(c, r) for c, r in every if not ts.done(c, r)]
+        for done, (c, r) in enumerate(todo, 1):
+            if build is None:
+                ts.record(*write_tile(c, r, terrain, ref, tile, format, lo, hi, out))
+            else:
+                ts.record_tile(*write_built_tile(c, r, build, tile, format, lo, hi, out))
+            if progress is not None:
+                progress(done, len(todo))
+        ts.finish()
+    return {"tiles": cols * rows_, "columns": cols, "rows": rows_, "written": len(todo),
+            "skipped": cols * rows_ - len(todo), "height_range": [lo, hi], "seconds": time.monotonic() - start}
+
+
+class _CallableModule(type(sys)):
+    """fracterra.tiles is this module (the Dask driver, `python3 -m fracterra.tiles`) and, called,
+    the one-machine writer: ft.tiles(out_dir, ...) is write_tiles(out_dir, ...)."""
+
+    def __call__(self, out_dir, **kw):
+        return write_tiles(out_dir, **kw)
+
+
+sys.modules[__name__].__class__ = _CallableModule
 
 
 if __name__ == "__main__":

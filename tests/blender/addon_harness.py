@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Shared set-up of the Blender tests: install the built add-on zip into the
 temporary user scripts folder (BLENDER_USER_SCRIPTS, set by ctest), enable it,
 and run a unittest module; the exit code tells ctest the result.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Blender 4.2+ extensions as an artist meets them, in Debian trixie's
 # Blender 4.3 inside a trixie root (scripts/blender4-root.sh) with no host
 # libraries and no environment variables: the per-platform zips made

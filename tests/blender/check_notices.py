@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Every package's THIRD_PARTY_NOTICES lists exactly the shared libraries it
 bundles, each with a Debian package and a licence, and what fracterra.dll
 links in when the package carries the DLL; and each package stays within its

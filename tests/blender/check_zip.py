@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The add-on zip is self-contained: every shared library in its lib/ needs
 only glibc, the C++ runtime (which the bundled OpenSubdiv needs and Blender
 itself loads) and the other libraries beside it; libfracterra.so finds them

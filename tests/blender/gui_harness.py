@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Shared by the Blender tests that need a window (under Xvfb): checks that
 collect failures, the 3D view to run operators in, a hash of a mesh's
 heights, waiting for background jobs, and the event loop that runs a test's

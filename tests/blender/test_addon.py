@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The installed add-on in real Blender: every operator with explicit
 parameters, vertex counts, heights bit-identical to the library's output,
 re-editing in place, presets, and error reports instead of tracebacks."""
@@ -961,6 +962,61 @@ class TerrainToolsTest(unittest.TestCase):
     def test_pov_export_into_a_missing_folder_is_an_error_report(self):
         add_terrain(levels=3)
         expect_report(self, lambda: bpy.ops.export_scene.fracterra_pov(filepath="/nonexistent-dir/x.pov"))
+
+
+def vm_flags(address):
+    """The kernel's VmFlags of the mapping holding `address` (/proc/self/smaps)."""
+    inside = False
+    with open("/proc/self/smaps") as f:
+        for line in f:
+            head = line.split(" ", 1)[0]
+            if "-" in head and not head.endswith(":"):
+                lo, hi = (int(x, 16) for x in head.split("-"))
+                inside = lo <= address < hi
+            elif inside and line.startswith("VmFlags:"):
+                return line.split()[1:]
+    return None
+
+
+class HugePagesTest(unittest.TestCase):
+    """The new mesh's arrays get the kernel's huge-page advice, and nothing else changes."""
+
+    def test_a_mesh_array_is_advised_and_keeps_its_values(self):
+        huge_pages = addon_harness.submodule("blender.build.huge_pages")
+        mesh = bpy.data.meshes.new("huge pages")
+        try:
+            n = 600_000  # 7.2 MB of positions or more: past the 4 MB threshold
+            mesh.vertices.add(n)
+            start, end = huge_pages.array_span(mesh.vertices)
+            stride = (end - start) // n
+            self.assertEqual((end - start) % n, 0)
+            self.assertGreaterEqual(stride, 12)  # 3 floats at least (3.x: MVert, 16 bytes)
+            self.assertEqual(mesh.vertices[n - 1].as_pointer(), start + (n - 1) * stride)
+            co = np.arange(3 * n, dtype=np.float32)
+            mesh.vertices.foreach_set("co", co)
+            if not sys.platform.startswith("linux"):
+                self.assertEqual(huge_pages.advise(mesh.vertices), 0)
+                return
+            if not os.path.isdir("/sys/kernel/mm/transparent_hugepage"):
+                self.skipTest("a kernel without transparent huge pages refuses the advice")
+            self.assertEqual(huge_pages.advise(mesh.vertices), 1)
+            self.assertIn("hg", vm_flags(start + (end - start) // 2))  # the kernel holds the advice
+            back = np.empty_like(co)
+            mesh.vertices.foreach_get("co", back)
+            self.assertTrue(np.array_equal(back, co))
+        finally:
+            bpy.data.meshes.remove(mesh)
+
+    def test_small_or_unstrided_collections_are_left_alone(self):
+        huge_pages = addon_harness.submodule("blender.build.huge_pages")
+        mesh = bpy.data.meshes.new("small")
+        try:
+            mesh.vertices.add(1000)  # 16 kB: below the threshold
+            self.assertIsNotNone(huge_pages.array_span(mesh.vertices))
+            self.assertEqual(huge_pages.advise(mesh.vertices), 0)
+            self.assertIsNone(huge_pages.array_span(mesh.edges))  # empty
+        finally:
+            bpy.data.meshes.remove(mesh)
 
 
 if __name__ == "__main__":

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The finished scene in real Blender: the objects that hang off a terrain
 follow it when it re-generates (coastline, rivers, a bolt that struck it),
 hiding a terrain hides them, a Final survives an Auto Update edit (kept,

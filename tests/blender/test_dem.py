@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """File > Import DEM as terrain and File > Export terrain heights in real
 Blender, through the installed add-on: a DEM written by GDAL comes in north
 up at its own size; heights exported in every format read back."""

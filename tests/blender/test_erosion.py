@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Erode step of a terrain in real Blender: added with a preset, the
 heights are those `fracterra terrain --erode` makes of the same settings (the
 CLI, another front end of the library's pipeline), bit for bit, periodic and

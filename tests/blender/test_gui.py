@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The add-on in Blender's real GUI (under Xvfb), installed from its zip, driven
 through the event loop the way a user drives it: every menu the add-on adds is
 opened, every operator of those menus run with its redo panel (Adjust Last

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """With no usable libfracterra.so the add-on still registers, and its
 operators answer with a report saying what to do (ctest points
 FRACTERRA_LIBRARY at a file that does not exist)."""

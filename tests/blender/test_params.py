@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """In real Blender: the add-on's properties are the library's parameter
 tables (fracterra/params.h). Every setting of ft_terrain_params is a property
 of the Add Fractal Terrain operator and of the object's PropertyGroup, every
@@ -58,7 +59,7 @@ class TerrainPropertiesTest(unittest.TestCase):
             where = f"{kind} {where}"
             for row in rows:
                 name = row["name"]
-                if (row["flags"] & 3 or row["type"] in ("pointer", "callback", "string") or name in skipped
+                if (not row["settable"] or row["type"] in ("pointer", "callback", "string") or name in skipped
                         or row["count"] != 1):
                     self.assertNotIn(name, props.keys(), f"{where}: {name} is not a setting")
                     continue
@@ -67,30 +68,31 @@ class TerrainPropertiesTest(unittest.TestCase):
                 self.assertEqual(prop.name, row["label"], (where, name))
                 if row["type"] == "enum":
                     items = [(i.identifier, i.value) for i in prop.enum_items]
-                    self.assertEqual(items, [(n, v) for n, _l, _d, v in row["items"]], (where, name))
+                    self.assertEqual(items, [(i["name"], i["value"]) for i in row["items"]], (where, name))
                     if name in overrides:  # the add-on's own default, with its reason
                         self.assertEqual(prop.default, overrides[name][0], (where, name))
                         continue
-                    default = next(v for n, _l, _d, v in row["items"] if n == prop.default)
+                    default = next(i["value"] for i in row["items"] if i["name"] == prop.default)
                     want = overrides.get(name, (None,))[0]
                     if want is not None:
                         self.assertEqual(prop.default, want, (where, name))
                     else:
-                        self.assertEqual(default, row["default_value"], (where, name))
+                        self.assertEqual(default, row["default"], (where, name))
                     continue
-                want = overrides.get(name, (row["default_value"],))[0]
+                want = overrides.get(name, (row["default"],))[0]
                 if row["type"] == "bool":
                     self.assertEqual(prop.default, bool(want), (where, name))
                     continue
                 self.assertAlmostEqual(prop.default, want, places=5, msg=(where, name))
                 lo, hi = limits.get(name, (row["hard_min"], row["hard_max"], ""))[:2]
+                lo, hi = -1e300 if lo is None else lo, 1e300 if hi is None else hi  # None: unbounded
                 # Blender's properties have no open bounds: an excluded bound moves in by 1e-6.
-                if row["flags"] & 4:
+                if row["min_exclusive"]:
                     self.assertGreater(prop.hard_min, lo, (where, name))
                     self.assertLess(prop.hard_min, lo + 1e-5 * max(1, abs(lo)), (where, name))
                 elif abs(lo) < 1e30:
                     self.assertAlmostEqual(prop.hard_min, max(lo, -2**31), places=4, msg=(where, name))
-                if row["flags"] & 8:
+                if row["max_exclusive"]:
                     self.assertLess(prop.hard_max, hi, (where, name))
                     self.assertGreater(prop.hard_max, hi - 1e-5 * max(1, abs(hi)), (where, name))
                 elif abs(hi) < 1e30:
@@ -118,7 +120,7 @@ class TerrainPropertiesTest(unittest.TestCase):
         for kind, params in (("terrain", self.params.TERRAIN_PARAMS), ("polyline", self.params.POLYLINE_PARAMS)):
             rows = core().library().param_rows[kind]
             by_name = {p.name: p for p in params}
-            methods = {v: n for n, _l, _d, v in next(r for r in rows if r["name"] == "method")["items"]}
+            methods = {i["value"]: i["name"] for i in next(r for r in rows if r["name"] == "method")["items"]}
             for row in rows:
                 if row["name"] in by_name and row["methods"] != 2**64 - 1:
                     shown = {methods[v] for v in methods if row["methods"] >> v & 1}

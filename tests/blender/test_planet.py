@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Add > Mesh > Fractal Planet in background Blender (issue 27): the mesh is a
 closed manifold cube-sphere, the sea sphere sits at the library's sea height
 (as the CLI reports it), Regenerate keeps the objects and changes the heights,

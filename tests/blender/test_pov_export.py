@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The POV-Ray export shows the Blender scene: known vertices land on the same
 pixels through Blender's camera (bpy_extras' world_to_camera_view) and
 through the camera statement the scene file holds (solved here from

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Preview and Final (issue 24, part 4): Auto Update edits a terrain at its
 Preview level, Regenerate (Build Final) and a command-line render build its
 Final level, and the two are the same terrain: at the nodes they share, the

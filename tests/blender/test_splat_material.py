@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A terrain's colour in real Blender is the library's splat colour map: the
 point attribute fracterra_color (linear) equals ft_splat_colors of the same
 heights and erosion maps, decoded from sRGB; the terrain material reads it; a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """File > Import > fracterra tile set in real Blender, through the installed
 add-on: a window of a 4 x 4 tile set at a level of detail, as one mesh and as
 one object per tile; north up; neighbouring tile objects share their edge

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Undo, cancel and failure of the add-on's operators, and what a second Add
 starts from: after each, the settings on the object are those of the mesh
 that is there. Blender keeps no undo stack in background mode, so

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The add-on on a system without GDAL (the library opens the system's GDAL at
 run time and carries none): File > Import DEM of a GeoTIFF is an error report
 that says what to install, with no traceback; every other heightfield format

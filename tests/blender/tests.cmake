@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The add-on in real Blender (blender -b --factory-startup): the built zip is
 # installed into a scratch user scripts folder and every operator is run.
 find_program(FT_BLENDER blender)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes ft_erode, the boundary the CLI, ctypes and Blender erode through:
 // the bytes give a small grid (3..65 samples a side), its heights (raw
 // float32, NaN, infinities and 1e38 included, or int16 at a scale from 1e-32

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the C ABI the way ctypes callers can get it wrong: raw bytes become
 // the fields of ft_terrain_params / ft_profile_params / ft_polyline_params /
 // ft_fractalize_params / ft_hurst_params / ft_clouds_params (struct_size

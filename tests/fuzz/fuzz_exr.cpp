@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the OpenEXR reader (decode_exr: header limits, channel choice, the
 // memory stream, size checks against the memory cap).
 #include "core/memory.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the GDAL reader path (decode_gdal: /vsimem/, driver choice, size
 // checks against the memory cap, nodata counting and GDALFillNodata). The
 // first byte picks the extension GDAL sees and the nodata policy; GDAL's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the tile-set manifest (tiles/manifest.cpp) and what reads it: the
 // bytes up to the first NUL are manifest.json, the rest the journal. In a
 // scratch folder the harness parses it as `fracterra tiles` resuming a set

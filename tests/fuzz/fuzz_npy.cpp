@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the .npy reader: decode_npy (1D profiles and 2D heightfields) and the
 // heightfield conversion of decode_heightfield.
 #include "core/memory.hpp"

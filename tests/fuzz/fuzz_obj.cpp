@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the OBJ reader (tinyobjloader plus our crease/corner tags), the
 // mesh validation every consumer runs, and fractalization of what passes
 // (`fracterra fractalize --in x.obj`): success or ft::Error, never a crash;

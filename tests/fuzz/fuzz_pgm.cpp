@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the PGM heightfield reader: decode_pgm and the conversion to a
 // heightfield (the path of `fracterra terrain --reference x.pgm`).
 #include "core/memory.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the PNG heightfield reader: decode_png and the conversion to a
 // heightfield (the path of `fracterra terrain --reference x.png`).
 #include "core/memory.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the polyline JSON reader, and checks that whatever it accepts
 // survives a write and re-read exactly (the round trip the format promises).
 #include "core/memory.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the RAW16 reader with its sidecar JSON (io/raw16.cpp): the first
 // two bytes give how many of the rest are the samples (little-endian, at
 // most what is there), the others are the sidecar's text (empty: no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes terrains and profiles refined from a reference decoded from a file,
 // the path of `fracterra terrain --reference` and `fracterra profile
 // --reference`: the first byte picks the format and the generator settings,

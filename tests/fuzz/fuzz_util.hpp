@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared by the fuzz harnesses: a reader that turns the fuzzer's bytes into
 // fields, and the rule every harness enforces: a reader either succeeds or
 // throws ft::Error; anything else (another exception, a crash, a sanitizer

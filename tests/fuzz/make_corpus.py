@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Writes the seed corpora in tests/fuzz/corpus/<harness>/: one small valid
 file per format and variant the readers accept, plus edge cases they must
 refuse cleanly. Deterministic; rerun after changing it and commit the files.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Replays inputs through a harness without libFuzzer, so ctest runs the
 // corpus and every crash reproducer with any compiler (and under ASan in the
 // sanitizer build). Arguments are files or folders (read recursively).

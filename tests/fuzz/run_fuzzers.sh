@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the libFuzzer harnesses (clang, ASan + UBSan, FT_FUZZ=ON) in
 # build-fuzz/ and runs each for SECONDS, one after the other (or all at once
 # under `nice -n 19` with FT_FUZZ_PARALLEL=1, so a long run of every harness

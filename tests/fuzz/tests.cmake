@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Fuzz harnesses (tests/fuzz/fuzz_<name>.cpp), built one of two ways:
 #  - FT_FUZZ=ON (clang): libFuzzer programs fuzz_<name>, run by run_fuzzers.sh;
 #  - otherwise: fuzz_<name>_replay, the same harness behind a small driver that

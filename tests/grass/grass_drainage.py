@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """fracterra's float drainage map against GRASS GIS's r.terraflow, on fixed
 terrains: the area each cell drains, by fracterra's own multiple-flow routing
 over the filled surface (`fracterra erode --strength 0 --maps --maps-float

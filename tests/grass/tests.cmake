@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # fracterra's drainage map against GRASS GIS (Debian grass-core): r.terraflow's
 # multiple-flow accumulation on the same fixed terrain. Skipped (77) when
 # GRASS is not installed.

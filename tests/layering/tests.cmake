@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Includes point only downwards through the layers of native/ (the picture in
 # docs/architecture.md, generated from the check's own table); the second test plants bad includes in a scratch tree and checks
 # that each is reported, so the first cannot pass by reporting nothing.

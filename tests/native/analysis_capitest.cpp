@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The analysis C ABI as ctypes sees it: status codes, messages, NULL
 // handling, ownership.
 #include <gtest/gtest.h>

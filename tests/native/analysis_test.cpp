@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The analysis layer: Hurst estimators, quantile levels, clouds, and the
 // analyze/clouds CLI.
 #include <fftw3.h>

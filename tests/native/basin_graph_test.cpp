@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The basin graph's routing over depressions (erosion/basin_graph.hpp):
 // water leaves every depression over its lowest way out, and the water
 // surface is the one a filling would make. The references here are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Box-counting dimension (analysis/box_counting): exact segment rasterisation
 // and the documented box-size rule, checked on sets of known dimension.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fracterra CLI (FT_CLI_PATH) run as a user runs it: its exit code,
 // stdout and stderr, for the suites that test a subcommand end to end.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fracterra CLI as a user runs it: outputs, --stats, --help, and bad
 // input (one clear line on stderr, non-zero exit, no partial or clobbered file).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The contour layer: marching-squares level sets (coastlines), their
 // geometry, topology and orientation, bad input, and the coastline CLI.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The core layer: counter-based randomness, memory cap, atomic files.
 #include <gtest/gtest.h>
 

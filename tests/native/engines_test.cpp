@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Game-engine presets: each engine's sizes and formats, Unreal's Z scale,
 // Terrain3D's control bits, and round trips of what is written.
 #include <gtest/gtest.h>

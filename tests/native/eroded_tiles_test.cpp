@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tile sets of eroded terrains (`fracterra tiles --erode`, tiles/ over
 // pipeline/'s windows): every tile and every map tile is the same window of
 // the whole eroded terrain, bit for bit, in any order of writing, after an
@@ -355,6 +356,7 @@ TEST(ErodedTiles, BadInputIsRefusedAndWritesNothing) {
   io::write_heightfield(m, mask.string());
   refused("--erode land --tile 64 --erosion-mask " + mask.string(), "the erosion mask is 65 x 33");
   fs::remove(mask);
+  fs::remove(mask.string() + ".json");  // its sidecar (the world size)
   refused("--erode land --tile 64 --engine unity", "add --maps");
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Windows of what ft_terrain_build makes (ft_terrain_build_window): every
 // window of an eroded terrain, heights and every map, byte for byte the same
 // samples of the whole, for every preset, with and without a sea, an erosion

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The erosion C ABI as ctypes sees it: defaults, presets, the maps, bad
 // input as a status with a message, cancel, and nothing leaked on failure.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The landscape model (issue 24): every preset at its default strength keeps
 // the landform (shape and height) and grows no spike, on the add-on's
 // default mountain and on fBm terrains; the same terrain eroded at 257^2 and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Erosion (issue 15): flow accumulation against analytic surfaces, every
 // cell draining, mass conservation of the hydraulic and thermal passes, the
 // talus angle after thermal convergence, determinism over thread counts,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A hang is impossible to miss: every erosion preset, fitted as the CLI and
 // the add-on fit it, erodes generated terrains over many seeds and sizes
 // under a watchdog. Issue 24's hang (a loop in the pit fills on 4 of 9 seeds

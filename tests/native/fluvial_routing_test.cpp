@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fluvial eroder's channels follow the terrain, not the grid (issue 15:
 // "no grid-aligned streaks"): Rho8 receivers and randomly graded fills
 // (flow_graph.hpp, draw_rho8), deterministic and seamless as before. And

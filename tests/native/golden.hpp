@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Golden checksums of bit-exact output: the 64-bit FNV-1a of an array's bytes.
 // A golden value is recorded from the implementation and changes only when
 // the algorithm, its random streams or its float arithmetic change, which

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hardening through the C ABI, as ctypes sees it: the memory cap refuses
 // sizes before allocating (with the size in the message), an allocation that
 // fails anyway is FT_ERR_OUT_OF_MEMORY, progress reports come often enough to

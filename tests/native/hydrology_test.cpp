@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rivers, lakes and the sea (native/src/hydrology): analytic surfaces whose
 // water is known, eroded fBm terrains whose networks must be well formed and
 // have the statistics of real ones, files read back through OGR, bad input.

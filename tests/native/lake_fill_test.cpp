@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sediment settling in a lake (erosion/lake_fill.hpp): a flat floor from the
 // lowest cell up, holding exactly the load, never above the water surface.
 // The references are independent of its sort: the lake is found by a flood

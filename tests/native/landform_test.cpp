@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Landforms (terrain/landform.hpp): levelling, height offset, edge falloff
 // and the sea, applied to every method's heights; windows of a terrain with
 // landforms equal the whole bit for bit; a sea given as a fraction is

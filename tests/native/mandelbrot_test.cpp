@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Mandelbrot terrain (seed 002): escape counts against hand iteration,
 // the continuity of the smooth count, windows, threads, the height map and
 // its level curves, bad input.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fbm, spectral and interpolated terrains through the shared library's C
 // ABI, as ctypes calls them.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The parameter tables (fracterra/params.h) against the structs they
 // describe: every row where the compiler puts its field, nothing missing,
 // and the behaviour the tables drive (defaults, ranges, older struct sizes).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The terrain pipeline through the C ABI (fracterra/pipeline.h): the same
 // bits as its stages called one by one, one erosion rule for tiling
 // terrains (a torus of the true period, so the result still tiles), bad

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The rivers stage of the library's pipeline is what the CLI writes:
 // `fracterra terrain ... --rivers r.json` is ft::pipeline::build_terrain with
 // rivers, point for point, on a tiling terrain (where the torus rule matters)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planet C ABI (fracterra/planet.h) as ctypes sees it: bad input gets a
 // status and a message naming what is allowed; layouts agree through the ABI.
 #include <gtest/gtest.h>

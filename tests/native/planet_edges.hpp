@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The steps across the cube-sphere's edges, shared by the fBm and midpoint
 // no-seam tests: for every edge sample e of a level with N = n shared by
 // faces A and B (not a corner, both orderings), e, the samples a1 and a2 one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Midpoint displacement on the cube-sphere (planet/midpoint_sphere.hpp):
 // shared edges, patches against the whole, levels against levels, thread
 // counts, the spread against the fBm planet's, H from the variogram along

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The spherical-harmonic power spectrum (planet/sphere_spectrum.hpp): the
 // transform against fields whose spectra are known, then H from the slope
 // of C_l ~ l^-(2H + 2) over seed ensembles of fBm and midpoint planets.

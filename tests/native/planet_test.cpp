@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planet layer: spherical fBm, the cube-sphere and equirectangular
 // layouts, patches, the mesh. References are independent of the layouts:
 // heights at cube points computed here from the documented face table, the

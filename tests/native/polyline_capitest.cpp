@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The polyline C ABI as ctypes sees it: params init, generate into an
 // ft_polylines handle, measure, and errors through ft_last_error().
 #include <gtest/gtest.h>

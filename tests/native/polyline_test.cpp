@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The polyline layer: Nikulin's FPL (seed 003) against the paper's ensemble
 // statistics, its structural promises (vertex counts, surviving nodes, delta
 // stopping, position-keyed determinism), the variants (3D, dragon,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The POV-Ray exporter through the C ABI, as ctypes and the Blender
 // exporter call it.
 #include <gtest/gtest.h>

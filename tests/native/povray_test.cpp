@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The POV-Ray writer without povray: SDL numbers, strings, identifiers,
 // paths, sweep chunking and camera framing. (Real renders: tests/povray.)
 #include <gtest/gtest.h>

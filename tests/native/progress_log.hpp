@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a progress callback saw, for the tests of long calls that report:
 // every fraction, and where it asked to stop.
 #pragma once

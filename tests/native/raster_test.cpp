@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rasters in and out: GeoTIFF/COG and OpenEXR round trips are exact to the
 // bit, RAW16 within half a step of 16 bits; georeferencing survives (checked
 // by GDAL's own gdalinfo -json); nodata is refused with its count or filled;

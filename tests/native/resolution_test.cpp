@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The same terrain at every resolution: the same seed and world parameters
 // give the same landform at any size, and more levels or samples only add
 // detail (issue 24, part 2).

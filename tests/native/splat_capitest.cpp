@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Splat rules files through the C ABI, as the add-on reads them: the layers
 // `fracterra splat --rules` would use, their names alive until the handle
 // goes, and bad files refused with the file, layer and field named.

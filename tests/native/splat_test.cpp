@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Splat maps: weights that sum to exactly the total at every sample, the
 // rules' thresholds, the rules JSON (its errors), RGBA files read back, and
 // the CLI as a user runs it.

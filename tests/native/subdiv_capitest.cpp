@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The subdiv C ABI as ctypes (and the Blender add-on) uses it.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The subdiv layer: fractalization on OpenSubdiv, mesh validation, OBJ and
 // POV-Ray mesh2 output. Plain subdivision (zero displacement) is checked
 // against the schemes' limit surfaces, and displacements are measured from

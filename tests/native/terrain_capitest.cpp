@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The C ABI as ctypes sees it: statuses, ft_last_error, handles, defaults.
 #include <gtest/gtest.h>
 

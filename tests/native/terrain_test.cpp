@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Terrain layer: Voss midpoint displacement (1D, 2D), Feder's additions,
 // reference points, periodic terrains, determinism, bad input.
 //

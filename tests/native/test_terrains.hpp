@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Terrains several native test files start from, written once.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tile sets (native/src/tiles/, `fracterra tiles`): tiles share their edge
 // samples and one height scale, so neighbouring 16-bit tiles agree exactly on
 // their shared edges and every tile is the quantised window of the whole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Windows of a terrain (terrain/window.hpp, generate_terrain_window): any
 // window equals the same samples of the whole terrain, bit for bit, for
 // every method that has windows, plain, periodic and from a reference grid;

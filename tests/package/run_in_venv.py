@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Installs the wheel into a fresh venv and runs this folder's pytest suite
 with that venv's Python, from a temporary folder, with no PYTHONPATH and no
 FRACTERRA_LIBRARY: what is tested is what `pip install` put there.

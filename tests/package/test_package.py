@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The installed fracterra wheel, from outside the source tree: the numpy API
 against the CLI's files (same library, same bits), its keyword arguments and
 docs from the parameter tables, errors with the library's messages, and the
@@ -96,12 +97,28 @@ def test_save_and_load_round_trip(tmp_path):
         ft.save(z, tmp_path / name)
         back = ft.load(tmp_path / name)
         assert np.array_equal(back, z), name
-    # The formats that record a world size give it back (.npy holds the samples only).
+    # Every format records the world size (.npy in its sidecar t.npy.json).
     assert ft.load(tmp_path / "t.exr").world_size == pytest.approx(250)
-    ft.save(z, tmp_path / "t.png")
-    assert ft.load(tmp_path / "t.png").world_size == pytest.approx(250)
-    ft.save(np.zeros((3, 4)), tmp_path / "plain.npy")  # any 2-D array
-    assert ft.load(tmp_path / "plain.npy").shape == (3, 4)
+    assert ft.load(tmp_path / "t.npy").world_size == pytest.approx(250)
+    assert json.loads((tmp_path / "t.npy.json").read_text())["world_size"] == pytest.approx(250)
+    for name in ("t.png", "t.pgm", "t.raw", "t.tif"):
+        ft.save(z, tmp_path / name)
+        assert ft.load(tmp_path / name).world_size == pytest.approx(250), name
+    ft.save(np.zeros((3, 4)), tmp_path / "plain.npy")  # any 2-D array; it records no world size
+    plain = ft.load(tmp_path / "plain.npy")
+    assert plain.shape == (3, 4) and plain.world_size == 0
+
+
+def test_a_file_without_a_world_size_warns_when_used(tmp_path, capfd):
+    z = ft.terrain(method="midpoint", levels=5, seed=1, world_size=20)
+    ft.save(z, tmp_path / "t.npy")
+    (tmp_path / "t.npy.json").unlink()
+    e, _ = ft.erode(ft.load(tmp_path / "t.npy"), "land", maps=False)
+    err = capfd.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "records no world size" in err[0] and "10 world units" in err[0], err
+    assert e.world_size == 10
+    ft.erode(z, "land", maps=False)  # a Terrain that knows its world: no warning
+    assert capfd.readouterr().err == ""
 
 
 def test_splat_weights_sum_exactly():

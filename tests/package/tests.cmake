@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Python package as a user installs it: the wheel pip-installed into a
 # fresh venv (no index, no build isolation: this machine has no PyPI; the
 # venv sees Debian's numpy and pytest), then pytest run from outside the

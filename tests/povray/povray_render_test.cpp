@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The POV-Ray layer against the real povray: small renders (160 x 120) of
 // written scenes, the examples and the macros; trace() probes for the
 // height_field's orientation and heights.

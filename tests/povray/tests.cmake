@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # POV-Ray layer: real `povray` renders of the scenes fracterra writes, of the
 # examples/1x_pov_*.pov scenes and of the povray_macros include files.
 find_program(FT_POVRAY_EXE povray)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """pytest set-up: the add-on's bpy-free core is imported straight from the
 source tree; the library comes from FRACTERRA_LIBRARY (set by ctest to the
 freshly built libfracterra.so)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The add-on's modules import in one direction only. blender/ is split by role
 into folders ranked common/ < build/ < ui/ < ops/: a module imports only from
 its own folder or a lower one, never in a circle, and never inside a function

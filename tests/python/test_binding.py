@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The ctypes binding of libfracterra.so, outside Blender."""
 
 import array
@@ -30,7 +31,8 @@ def test_every_declared_symbol_has_argtypes_and_restype(core):
 def test_binding_declares_every_exported_function_of_its_headers(core, header_dir):
     # Every ft_ function declared in the headers the binding covers has a signature.
     from fracterra.core.binding import SIGNATURES
-    for header in ("core.h", "terrain.h", "mesh.h", "polyline.h", "subdiv.h", "params.h", "raster.h", "splat.h"):
+    for header in ("core.h", "terrain.h", "mesh.h", "polyline.h", "subdiv.h", "params.h", "raster.h", "splat.h",
+                   "pipeline.h", "hydrology.h", "planet.h", "analysis.h"):
         text = (header_dir / header).read_text()
         for name in re.findall(r"FT_API [^(;]*?\b(ft_\w+)\s*\(", text):
             assert name in SIGNATURES, f"{name} from {header} has no ctypes signature"
@@ -62,7 +64,10 @@ def test_ctypes_structs_follow_the_header_field_order(core, header_dir):
                                 ("povray.h", "ft_pov_sweep_params", lib.pov_sweep_params_type),
                                 ("raster.h", "ft_dem_refine_params", lib.dem_refine_params_type),
                                 ("splat.h", "ft_splat_params", lib.splat_params_type),
-                                ("subdiv.h", "ft_fractalize_params", lib.fractalize_params_type)):
+                                ("subdiv.h", "ft_fractalize_params", lib.fractalize_params_type),
+                                ("pipeline.h", "ft_terrain_world", b.TerrainWorld),
+                                ("polyline.h", "ft_fpl_study_row", b.FplStudyRow),
+                                ("hydrology.h", "ft_network_measures", b.NetworkMeasures)):
         fields = _struct_fields((header_dir / header).read_text(), struct)
         fields = [f.split("[")[0] for f in fields]
         assert [f for f, _ in cls._fields_] == fields, struct

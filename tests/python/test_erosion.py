@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The ctypes binding of ft_erode (blender_addon/fracterra/core/erosion.py),
 outside Blender: presets as the library defines them, the eroded terrain and
 its maps, bad settings refused naming the field, cancel from the progress

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Grid-mesh arrays filled by the library, checked against an independent
 Python description of the same grid."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The grid sizes Blender can hold are decided from the size alone: the
 boundary is the first array past 2^31 - 1 bytes (here the face corners at
 12 bytes each), and levels 13 -- the size that crashed -- is refused."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """One pipeline, the same bits in every front end: `fracterra terrain
 --erode` (the CLI) and core.build_terrain (the binding the add-on uses) call
 the library's ft_terrain_build. Checked for a periodic midpoint terrain and a

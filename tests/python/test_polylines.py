@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Polylines, measures, coastlines and POV-Ray scenes through the binding."""
 
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Heightfield files and DEM refinement through the binding (core/raster.py),
 checked against GDAL's own Python bindings."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The splat colours as the add-on takes them (core.splat.linear_rgba)."""
 
 import numpy as np

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # pytest suite of the add-on's ctypes binding (blender_addon/fracterra/core),
 # run outside Blender against the freshly built libfracterra.so.
 find_program(FT_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
@@ -10,4 +11,4 @@ add_test(NAME python_binding
 set_tests_properties(python_binding PROPERTIES
   LABELS python
   ENVIRONMENT "FRACTERRA_LIBRARY=$<TARGET_FILE:fracterra>;FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>;PYTHONDONTWRITEBYTECODE=1;FT_THREADS_IGNORE_LOAD=1"
-  TIMEOUT 120)
+  TIMEOUT 240)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The CLI on a system without GDAL: FRACTERRA_GDAL names a library that does
 not exist, the only candidate the library then tries (core/gdal_library.hpp).
 GeoTIFF output and input fail with the message that says what to install;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A real DEM (Luxembourg, from Debian's r-cran-terra; see fetch_dem.sh) read
 // through GDAL and refined: its samples survive at their nodes, and the
 // refined terrain's increment variance continues the DEM's own scaling line

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The real DEM of the raster tests: elev.tif of Debian's r-cran-terra
 # (Luxembourg, 95 x 90 samples of 30 arc-seconds, SRTM-derived elevation in
 # metres, WGS 84, with nodata outside the country). The package is only

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Tests on a real DEM (tests/raster/dem_test.cpp): the fixture fetches it
 # from a Debian package once per build tree (fetch_dem.sh).
 set(FT_DEM_DIR ${CMAKE_BINARY_DIR}/real-dem)

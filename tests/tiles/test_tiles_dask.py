@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Tile sets on Dask with real worker processes (dask.distributed LocalCluster),
 driven by the Python package's fracterra.tiles as pip installed it in a venv.
 

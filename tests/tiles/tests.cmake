@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Tile sets on Dask (the Python package's fracterra.tiles, as pip installed it
 # in a fresh venv: tests/package/run_in_venv.py): a LocalCluster of 2 real
 # worker processes writes the same bytes as the one-process CLI, a worker

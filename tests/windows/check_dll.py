@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """fracterra.dll (and fracterra.exe) need only DLLs that every Windows ships,
 and the DLL exports only the C ABI (ft_*), as check_zip.py asks of
 libfracterra.so. The C++ runtime, libgomp and winpthreads are linked in: a

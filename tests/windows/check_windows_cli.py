@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """fracterra.exe (the Windows build, run under Wine) against the Linux build.
 
   same_bits     a terrain of each kind of method (midpoint, fBm, spectral: FFTW),

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Windows build under Wine, from the Linux build's ctest (so `bash
 # tests/run.sh`, which builds it first with scripts/build-windows.sh, runs
 # them). Each test prints "SKIP: <why>" and is skipped (exit 77) where the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs a Windows program under Wine for ctest:  tests/windows/wine_run.sh PROGRAM.exe ARGS...
 # Exits 77 (the tests' SKIP_RETURN_CODE) with the reason on stdout when the
 # program is missing or Wine cannot run here. The Wine prefix (about 10 s to

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Blender side of the add-on, one folder per role (imports point upwards:
 each folder imports only the folders above it; tests/python/test_addon_layers.py checks it):
     common/  leaves: reporting, jobs (progress bar, Esc), preferences, images, widgets, presets

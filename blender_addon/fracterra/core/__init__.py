@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The bpy-free part of the fracterra add-on: the ctypes binding of
 libfracterra.so, the parameter definitions and grid-mesh arrays. Importable
 without Blender (the pytest suite uses it directly)."""

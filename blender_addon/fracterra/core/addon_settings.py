@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The add-on's own settings, beside the library's (params.py): where a
 terrain's reference points and falloff mask come from, its colours and mesh
 options, the Erode step's preset and maps, Rivers and Lakes, a polyline's base,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Finding and loading libfracterra.so (fracterra.dll on Windows), and the ctypes signature of every symbol.
 
 Search order: the path in the FRACTERRA_LIBRARY environment variable (when
@@ -20,6 +21,9 @@ from ctypes import (CFUNCTYPE, POINTER, Structure, c_char_p, c_double, c_float, 
 from pathlib import Path
 
 from .errors import LibraryNotFoundError, error_for_status
+from .rows import FLAG_DATA, FLAG_MAX_EXCLUSIVE, FLAG_MIN_EXCLUSIVE, FLAG_STRUCT_SIZE, FLAG_ZERO_IS_AUTO  # noqa: F401
+from . import rows  # noqa: F401  (binding.rows: the one reader)
+from .rows import FT_PARAM, enum_item, row_from_info  # noqa: F401
 
 ABI_MAJOR = 2
 ABI_MINOR_MIN = 27  # what each minor added: CHANGES.md, "ABI history"
@@ -69,33 +73,14 @@ class ParamInfo(Structure):
     ]
 
 
-# fracterra/params.h: the described structs and field types.
+# fracterra/params.h: the described structs (their rows are read by rows.py, the one reader).
 PARAMS_KINDS = {"terrain": 0, "profile": 1, "polyline": 2, "fractalize": 3, "pov_scene": 4, "pov_sweep": 5,
                 "hurst": 6, "clouds": 7, "dem_refine": 8, "erosion": 9, "build": 10, "hydrology": 11,
                 "planet": 12, "splat": 13}
-FT_PARAM = ("uint32", "int32", "int64", "uint64", "float", "double", "bool", "enum", "pointer", "string",
-            "callback", "opaque")
-FLAG_STRUCT_SIZE, FLAG_DATA, FLAG_MIN_EXCLUSIVE, FLAG_MAX_EXCLUSIVE, FLAG_ZERO_IS_AUTO = 1, 2, 4, 8, 16
 _SCALAR_CTYPES = {"uint32": c_uint32, "int32": c_int32, "int64": c_int64, "uint64": c_uint64, "float": c_float,
                   "double": c_double, "bool": c_int32, "enum": c_int32, "string": c_char_p,
                   "callback": PROGRESS_FN}
 _ELEMENT_CTYPES = {"float": POINTER(c_float), "double": POINTER(c_double), "opaque": c_void_p}
-
-
-def _text(b):
-    return b.decode() if b is not None else ""
-
-
-def field_dict(info):
-    """One ft_param_info as a plain dict (the library's strings decoded)."""
-    row = {name: getattr(info, name) for name, _ in ParamInfo._fields_ if name != "enum_items"}
-    for key in ("name", "unit", "label", "doc"):
-        row[key] = _text(row[key])
-    row["type"] = FT_PARAM[info.type]
-    row["element_type"] = FT_PARAM[info.element_type] if info.type == 8 else None
-    row["items"] = [(_text(e.name), _text(e.label), _text(e.doc), e.value)
-                    for e in info.enum_items[:info.enum_count]]
-    return row
 
 
 def _ctype_of(row, struct_types):
@@ -172,6 +157,29 @@ class DrainageStats(Structure):
     """ft_drainage_stats (fracterra/erosion.h)."""
     _fields_ = [("hack_h", c_double), ("hack_h_stderr", c_double), ("theta", c_double),
                 ("theta_stderr", c_double), ("hack_bins", c_int32), ("theta_bins", c_int32)]
+
+
+class TerrainWorld(Structure):
+    """ft_terrain_world (fracterra/pipeline.h, ABI 2.27): whether a terrain tiles, and its own sea."""
+    _fields_ = [("struct_size", c_uint32), ("period_overlap", c_int32), ("sea_level", c_double)]
+
+
+class FplStudyRow(Structure):
+    """ft_fpl_study_row (fracterra/polyline.h, ABI 2.27)."""
+    _fields_ = [("spread", c_double), ("depth", c_int32), ("count", c_int32)] + [
+        (name, c_double) for name in ("eta_mean", "eta_se", "chi_mean", "chi_se", "gamma_mean", "gamma_se",
+                                      "mass_dimension_mean", "mass_dimension_se", "box_dimension_mean",
+                                      "box_dimension_se", "paper_eta", "paper_chi", "paper_gamma", "paper_dimension")]
+
+
+class NetworkMeasures(Structure):
+    """ft_network_measures (fracterra/hydrology.h, ABI 2.27)."""
+    _fields_ = [("struct_size", c_uint32), ("horton_orders", c_int32), ("horton_fitted_orders", c_int32),
+                ("hack_points", c_int32)] + [
+        (n, c_double) for n in ("bifurcation_ratio", "bifurcation_ratio_stderr", "length_ratio", "length_ratio_stderr",
+                                "total_length", "land_area", "drainage_density", "hack_h", "hack_h_stderr")] + [
+        ("segments", c_int64), ("lakes", c_int64), ("vertices", c_int64), ("ends", c_int32 * 5),
+        ("reserved0", c_int32), ("streams", c_int64 * 32), ("mean_length", c_double * 32)]
 
 
 class PovSceneLines(Structure):
@@ -312,6 +320,18 @@ SIGNATURES = {
     "ft_terrain_build_rivers": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF), POINTER(c_void_p)]),
     # (ABI 2.26) a window of what ft_terrain_build makes, heights and maps, bit-identical to the whole's.
     "ft_terrain_build_window": (c_int32, [_Described("build"), c_int64, c_int64, c_int32, c_int32, POINTER(_HF), POINTER(_HF)]),
+    # (ABI 2.27) the build's world, and the erode and rivers stages on a terrain already made.
+    "ft_terrain_world_init": (c_int32, [POINTER(TerrainWorld)]),
+    "ft_terrain_build_world": (c_int32, [_Described("build"), POINTER(_HF), POINTER(_HF), POINTER(c_void_p),
+                                         POINTER(TerrainWorld)]),
+    "ft_terrain_erode": (c_int32, [_Described("build"), _HF, POINTER(TerrainWorld), POINTER(_HF), POINTER(_HF)]),
+    "ft_terrain_rivers": (c_int32, [_Described("build"), _HF, POINTER(TerrainWorld), POINTER(c_void_p)]),
+    "ft_river_network_write": (c_int32, [c_void_p, _HF, c_char_p, c_int32]),
+    "ft_river_network_measures": (c_int32, [c_void_p, c_void_p]),
+    "ft_fpl_study": (c_int32, [c_int32, _F64P, c_int32, _I32P, c_int32, c_int32, c_uint64, c_int32, PROGRESS_FN,
+                               c_void_p, c_void_p, c_int64]),
+    "ft_hurst_heightfield_points": (c_int32, [_HF, _Described("hurst"), POINTER(HurstResult), _F64P, _F64P, c_int64,
+                                              POINTER(c_int64)]),
     # hydrology.h (ABI 2.15): rivers, lakes and the sea; the segment and lake structs as raw memory.
     "ft_hydrology_params_init": (c_int32, [_Described("hydrology")]),
     "ft_rivers_extract": (c_int32, [_HF, _Described("hydrology"), POINTER(c_void_p)]),
@@ -336,6 +356,12 @@ SIGNATURES = {
     "ft_planet_heights": (c_int32, [_Described("planet"), _F64P, c_int64, _F32P]),
     "ft_planet_sea_height": (c_int32, [_Described("planet"), _F64P]),
     "ft_planet_mesh_counts": (c_int32, [c_int32, POINTER(c_int64), POINTER(c_int64)]),
+    # (ABI 2.23) the icosphere and the angular power spectrum.
+    "ft_planet_icosphere_counts": (c_int32, [c_int32, POINTER(c_int64), POINTER(c_int64)]),
+    "ft_planet_icosphere": (c_int32, [_Described("planet"), c_int32, c_double, _F32P, c_size_t, _I32P, c_size_t,
+                                      _F32P, c_size_t]),
+    "ft_planet_power_spectrum": (c_int32, [_Described("planet"), c_int32, _F64P, c_size_t]),
+    "ft_planet_spectrum_hurst": (c_int32, [_Described("planet"), c_int32, c_int32, _F64P, _F64P]),
     "ft_planet_mesh": (c_int32, [_Described("planet"), c_int32, c_double, _F32P, c_size_t, _I32P, c_size_t,
                                  _F32P, c_size_t]),
     # raster.h (ABI 1.4); its structs are in core/raster.py.
@@ -456,7 +482,7 @@ class Library:
             if info.contents.struct_size < ctypes.sizeof(ParamInfo):
                 raise LibraryNotFoundError(f"{self.path}: ft_param_info is {info.contents.struct_size} bytes, "
                                            f"the binding reads {ctypes.sizeof(ParamInfo)}. {HOW_TO_FIX}")
-            rows.append(field_dict(info.contents))
+            rows.append(row_from_info(info.contents))
         return name.value.decode(), size.value, rows
 
     def has(self, name):
@@ -527,7 +553,7 @@ def enum_values(kind_name, field):
     """{identifier: C value} of enum field `field` of params struct `kind_name`, as the
     library describes it, e.g. enum_values("hurst", "method")["AUTO"] == 5."""
     row = next(r for r in library().param_rows[kind_name] if r["name"] == field)
-    return {ident: value for ident, _label, _doc, value in row["items"]}
+    return {item["name"]: item["value"] for item in row["items"]}
 
 
 def reset():

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Where the add-on differs from the library's parameter tables, each with its
 reason, stated once: the defaults Blender starts from, the limits narrower than
 the library's (Blender's own: a mesh's size, a 32-bit IntProperty), the fields

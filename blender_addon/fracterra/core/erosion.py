@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Erosion through the C ABI (fracterra/erosion.h): ft_erode and its maps,
 bpy-free (the pytest suite uses it directly).
 

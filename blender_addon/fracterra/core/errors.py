@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Exceptions raised by the fracterra binding (no bpy here).
 
 Every failed library call becomes a FracterraError (or a subclass chosen by

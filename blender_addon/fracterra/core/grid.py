@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Flat arrays describing a terrain as a quad grid mesh, filled by the library.
 
 The arrays are contiguous numpy buffers (float32; uint32 indices) that

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The base of every Python object that owns a library handle."""
 
 from .binding import library

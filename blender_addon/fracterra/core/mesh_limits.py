@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """How large a grid mesh Blender can hold and what it costs, decided from the
 grid size alone, before any work (no bpy here).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The settings of the add-on, made from the library's own description of its
 parameter structs (fracterra/params.h): names, defaults, ranges, enum items,
 labels, tooltips and which methods use each field come from the library's
@@ -28,6 +29,7 @@ from dataclasses import dataclass, field as dc_field
 from pathlib import Path
 
 from .binding import PARAMS_KINDS, library
+from .rows import row_from_json
 from .blender_overrides import (BLENDER_LIMITS, BLENDER_OVERRIDES, NOT_PROPERTIES, _BY_UNIT, _PRECISION,
                                 display_scale_of, shown_name)  # noqa: F401 (params.shown_name)
 from .errors import LibraryNotFoundError
@@ -70,26 +72,16 @@ class Param:
 
 
 def _description():
-    """{kind name: [row dicts]} from the loaded library, else from the snapshot beside this file."""
+    """{kind name: [rows]} from the loaded library, else from the snapshot beside this file (rows.py reads both)."""
     try:
         lib = library()
     except LibraryNotFoundError:
         if not SNAPSHOT.is_file():
             raise
         tables = json.loads(SNAPSHOT.read_text())
-        return {name[3:-7]: table["fields"] for name, table in tables.items()}  # "ft_terrain_params" -> "terrain"
-    return {kind: [_as_json_row(r) for r in rows] for kind, rows in lib.param_rows.items()}
-
-
-def _as_json_row(row):
-    """A binding row in the form `fracterra params --json` writes (unbounded sides None)."""
-    def bound(v):
-        return None if abs(v) >= 1.7e308 else v
-    return {**row, "default": row["default_value"], "hard_min": bound(row["hard_min"]),
-            "hard_max": bound(row["hard_max"]), "soft_min": bound(row["soft_min"]),
-            "soft_max": bound(row["soft_max"]), "min_exclusive": bool(row["flags"] & 4),
-            "max_exclusive": bool(row["flags"] & 8),
-            "items": [{"name": n, "label": l, "doc": d, "value": v} for n, l, d, v in row["items"]]}
+        # "ft_terrain_params" -> "terrain"
+        return {name[3:-7]: [row_from_json(f) for f in table["fields"]] for name, table in tables.items()}
+    return lib.param_rows
 
 
 _KIND_OF_TYPE = {"int32": "int", "int64": "int", "uint64": "int", "double": "float", "float": "float",
@@ -163,7 +155,7 @@ def library_params(kind_name):
     method_items = tuple((i["name"], i["label"], i["doc"], i["value"]) for i in method["items"]) if method else ()
     skip = NOT_PROPERTIES.get(kind_name, {})
     return tuple(_param_from_row(r, kind_name, method_items) for r in rows
-                 if r["type"] in _KIND_OF_TYPE and not r["flags"] & 3 and r["count"] == 1 and r["name"] not in skip)
+                 if r["type"] in _KIND_OF_TYPE and r["settable"] and r["count"] == 1 and r["name"] not in skip)
 
 
 _LAZY = ("DYADIC_METHODS", "TERRAIN_PARAMS", "EROSION_PARAMS", "ERODE_PARAMS", "RIVERS_PARAMS", "TERRAIN_OBJECT_PARAMS",

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The whole terrain in one library call (fracterra/pipeline.h,
 ft_terrain_build): generate -> landform -> erode -> maps, with one progress
 callback. bpy-free; the add-on's Erode step and the pytest suite call it, and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Fractal planets through the C ABI (fracterra/planet.h): the closed
 cube-sphere mesh as flat arrays ready for Blender's foreach_set, and the
 sea's height. No bpy here."""

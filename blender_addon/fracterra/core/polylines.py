@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Fractal polylines (FPL, Koch, dragon, Sierpinski, IFS, profile), their
 measures, and the ft_polylines handle."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """POV-Ray scenes through the library's writer (fracterra/povray.h)."""
 
 import os

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Heightfield files through the library (fracterra/raster.h): read any
 raster GDAL reads (GeoTIFF, .hgt, .asc, ...) or a fracterra format, write
 .png/.pgm/.npy/.tif (COG)/.exr/.raw/.r16 by extension, and refine a real DEM

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Reference heights from images and DEMs of any size: the dyadic grid a
 midpoint terrain's reference needs, by bilinear resampling (bpy-free; numpy,
 which Blender always has)."""

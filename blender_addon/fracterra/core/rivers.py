@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Rivers, lakes and the sea of a terrain (fracterra/hydrology.h), as the last
 stage of the library's pipeline (ft_terrain_build_rivers, pipeline.h): the
 library decides the torus rule (a terrain that tiles gives rivers that wrap)

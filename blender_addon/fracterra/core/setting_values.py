@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Settings as values: the defaults of a list of settings, whether one matters
 for a method, the grid a terrain's settings describe, its Preview's settings, and
 the copies between values, C structs and objects holding the settings. The lists

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Splat layer rules and the colour map they give (fracterra/splat.h): the one
 rule that colours a terrain in Blender (its material reads the colours as a
 point attribute), in the POV-Ray export (the same colours as a PNG) and in the

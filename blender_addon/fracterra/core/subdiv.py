@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Fractalizing polygon meshes with OpenSubdiv in the library (fracterra/subdiv.h)."""
 
 import array

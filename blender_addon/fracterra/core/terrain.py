@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Terrain and profile generation through the C ABI, and the heightfield handle."""
 
 import array

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Tile sets: a terrain larger than memory written as tiles, and read back.
 
 The library does the tile logic (fracterra/tiles.h). This module holds its

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The water surface of lakes and the sea over a terrain's grid, cut to where
 the water has depth (bpy-free, numpy). A surface flush with the ground
 flickers against it (z-fighting), so the water is drawn only where it stands

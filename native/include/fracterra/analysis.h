@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/analysis.h
 /// Measures: Hurst exponent and fractal dimension of profiles and
 /// heightfields, coastlines (level sets by marching squares) and Feder's
@@ -78,6 +79,13 @@ FT_API ft_status ft_hurst_profile(const float* samples, size_t count, const ft_h
 /// Estimates H of a heightfield of at least 8 x 8 finite samples.
 FT_API ft_status ft_hurst_heightfield(const ft_heightfield* hf, const ft_hurst_params* params,
                                       ft_hurst_result* out);
+/// ft_hurst_heightfield, with the points it fitted (ABI 2.27): the lags (samples) and the statistic
+/// of an increment method, or the frequencies (cycles per record) and the transects' averaged
+/// periodogram of the spectral one (~ f^-(2H + 1)), into x[0 .. capacity) and y; *count receives their number (x and y may be
+/// NULL with capacity 0 to ask for it; a smaller capacity fails and says how many).
+FT_API ft_status ft_hurst_heightfield_points(const ft_heightfield* hf, const ft_hurst_params* params,
+                                             ft_hurst_result* out, double* x, double* y, int64_t capacity,
+                                             int64_t* count);
 
 /// H of a surface too large for memory, from windows of it (ABI 2.4): the
 /// aligned variogram or madogram (params->method FT_HURST_VARIOGRAM_ALIGNED,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/core.h
 /// The conventions every fracterra C call shares: status codes, the
 /// per-thread error message, versions, progress callbacks and the result

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /* fracterra erosion: fluvial (stream power + hillslope diffusion, Braun &
  * Willett 2013), hydraulic (virtual pipes, Mei et al. 2007) and thermal
  * (talus) erosion of a heightfield, and the maps artists texture by.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/fracterra.h
 /// The fracterra C ABI: fractal terrains and polylines, and their measures.
 /// Include this one header; it pulls in every capability's declarations.

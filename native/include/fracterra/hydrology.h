@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /* fracterra hydrology: rivers, lakes and the sea of a heightfield as objects.
  * Depressions are filled to their spill level (Priority-Flood, Barnes et al.
  * 2014): a filled depression of at least min_lake_area is a lake (level,
@@ -130,6 +131,39 @@ FT_API ft_status ft_river_network_water_mask(const ft_river_network* net, int32_
 /// cos^2 profile under the water surface), never below the sea's level (2.27);
 /// lakes and sea are left as they are.
 FT_API ft_status ft_rivers_carve(const ft_heightfield* terrain, const ft_river_network* net, ft_heightfield** out);
+/// Measures of a network (ABI 2.27), as `fracterra rivers --stats` and `analyze --rivers` report
+/// them: Horton's ratios over its Strahler streams, drainage density, Hack's h.
+typedef struct ft_network_measures {
+  uint32_t struct_size;            ///< set by the caller to sizeof(ft_network_measures)
+  int32_t horton_orders;           ///< highest Strahler order (0: no Horton ratios)
+  int32_t horton_fitted_orders;    ///< orders in the ratios' fits
+  int32_t hack_points;
+  double bifurcation_ratio;        ///< R_b
+  double bifurcation_ratio_stderr; ///< the standard error of log R_b
+  double length_ratio;             ///< R_l
+  double length_ratio_stderr;      ///< the standard error of log R_l
+  double total_length;             ///< world units
+  double land_area;                ///< world units^2: cells neither sea nor lake
+  double drainage_density;         ///< total length / land area (1 / world units)
+  double hack_h;                   ///< L ~ A^h: longest upstream length against area, per segment mouth
+  double hack_h_stderr;
+  int64_t segments;
+  int64_t lakes;
+  int64_t vertices;
+  int32_t ends[5];                 ///< segments ending at a confluence, the sea, a lake, the edge, a sink
+  int32_t reserved0;
+  int64_t streams[32];             ///< N_k, streams of order k + 1 (k < horton_orders, at most 32)
+  double mean_length[32];          ///< L_k, their mean length (world units)
+} ft_network_measures;
+
+FT_API ft_status ft_river_network_measures(const ft_river_network* net, ft_network_measures* out);
+/// Writes the network to `path` as `fracterra rivers --out` does (ABI 2.27), by its extension:
+/// .csv, .json, .geojson or .gpkg (rivers and lakes; the last two need a build with GDAL). With
+/// `lakes_only` non-zero, the lakes alone as `--lakes` writes them (.geojson, .gpkg or .json).
+/// `terrain` (may be NULL) gives the georeference: GeoJSON and GeoPackage are then in its CRS
+/// and map coordinates. Written atomically.
+FT_API ft_status ft_river_network_write(const ft_river_network* net, const ft_heightfield* terrain, const char* path,
+                                        int32_t lakes_only);
 
 #ifdef __cplusplus
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/mesh.h
 /// Regular grid meshes for hosts that fill meshes from flat arrays (Blender's
 /// `foreach_set`, glTF-style buffers): vertex positions from a heightfield and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/params.h
 /// The library describes its own parameter structs: for every field of every
 /// params struct its name, type, offset, default, hard and soft range, unit,

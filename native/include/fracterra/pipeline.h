@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/pipeline.h
 /// One call for a whole terrain: generate -> landform -> erode -> maps ->
 /// rivers, with one progress callback across the stages (ABI 2.13; rivers 2.20). The CLI's
@@ -85,6 +86,42 @@ FT_API ft_status ft_terrain_build_rivers(const ft_build_params* p, ft_heightfiel
 /// cropped. On failure every output is NULL.
 FT_API ft_status ft_terrain_build_window(const ft_build_params* p, int64_t x0, int64_t y0, int32_t width,
                                          int32_t height, ft_heightfield** out, ft_heightfield** maps);
+
+/// What the pipeline's later stages need of a terrain beside its heights and world size (ABI 2.27):
+/// whether it tiles and its own sea. ft_terrain_build_world reports it; ft_terrain_erode and
+/// ft_terrain_rivers take it, so that a terrain kept (in a file, in numpy) and eroded or traced
+/// later gets the same bits as ft_terrain_build's erode and rivers stages give it.
+typedef struct ft_terrain_world {
+  uint32_t struct_size;    ///< sizeof(ft_terrain_world); set by _init
+  int32_t period_overlap;  ///< -1: it does not tile; else it tiles, and its last `period_overlap` rows
+                           ///< and columns repeat the first (midpoint and additions: 1; others: 0)
+  double sea_level;        ///< the height of its own flat sea (the landform's), or NaN: none
+} ft_terrain_world;
+
+/// Fills `w` with a terrain that does not tile and has no sea (-1, NaN).
+FT_API ft_status ft_terrain_world_init(ft_terrain_world* w);
+/// ft_terrain_build_rivers (`rivers` may be NULL: no rivers stage) that also reports the built
+/// terrain's world in `world` (not NULL): what ft_terrain_erode and ft_terrain_rivers need to
+/// continue the pipeline on it (ABI 2.27).
+FT_API ft_status ft_terrain_build_world(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps,
+                                        ft_river_network** rivers, ft_terrain_world* world);
+/// The pipeline's erode stage on a terrain already made (ABI 2.27): `terrain` eroded as ft_terrain_build
+/// erodes the terrain it generates, with p->erosion and p->erosion_preset (fitted to `terrain`) by the
+/// same rule, p->threads and p->progress; p->terrain and p->rivers are not read (may be NULL). With
+/// `world` (not NULL) the terrain's rules replace the erosion's periodic and sea fields: a terrain that
+/// tiles erodes as the torus of its true period (its repeated rows and columns left out and copied back
+/// after), its sea is the base level. With `world` NULL the erosion's own fields hold (as `fracterra
+/// erode --in`). A terrain without a world size (0) erodes in a world of 10 units. Outputs as
+/// ft_terrain_build's; so ft_terrain_erode(p, build of p without erosion, its world) equals
+/// ft_terrain_build(p) bit for bit.
+FT_API ft_status ft_terrain_erode(const ft_build_params* p, const ft_heightfield* terrain,
+                                  const ft_terrain_world* world, ft_heightfield** out, ft_heightfield** maps);
+/// The pipeline's rivers stage on a terrain already made (ABI 2.27): the rivers, lakes and sea of
+/// `terrain` with p->rivers (NULL: the defaults) and p->threads under ft_terrain_build_rivers' rules,
+/// the terrain's from `world` (NULL: the rivers' own periodic and sea fields hold): a terrain that
+/// tiles is routed as its torus, its own sea is the rivers' sea. `*rivers` receives the network.
+FT_API ft_status ft_terrain_rivers(const ft_build_params* p, const ft_heightfield* terrain,
+                                   const ft_terrain_world* world, ft_river_network** rivers);
 
 #ifdef __cplusplus
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/planet.h
 /// Fractal planets (ABI 2.18): fBm on the sphere, sampled as a cube-sphere,
 /// a patch of one cube face at any level, an equirectangular map, or a

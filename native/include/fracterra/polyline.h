@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/polyline.h
 /// Fractal polylines: Nikulin's FPL (random orthogonal midpoint displacement,
 /// seed 003) in 2D and 3D with optional branching (lightning), the Voss
@@ -111,6 +112,39 @@ typedef struct ft_polyline_stats {
 /// Measures `p` into `out` (out->struct_size must be set). Returns
 /// FT_ERR_INVALID_ARGUMENT for NULL pointers or a too small struct_size.
 FT_API ft_status ft_polyline_measure(const ft_polylines* p, ft_polyline_stats* out);
+
+/// One (spread, depth) of the FPL ensemble study (seed 003, `fracterra study fpl`; ABI 2.27): the
+/// ensemble means and standard errors (sd / sqrt(K), over the finite values) of eta, chi, gamma, the
+/// mass and box-counting dimensions over K lines on the unit horizontal segment, and the paper's
+/// fitted values at the same spread and depth.
+typedef struct ft_fpl_study_row {
+  double spread;
+  int32_t depth;
+  int32_t count;              ///< K, lines per (spread, depth)
+  double eta_mean;            ///< max |deviation| / chord (eq. 1a)
+  double eta_se;
+  double chi_mean;            ///< mean |deviation| / chord (eq. 1a)
+  double chi_se;
+  double gamma_mean;          ///< length / chord (eq. 1b)
+  double gamma_se;
+  double mass_dimension_mean; ///< eq. 4g / 6
+  double mass_dimension_se;
+  double box_dimension_mean;  ///< NaN below depth 6 or at spread 0
+  double box_dimension_se;
+  double paper_eta;           ///< the paper's fits at this spread and depth
+  double paper_chi;
+  double paper_gamma;
+  double paper_dimension;     ///< NaN where the fit has none
+} ft_fpl_study_row;
+
+/// The FPL ensemble study (ABI 2.27), as `fracterra study fpl` runs it: for each spread (>= 0) and
+/// each depth (1..20), `count` (2..100000) FPL lines of generator `rng` (FT_POLYLINE_RNG_*) with
+/// seeds seed, seed + 1, ...; box counting (depth >= 6, spread > 0) when `box_counting` is non-zero.
+/// `out` receives spread_count x depth_count rows, spreads outer (out_count must be that). The
+/// result never depends on the thread count. `progress` may be NULL.
+FT_API ft_status ft_fpl_study(int32_t rng, const double* spreads, int32_t spread_count, const int32_t* depths,
+                              int32_t depth_count, int32_t count, uint64_t seed, int32_t box_counting,
+                              ft_progress_fn progress, void* progress_user, ft_fpl_study_row* out, int64_t out_count);
 
 #ifdef __cplusplus
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/povray.h
 /// POV-Ray export: terrains as `height_field` (16-bit PNG + SDL), polylines
 /// as chunked `sphere_sweep` unions, and complete scenes ready to render.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/raster.h
 /// Heightfields to and from files by extension (.png, .pgm, .npy, .tif as a
 /// Cloud-Optimized GeoTIFF, .exr, .raw/.r16 with a sidecar JSON; reading

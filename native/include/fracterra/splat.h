@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /* fracterra splat: weight maps (splat maps) and colour maps of a terrain for
  * game engines, Blender and POV-Ray, from one set of layer rules (ABI 2.19;
  * rules files read through the ABI: 2.22).

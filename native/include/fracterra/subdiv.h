@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/subdiv.h
 /// Fractalize any polygon mesh: Voss midpoint displacement generalised to
 /// arbitrary topology with OpenSubdiv. The mesh is refined uniformly

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/terrain.h
 /// Terrain heightfields and 1D profiles: Voss midpoint displacement, Feder's
 /// successive random additions, and (see the method list) fBm octave noise,

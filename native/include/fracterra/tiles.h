@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /// @file fracterra/tiles.h
 /// Tile sets: a terrain larger than memory written as tiles that share their
 /// edge samples, with one height scale, a manifest (manifest.json) and a GDAL

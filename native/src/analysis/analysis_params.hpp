@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tables of ft_hurst_params and ft_clouds_params (fracterra/params.h),
 // and those structs turned into the estimators' own options after the
 // tables' range checks and the checks that relate several fields (for the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Box-counting dimension of a set of polylines in the x,y plane (seed 003,
 // eq. 4a, fitted over a range of box sizes instead of one pair): N(eps), the
 // number of eps x eps grid boxes the curves pass through, grows like

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Feder's clouds (seed 001, fig. 13.13): the landscape thresholded at a
 // level; below it black, above it a grey scale from black to white
 // proportional to the logarithm of the elevation:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Horton's bifurcation and length ratios (see horton.hpp).
 #include "analysis/horton.hpp"
 

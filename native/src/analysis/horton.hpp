@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Horton's laws of a river network from its Strahler orders (Horton 1945;
 // Strahler 1957): the number N_k of streams of order k falls geometrically,
 // N_k ~ R_b^-k (bifurcation ratio R_b), and their mean length L_k grows,

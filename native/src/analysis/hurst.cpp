@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hurst estimation entry points: band defaults and checks, the slope -> H
 // conversion of each method, and the dispatch for profiles and surfaces.
 #include "analysis/hurst.hpp"

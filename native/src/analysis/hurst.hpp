@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hurst exponent estimators for profiles (1D) and heightfields (2D).
 //
 // Every estimator is the slope of a log-log least-squares fit:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Which Hurst estimator to trust on a given record: the recommendation the
 // CLI's `analyze` and Blender's measure operator both report (FT_HURST_AUTO),
 // so one terrain shows one H wherever it is measured.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The aligned variogram (or madogram) of a surface too large for memory,
 // from windows of it: each window adds the increments whose start node it
 // owns, and the sums over all windows are the whole's sums, so H (and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ordinary least squares of log(y) against log(x): every estimator of H or D
 // is the slope of such a fit, and reports the slope's standard error.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The JSON report of a polyline set that `fracterra polyline --stats` prints
 // and `fracterra analyze FILE.csv|.json` returns for polyline inputs.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The measures of seed 003 for a polyline p1..pn, relative to its chord
 // p1 -> pn (so a line on the unit horizontal segment gives the paper's
 // numbers directly, and any other line is measured in units of its chord):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Levels given as absolute heights or as quantiles of the samples ("q0.5" is
 // the median), shared by coastlines and clouds.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Power-spectrum slope through FFTW: every transect is detrended (least-
 // squares line: removes the mean and the wrap-around jump that would leak a
 // f^-2 spectrum), Hann-windowed, transformed; the periodograms are summed,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The transect-median estimator: every row and every column of a surface is
 // estimated as a profile, and the median H is reported. The median shrugs off
 // the few transects that cross a cliff or a flat (clipped) region, which pull

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Variogram and madogram over a band of lags, plain or dyadic-aligned, for
 // profiles and surfaces. Partial sums are kept per row and added in row
 // order, so the result does not depend on the thread count.

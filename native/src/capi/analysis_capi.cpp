@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -80,6 +81,29 @@ FT_API ft_status ft_hurst_heightfield(const ft_heightfield* hf, const ft_hurst_p
     std::optional<ft::analysis::HurstChoice> choice;
     const ft::analysis::HurstOptions o = to_options(params, hf->hf.width(), hf->hf.height(), choice);
     to_result(ft::analysis::estimate_hurst_surface(hf->hf, o), choice, out);
+  });
+}
+
+FT_API ft_status ft_hurst_heightfield_points(const ft_heightfield* hf, const ft_hurst_params* params,
+                                             ft_hurst_result* out, double* x, double* y, int64_t capacity,
+                                             int64_t* count) {
+  return guarded([&] {
+    ft::check_not_null("out", out);
+    ft::check_not_null("heightfield", hf);
+    ft::check_not_null("count", count);
+    std::optional<ft::analysis::HurstChoice> choice;
+    const ft::analysis::HurstOptions o = to_options(params, hf->hf.width(), hf->hf.height(), choice);
+    const ft::analysis::HurstEstimate e = ft::analysis::estimate_hurst_surface(hf->hf, o);
+    *count = int64_t(e.x.size());
+    if (capacity == 0 && !x && !y) return to_result(e, choice, out);
+    ft::check_not_null("x", x);
+    ft::check_not_null("y", y);
+    if (capacity < int64_t(e.x.size()))
+      ft::invalid("ft_hurst_heightfield_points: capacity " + std::to_string(capacity) + " is below the " +
+                  std::to_string(e.x.size()) + " points fitted");
+    std::copy(e.x.begin(), e.x.end(), x);
+    std::copy(e.y.begin(), e.y.end(), y);
+    to_result(e, choice, out);
   });
 }
 

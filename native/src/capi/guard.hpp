@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The extern "C" boundary: every export runs its body through guarded(),
 // which records success or the error message for ft_last_error() and makes
 // sure no exception crosses into C or Python.

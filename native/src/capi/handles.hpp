@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The opaque C handles are thin wrappers around the C++ results.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The C ABI of the hydrology layer (fracterra/hydrology.h).
 #include <algorithm>
 #include <memory>
@@ -8,6 +9,8 @@
 #include "fracterra/fracterra.h"
 #include "hydrology/hydrology.hpp"
 #include "hydrology/hydrology_params.hpp"
+#include "hydrology/network_measures.hpp"
+#include "hydrology/river_files.hpp"
 
 using ft::capi::guarded;
 
@@ -152,6 +155,38 @@ FT_API ft_status ft_rivers_carve(const ft_heightfield* terrain, const ft_river_n
     auto h = std::make_unique<ft_heightfield>();
     h->hf = ft::hydrology::carve(terrain->hf, net->net);
     *out = h.release();
+  });
+}
+
+FT_API ft_status ft_river_network_measures(const ft_river_network* net, ft_network_measures* out) {
+  return guarded([&] {
+    ft::check_not_null("net", net);
+    ft::check_not_null("out", out);
+    const ft::hydrology::NetworkMeasures m = ft::hydrology::measure_network(net->net);
+    ft_network_measures r{};
+    r.horton_orders = m.has_horton ? m.horton.orders : 0;
+    r.horton_fitted_orders = m.has_horton ? m.horton.fitted_orders : 0;
+    r.hack_points = m.hack_points;
+    r.bifurcation_ratio = m.horton.bifurcation, r.bifurcation_ratio_stderr = m.horton.bifurcation_stderr;
+    r.length_ratio = m.horton.length, r.length_ratio_stderr = m.horton.length_stderr;
+    r.total_length = m.total_length, r.land_area = m.land_area, r.drainage_density = m.drainage_density;
+    r.hack_h = m.hack_h, r.hack_h_stderr = m.hack_h_stderr;
+    r.segments = m.segments, r.lakes = m.lakes, r.vertices = m.vertices;
+    for (int k = 0; k < 5; ++k) r.ends[k] = m.ends[k];
+    for (size_t k = 0; k < m.horton.streams.size() && k < 32; ++k) r.streams[k] = m.horton.streams[k];
+    for (size_t k = 0; k < m.horton.mean_length.size() && k < 32; ++k) r.mean_length[k] = m.horton.mean_length[k];
+    ft::capi::write_result(out, r, sizeof(ft_network_measures), "ft_network_measures");
+  });
+}
+
+FT_API ft_status ft_river_network_write(const ft_river_network* net, const ft_heightfield* terrain, const char* path,
+                                        int32_t lakes_only) {
+  return guarded([&] {
+    ft::check_not_null("net", net);
+    ft::check_not_null("path", path);
+    const ft::GeoReference geo = terrain ? terrain->hf.georef() : ft::GeoReference();
+    if (lakes_only) ft::hydrology::write_lakes(net->net, geo, path);
+    else ft::hydrology::write_rivers(net->net, geo, path);
   });
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "capi/guard.hpp"
 #include "capi/handles.hpp"
 #include "fracterra/fracterra.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The parameter tables through the ABI (fracterra/params.h).
 #include "capi/guard.hpp"
 #include "fracterra/fracterra.h"

@@ -1,4 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The C ABI of the terrain pipeline (fracterra/pipeline.h).
+#include <cmath>
 #include <memory>
 
 #include "capi/guard.hpp"
@@ -72,6 +74,58 @@ FT_API ft_status ft_terrain_build_window(const ft_build_params* p, int64_t x0, i
 
 FT_API ft_status ft_terrain_build(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps) {
   return ft_terrain_build_rivers(p, out, maps, nullptr);
+}
+
+FT_API ft_status ft_terrain_world_init(ft_terrain_world* w) {
+  return guarded([&] {
+    ft::check_not_null("world", w);
+    *w = ft_terrain_world{sizeof(ft_terrain_world), -1, NAN};
+  });
+}
+
+FT_API ft_status ft_terrain_build_world(const ft_build_params* p, ft_heightfield** out, ft_heightfield** maps,
+                                        ft_river_network** rivers, ft_terrain_world* world) {
+  return guarded([&] {
+    reset_outputs(out, maps, rivers);
+    ft::check_not_null("params", p);
+    ft::check_not_null("world", world);
+    ft::erosion::ErosionMaps m;
+    auto result = std::make_unique<ft_heightfield>();
+    auto network = rivers ? std::make_unique<ft_river_network>() : nullptr;
+    ft_terrain_world w{};
+    result->hf = ft::pipeline::build_terrain(*p, maps ? &m : nullptr, network ? &network->net : nullptr, &w);
+    hand_out_maps(m, maps);
+    if (rivers) *rivers = network.release();
+    *world = w;
+    *out = result.release();
+  });
+}
+
+FT_API ft_status ft_terrain_erode(const ft_build_params* p, const ft_heightfield* terrain,
+                                  const ft_terrain_world* world, ft_heightfield** out, ft_heightfield** maps) {
+  return guarded([&] {
+    reset_outputs(out, maps, nullptr);
+    ft::check_not_null("params", p);
+    ft::check_not_null("terrain", terrain);
+    ft::erosion::ErosionMaps m;
+    auto result = std::make_unique<ft_heightfield>();
+    result->hf = ft::pipeline::erode_made(*p, terrain->hf, world, maps ? &m : nullptr);
+    hand_out_maps(m, maps);
+    *out = result.release();
+  });
+}
+
+FT_API ft_status ft_terrain_rivers(const ft_build_params* p, const ft_heightfield* terrain,
+                                   const ft_terrain_world* world, ft_river_network** rivers) {
+  return guarded([&] {
+    ft::check_not_null("rivers", rivers);
+    *rivers = nullptr;
+    ft::check_not_null("params", p);
+    ft::check_not_null("terrain", terrain);
+    auto network = std::make_unique<ft_river_network>();
+    network->net = ft::pipeline::rivers_made(*p, terrain->hf, world);
+    *rivers = network.release();
+  });
 }
 
 }  // extern "C"

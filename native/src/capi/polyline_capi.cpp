@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 #include <memory>
 
@@ -6,6 +7,7 @@
 #include "polyline/polyline_params.hpp"
 #include "capi/handles.hpp"
 #include "fracterra/fracterra.h"
+#include "polyline/fpl_study.hpp"
 #include "polyline/polyline.hpp"
 
 using ft::capi::guarded;
@@ -48,6 +50,38 @@ FT_API ft_status ft_polyline_measure(const ft_polylines* p, ft_polyline_stats* o
     s.box_max_size = m.box_ok ? m.box.max_size : NAN;
     s.box_sizes = m.box_ok ? int32_t(m.box.sizes.size()) : 0;
     ft::capi::write_result(out, s, sizeof(ft_polyline_stats), "ft_polyline_stats");
+  });
+}
+
+FT_API ft_status ft_fpl_study(int32_t rng, const double* spreads, int32_t spread_count, const int32_t* depths,
+                              int32_t depth_count, int32_t count, uint64_t seed, int32_t box_counting,
+                              ft_progress_fn progress, void* progress_user, ft_fpl_study_row* out, int64_t out_count) {
+  return guarded([&] {
+    ft::check_not_null("spreads", spreads);
+    ft::check_not_null("depths", depths);
+    ft::check_not_null("out", out);
+    ft::check_int_range("rng", rng, 0, 1);
+    ft::check_int_range("spread_count", spread_count, 1, 1 << 20);
+    ft::check_int_range("depth_count", depth_count, 1, 1 << 20);
+    if (out_count != int64_t(spread_count) * depth_count)
+      ft::invalid("ft_fpl_study: out_count must be spread_count x depth_count = " +
+                  std::to_string(int64_t(spread_count) * depth_count) + ", got " + std::to_string(out_count));
+    ft::polyline::FplStudyConfig c;
+    c.rng = ft::polyline::FplRng(rng);
+    c.spreads.assign(spreads, spreads + spread_count);
+    c.depths.assign(depths, depths + depth_count);
+    c.count = count;
+    c.seed = seed;
+    c.box_counting = box_counting != 0;
+    c.progress = ft::Progress(progress, progress_user);
+    const std::vector<ft::polyline::FplStudyRow> rows = ft::polyline::run_fpl_study(c);
+    for (size_t i = 0; i < rows.size(); ++i) {
+      const ft::polyline::FplStudyRow& r = rows[i];
+      out[i] = ft_fpl_study_row{r.spread, r.depth, r.count, r.eta.mean, r.eta.se, r.chi.mean, r.chi.se,
+                                r.gamma.mean, r.gamma.se, r.mass_dimension.mean, r.mass_dimension.se,
+                                r.box_dimension.mean, r.box_dimension.se, r.paper_eta, r.paper_chi,
+                                r.paper_gamma, r.paper_dimension};
+    }
   });
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The POV-Ray exporter behind the C ABI (fracterra/povray.h).
 #include <cmath>
 #include <memory>

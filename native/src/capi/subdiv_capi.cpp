@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // C ABI of the subdiv capability: ft_mesh handles and ft_fractalize.
 #include <cstring>
 #include <memory>

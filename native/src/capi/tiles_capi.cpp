@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The C ABI of tile sets (fracterra/tiles.h).
 #include <algorithm>
 #include <memory>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Marching squares in two passes: every cell writes its directed segments as
 // links "crossing -> next crossing" (each crossing is the start of a segment
 // in exactly one cell, so rows can run in parallel without races); then the

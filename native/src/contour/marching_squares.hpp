@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Level sets of a heightfield by marching squares.
 //
 // Coordinates: x = column, y = row (sample units, x in [0, width - 1], y in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // For the files that hold AVX-512 kernels (built into any x86-64 library and
 // called only where the CPU has AVX-512: see their dispatchers).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A heap array that is not zero-filled on allocation: generators overwrite
 // every sample, and zero-filling 8193^2 floats would cost a third of the run.
 // Large buffers are 2 MiB-aligned blocks advised to use transparent huge pages:

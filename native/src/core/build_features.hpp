@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What this build has: the optional libraries (GDAL, OpenEXR, OpenSubdiv;
 // CMake's FT_WITH_* options, all on for Linux and off for Windows; GDAL is
 // the system's, found at run time: core/gdal_library.hpp) and so the

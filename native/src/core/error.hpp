@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Errors inside the library are exceptions carrying an ft_status; the C ABI
 // (capi/guard.hpp) turns them into a status code plus ft_last_error().
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The system's GDAL, opened at run time: the library and the add-on carry
 // none of GDAL's ~60 dependencies, and GDAL is needed only for GeoTIFF/COG,
 // the other rasters GDAL reads, GeoJSON and GeoPackage, and tile-set

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A grayscale raster in memory: what PNG and PGM files hold and what the
 // clouds image is made as. A plain value type of its own so that analysis/
 // can make images without including a file format (io/ reads and writes it).

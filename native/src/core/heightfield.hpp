@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A float32 heightfield, row-major: sample (x, y) is at y * width + x.
 #pragma once
 

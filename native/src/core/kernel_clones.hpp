@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // FT_KERNEL_CLONES: a hot loop built in several instruction sets.
 #pragma once
 

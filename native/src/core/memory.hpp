@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The documented memory cap: requests are refused with FT_ERR_TOO_LARGE before
 // anything is allocated, with the sizes in the message.
 #pragma once

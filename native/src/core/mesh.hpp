@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A polygon mesh in the OpenSubdiv style (Far::TopologyDescriptor): shared
 // vertices, a size per face and the faces' vertex indices one after another,
 // plus optional sharp creases and corners. Plain data, no OpenSubdiv here, so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The thread count a call runs on: what was asked, but no more than the
 // cores other processes leave free (see parallel.hpp).
 #include "core/parallel.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Thread-count handling. Results never depend on the thread count: random
 // numbers are keyed by position (core/rng.hpp), not drawn in order.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Row-parallel loops that report progress and can be cancelled: the rows go
 // to threads one at a time, the calling thread (OpenMP's thread 0) reports.
 #pragma once

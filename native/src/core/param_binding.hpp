@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A library's own settings type filled from a params struct through its
 // table: one binding per row, naming the row and the member it sets. The
 // struct's ranges are checked once (check_ranges), then every bound row is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A params struct's table: one row per field (fracterra/params.h). From it
 // come the defaults that ft_*_params_init writes, the range checks every
 // method shares, and the upgrading of a struct from an older caller. Only

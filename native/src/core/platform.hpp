@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The few operating-system calls fracterra makes, behind one interface (as
 // sqlite keeps os_unix.c and os_win.c apart): files by UTF-8 path, atomic
 // replacement, flushing to disk, temporary files, process ids, spawning a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The memory calls of the platform layer (platform.hpp), apart so that
 // core/buffer.hpp, which nearly every file includes, stays light.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // platform.hpp on Linux (and any POSIX system with glibc's posix_spawn).
 #ifndef _WIN32
 #include <dlfcn.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // platform.hpp on Windows (built with mingw-w64; see docs/windows.md).
 #ifdef _WIN32
 #ifndef NOMINMAX

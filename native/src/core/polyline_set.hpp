@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A set of polylines sharing one vertex array: float64 xyz plus a radius per
 // vertex; line i spans [offsets[i], offsets[i + 1]).
 #pragma once

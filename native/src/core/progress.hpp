@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wraps the optional C progress callback. report() is called between stages
 // of a long computation (never from worker threads), and throws
 // FT_ERR_CANCELLED when the caller asks to stop, so the partly made result is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Counter-based randomness (Random123 Philox4x32-10). A draw is a pure
 // function of (seed, counter): the counter names *where* the number is used
 // (stream, level, row, index), so any thread, tile or order of evaluation

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The AVX-512 path of gaussian_fill and uniform_fill (see rng_paths.hpp):
 // Philox4x32-10 and the polynomial Box-Muller of rng.cpp on 16 blocks at
 // once, written out with intrinsics. Every operation is the one rng.cpp's

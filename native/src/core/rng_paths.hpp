@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The dispatch paths of gaussian_fill and uniform_fill (rng.hpp), internal
 // to core/: rng.cpp holds the baseline and AVX2 paths and picks one at run
 // time; rng_avx512.cpp holds the AVX-512 path. Every path gives the same bits.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A heightfield written the way a game engine's importer takes it (see
 // engine_preset.hpp): resampled to the engine's size, in its format, with a
 // sidecar "<out>.json" holding the numbers for the import dialog.

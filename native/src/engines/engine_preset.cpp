@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "engines/engine_preset.hpp"
 
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What each game engine's terrain importer expects: side lengths, file
 // format and the numbers to type into its import dialog (docs/engines.md).
 //   Unity:  RAW16 little-endian ("byte order Windows"), square, 2^n + 1 samples.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A finished tile set (tiles/) cut again the way a game engine imports a
 // large terrain in pieces, with one sidecar for the whole:
 //   Unity:  tiles of 2^n + 1 samples that share their edge samples, as

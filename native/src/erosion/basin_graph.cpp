@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The basin graph's routing over depressions (see basin_graph.hpp).
 #include "erosion/basin_graph.hpp"
 

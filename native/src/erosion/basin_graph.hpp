@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Routing over depressions without filling them: the basin graph of
 // Cordonnier, Bovy & Braun (2019, "A versatile, linear complexity algorithm
 // for flow routing in topographies with depressions", Earth Surf. Dynam. 7),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The raster seen by the erosion layer: D8 neighbourhoods on a width x height
 // grid of square cells `spacing` world units apart, either bounded (the edge
 // cells are the outlets: water and sediment leave there) or periodic (a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The detail run on a region (see detail_run.hpp).
 #include "erosion/detail_run.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The landscape model's detail run (landscape.cpp) on a region of the
 // terrain's grid, where every sample depends only on the samples within a
 // fixed reach of it: so any window of the result, computed on the window

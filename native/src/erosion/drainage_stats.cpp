@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hack's h and the concavity theta of a terrain (see drainage_stats.hpp).
 #include "erosion/drainage_stats.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Drainage statistics: what real landscapes are measured by.
 //   Hack's law  L ~ A^h: L the main-stream length (the longest flow path
 //               upstream of a cell, to the divide), A its drainage area;

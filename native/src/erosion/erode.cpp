@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The erosion pipeline: validation, fluvial -> hydraulic -> thermal (large
 // scale to small), and the maps (terrain_maps.cpp).
 #include <algorithm>

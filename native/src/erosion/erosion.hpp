@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Erosion: fractal terrains become land. The landscape model (landscape.cpp)
 // runs first: channels, talus and fans in world units and years, solved at a
 // fixed cell size of the terrain's width / kModelCells and refined to the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The table of ft_erosion_params (fracterra/params.h): every field's
 // default, range, unit and labels, for the C ABI's init and range checks,
 // the ctypes binding's Structure and the Blender add-on's properties.

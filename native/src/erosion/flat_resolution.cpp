@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Flats graded by random passage times (see flat_resolution.hpp).
 #include "erosion/flat_resolution.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Drainage across flats for the maps: each flat graded by random passage
 // times from its outlets.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // D8 (or Rho8) receivers, the stack and drainage area (see flow_graph.hpp).
 #include "erosion/flow_graph.hpp"
 

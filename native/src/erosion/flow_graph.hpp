@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Single-flow (D8) routing, in the shape of fastscapelib's flow graph:
 // receivers by steepest descent (or Rho8's randomised descent), the stack
 // order of Braun & Willett (2013), drainage area accumulated down the stack,

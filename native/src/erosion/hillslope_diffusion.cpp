@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hillslope diffusion dz/dt = D laplacian(z), one backward-Euler step split
 // into an implicit sweep along x and one along y (alternating directions):
 // unconditionally stable, each sweep a tridiagonal solve per line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hydraulic erosion on the grid: the virtual-pipe model (Mei, Decaudin & Hu
 // 2007, "Fast Hydraulic Erosion Simulation and Visualization on GPU").
 // Each pass: rain; outflow fluxes through four pipes to the neighbours,

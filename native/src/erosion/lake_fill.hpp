@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sediment settling in a lake. Still water spreads what its rivers bring
 // over the whole lake, so the lake fills as a flat floor from its lowest
 // cell up to its surface. Laid along the flow path instead (each lake cell

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The landscape model: channels, talus and fans in world units and years.
 //
 // Each implicit time step, on a flow graph routed over the surface and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The parts of the landscape model that its run (landscape.cpp) and its
 // coarse-to-fine windows (landscape_window.cpp) share.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The landscape model by windows (see landscape_window.hpp).
 //
 // The model's run reads the terrain through a subgrid, every `step`-th

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The landscape model's coarse-to-fine path, by windows: the model's run on
 // its own grid (global, but small: kModelCells across) from a subgrid of the
 // terrain, then each window of the terrain's own grid from the window grown

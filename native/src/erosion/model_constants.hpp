@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Constants of the landscape model that its run on the model's grid
 // (landscape.cpp) and the detail run (detail_run.cpp) share.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Multiple-flow drainage area (see multiple_flow.hpp).
 #include "erosion/multiple_flow.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Drainage area by multiple flow directions, for the maps artists texture by.
 //
 // Single-flow routing (D8, flow_graph.hpp) is what the eroders and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Erosion presets and the maps folder (see presets.hpp).
 #include "erosion/presets.hpp"
 

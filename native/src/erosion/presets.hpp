@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Named erosion recipes (for `fracterra terrain --erode PRESET` and the
 // add-on), and writing the maps to a folder.
 #pragma once

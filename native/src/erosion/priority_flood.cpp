@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Priority-Flood+epsilon (Barnes, Lehman & Mulla 2014, "Priority-Flood: an
 // optimal depression-filling and watershed-labeling algorithm", Alg. 3):
 // cells are visited from the outlets upwards in order of height; a cell not

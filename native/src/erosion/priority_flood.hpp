@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Priority-Flood driver (Barnes, Lehman & Mulla 2014, "Priority-Flood: an
 // optimal depression-filling and watershed-labeling algorithm", Alg. 1 and
 // 3) shared by fill_depressions (priority_flood.cpp) and hydrology's

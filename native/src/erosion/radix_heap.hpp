@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A monotone priority queue of cells by height (Ahuja, Mehlhorn, Orlin &
 // Tarjan 1990, "Faster algorithms for the shortest path problem"): keys
 // taken out never decrease, as in a Priority-Flood, which visits cells from

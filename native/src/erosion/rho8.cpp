@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rho8's random numbers and the maps' flats' (see draw_rho8 and
 // draw_cell_uniforms in flow_graph.hpp).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The sea (see sea.hpp): a flood from the map's edge through the cells at or
 // below its level.
 #include "erosion/sea.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The sea, for erosion and for the rivers (hydrology/ uses these). Erosion
 // takes every cell at or below the sea's level as a base level like the
 // map's edge (erode.cpp): rivers end there, the sediment that reaches it is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fluvial erosion by the stream-power law dz/dt = U - K A^m S, solved
 // implicitly along the stack (Braun & Willett 2013, eq. 8 with n = 1):
 //   z_i' = (z_i + F z_r') / (1 + F),  F = K dt A_i^m / L_i,

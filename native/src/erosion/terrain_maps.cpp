@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The maps of an eroded terrain: drainage area by multiple flow over the
 // filled surface (its flats graded, flat_resolution.hpp), slope and
 // curvature by central differences on the D8 grid, and the depths eroded

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Thermal erosion (Musgrave, Kolb & Mace 1989): where the drop to a
 // neighbour exceeds the talus slope, material slides down. Each pass every
 // cell works out, from the previous heights, how much it sends: `rate` x

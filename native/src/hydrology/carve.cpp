@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Carving: each river segment (between two vertices) is a capsule of its
 // half width; every cell within it is lowered to the water surface minus
 // the depth x cos^2(pi r / 2), r = distance / half width: the full depth on

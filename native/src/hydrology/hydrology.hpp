@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hydrology: the water of a terrain as objects. Above erosion/ (whose flow
 // graph, Priority-Flood and sea it reuses) and polyline/ (Nikulin's FPL for
 // meanders):

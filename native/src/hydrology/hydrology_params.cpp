@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "hydrology/hydrology_params.hpp"
 
 #include "erosion/erosion_params.hpp"
@@ -96,9 +97,9 @@ constexpr ft_param_info kRows[] = {
     since(kAbi215, progress_user_row<ft_hydrology_params>()),
     {ROW(min_depth, FT_PARAM_DOUBLE), .since = kAbi227, .element_kind = -1, .default_value = 0, .hard_min = 0,
      .hard_max = kBig, .soft_min = 0, .soft_max = 1, .unit = "world units", .label = "Min Water Depth",
-     .doc = "Water shallower than this is not shown: a lake is where its level covers the ground by more, "
-            "its shoreline where the ground lies this far under the level, so no water lies flush with the "
-            "ground; 0: 1% of the terrain's relief",
+     .doc = "Water shallower than this is not shown, so none lies flush with the ground: a hollow no deeper "
+            "is no lake, and a lake's shoreline runs where the ground lies this far under its level; 0: 1% of "
+            "the terrain's relief",
      .methods = kAll},
 };
 FT_PARAM_TABLE_END

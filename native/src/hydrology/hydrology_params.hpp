@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The table of ft_hydrology_params (fracterra/params.h): every field's
 // default, range, unit and label, for the C ABI's init and range checks,
 // the CLI's flags of `fracterra rivers`, the ctypes Structure and the add-on.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lake shorelines: marching squares (contour/) at the lake's level less the
 // minimum depth over the lake's cells and their neighbours, so the line runs
 // where the water becomes that deep, between samples (at the level itself a

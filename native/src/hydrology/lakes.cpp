@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lakes: every depression filled to its spill level by Priority-Flood from
 // the base levels (Barnes, Lehman & Mulla 2014, Algorithm 1 for the levels
 // and Algorithm 3's epsilon steps for a surface that drains), then labelled.

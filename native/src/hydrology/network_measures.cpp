@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Network measures (see network_measures.hpp).
 #include "hydrology/network_measures.hpp"
 

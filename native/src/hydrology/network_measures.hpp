@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Measures of a river network for `fracterra analyze` and `rivers --stats`:
 // Horton's ratios (analysis/horton), total length, drainage density and
 // Hack's h.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // River networks and lakes as files (see river_files.hpp).
 #include "hydrology/river_files.hpp"
 

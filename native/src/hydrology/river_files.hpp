@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // River networks as files:
 //   .csv      the polyline format (io/polyline_io) with the header
 //             "# x,y,z,radius,discharge,width,depth,area,segment,order": one

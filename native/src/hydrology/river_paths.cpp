@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A river's vertices from its cells: the 8-direction staircase smoothed
 // away, meanders by Nikulin's FPL (polyline/fpl) between vertices, and every
 // vertex kept in its valley. The surface T is the filled terrain (lakes flat

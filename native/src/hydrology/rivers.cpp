@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rivers: single-flow receivers over the lakes' graded surface (steepest
 // descent, erosion/flow_graph), drainage area down the stack, channel cells
 // where the area passes min_area, segments between channel heads,

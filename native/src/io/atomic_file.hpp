@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Files are never written in place: the content goes to a temporary file in
 // the destination's folder and is renamed over the destination only once it
 // is complete and flushed, so a failed or interrupted write leaves the old

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/exr.hpp"
 
 #include <OpenEXR/ImfChannelList.h>

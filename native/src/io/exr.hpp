@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Heightfields as OpenEXR (Debian libopenexr-dev, the reference library of
 // the format): one FLOAT channel "Y", ZIP compression (lossless), so the
 // round trip is exact to the bit. The world size rides in the header as the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stands in for exr.cpp in a build without OpenEXR (FT_WITH_OPENEXR=OFF: the
 // Windows build): each call refuses with the library's name and the formats
 // this build has.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GDAL's C API, bound at run time to the system's GDAL that
 // core/gdal_library.hpp opens: every call into GDAL goes through gdal().
 #pragma once

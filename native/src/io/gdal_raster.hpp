@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rasters through GDAL: any raster GDAL reads (GeoTIFF, SRTM .hgt, ESRI
 // ASCII grid, VRT, ...) as a heightfield, and heightfields written as
 // Cloud-Optimized GeoTIFF. Band 1 is read as float32; the geotransform and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading any GDAL raster as a heightfield (see gdal_raster.hpp).
 
 #include <cmath>

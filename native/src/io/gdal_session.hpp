@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every call into GDAL runs inside a GdalSession: GDAL's drivers are
 // registered once, and GDAL's errors go to a handler of ours for the time of
 // the call (pushed on this thread only, so a host application's own GDAL

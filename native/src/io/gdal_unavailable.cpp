@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stands in for gdal_reader.cpp, gdal_writer.cpp and vector_writer.cpp in a
 // build without GDAL (FT_WITH_GDAL=OFF: the Windows build): each refuses
 // with the library's name and the formats this build has.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Heightfields as Cloud-Optimized GeoTIFF (see gdal_raster.hpp). GDAL's COG
 // driver writes into /vsimem/ and the finished bytes go to disk through
 // write_file_atomically, so a failure never leaves a partial file.

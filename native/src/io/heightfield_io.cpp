@@ -1,10 +1,15 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/heightfield_io.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "core/platform.hpp"
 #include "io/atomic_file.hpp"
 #include "io/exr.hpp"
 #include "io/npy.hpp"
@@ -19,6 +24,45 @@ Heightfield from_npy(const NpyArray& a, const std::string& name) {
     fail(FT_ERR_FORMAT, "'" + name + "' must hold a 2D array for a heightfield");
   Heightfield hf(int32_t(a.shape[1]), int32_t(a.shape[0]));
   std::memcpy(hf.data(), a.values.data(), hf.size() * sizeof(float));
+  return hf;
+}
+
+// A .npy holds the array alone: its world size goes in "<file>.npy.json" beside it (as RAW16's
+// sidecar), written with every .npy heightfield so that no stale one is left from an earlier write.
+std::string npy_sidecar_path(const std::string& path) { return path + ".json"; }
+
+void write_npy_heightfield(const Heightfield& hf, const std::string& path) {
+  nlohmann::json j = {{"format", "npy"}, {"width", hf.width()}, {"height", hf.height()}};
+  if (hf.world_size() > 0) j["world_size"] = hf.world_size();
+  AtomicFile npy(path);  // fails early (before the sidecar) on a bad folder
+  npy.write(npy_header({hf.height(), hf.width()}));
+  npy.write(std::string_view(reinterpret_cast<const char*>(hf.data()), hf.size() * sizeof(float)));
+  write_file_atomically(npy_sidecar_path(path), j.dump(2) + "\n");
+  npy.commit();
+}
+
+Heightfield read_npy_heightfield(const std::string& path) {
+  Heightfield hf = from_npy(read_npy(path), path);
+  const std::string side = npy_sidecar_path(path);
+  std::error_code ec;
+  if (!std::filesystem::exists(platform::fs_path(side), ec)) return hf;
+  const nlohmann::json j = nlohmann::json::parse(read_file(side), nullptr, false);
+  if (j.is_discarded() || !j.is_object())
+    fail(FT_ERR_FORMAT, "the sidecar '" + side + "' is not a JSON object");
+  // A sidecar of another array (the .npy replaced by another program) must not lend it its world.
+  for (const char* key : {"width", "height"})
+    if (j.contains(key) && !(j[key].is_number_integer() &&
+                             j[key].get<int64_t>() == (key[0] == 'w' ? hf.width() : hf.height())))
+      fail(FT_ERR_FORMAT, "the sidecar '" + side + "' describes a " + j.value("width", nlohmann::json()).dump() +
+                              " x " + j.value("height", nlohmann::json()).dump() + " array, '" + path + "' holds " +
+                              std::to_string(hf.width()) + " x " + std::to_string(hf.height()));
+  if (j.contains("world_size")) {
+    const double v = j["world_size"].is_number() ? j["world_size"].get<double>() : NAN;
+    if (!(std::isfinite(v) && v > 0))
+      fail(FT_ERR_FORMAT, "the sidecar '" + side + "' has world_size " + j["world_size"].dump() +
+                              " (a positive number is needed)");
+    hf.set_world_size(v);
+  }
   return hf;
 }
 
@@ -83,7 +127,7 @@ void write_heightfield(const Heightfield& hf, const std::string& path) {
   }
   if (ext == ".png") write_png(path, heightfield_to_image(hf));
   else if (ext == ".pgm") write_pgm(path, heightfield_to_image(hf));
-  else if (ext == ".npy") write_npy(path, {hf.height(), hf.width()}, hf.data());
+  else if (ext == ".npy") write_npy_heightfield(hf, path);
   else if (ext == ".tif" || ext == ".tiff") write_cog(hf, path);
   else if (ext == ".exr") write_exr(hf, path);
   else if (is_raw16(ext)) write_raw16(hf, path);
@@ -103,7 +147,7 @@ Heightfield read_heightfield(const std::string& path, NodataPolicy nodata) {
   const std::string ext = extension_of(path);
   if (ext == ".png") return image_to_heightfield(read_png(path));
   if (ext == ".pgm") return image_to_heightfield(read_pgm(path));
-  if (ext == ".npy") return from_npy(read_npy(path), path);
+  if (ext == ".npy") return read_npy_heightfield(path);
   if (ext == ".exr") return read_exr(path);
   if (is_raw16(ext)) return read_raw16(path);
   return read_gdal(path, nodata);

@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Heightfields to and from files, chosen by extension:
 //   .png  16-bit grayscale, normalised to 0..65535, real min/max in tEXt
 //         ("fracterra:min", "fracterra:max");
 //   .pgm  16-bit P5, range in a comment;
-//   .npy  float32, exact;
+//   .npy  float32, exact; its world size in a sidecar "<file>.npy.json" (read back when present);
 //   .tif / .tiff  Cloud-Optimized GeoTIFF float32, exact, georeferenced
 //         when the heightfield is (gdal_raster.hpp);
 //   .exr  OpenEXR float, exact (exr.hpp);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/npy.hpp"
 
 #include <algorithm>
@@ -122,13 +123,9 @@ NpyArray decode_npy(const std::string& bytes, const std::string& name) {
 
 NpyArray read_npy(const std::string& path) { return decode_npy(read_file(path), path); }
 
-void write_npy(const std::string& path, const std::vector<int64_t>& shape, const float* values) {
+std::string npy_header(const std::vector<int64_t>& shape) {
   std::string dims;
-  size_t count = 1;
-  for (int64_t d : shape) {
-    dims += std::to_string(d) + ", ";
-    count *= size_t(d);
-  }
+  for (int64_t d : shape) dims += std::to_string(d) + ", ";
   if (shape.size() == 2) dims.resize(dims.size() - 2);  // (h, w) but (n,) for 1D
   std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (" + dims + "), }";
   // Pad so the data starts on a 64-byte boundary, as NumPy does.
@@ -140,11 +137,16 @@ void write_npy(const std::string& path, const std::vector<int64_t>& shape, const
   out.push_back('\x00');
   out.push_back(char(header.size() & 0xff));
   out.push_back(char(header.size() >> 8));
-  out += header;
+  return out + header;
+}
+
+void write_npy(const std::string& path, const std::vector<int64_t>& shape, const float* values) {
+  size_t count = 1;
+  for (int64_t d : shape) count *= size_t(d);
   // The samples go straight from the caller's array: no second copy of a
   // possibly multi-GiB array in memory.
   AtomicFile file(path);
-  file.write(out);
+  file.write(npy_header(shape));
   file.write(std::string_view(reinterpret_cast<const char*>(values), count * sizeof(float)));
   file.commit();
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/obj_io.hpp"
 
 #define TINYOBJLOADER_IMPLEMENTATION  // the Debian package's single-header build

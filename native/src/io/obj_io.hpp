@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wavefront OBJ meshes. Reading screens the text (v, f and t lines checked
 // and rewritten in canonical form, see obj_io.cpp), then goes through
 // Debian's tinyobjloader: every shape of the file is merged into one mesh of

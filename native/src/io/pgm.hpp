@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Netpbm graymaps: binary P5 (8- or 16-bit) and plain P2. fracterra records
 // the real height range in a "# fracterra-range MIN MAX" comment line.
 #pragma once

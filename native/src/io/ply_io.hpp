@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stanford PLY meshes, written binary little-endian (float xyz per vertex,
 // a uchar count and int32 indices per face), through io/atomic_file. Read by
 // Blender, MeshLab, CloudCompare and POV-Ray converters alike.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Grayscale PNG through libpng: 8- or 16-bit, with tEXt key/value pairs
 // (fracterra records the real height range there).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/polyline_io.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Polyline sets as text:
 //   .csv   one vertex per line "x,y,z[,radius]" (or "x,y"), a blank line
 //          between polylines, '#' comment lines allowed; written with 17

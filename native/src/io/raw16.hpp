@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Heightfields as RAW16 for game engines (Unity's "RAW 16-bit, byte order
 // Windows", Unreal's .r16): unsigned 16-bit little-endian samples, row by row
 // from the first row (the top of a PNG) with no header, normalised so that

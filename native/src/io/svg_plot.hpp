@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small SVG charts for reports (the study and analysis plots): one or more
 // panels in a grid, each with axes, ticks, optional log scales, series drawn
 // as lines and/or points, and a legend. Also draws polyline sets (x, y) for

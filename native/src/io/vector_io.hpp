@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Vector data (GeoJSON, GeoPackage) through GDAL's OGR: layers of features,
 // each a LineString or a Polygon (outer ring, then holes) with numeric
 // properties. Coordinates come in world units (x = column x spacing,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // GeoJSON and GeoPackage through OGR (see vector_io.hpp): features built
 // with OGR's geometry API, never hand-written JSON.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Flat-array descriptions of a regular quad grid (positions, topology, UVs)
 // for hosts that fill meshes in bulk. The index layout is documented in
 // fracterra/mesh.h; every function checks its buffer sizes first.

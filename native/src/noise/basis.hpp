@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The noise bases of fbm (value, gradient, simplex, cellular F1 and F2 - F1),
 // one sample at a time, written so that a loop over samples vectorises:
 // no tables (gathers), no branches (selects only), float math, integer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The noise bases of fbm in three dimensions (value, gradient, simplex,
 // cellular F1 and F2 - F1), for fields on a sphere: a function of the 3D
 // point has neither seams nor poles. Same habits as basis.hpp (no tables,

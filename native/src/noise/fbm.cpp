@@ -1,31 +1,25 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "noise/fbm.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/error.hpp"
 #include "core/parallel_rows.hpp"
 #include "core/rng.hpp"
 #include "noise/basis.hpp"
+#include "noise/basis_simd.hpp"
+#include "noise/octave.hpp"
 #include "noise/octave_sum.hpp"
 
 namespace ft::noise {
 namespace {
 
 using namespace detail;
-
-// One octave: the affine map from normalised (u, v) to lattice coordinates,
-// its hash key and, when periodic, its lattice period.
-struct Octave {
-  float a11 = 1, a12 = 0, a21 = 0, a22 = 1, ox = 0, oy = 0;
-  float amp = 1;
-  uint32_t key = 0;
-  int32_t px = 1, py = 1;    // periods in cells (periodic only)
-  float ipx = 1, ipy = 1;    // 1 / period
-};
 
 struct Plan {
   std::vector<Octave> octaves;
@@ -116,9 +110,29 @@ Plan make_plan(const FbmConfig& c) {
 
 constexpr int kChunk = 256;  // samples per chunk: 5 arrays of 1 KiB stay in L1
 
-// noise(M (u, v) + o) for n samples into out[]: the one noise call of the octave loop.
-template <int kBasis, bool kPeriodic>
-FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v, float* out) {
+// The instruction set a copy of the octave loop is compiled for (the
+// dispatch wrappers below): the explicit-vector rows of basis_simd.hpp are
+// called only from their own set's copy.
+enum Isa { kIsaBaseline, kIsaAvx2, kIsaAvx512 };
+
+// Whether a copy has basis_simd.hpp's rows (value, gradient, simplex; not periodic).
+template <int kIsa, bool kPeriodic>
+constexpr bool kSimdRows = kIsa != kIsaBaseline && !kPeriodic;
+template <int kIsa>
+FT_INLINE void simd_noise_row(int basis, const Octave& o, int n, const float* u, const float* v, bool v_const,
+                              int mode, float amp, float* out) {
+  if constexpr (kIsa == kIsaAvx512)
+    simd_avx512::noise_row(basis, o, n, u, v, v_const, mode, amp, out);
+  else
+    simd_avx2::noise_row(basis, o, n, u, v, v_const, mode, amp, out);
+}
+
+// noise(M (u, v) + o) for n samples into out[]: the one noise call of the
+// octave loop. v_const: every v[i] is v[0] (no warp before this octave).
+template <int kIsa, int kBasis, bool kPeriodic>
+FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v, bool v_const, float* out) {
+  if constexpr (kSimdRows<kIsa, kPeriodic> && kBasis <= kBasisSimplex)
+    return simd_noise_row<kIsa>(kBasis, o, n, u, v, v_const, kStore, 1.0f, out);
   const float a11 = o.a11, a12 = o.a12, a21 = o.a21, a22 = o.a22, ox = o.ox, oy = o.oy;
   const uint32_t key = o.key;
   const int32_t px = o.px, py = o.py;
@@ -150,52 +164,63 @@ FT_INLINE void basis_row(const Octave& o, int n, const float* u, const float* v,
   }
 }
 
-template <bool kPeriodic>
-FT_INLINE void noise_row(int basis, const Octave& o, int n, const float* u, const float* v, float* out) {
+template <int kIsa, bool kPeriodic>
+FT_INLINE void noise_row(int basis, const Octave& o, int n, const float* u, const float* v, bool v_const,
+                         float* out) {
   switch (basis) {
-    case kBasisValue: return basis_row<kBasisValue, kPeriodic>(o, n, u, v, out);
-    case kBasisGradient: return basis_row<kBasisGradient, kPeriodic>(o, n, u, v, out);
-    case kBasisSimplex: return basis_row<kBasisSimplex, kPeriodic>(o, n, u, v, out);
-    case kBasisCellularF1: return basis_row<kBasisCellularF1, kPeriodic>(o, n, u, v, out);
-    default: return basis_row<kBasisCellularF2F1, kPeriodic>(o, n, u, v, out);
+    case kBasisValue: return basis_row<kIsa, kBasisValue, kPeriodic>(o, n, u, v, v_const, out);
+    case kBasisGradient: return basis_row<kIsa, kBasisGradient, kPeriodic>(o, n, u, v, v_const, out);
+    case kBasisSimplex: return basis_row<kIsa, kBasisSimplex, kPeriodic>(o, n, u, v, v_const, out);
+    case kBasisCellularF1: return basis_row<kIsa, kBasisCellularF1, kPeriodic>(o, n, u, v, v_const, out);
+    default: return basis_row<kIsa, kBasisCellularF2F1, kPeriodic>(o, n, u, v, v_const, out);
   }
 }
 
 // The octave loop, the same for every variant: one noise call per octave,
 // then the variant's way of adding it in (Musgrave's formulations, with
 // a_i = gain^i in place of f_i^-H).
-template <bool kPeriodic>
+template <int kIsa, bool kPeriodic>
 FT_INLINE void octave_loop(const std::vector<Octave>& octs, int basis, int variant, float offset, int n,
-                           const float* u, const float* v, float* sum) {
+                           const float* u, const float* v, bool v_const, float* sum) {
+  if constexpr (kSimdRows<kIsa, kPeriodic>) {
+    if (variant == kFbmStandard && basis <= kBasisSimplex) {  // the octave sum fused into the rows
+      for (size_t k = 0; k < octs.size(); ++k)
+        simd_noise_row<kIsa>(basis, octs[k], n, u, v, v_const, k == 0 ? kFirst : kAdd,
+                             octs[k].amp, sum);
+      return;
+    }
+  }
   float noise[kChunk], weight[kChunk];
   for (size_t k = 0; k < octs.size(); ++k) {
     const Octave& o = octs[k];
-    noise_row<kPeriodic>(basis, o, n, u, v, noise);
+    noise_row<kIsa, kPeriodic>(basis, o, n, u, v, v_const, noise);
     const float a = o.amp;
     const bool first = k == 0;
     add_octave(variant, first, a, offset, n, noise, weight, sum);
   }
 }
 
-template <bool kPeriodic>
+template <int kIsa, bool kPeriodic>
 FT_INLINE void chunk_body(const Plan& p, int n, float* u, float* v, float* out) {
-  if (!p.warp_x.empty()) {
+  const bool warped = !p.warp_x.empty();
+  if (warped) {
     // The warp pass: displace the coordinates, then run the octaves on them.
     float wx[kChunk], wy[kChunk];
-    octave_loop<kPeriodic>(p.warp_x, kBasisGradient, kFbmStandard, 0.0f, n, u, v, wx);
-    octave_loop<kPeriodic>(p.warp_y, kBasisGradient, kFbmStandard, 0.0f, n, u, v, wy);
+    octave_loop<kIsa, kPeriodic>(p.warp_x, kBasisGradient, kFbmStandard, 0.0f, n, u, v, true, wx);
+    octave_loop<kIsa, kPeriodic>(p.warp_y, kBasisGradient, kFbmStandard, 0.0f, n, u, v, true, wy);
     for (int i = 0; i < n; ++i) {
       u[i] = u[i] + p.warp_u * wx[i];
       v[i] = v[i] + p.warp_v * wy[i];
     }
   }
-  octave_loop<kPeriodic>(p.octaves, p.basis, p.variant, p.offset, n, u, v, out);
+  octave_loop<kIsa, kPeriodic>(p.octaves, p.basis, p.variant, p.offset, n, u, v, !warped, out);
   for (int i = 0; i < n; ++i) out[i] = out[i] * p.scale;
 }
 
 // Samples [xb, xb + count) of row y of a width x height terrain: normalised
 // coordinates (from the global index alone, so a window gets the bits of the
 // whole), then the octaves.
+template <int kIsa>
 FT_INLINE void row_body(const Plan& p, int64_t width, int64_t height, int64_t y, int64_t xb, int32_t count,
                         float* row) {
   alignas(32) float u[kChunk], v[kChunk];
@@ -208,29 +233,40 @@ FT_INLINE void row_body(const Plan& p, int64_t width, int64_t height, int64_t y,
       v[i] = vy;
     }
     if (p.periodic)
-      chunk_body<true>(p, n, u, v, row + x0);
+      chunk_body<kIsa, true>(p, n, u, v, row + x0);
     else
-      chunk_body<false>(p, n, u, v, row + x0);
+      chunk_body<kIsa, false>(p, n, u, v, row + x0);
   }
 }
 #undef FT_INLINE
 
-// Runtime dispatch: the same source compiled twice. Hand-rolled rather than
-// target_clones so a test can force the baseline path and compare bits.
+// Runtime dispatch: the same source compiled three times (AVX-512 with
+// 512-bit vectors, AVX2, the x86-64 baseline). Hand-rolled rather than
+// target_clones so a test can force a path and compare bits.
+[[gnu::flatten]] __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,prefer-vector-width=512"))) void
+row_avx512(const Plan& p, int64_t w, int64_t h, int64_t y, int64_t xb, int32_t n, float* row) {
+  row_body<kIsaAvx512>(p, w, h, y, xb, n, row);
+}
 [[gnu::flatten]] __attribute__((target("avx2"))) void row_avx2(const Plan& p, int64_t w, int64_t h, int64_t y,
                                                                int64_t xb, int32_t n, float* row) {
-  row_body(p, w, h, y, xb, n, row);
+  row_body<kIsaAvx2>(p, w, h, y, xb, n, row);
 }
 [[gnu::flatten]] void row_baseline(const Plan& p, int64_t w, int64_t h, int64_t y, int64_t xb, int32_t n,
                                    float* row) {
-  row_body(p, w, h, y, xb, n, row);
+  row_body<kIsaBaseline>(p, w, h, y, xb, n, row);
 }
 
 std::atomic<SimdPath> g_path{SimdPath::kAuto};
 
 using RowFn = void (*)(const Plan&, int64_t, int64_t, int64_t, int64_t, int32_t, float*);
+// The fastest path the CPU has (and FT_DISPATCH allows: ft::detail::dispatch_path),
+// capped by set_simd_path.
 RowFn pick_row_fn() {
-  if (g_path.load() == SimdPath::kAuto && __builtin_cpu_supports("avx2")) return row_avx2;
+  const SimdPath cap = g_path.load();
+  if (cap == SimdPath::kBaseline) return row_baseline;
+  const std::string_view best = ft::detail::dispatch_path();
+  if (best == "avx512" && cap == SimdPath::kAuto) return row_avx512;
+  if (best != "baseline") return row_avx2;
   return row_baseline;
 }
 
@@ -314,7 +350,10 @@ Heightfield fbm_window(const FbmConfig& c, int64_t x0, int64_t y0, int32_t w, in
 
 namespace detail {
 void set_simd_path(SimdPath path) { g_path.store(path); }
-const char* active_simd_path() { return pick_row_fn() == row_avx2 ? "avx2" : "baseline"; }
+const char* active_simd_path() {
+  const RowFn f = pick_row_fn();
+  return f == row_avx512 ? "avx512" : f == row_avx2 ? "avx2" : "baseline";
+}
 }  // namespace detail
 
 }  // namespace ft::noise

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fBm octave noise (Quilez, seed 004) in the FastNoiseLite style: one config,
 // one dispatcher; every fractal variant is the same octave loop around one
 // noise call, and domain warping is a separate pass over the coordinates.
@@ -86,12 +87,13 @@ Heightfield fbm(const FbmConfig& c);
 Heightfield fbm_window(const FbmConfig& c, int64_t x0, int64_t y0, int32_t w, int32_t h);
 
 namespace detail {
-// Which compiled path runs the octave loop: kAuto picks AVX2 when the CPU has
-// it. kBaseline forces the x86-64 baseline build (a test hook: both paths
-// must give identical bits).
-enum class SimdPath { kAuto, kBaseline };
+// Which compiled path runs the octave loop: kAuto picks the widest the CPU
+// has (AVX-512, AVX2, the x86-64 baseline; FT_DISPATCH=avx2 or baseline caps
+// it); kAvx2 caps it at AVX2, kBaseline forces the baseline build (test
+// hooks: every path must give identical bits).
+enum class SimdPath { kAuto, kAvx2, kBaseline };
 void set_simd_path(SimdPath path);
-// "avx2" or "baseline": the path the next fbm call will take.
+// "avx512", "avx2" or "baseline": the path the next fbm call will take.
 const char* active_simd_path();
 }  // namespace detail
 

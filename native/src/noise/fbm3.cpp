@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "noise/fbm3.hpp"
 
 #include <algorithm>
@@ -163,7 +164,7 @@ SphereFbm::SphereFbm(const Fbm3Config& c) : basis_(c.basis), variant_(c.variant)
 }
 
 void SphereFbm::evaluate(int64_t n, const double* x, const double* y, const double* z, float* out) const {
-  if (std::strcmp(detail::active_simd_path(), "avx2") == 0)
+  if (std::strcmp(detail::active_simd_path(), "baseline") != 0)  // AVX2 where AVX-512 is, too
     evaluate_avx2(*this, n, x, y, z, out);
   else
     evaluate_baseline(*this, n, x, y, z, out);

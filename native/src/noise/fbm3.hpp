@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fBm on the unit sphere: the octave loop of fbm.hpp around the 3D bases of
 // basis3.hpp, evaluated at unit vectors given in double precision.
 //

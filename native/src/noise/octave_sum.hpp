@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How an octave's noise is added into the running sum, the same for every
 // fbm (flat and spherical): one noise call per octave, then the variant's
 // way of adding it in (Musgrave's formulations, with a_i = gain^i in place

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The table of ft_build_params (fracterra/params.h): the pipeline's own
 // settings, for ft_build_params_init, the range checks, `fracterra params`,
 // the CLI's flags and the ctypes Structure.

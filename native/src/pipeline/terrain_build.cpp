@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/terrain_build.hpp"
 
 #include <algorithm>
@@ -79,6 +80,36 @@ Heightfield untorus(const Heightfield& t, int overlap, double world_size) {
   return hf;
 }
 
+// The erode stage's settings for a terrain of `world` (null: the erosion's own periodic and sea
+// fields): one rule for every front end, a terrain that tiles erodes as a torus, and the
+// landform's sea is erosion's base level (rivers end in it and its floor stays flat; before, the
+// rivers' sediment built it up into sand flats and specks).
+ft_erosion_params stage_erosion(const ft_build_params& p, const Heightfield& hf, const ft_terrain_world* world);
+
+// A world as the C ABI takes it: checked, or refused with what is allowed.
+void check_world(const ft_terrain_world* world, const Heightfield& hf) {
+  if (!world) return;
+  if (world->struct_size < sizeof(ft_terrain_world))
+    invalid("ft_terrain_world.struct_size is " + std::to_string(world->struct_size) + "; set it with ft_terrain_world_init");
+  if (world->period_overlap < -1 || world->period_overlap > 1)
+    invalid("ft_terrain_world.period_overlap must be -1 (does not tile), 0 or 1, got " +
+            std::to_string(world->period_overlap));
+  if (world->period_overlap > 0 && (hf.width() < 3 || hf.height() < 3))
+    invalid("a terrain whose last row and column repeat the first needs at least 3 x 3 samples");
+  if (std::isinf(world->sea_level)) invalid("ft_terrain_world.sea_level must be finite, or NaN for no sea");
+}
+
+// A made terrain as the stages take it: `hf` itself, or (a world size of 0: a file that records
+// none) a copy of it in a world of 10 units, held in `copy`.
+const Heightfield& with_world_size(const Heightfield& hf, Heightfield& copy) {
+  if (hf.world_size() > 0) return hf;
+  copy = Heightfield(hf.width(), hf.height());
+  std::memcpy(copy.data(), hf.data(), sizeof(float) * hf.size());
+  copy.set_georef(hf.georef());
+  copy.set_world_size(10.0);
+  return copy;
+}
+
 }  // namespace
 
 ft_erosion_params erosion_settings(const ft_erosion_params* given, const std::string& preset,
@@ -88,6 +119,18 @@ ft_erosion_params erosion_settings(const ft_erosion_params* given, const std::st
   if (preset.empty()) return e;
   return apply_preset(e, erosion::to_c(erosion::erosion_preset(preset, terrain)));
 }
+
+namespace {
+ft_erosion_params stage_erosion(const ft_build_params& p, const Heightfield& hf, const ft_terrain_world* world) {
+  ft_erosion_params e = erosion_settings(p.erosion, erosion_preset_name(p.erosion_preset), hf);
+  if (world) {
+    e.periodic = world->period_overlap >= 0;
+    if (!std::isnan(world->sea_level)) e.sea = FT_WATER_SEA_HEIGHT, e.sea_level = world->sea_level;
+  }
+  e.threads = p.threads;
+  return e;
+}
+}  // namespace
 
 Heightfield erode_terrain(const Heightfield& hf, const ft_erosion_params& e, int overlap, erosion::ErosionMaps* maps,
                           erosion::MassBudget* budget) {
@@ -118,7 +161,8 @@ hydrology::HydrologyConfig build_rivers_config(const ft_build_params& p, const f
   return c;
 }
 
-Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* maps, hydrology::RiverNetwork* rivers) {
+Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* maps, hydrology::RiverNetwork* rivers,
+                          ft_terrain_world* world_out) {
   const ft_build_params p = upgraded(build_param_table(), given);
   check_ranges(build_param_table(), &p);
   check_not_null("terrain", p.terrain);
@@ -146,18 +190,11 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
   // Where the landform flattened its sea (a fraction: at the lowest height).
   const double sea_z = t.sea == FT_SEA_HEIGHT ? t.sea_level : t.sea == FT_SEA_FRACTION ? hf.stats().min : 0.0;
   const int overlap = terrain::tiles_periodically(t) ? terrain::terrain_method(t.method).period_overlap : 0;
+  ft_terrain_world world{sizeof(ft_terrain_world), terrain::tiles_periodically(t) ? overlap : -1,
+                         t.sea != FT_SEA_NONE ? sea_z : NAN};
+  if (world_out) *world_out = world;
   if (erode) {
-    ft_erosion_params e = erosion_settings(p.erosion, erosion_preset_name(p.erosion_preset), hf);
-    // One rule for every front end: a terrain that tiles erodes as a torus.
-    e.periodic = terrain::tiles_periodically(t);
-    e.threads = p.threads;
-    if (t.sea != FT_SEA_NONE) {
-      // The landform's sea is erosion's base level: rivers end in it and its
-      // floor stays flat (before, the rivers' sediment built it up into sand
-      // flats and specks, and the rivers' sea had to be lifted to find it).
-      e.sea = FT_WATER_SEA_HEIGHT;
-      e.sea_level = sea_z;
-    }
+    ft_erosion_params e = stage_erosion(p, hf, &world);
     Span erosion_span = span(kErosionWeight);
     e.progress = &Span::call, e.progress_user = &erosion_span;
     hf = erode_terrain(hf, e, e.periodic ? overlap : 0, maps);
@@ -186,6 +223,44 @@ Heightfield build_terrain(const ft_build_params& given, erosion::ErosionMaps* ma
     }
   }
   return hf;
+}
+
+Heightfield erode_made(const ft_build_params& given, const Heightfield& made, const ft_terrain_world* world,
+                       erosion::ErosionMaps* maps) {
+  const ft_build_params p = upgraded(build_param_table(), given);
+  check_ranges(build_param_table(), &p);
+  check_world(world, made);
+  Heightfield copy;
+  const Heightfield& hf = with_world_size(made, copy);
+  ft_erosion_params e = stage_erosion(p, hf, world);
+  e.progress = p.progress, e.progress_user = p.progress_user;
+  return erode_terrain(hf, e, world && e.periodic ? std::max(0, world->period_overlap) : 0, maps);
+}
+
+hydrology::RiverNetwork rivers_made(const ft_build_params& given, const Heightfield& made,
+                                    const ft_terrain_world* world) {
+  const ft_build_params p = upgraded(build_param_table(), given);
+  check_ranges(build_param_table(), &p);
+  check_world(world, made);
+  Heightfield copy;
+  const Heightfield& hf = with_world_size(made, copy);
+  ft_hydrology_params h = p.rivers ? *p.rivers : defaults_of<ft_hydrology_params>(hydrology::hydrology_param_table());
+  h.progress = nullptr, h.progress_user = nullptr;
+  hydrology::HydrologyConfig c = hydrology::from_c(h);
+  c.threads = p.threads;
+  c.progress = Progress(p.progress, p.progress_user);
+  int overlap = 0;
+  if (world) {
+    // build_terrain's rules: the torus it was eroded on, its own sea as a height.
+    c.periodic = world->period_overlap >= 0;
+    overlap = std::max(0, world->period_overlap);
+    if (!std::isnan(world->sea_level)) {
+      const HeightStats st = hf.stats();
+      c.sea = hydrology::Sea::kHeight;
+      c.sea_level = std::clamp(world->sea_level, double(st.min), double(st.max));
+    }
+  }
+  return overlap == 0 ? hydrology::extract_rivers(hf, c) : hydrology::extract_rivers(torus_of(hf, overlap), c);
 }
 
 namespace {

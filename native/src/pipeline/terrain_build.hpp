@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The terrain pipeline: generate -> landform -> erode -> maps -> rivers, one
 // call with one progress callback (fracterra/pipeline.h). The CLI and the C
 // ABI (so the Blender add-on) both come through here, so the stages are put
@@ -20,8 +21,19 @@ namespace ft::pipeline {
 // one without erosion). `rivers` may be null; when not, it receives the
 // rivers, lakes and sea of the result (p.rivers' settings, or the defaults,
 // under build_rivers_config's rules). Throws ft::Error naming what is wrong.
+// `world` may be null; when not, it receives the built terrain's world (ft_terrain_world:
+// whether it tiles, its own sea), what erode_made and rivers_made continue from.
 Heightfield build_terrain(const ft_build_params& p, erosion::ErosionMaps* maps,
-                          hydrology::RiverNetwork* rivers = nullptr);
+                          hydrology::RiverNetwork* rivers = nullptr, ft_terrain_world* world = nullptr);
+
+// The erode stage of build_terrain on a terrain already made (ft_terrain_erode): p.erosion and
+// p.erosion_preset fitted to `hf`, p's threads and progress; `world` (null: the erosion's own
+// periodic and sea fields) as build_terrain_world reported it. A world size of 0 is taken as 10.
+Heightfield erode_made(const ft_build_params& p, const Heightfield& hf, const ft_terrain_world* world,
+                       erosion::ErosionMaps* maps);
+
+// The rivers stage of build_terrain on a terrain already made (ft_terrain_rivers).
+hydrology::RiverNetwork rivers_made(const ft_build_params& p, const Heightfield& hf, const ft_terrain_world* world);
 
 // The window [x0, x0 + w) x [y0, y0 + h) of build_terrain(p, maps): the same
 // bits as those samples of the whole, heights and maps (`maps` may be null).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "planet/cube_sampler.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A midpoint planet's heights between its cube-sphere samples: the six
 // faces at one level, bilinearly interpolated in the face's (s, t) (the
 // gnomonic coordinates of the direction). For the layouts that are not the

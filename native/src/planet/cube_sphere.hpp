@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cube-sphere layout (fracterra/planet.h documents the face convention):
 // six faces of (2^n + 1)^2 samples, sample (i, j) of face f standing for the
 // integer cube point N n_f + (2i - N) s_f + (2j - N) t_f (N = 2^n). A sample

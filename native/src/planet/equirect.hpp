@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The equirectangular layout (fracterra/planet.h): pixel (i, j) of W x H at
 // longitude -180 + (i + 0.5) 360 / W and latitude 90 - (j + 0.5) 180 / H
 // degrees, georeferenced in EPSG:4326 so GDAL writes it as a world map.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The icosphere layout: a regular icosahedron whose triangles are split in
 // four `level` times, every new vertex the normalised middle of its edge
 // (10 4^n + 2 vertices, 20 4^n triangles, counter-clockwise seen from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Voss's midpoint displacement on the sphere (seed 000), by recursive
 // subdivision of the cube-sphere: level 0 is the cube's 8 corners; level
 // L + 1 adds, on every face, the centre of each cell (the mean of its 4

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A fractal planet in metres above the radius, with a sea: fBm on the unit
 // sphere (noise/fbm3.hpp), a function of the 3D point only, so every layout
 // (cube_sphere.hpp, equirect.hpp, icosphere.hpp) and every patch gives the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "planet/planet_params.hpp"
 
 #include "core/error.hpp"

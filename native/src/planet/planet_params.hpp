@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The table of ft_planet_params (fracterra/params.h): every field's default,
 // range, unit and label, for the C ABI's init and range checks, the flags of
 // `fracterra planet`, the ctypes Structure and the add-on.

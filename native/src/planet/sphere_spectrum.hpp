@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The angular power spectrum of a planet's heights and H from its slope.
 //
 // An isotropic field on the sphere h = sum a_lm Y_lm has the angular power

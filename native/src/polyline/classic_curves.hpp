@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The classic deterministic fractal curves of seed 002, each drawn on a base
 // segment a -> b (the curve starts at a and ends at b):
 //   Koch curve: each segment becomes 4 of a third, the middle two forming an

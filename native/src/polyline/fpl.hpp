@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Nikulin's fractal polyline (seed 003, FPLrec): recursive orthogonal
 // midpoint displacement of a segment a -> b,
 //   V = b - a;  stop (emit b) when r = 0 or |V| < delta;

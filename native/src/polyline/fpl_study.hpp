@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ensemble experiment of seed 003: for each spread s and depth r, K
 // FPLs on the unit horizontal segment (seeds seed0 .. seed0 + K - 1), and the
 // ensemble means (eq. 2) with their standard errors of eta, chi, gamma

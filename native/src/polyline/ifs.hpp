@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Iterated function systems by random iteration (seed 002): affine maps
 //   x' = a x + b y + e,   y' = c x + d y + f,
 // one chosen at each step with probability p. The tables given in seed 002:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Branching lightning on the FPL engine: a main FPL through the base nodes,
 // whose midpoints fork side branches: a split of recursion level l forks with
 // probability branch_prob * 2^(-l/2), so the expected number of forks grows

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The polyline entry point: validates ft_polyline_params and dispatches to
 // the method (fpl.hpp, classic_curves.hpp, ifs.hpp, lightning.hpp, the Voss
 // profile). The C ABI, the CLI, the study and the tests all come through

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The profile method of the polylines: Voss's 1D midpoint displacement
 // (Voss 1988; seed 000) drawn across a base segment a -> b. The profile's
 // linear trend is removed so both nodes survive exactly; its heights, in

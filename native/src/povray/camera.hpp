@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A perspective camera framed on a box of content, and the projection
 // POV-Ray's camera makes of it (so tests can say where a point must land).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Terrains as POV-Ray `height_field`s: a 16-bit grayscale PNG normalised to
 // 0..1 plus an SDL object that restores real units with `scale`. A 1025^2
 // grid parses in a tenth of a second this way; the same grid as mesh2 is

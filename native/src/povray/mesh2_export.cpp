@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "povray/mesh2_export.hpp"
 
 #include <cctype>

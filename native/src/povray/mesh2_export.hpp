@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A mesh as a POV-Ray `mesh2` with per-vertex normals (smooth shading),
 // declared under one identifier so a scene can `#include` the file and use
 // `object { Name ... }`. Polygons are split into triangle fans (mesh2 holds

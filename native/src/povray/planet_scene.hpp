@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A POV-Ray scene of a fractal planet (`fracterra planet --pov`): the
 // equirectangular height map as a 16-bit PNG beside the scene, read by
 // ft_planet.inc's FT_Planet isosurface (image_map map_type 1), or the exact

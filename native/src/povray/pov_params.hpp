@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tables of ft_pov_scene_params and ft_pov_sweep_params
 // (fracterra/params.h), and their settings carried into the exporter's own
 // types after the tables' range checks (for the C ABI and the CLI alike).

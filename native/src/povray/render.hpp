@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs the real `povray` on a scene: in the scene's folder (POV-Ray's file
 // restrictions allow reading there, and the scene's relative paths start
 // there), image to a temporary file renamed into place only on success,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Complete POV-Ray scenes a person can render at once: a terrain as a
 // height_field with materials by altitude and slope, a sea at the water
 // level, polylines as chunked sphere_sweeps (lightning glowing, coastlines

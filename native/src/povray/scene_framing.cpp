@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Framing: what the camera frames (the land above the sea on a lattice of the
 // terrain, every polyline and mesh vertex), the content box and the camera.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lights and sky: fracterra's own (a sun, a dim fill from the sky side and a
 // graded sky, darker under a storm), or another program's: its sky colour as
 // background and ambient light, and its sun or its lights.

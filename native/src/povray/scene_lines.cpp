@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The polyline sets of a scene as sweeps in their kind's material: lightning
 // glowing with a light at its foot, coastlines on the sea, lines in orange.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Another program's lights and materials (Blender's Cycles) as POV-Ray SDL,
 // by the conversions docs/povray.md states, so the same scene renders alike:
 // POV-Ray lights a white diffuse 1 surface facing a light of colour C to C,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Meshes in a scene (water surfaces, another program's objects): a mesh2 in
 // POV axes, polygons split into triangle fans, with vertex normals when the
 // mesh is smooth, in its material.

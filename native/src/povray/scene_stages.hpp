@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stages of write_scene, in the order their SDL appears in a scene:
 // framing (the content box and the camera), the header, lights and sky, the
 // sea, the terrain (one PNG, tiles, or a ground for polylines alone), the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The terrain of a scene, in one of three kinds: a tile set's height_fields
 // edge to edge, one terrain PNG (coloured by its colours PNG, or by altitude
 // and slope), or, for fracterra's polylines alone, a ground to catch their

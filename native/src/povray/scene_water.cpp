@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Water in a scene: rivers as flattened ribbons in their beds and lakes as
 // thin prisms cut to their shorelines, in ft_water.inc's material.
 #include <algorithm>

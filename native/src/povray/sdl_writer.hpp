@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small, safe pieces of POV-Ray scene description language (SDL): numbers
 // that keep their shape, quoted strings that cannot break out of their
 // quotes, checked identifiers, relative paths, and the fracterra -> POV-Ray

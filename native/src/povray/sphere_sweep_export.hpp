@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Polylines as POV-Ray `sphere_sweep`s. One long sweep costs POV-Ray time in
 // proportion to its length for every ray that meets its bounding box, so a
 // polyline is cut into short sweeps of `segments_per_sweep` segments that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A tile set (fracterra tiles, 16-bit PNG tiles) as POV-Ray height_fields
 // placed edge to edge: each tile's PNG spans its own samples, neighbours
 // share their edge samples and one height scale, so the shared edges of

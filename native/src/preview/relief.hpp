@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shaded-relief previews of heightfields: a hypsometric tint (sea, sand,
 // grass, rock, snow by altitude) lit by a low sun from the north-west, the
 // way cartographers draw relief. For looking at terrains without a renderer.

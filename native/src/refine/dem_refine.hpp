@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Refining a real DEM: seed 000's midpoint displacement (or Feder's random
 // additions) run from the DEM's samples as its reference points, so that a
 // measured landscape gets detail finer than its pixels, with the DEM's own

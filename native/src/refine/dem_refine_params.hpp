@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The table of ft_dem_refine_params (fracterra/params.h), and the struct
 // turned into DemRefineConfig after the table's range checks (for the C ABI
 // and the CLI alike).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Splat rules as JSON, read and written through the table of ft_splat_params
 // (splat_params.cpp), so the file's fields are the table's:
 //   {"layers": [{"name": "rock", "slope_min": 33, "slope_blend": 12,

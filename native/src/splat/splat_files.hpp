@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Splat maps as RGBA PNGs, four layers to a file, as Unity's alphamaps and
 // Unreal's weight-map import take them: layers 0-3 in `path`, 4-7 in
 // "<stem>_1.png", and so on; a last file with fewer layers has zeros in its

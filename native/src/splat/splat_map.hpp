@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Splat (weight) maps and colour maps of a terrain by layer rules
 // (fracterra/splat.h says what a rule means). Every sample is computed on its
 // own, so the result does not depend on the thread count.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The table of ft_splat_params (fracterra/params.h, FT_PARAMS_SPLAT): every
 // field of a layer's rule with its default, range, unit and doc. The rules
 // JSON (rules_json.hpp), the C ABI's init and range checks, and later the

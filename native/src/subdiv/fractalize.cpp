@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fractalization on OpenSubdiv, level by level:
 //
 //   1. Far::TopologyRefiner refines the base topology uniformly to L levels.

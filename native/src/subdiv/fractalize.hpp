@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fractalize a polygon mesh: Voss midpoint displacement (or Feder's
 // successive random additions) on OpenSubdiv's uniform refinement.
 #pragma once

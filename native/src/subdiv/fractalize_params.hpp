@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The table of ft_fractalize_params (fracterra/params.h).
 #pragma once
 

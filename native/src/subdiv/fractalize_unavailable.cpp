@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stands in for fractalize.cpp in a build without OpenSubdiv
 // (FT_WITH_OPENSUBDIV=OFF: the Windows build): the mesh and parameters are
 // checked as usual, then the call refuses, naming the library.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Checks a mesh before it reaches OpenSubdiv, so bad input gets a message
 // that names the offending face, edge or vertex instead of a crash or an
 // OpenSubdiv warning on stdout.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every described params struct by its FT_PARAMS_* kind: the one list that
 // the C ABI (ft_params_describe) and the CLI (`fracterra params`) share. A
 // layer of its own because it gathers the tables of every capability.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A stage of Feder's successive random additions on the whole grid (see
 // refiner.hpp): after each half-step, delta g is added to the points of the
 // grid as it stands, so the steps run as two sweeps.

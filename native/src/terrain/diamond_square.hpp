@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Voss midpoint displacement in 2D (diamond-square) and Feder's successive
 // random additions, from four corners or from a grid of reference points.
 // The scheme follows seed 000 and Peitgen & Saupe's MidPointFM2D: per stage

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Midpoint displacement and successive random additions as rows of the
 // method table (terrain_methods.hpp): Voss's diamond-square on
 // (2^levels + 1)^2 grids, refining an optional reference grid.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Saupe's InterpolatedFM in 2D, Feder's lacunarity variant of the successive
 // random additions (seed 001, end of 13.4): start from the four corners;
 // each cycle shrinks the grid spacing by a factor r = 1 / lacunarity,

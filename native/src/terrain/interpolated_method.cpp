@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Saupe's InterpolatedFM (interpolated.hpp) as a row of the method table
 // (terrain_methods.hpp).
 #include <algorithm>

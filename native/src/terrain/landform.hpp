@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Landforms: what turns a method's raw heights into a usable landscape
 // (levelling, height offset, edge falloff, a flattened sea). Applied after
 // the method, to the whole terrain or to a window of it; every step except

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Mandelbrot set as a terrain (seed 002: z <- z^2 + c from z = 0, escape
 // radius 2, colour by iteration count; Mandelbrot 1980).
 //

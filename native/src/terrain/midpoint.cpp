@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A stage of Voss midpoint displacement on the whole grid (see refiner.hpp).
 #include <atomic>
 #include <exception>

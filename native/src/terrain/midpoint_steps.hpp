@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The arithmetic of one point of each diamond-square step, shared by every
 // refiner (the whole grid in place, and windows of it): a point computed in
 // either gets the same bits because it is computed here.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // square_row and diamond_interior at strides 2, 4 and 8 (the last three
 // stages: 63/64 of all points) written for AVX-512; midpoint_steps.cpp takes
 // them where the CPU has it. Lanes are grid places x .. x + 15, the points

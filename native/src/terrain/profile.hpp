@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Voss midpoint displacement in 1D (seed 000, eq. 24):
 //   X(mid) = (X(left) + X(right)) / 2 + 2^(-sH) sigma rho g,  rho = sqrt(1 - 2^(2H-2)),
 // at step s, from X(0) = 0 and X(1) = sigma g, or from 2^m + 1 reference

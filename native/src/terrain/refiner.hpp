@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole-grid diamond-square refiner: one (2^levels + 1)^2 grid refined
 // in place, stage by stage, as in MidPointFM2D. Its parts live in the files
 // named after what they do:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Spectral synthesis (spectral_synthesis.hpp) as a row of the method table
 // (terrain_methods.hpp). One global FFT: no windows.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "terrain/spectral_synthesis.hpp"
 
 #include <fftw3.h>

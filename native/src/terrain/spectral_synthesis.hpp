@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Spectral synthesis of fBm (Saupe's SpectralSynthesisFM in 2D): random
 // Fourier coefficients with |amplitude| ~ f^-(H + 1), one inverse real FFT
 // (FFTW's c2r). The power spectrum falls as f^-(2H + 2) (rows: f^-(2H + 1)),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The terrain entry point: validates ft_terrain_params and dispatches to the
 // method. The C ABI, the CLI and the tests all come through here, so a
 // parameter is checked in one place.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A terrain method is one row of one table (terrain_methods.hpp): the
 // functions that configure, validate, bound, generate and window it, and
 // what it can do. terrain.cpp's dispatchers, the parameter table's method

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The table of terrain methods: one row per method (see terrain_method.hpp).
 // It is constexpr so that the parameter table's method masks
 // (terrain_params.cpp) are computed from it at compile time. A new method is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Windows of a terrain that never exists whole: the samples
 // [x0, x0 + w) x [y0, y0 + h) of the terrain a config defines, bit-identical
 // to the same samples of the whole grid, in memory O(window + halo).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one height scale of a tile set: every 16-bit tile maps the same
 // [min, max] to 0..65535, so neighbouring tiles give their shared edge
 // samples the same 16-bit values. The range must hold every sample of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // manifest.json of a tile set: what terrain it is (every parameter the
 // method uses, the reference grid's CRC), how it is cut, its height range
 // and world size, and each finished tile's CRC-32. Finished tiles are

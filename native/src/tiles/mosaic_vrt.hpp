@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The GDAL VRT mosaic of a finished tile set, so that gdalinfo, QGIS and
 // every GDAL reader open the whole as one raster: built by GDALBuildVRT from
 // the tiles' georeferencing (world files for PNG, the GeoTIFFs' own), with

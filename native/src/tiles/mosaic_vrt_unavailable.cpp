@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stands in for mosaic_vrt.cpp in a build without GDAL (FT_WITH_GDAL=OFF:
 // the Windows build): TileSet::finish leaves the mosaic out (the set's
 // tiles are complete without it); a preview of a set refuses, naming GDAL.

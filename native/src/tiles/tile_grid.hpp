@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A terrain cut into tiles that share their edge samples: tile (col, row)
 // holds the samples [col t, col t + t] x [row t, row t + t] (t = `tile`
 // cells, t + 1 samples a side; the last column and row may be narrower), so

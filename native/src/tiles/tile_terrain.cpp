@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "tiles/tile_terrain.hpp"
 
 #include "core/error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a tile set is a set of windows of: the terrain pipeline's settings
 // (terrain, landform, erosion: ft_build_params) and whether the set also
 // holds the terrain's maps. Each tile is a window of the built terrain,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One tile of a tile set, written as a pure function of the terrain's
 // parameters, the tile grid, the format and the common height range: the
 // same inputs give the same bytes in any process on any machine, so a task

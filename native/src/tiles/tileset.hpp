@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A tile set on disk: a folder holding the tiles of one terrain, its
 // manifest and its VRT mosaic (tile_grid.hpp, tile_writer.hpp, manifest.hpp,
 // mosaic_vrt.hpp). TileSet is the driver's side: it opens or resumes the

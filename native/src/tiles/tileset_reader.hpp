@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading a window of a finished tile set back from its tile files, at a
 // level of detail: sample (i, j) of the result is sample
 // ((x0 + i) 2^lod, (y0 + j) 2^lod) of the whole, taken from the tile that

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The objects that hang off a terrain and follow it when it re-generates, in
 the terrain's own job (one bar, one Esc): its coastlines are retraced on the
 new heights, and a lightning bolt that struck it is aimed again at the new

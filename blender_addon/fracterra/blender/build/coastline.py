@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A terrain's coastline: where the level is (a height, a quantile, or the
 terrain's sea), the trace (bpy-free, so a job's worker runs it) and the curve.
 

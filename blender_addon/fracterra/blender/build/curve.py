@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Curves and point clouds from library polylines, and library polylines from
 curves, with whole-array copies (foreach_get / foreach_set), never a Python
 loop over points."""

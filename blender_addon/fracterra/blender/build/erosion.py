@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Erode step of a terrain in Blender: the settings a preset runs with,
 erosion after generation (in the job's worker thread), the terrain's colours by
 its splat rules (splat_material.py) and the maps as mesh point attributes.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Where a terrain erodes and where rain falls, in Blender: the weights of a
 vertex group painted on the terrain, or the brightness of an image, read in
 the main thread (it needs bpy) and handed to the library's pipeline as

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The custom edge falloff's mask in Blender (the library's FT_FALLOFF_CUSTOM):
 the brightness of an image, or the top-view silhouette of a mesh or curve
 object over the terrain's footprint, optionally faded inward over the

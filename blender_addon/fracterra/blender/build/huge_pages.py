@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Huge pages for a new mesh's large arrays, asked for before they are first
 written (Linux only; elsewhere a no-op).
 

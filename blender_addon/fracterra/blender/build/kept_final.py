@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A Final kept beside its Preview. Auto Update edits a terrain (or planet) at
 its Preview level; when the object holds its Final, the first such edit keeps
 that Final's mesh on the object (Object.fracterra_final) and that of each of

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Filling Blender meshes from the library's grid arrays with foreach_set."""
 
 import array

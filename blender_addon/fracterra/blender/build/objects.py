@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Reading objects back: is an object a fracterra terrain (or measurable at
 all), a terrain's grid size, a library heightfield of its current vertex
 heights, and the settings its mesh was built from (so that after a cancel, an

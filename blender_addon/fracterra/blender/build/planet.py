@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """From settings to a planet object: the library's closed cube-sphere as a
 smooth mesh in scene units, its sea sphere (a child, water.py's SEA kind) and
 its material by height, slope and latitude, as progress.Jobs (a new mesh, or

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """From polyline settings to curve (or point-cloud) data, for a new object or
 an existing one regenerated in place from the settings stored on it, as
 progress.Jobs: the library generates in the worker thread, the curve is

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Building node materials from a few rules: point attributes, smooth ramps,
 colour mixes and arithmetic. Shared by the eroded terrain's material and the
 planet's, so both read their attributes and blend alike (and their numpy

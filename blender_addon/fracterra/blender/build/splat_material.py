@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A terrain's colour in Blender: the library's splat colour map (core/splat.py,
 the rules `fracterra splat` and the POV-Ray export use) as a point colour
 attribute, and the node material that reads it. The colours are computed in

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Where a new polyline's base meets a terrain: a bolt added over a fractal
 terrain strikes its surface, not the plane z = 0 inside the mountain."""
 

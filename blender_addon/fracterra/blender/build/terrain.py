@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """From settings to a terrain mesh: reference points, generation and mesh
 building as progress.Jobs (a new mesh, or an existing one rewritten in place)."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Rivers and Lakes of a terrain object: the library's network (core.rivers.
 WaterArrays, traced by the pipeline's last stage) as Blender objects parented
 to the terrain, in its local frame:
@@ -224,9 +225,12 @@ def build_water(terrain, water, heights=None):
     mesh = None
     if sea.any() and heights is not None:
         # The landform flattens the sea's floor at the sea's level: the water
-        # stands twice the minimum depth over its highest floor cell, so all
-        # the floor is under more than the minimum depth.
-        level = float(heights[sea].max()) + 2.0 * water.min_depth
+        # stands just over the minimum depth (1.1 x) above its highest floor
+        # cell, so the floor is under more than that and the cut coast lies
+        # 0.1 x the minimum depth over it (1e-3 of the relief at the default;
+        # the old sea stood 1e-4 over it): the coast stays where the landform
+        # put it.
+        level = float(heights[sea].max()) + 1.1 * water.min_depth
         mesh = _depth_mesh(f"{terrain.name} Sea", water, frame, heights, sea, lambda lab: np.full(len(lab), level))
     if mesh is not None:
         put(terrain, "SEA", mesh.name, mesh, collection)

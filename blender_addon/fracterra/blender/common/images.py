@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Blender images as arrays: the brightness that reference heights and
 falloff masks are read from (a leaf: bpy, numpy and reporting only)."""
 

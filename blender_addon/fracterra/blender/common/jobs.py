@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Long work with a progress bar and Esc to cancel, for any operator.
 
 A Job is split where Blender needs it split:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The add-on's preferences (Edit > Preferences > Add-ons > Fracterra).
 
 A leaf module: the builders and operators read the preferences from here,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Operator presets shipped in the add-on's presets/ folder are copied into the
 user's preset folder on register (Blender only lists presets from there);
 files the user already has are never overwritten.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """How operators talk to the user: the errors they report instead of raising
 (progress bars and Esc are progress.JobOperator's).
 

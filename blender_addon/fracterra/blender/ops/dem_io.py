@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """File > Import > DEM as terrain, and File > Export > terrain heights, in
 every format the library reads and writes (fracterra/raster.h, docs/gis.md).
 

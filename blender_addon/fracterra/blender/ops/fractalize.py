@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Object > Fractalize: OpenSubdiv refinement with fractal displacements."""
 
 import bpy

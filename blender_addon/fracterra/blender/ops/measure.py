@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Object > Measure: H and D of a terrain, eta, chi, gamma and box-counting D of
 a curve, stored in the object's FRACTERRA_PG_measures for the sidebar."""
 

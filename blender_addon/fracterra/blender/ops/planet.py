@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Operators: Add > Mesh > Fractal Planet, and regenerate in place (as terrains)."""
 
 import bpy

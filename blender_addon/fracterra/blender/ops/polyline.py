@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Curves: Add > Curve > Fractal Polyline, and the coastlines of a terrain."""
 
 import json

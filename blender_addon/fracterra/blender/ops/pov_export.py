@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """File > Export > POV-Ray (fracterra): the Blender scene as a POV-Ray scene:
 the terrain as a height_field in its material's colours, curves as chunked
 sphere_sweeps in their materials, rivers and lakes as water, other meshes as

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """What the POV-Ray export reads from a Blender scene, in the library's terms
 (core/povray.py): the lights in Blender's own units, the world's colour, the
 materials of curves and meshes, the meshes and the rivers, all in the

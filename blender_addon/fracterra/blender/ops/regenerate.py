@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """What every Regenerate operator shares (terrains, planets): it rebuilds the
 target of the active object as a cancellable job, and after a cancel or a
 failure the sidebar shows the settings of the mesh that is there."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Operator: Rivers and Lakes of a terrain. It switches the terrain's Rivers
 and Lakes setting on (or off) and regenerates the terrain, so the rivers come
 from the library's pipeline with everything else (ft_terrain_build_rivers)

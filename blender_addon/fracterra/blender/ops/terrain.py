@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Operators: Add > Mesh > Fractal Terrain, and regenerate in place."""
 
 import bpy

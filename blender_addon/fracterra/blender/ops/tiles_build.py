@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """File > Export > Tile Set (fracterra), "Build Tile Set...": the active
 terrain's own settings (what the sidebar shows and the mesh was built from:
 method, landform, erosion preset, Strength, masks), written as a tile set

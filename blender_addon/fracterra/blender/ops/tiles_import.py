@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """File > Import > fracterra tile set: a window of a tile set (fracterra tiles,
 docs/scale.md) at a level of detail, as one mesh or as one object per tile.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Erode box of a terrain's settings (redo panel and sidebar), and the
 preset menu whose choice fills the settings (build/erosion.py runs them).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Menu entries, each an operator referred to by its id string."""
 
 import bpy

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The sidebar panels (View3D > Sidebar > Fracterra). They refer to operators by
 their id strings, so no panel imports an operator module."""
 

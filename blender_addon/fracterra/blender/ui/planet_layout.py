@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """How a planet's settings are laid out, in the redo panel of Add > Mesh >
 Fractal Planet and in the sidebar: the mesh's levels, the library's planet
 settings that the method uses (from its table, so a new method or field needs

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Blender properties made from the one parameter list (core.params), and the
 PropertyGroups kept on objects (terrain and polyline settings, measures)."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Rivers and Lakes box of a terrain's settings (the sidebar's Rivers and
 Lakes panel): the switch, then the settings of ft_hydrology_params that
 Blender keeps (core.params.RIVERS_PARAMS), in the table's order."""

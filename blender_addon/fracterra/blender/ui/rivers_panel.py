@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The sidebar's Rivers and Lakes panel (View3D > Sidebar > Fracterra), shown
 for a terrain and for its water objects and coastline: the terrain's Rivers
 and Lakes settings and the operator that traces them (by its id string)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """How the settings are laid out: grouped, showing only what the chosen method
 uses. Shared by the operators' redo panels and the sidebar (reads only
 core.params, so panels and operators both import it without a circle)."""
