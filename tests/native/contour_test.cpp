@@ -279,12 +279,14 @@ TEST(CoastlineCli, WritesPolylinesAndCountsIslandsAndLakes) {
   EXPECT_GT(a["dimension"].get<double>(), 1.0);
   EXPECT_LT(a["dimension"].get<double>(), 1.6);
   EXPECT_DOUBLE_EQ(a["hurst"].get<double>(), 2 - a["dimension"].get<double>());
-  // --world: columns and rows scaled to the recorded world size.
+  // --world: columns and rows scaled to the recorded world size. A .npy of
+  // another program has no sidecar (<file>.npy.json), so it records none.
+  std::filesystem::remove(t + ".json");
   EXPECT_EQ(run_cli("coastline --in " + t + " --world --out " + csv, &out), 1);  // none recorded
   EXPECT_NE(out.find("world size"), std::string::npos) << out;
   Heightfield sized = terrain(8, 0.7, 4);
   sized.set_world_size(10);
-  const std::string wpng = (dir / "w.png").string();  // .png records the world size, .npy cannot
+  const std::string wpng = (dir / "w.png").string();  // .png records the world size
   io::write_heightfield(sized, wpng);
   ASSERT_EQ(run_cli("coastline --in " + wpng + " --level q0.5 --out " + csv, &out), 0) << out;
   const PolylineSet g = io::read_polylines(csv);

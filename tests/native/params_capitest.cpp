@@ -77,6 +77,7 @@ const std::vector<Field> kHydrologyFields = {
     FT_FIELD(ft_hydrology_params, periodic),          FT_FIELD(ft_hydrology_params, threads),
     FT_FIELD(ft_hydrology_params, sinks),             FT_FIELD(ft_hydrology_params, sink_count),
     FT_FIELD(ft_hydrology_params, progress),          FT_FIELD(ft_hydrology_params, progress_user),
+    FT_FIELD(ft_hydrology_params, min_depth),  // 2.27
 };
 const std::vector<Field> kPlanetFields = {
     FT_FIELDS(ft_planet_params, struct_size, method, radius, sigma, hurst, octaves, lacunarity, frequency, basis,

@@ -7,31 +7,58 @@ draws the ground: two triangles a cell."""
 
 import numpy as np
 
-# The terrain's quads are drawn as two triangles split along the diagonal from
-# corner (col, row) to (col + 1, row + 1) (mesh.h's loop order 0-1-2, 0-2-3,
-# as Blender triangulates a quad).
-_TRIANGLES = (((0, 0), (0, 1), (1, 1)), ((0, 0), (1, 1), (1, 0)))  # (drow, dcol) per corner
+# The terrain's quads, corners 0-3 at (row, col), (row, col + 1), (row + 1,
+# col + 1), (row + 1, col) (mesh.h's loop order), are drawn as two triangles
+# 0-1-2 and 0-2-3, unless those face opposite ways (a fold sharper than a right
+# angle, as along a carved bed): Blender then draws 0-1-3 and 1-2-3 in its view,
+# and its BVH tree, another renderer or an exporter may split it either way.
+# Water clipped to one split dipped under the other (by up to 7 cm on a 2 m
+# mountain), so over such a cell it stands only where all four corners are deep.
+_SPLIT_02 = (((0, 0), (0, 1), (1, 1)), ((0, 0), (1, 1), (1, 0)))  # (drow, dcol) per corner
 
 
-def depth_triangles(heights, rows, cols, level, min_depth):
+def split_13(co):
+    """Per cell ((ny - 1, nx - 1) bool): Blender draws it split along corners 1-3.
+    `co`: (ny, nx, 3) float32 vertex positions of the terrain mesh. Blender's test
+    (is_quad_flip_v3_first_third_fast), in float32 as Blender computes it."""
+    co = np.asarray(co, dtype=np.float32)
+    v1, v2, v3, v4 = co[:-1, :-1], co[:-1, 1:], co[1:, 1:], co[1:, :-1]
+    d13 = v3 - v1
+    a = np.cross(v2 - v1, d13)
+    b = np.cross(v4 - v1, d13)
+    return np.einsum("...k,...k->...", a, b) > 0
+
+
+def depth_triangles(heights, rows, cols, level, min_depth, split13=None):
     """The water surface over the cells (rows, cols) at `level` (one per cell),
     cut to where it stands more than `min_depth` above the ground: each cell's
     two triangles (the terrain's) clipped to level - ground > min_depth (the
     ground is linear on a triangle, so the clipped part is deeper everywhere),
     slivers (area <= 1e-6 of a cell) dropped: POV-Ray refuses a
-    mesh with a zero-area face whole. Returns (n, 3, 2) float64 grid
+    mesh with a zero-area face whole. `split13`: split_13 of the terrain mesh
+    (None: no cell is folded). Returns (n, 3, 2) float64 grid
     coordinates (column, row) and (n,) levels."""
     out_xy, out_z = [], []
-    for tri in _TRIANGLES:
-        gy = np.stack([rows + dy for dy, _ in tri], axis=1).astype(np.float64)  # (m, 3)
-        gx = np.stack([cols + dx for _, dx in tri], axis=1).astype(np.float64)
-        d = level[:, None] - heights[gy.astype(np.int64), gx.astype(np.int64)] - min_depth
+    cells = np.ones(rows.size, dtype=bool)
+    if split13 is not None:
+        folded = split13[rows, cols]
+        deep = np.ones(rows.size, dtype=bool)
+        for dy, dx in ((0, 0), (0, 1), (1, 0), (1, 1)):
+            deep &= level - heights[rows + dy, cols + dx] > min_depth
+        cells = ~folded | deep  # a folded cell: whole where every corner is deep, else dry
+    for tri in _SPLIT_02:
+        if not cells.any():
+            continue
+        r, c, level_c = rows[cells], cols[cells], level[cells]
+        gy = np.stack([r + dy for dy, _ in tri], axis=1).astype(np.float64)  # (m, 3)
+        gx = np.stack([c + dx for _, dx in tri], axis=1).astype(np.float64)
+        d = level_c[:, None] - heights[gy.astype(np.int64), gx.astype(np.int64)] - min_depth
         wet = d > 0
         count = wet.sum(axis=1)
         p = np.stack([gx, gy], axis=2)  # (m, 3, 2)
         # Whole triangles.
         full = count == 3
-        out_xy.append(p[full]); out_z.append(level[full])
+        out_xy.append(p[full]); out_z.append(level_c[full])
         # One or two corners deep: roll each triangle so corner 0 is the odd one out
         # (the deep corner of a one, the dry corner of a two), keeping the winding.
         for k in (1, 2):
@@ -49,7 +76,7 @@ def depth_triangles(heights, rows, cols, level, min_depth):
             t2 = (ds[:, 0] / (ds[:, 0] - ds[:, 2]))[:, None]
             a = ps[:, 0] + t1 * (ps[:, 1] - ps[:, 0])
             b = ps[:, 0] + t2 * (ps[:, 2] - ps[:, 0])
-            lv = level[sel]
+            lv = level_c[sel]
             if k == 1:  # the deep corner's tip
                 out_xy.append(np.stack([ps[:, 0], a, b], axis=1)); out_z.append(lv)
             else:  # the quad a, 1, 2, b

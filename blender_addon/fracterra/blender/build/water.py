@@ -19,7 +19,7 @@ import numpy as np
 
 from ...core.grid import grid_size
 from ...core.rivers import LAND, SEA
-from ...core.water_surface import depth_triangles
+from ...core.water_surface import depth_triangles, split_13
 from .mesh import loop_total_writable
 from .objects import is_terrain
 
@@ -177,7 +177,18 @@ def _triangle_mesh(name, frame, water, xy, z):
     return mesh
 
 
-def _depth_mesh(name, water, frame, heights, wet, level_of):
+def _drawn_split(terrain, water):
+    """split_13 of the terrain's mesh (the cells Blender draws split along
+    corners 1-3), or None when the mesh is not the network's grid."""
+    vertices = terrain.data.vertices
+    if len(vertices) != water.nx * water.ny:
+        return None
+    co = np.empty(3 * len(vertices), dtype=np.float32)
+    vertices.foreach_get("co", co)
+    return split_13(co.reshape(water.ny, water.nx, 3))
+
+
+def _depth_mesh(name, water, frame, heights, wet, level_of, split13):
     """The water over the grid cells with a wet corner (wet: (ny, nx) bool), each at
     level_of(its wet corner's label), cut to where it is deeper than water.min_depth;
     None when nothing is that deep."""
@@ -192,7 +203,8 @@ def _depth_mesh(name, water, frame, heights, wet, level_of):
     for dy, dx in ((0, 0), (0, 1), (1, 0), (1, 1)):
         w = wet[rows + dy, cols + dx]
         lab = np.where((lab == LAND) & w, labels[rows + dy, cols + dx], lab)
-    xy, z = depth_triangles(heights, rows, cols, np.asarray(level_of(lab), dtype=np.float64), water.min_depth)
+    xy, z = depth_triangles(heights, rows, cols, np.asarray(level_of(lab), dtype=np.float64), water.min_depth,
+                            split13)
     return _triangle_mesh(name, frame, water, xy, z) if len(z) else None
 
 
@@ -213,15 +225,16 @@ def build_water(terrain, water, heights=None):
         kept |= {"RIVERS", "RIVER_PROFILE"}
         made.append(f"{water.segment_count} river segments")
     lakes = water.mask >= 0
+    sea = water.mask == SEA
+    split13 = _drawn_split(terrain, water) if heights is not None and (lakes.any() or sea.any()) else None
     mesh = None
     if lakes.any() and heights is not None:
         levels = water.levels
-        mesh = _depth_mesh(f"{terrain.name} Lakes", water, frame, heights, lakes, lambda lab: levels[lab])
+        mesh = _depth_mesh(f"{terrain.name} Lakes", water, frame, heights, lakes, lambda lab: levels[lab], split13)
     if mesh is not None:
         put(terrain, "LAKES", mesh.name, mesh, collection)
         kept.add("LAKES")
         made.append(f"{water.lake_count} lakes")
-    sea = water.mask == SEA
     mesh = None
     if sea.any() and heights is not None:
         # The landform flattens the sea's floor at the sea's level: the water
@@ -231,7 +244,8 @@ def build_water(terrain, water, heights=None):
         # the old sea stood 1e-4 over it): the coast stays where the landform
         # put it.
         level = float(heights[sea].max()) + 1.1 * water.min_depth
-        mesh = _depth_mesh(f"{terrain.name} Sea", water, frame, heights, sea, lambda lab: np.full(len(lab), level))
+        mesh = _depth_mesh(f"{terrain.name} Sea", water, frame, heights, sea, lambda lab: np.full(len(lab), level),
+                           split13)
     if mesh is not None:
         put(terrain, "SEA", mesh.name, mesh, collection)
         kept.add("SEA")
