@@ -39,8 +39,14 @@ namespace ft::noise::detail {
 // first octave and adds amp * noise to out[] for the others.
 enum RowMode { kStore, kFirst, kAdd };
 
+// gcc compiles a region for a target by `#pragma GCC target`; clang (the
+// fuzz build) ignores that pragma and takes `#pragma clang attribute` instead.
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
 #pragma GCC push_options
 #pragma GCC target("avx2")
+#endif
 namespace simd_avx2 {
 constexpr int W = 8;
 typedef float vf __attribute__((vector_size(32)));
@@ -57,10 +63,14 @@ typedef uint32_t vu __attribute__((vector_size(32)));
 [[gnu::always_inline]] inline vf positivev(vf x) { return vf(_mm256_max_ps(__m256(x), _mm256_setzero_ps())); }
 #include "noise/basis_simd_rows.inc"
 }  // namespace simd_avx2
+#if defined(__clang__)
+#pragma clang attribute pop
+#pragma clang attribute push(__attribute__((target("avx512f,avx512vl,avx512bw,avx512dq"))), apply_to = function)
+#else
 #pragma GCC pop_options
-
 #pragma GCC push_options
 #pragma GCC target("avx512f,avx512vl,avx512bw,avx512dq")
+#endif
 namespace simd_avx512 {
 constexpr int W = 16;
 typedef float vf __attribute__((vector_size(64)));
@@ -77,6 +87,10 @@ typedef uint32_t vu __attribute__((vector_size(64)));
 [[gnu::always_inline]] inline vf positivev(vf x) { return vf(_mm512_max_ps(__m512(x), _mm512_setzero_ps())); }
 #include "noise/basis_simd_rows.inc"
 }  // namespace simd_avx512
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
 #pragma GCC pop_options
+#endif
 
 }  // namespace ft::noise::detail
