@@ -56,10 +56,15 @@ asan_built=$PWD/build/sanitizer-build.done
 ended=$PWD/build/background-builds.ended
 rm -f "$asan_built" "$ended"
 # The sanitizer build (clang, ASan + UBSan, with the libFuzzer harnesses in
-# the same tree: tests/sanitize.sh) runs from the start at the lowest
-# priority, so it takes a core only while the other stages leave one idle
-# (the Windows stage's downloads and configure scripts, Blender waiting on
-# its window, the last long tests finishing alone).
+# the same tree: tests/sanitize.sh), then its tests, run from the start at
+# the lowest priority, so they take a core only while the other stages leave
+# one idle (the Windows stage's downloads and configure scripts, Blender
+# waiting on its window, the last long tests finishing alone). Their wall
+# time then depends on the other stages: the per-test timeout is 25 minutes
+# (a hang, not a busy machine).
+asan_test_log=$PWD/build/sanitizer-tests.log
+asan_passed=$PWD/build/sanitizer-tests.passed
+rm -f "$asan_passed"
 # Each stage beside another runs in its own process group, so that a failing
 # stage stops them all.
 background="" prefetch="" windows_build=""
@@ -72,7 +77,9 @@ stop_beside() {
 trap stop_beside EXIT
 setsid --wait nice -n 19 bash -c 'trap "touch \"$3\"" EXIT
   tests/sanitize.sh build >"$1" 2>&1 || exit 1
-  touch "$2"' _ "$asan_log" "$asan_built" "$ended" &
+  touch "$2"
+  FT_ASAN_TIMEOUT=1500 tests/sanitize.sh test >"$4" 2>&1 || exit 1
+  touch "$5"' _ "$asan_log" "$asan_built" "$ended" "$asan_test_log" "$asan_passed" &
 background=$!
 # What the tests would otherwise make on a fresh machine while a ctest slot
 # waits, made now beside the builds, whose compiles leave the network and the
@@ -115,9 +122,9 @@ stage "the Blender 4.3 root and the Wine prefix (made beside the builds)"
 wait "$prefetch" || true
 prefetch=""
 cat "$prefetch_log"
-stage "ctest (the sanitizer build beside it, nice 19)"
+stage "ctest (the sanitizer build and tests beside it, nice 19)"
 (cd build && ctest --output-on-failure -j"$(nproc)" --timeout 600)
-stage "sanitizers (the rest of their build, then their tests; every harness fuzzing for ${FT_FUZZ_SECONDS:-20} s beside)"
+stage "sanitizers (the rest of their build and tests; every harness fuzzing for ${FT_FUZZ_SECONDS:-20} s beside)"
 while [ ! -e "$asan_built" ] && [ ! -e "$ended" ]; do sleep 1; done
 if [ ! -e "$asan_built" ]; then
   cat "$asan_log"; echo "tests/run.sh: the sanitizer build failed" >&2; exit 1
@@ -133,13 +140,15 @@ fi
     tests/fuzz/run_fuzzers.sh "${FT_FUZZ_SECONDS:-20}"
 ) >"$fuzz_log" 2>&1 &
 fuzzing=$!
-asan_rc=0
-tests/sanitize.sh test || asan_rc=$?
+while [ ! -e "$ended" ]; do sleep 1; done
+background=""
 fuzz_rc=0
 wait "$fuzzing" || fuzz_rc=$?
 trap - EXIT
+stage "sanitizer tests"
+cat "$asan_test_log"
 stage "fuzzing (every harness for ${FT_FUZZ_SECONDS:-20} s)"
 cat "$fuzz_log"
-((asan_rc == 0)) || { echo "tests/run.sh: the sanitizer tests failed" >&2; exit 1; }
+[ -e "$asan_passed" ] || { echo "tests/run.sh: the sanitizer tests failed" >&2; exit 1; }
 ((fuzz_rc == 0)) || { echo "tests/run.sh: fuzzing failed (a finding, or the fuzz build)" >&2; exit 1; }
 stage "done"

@@ -44,4 +44,4 @@ fi
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:abort_on_error=1:print_stacktrace=1:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 cd "$build"
-ctest -L native --output-on-failure -j"$(nproc)" --timeout 600
+ctest -L native --output-on-failure -j"$(nproc)" --timeout "${FT_ASAN_TIMEOUT:-600}"
