@@ -4,33 +4,14 @@
 # (native GoogleTest suites, Python ctypes tests, real Blender and POV-Ray),
 # then the C ABI suites, fuzz replays and a few native programs again under
 # ASan + UBSan (tests/sanitize.sh).
-# Time (2 cores): the CI's clean-clone runs took 1759 s (2026-11-26), 1338 s
-# and 1654 s (2026-11-27, the second with the Windows stage, its mingw
-# dependencies cached in ~/.cache; a fresh machine builds those too: about
-# 1925 s); the first run with the sanitizer build beside ctest took 1097 s
-# (2026-11-27, the CI of session 11's landing). "Well under 25 minutes" is
-# the aim, on a fresh machine too.
-# Measured 2026-11-27 (CPU seconds, user + sys, cold builds without ccache,
-# nice 19 at load 5-11; an idle 2-core machine runs a build stage in about
-# half its CPU time, which reproduces the 1654 s run):
-#   stage                        before   after  what changed
-#   Windows: mingw dependencies     590     590  (none; FFTW's codelets)
-#   Windows: cross build            525     321  the CLI as a unity build
-#   Release build                  1034    ~763  CLI unity 321 -> 93, no benchmarks -30,
-#                                                the C ABI suites' shared header 58 -> 45
-#   ctest                          1014    ~580  OpenMP waits passively (erosion tests
-#                                                550 -> 214, the watchdog ~110 -> 11)
-#   sanitizer build                ~970     474  -O0 (the library 382 -> 229), no zip,
-#                                                wheel or povray_render_test, the CLI
-#                                                unity (801 measured with it, at -O1)
-#   sanitizer tests                  37      56  -O0
-# (ctest "after": the erosion programs measured test by test, the rest as
-# before; a full ctest after the change was stopped from outside at 534 of
-# 540.) Estimate for a clean CI on 2 idle cores, CPU / 2 per stage: about
-# 1925 s before, about 1380 s (23 min) after on a fresh machine, about 1080 s
-# (18 min) with the mingw dependencies cached. The sanitizer build now runs
-# beside ctest at nice 19, in the cores the tests leave idle (Blender
-# waiting on its window, the last tests), which the estimate does not count.
+# Time (2 cores): the CI's fresh-clone runs took 1804 s and more (2026-12-02,
+# the stages one after the other: Windows 870 s from a cold mingw cache,
+# Release build 506 s, ctest 899 s). Since then the stages that use different
+# resources overlap: the Windows build beside the Release build, the
+# sanitizer tree (clang, also the fuzzers' build) and its tests beside
+# everything at nice 19, the Blender 4.3 root and the Wine prefix made beside
+# the builds. docs/measurements/ci.md has the stage times and the slowest
+# tests. "Well under 25 minutes" is the aim, on a fresh machine too.
 # Each stage prints its start, so a CI log shows where time goes.
 # FT_WINDOWS=0 leaves the Windows stage out, FT_FUZZ=0 the fuzzing.
 set -euo pipefail
