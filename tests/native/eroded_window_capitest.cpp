@@ -6,6 +6,7 @@
 // refused with the reason before any work.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -184,14 +185,26 @@ int32_t height_of(const Case& c) { return c.terrain.method == FT_TERRAIN_FBM ? c
 // third of a second at this size) before its own samples, and its maps
 // still cost the whole: sixteen windows on two cases, four (the first of
 // the sixteen: corners and edge lines) on the others, to keep the test to
-// seconds.
-TEST(ErodedWindow, SixteenOddWindowsAreTheWholesSamples) {
-  for (const Case& c : cases()) {
-    std::vector<Rect> rects = odd_windows(width_of(c), height_of(c));
-    if (c.name != "land" && c.name != "fbm badlands") rects.resize(4);
-    expect_windows_equal_the_whole(c, rects, 1);
-  }
+// seconds. One test per case (the same windows and checks as one loop over
+// the cases), so that ctest runs them side by side: under ASan the loop was
+// one test of four minutes, run last and alone.
+class ErodedWindowOfCase : public ::testing::TestWithParam<size_t> {};
+
+TEST_P(ErodedWindowOfCase, SixteenOddWindowsAreTheWholesSamples) {
+  const Case c = cases().at(GetParam());
+  std::vector<Rect> rects = odd_windows(width_of(c), height_of(c));
+  if (c.name != "land" && c.name != "fbm badlands") rects.resize(4);
+  expect_windows_equal_the_whole(c, rects, 1);
 }
+
+// Every case, named after it ("land with a sea": land_with_a_sea).
+INSTANTIATE_TEST_SUITE_P(ErodedWindow, ErodedWindowOfCase, ::testing::Range(size_t(0), cases().size()),
+                         [](const ::testing::TestParamInfo<size_t>& info) {
+                           std::string name = cases().at(info.param).name;
+                           for (char& ch : name)
+                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           return name;
+                         });
 
 TEST(ErodedWindow, TilesAreTheWholesSamples) {
   for (const Case& c : cases())
