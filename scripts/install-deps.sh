@@ -30,9 +30,12 @@ case "${1:-test}" in
   *) echo "usage: $0 [build|test|demo|windows]" >&2; exit 2 ;;
 esac
 
+# One dpkg-query for the whole list (one per package took ~15 s at load).
+installed=" $(dpkg-query -W -f='${Package} ${Status}\n' "${want[@]}" 2>/dev/null |
+              awk '/ install ok installed$/ {printf "%s ", $1}') "
 missing=()
 for p in "${want[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  [[ "$installed" == *" $p "* ]] || missing+=("$p")
 done
 if ((${#missing[@]})); then
   echo "installing: ${missing[*]}" >&2

@@ -4,33 +4,14 @@
 # (native GoogleTest suites, Python ctypes tests, real Blender and POV-Ray),
 # then the C ABI suites, fuzz replays and a few native programs again under
 # ASan + UBSan (tests/sanitize.sh).
-# Time (2 cores): the CI's clean-clone runs took 1759 s (2026-11-26), 1338 s
-# and 1654 s (2026-11-27, the second with the Windows stage, its mingw
-# dependencies cached in ~/.cache; a fresh machine builds those too: about
-# 1925 s); the first run with the sanitizer build beside ctest took 1097 s
-# (2026-11-27, the CI of session 11's landing). "Well under 25 minutes" is
-# the aim, on a fresh machine too.
-# Measured 2026-11-27 (CPU seconds, user + sys, cold builds without ccache,
-# nice 19 at load 5-11; an idle 2-core machine runs a build stage in about
-# half its CPU time, which reproduces the 1654 s run):
-#   stage                        before   after  what changed
-#   Windows: mingw dependencies     590     590  (none; FFTW's codelets)
-#   Windows: cross build            525     321  the CLI as a unity build
-#   Release build                  1034    ~763  CLI unity 321 -> 93, no benchmarks -30,
-#                                                the C ABI suites' shared header 58 -> 45
-#   ctest                          1014    ~580  OpenMP waits passively (erosion tests
-#                                                550 -> 214, the watchdog ~110 -> 11)
-#   sanitizer build                ~970     474  -O0 (the library 382 -> 229), no zip,
-#                                                wheel or povray_render_test, the CLI
-#                                                unity (801 measured with it, at -O1)
-#   sanitizer tests                  37      56  -O0
-# (ctest "after": the erosion programs measured test by test, the rest as
-# before; a full ctest after the change was stopped from outside at 534 of
-# 540.) Estimate for a clean CI on 2 idle cores, CPU / 2 per stage: about
-# 1925 s before, about 1380 s (23 min) after on a fresh machine, about 1080 s
-# (18 min) with the mingw dependencies cached. The sanitizer build now runs
-# beside ctest at nice 19, in the cores the tests leave idle (Blender
-# waiting on its window, the last tests), which the estimate does not count.
+# Time (2 cores): the CI's fresh-clone runs took 1804 s and more (2026-12-02,
+# the stages one after the other: Windows 870 s from a cold mingw cache,
+# Release build 506 s, ctest 899 s). Since then the stages that use different
+# resources overlap: the Windows build beside the Release build, the
+# sanitizer tree (clang, also the fuzzers' build) and its tests beside
+# everything at nice 19, the Blender 4.3 root and the Wine prefix made beside
+# the builds. docs/measurements/ci.md has the stage times and the slowest
+# tests. "Well under 25 minutes" is the aim, on a fresh machine too.
 # Each stage prints its start, so a CI log shows where time goes.
 # FT_WINDOWS=0 leaves the Windows stage out, FT_FUZZ=0 the fuzzing.
 set -euo pipefail
@@ -41,68 +22,114 @@ start=$SECONDS
 # Python and Blender tests too.
 export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 stage() { echo "== tests/run.sh: $1 at $((SECONDS - start)) s"; }
+windows=${FT_WINDOWS:-1}
+# FT_FUZZ=0 leaves the fuzz stage out.
+fuzz=${FT_FUZZ:-1}
 stage "install"
 scripts/install-deps.sh test
-# Before the Linux build: its add-on zip then carries fracterra.dll, and its
-# ctest runs the Windows programs under Wine (tests/windows, docs/windows.md).
-# FT_WINDOWS=0 leaves it out (its tests then skip, saying why).
-if [ "${FT_WINDOWS:-1}" != 0 ]; then
-  stage "Windows build (mingw-w64)"
-  scripts/build-windows.sh
+# Both package sets before anything runs beside another: one apt at a time.
+[ "$windows" = 0 ] || scripts/install-deps.sh windows
+mkdir -p build
+asan_log=$PWD/build/sanitizer-build.log
+fuzz_log=$PWD/build/fuzz-run.log
+windows_log=$PWD/build/windows-build.log
+asan_built=$PWD/build/sanitizer-build.done
+ended=$PWD/build/background-builds.ended
+rm -f "$asan_built" "$ended"
+# The sanitizer build (clang, ASan + UBSan, with the libFuzzer harnesses in
+# the same tree: tests/sanitize.sh), then its tests, run from the start at
+# the lowest priority, so they take a core only while the other stages leave
+# one idle (the Windows stage's downloads and configure scripts, Blender
+# waiting on its window, the last long tests finishing alone). Their wall
+# time then depends on the other stages: the per-test timeout is 25 minutes
+# (a hang, not a busy machine).
+asan_test_log=$PWD/build/sanitizer-tests.log
+asan_passed=$PWD/build/sanitizer-tests.passed
+rm -f "$asan_passed"
+# Each stage beside another runs in its own process group, so that a failing
+# stage stops them all.
+background="" prefetch="" windows_build=""
+stop_beside() {
+  local group
+  for group in "$background" "$prefetch" "$windows_build"; do
+    [ -z "$group" ] || kill -- -"$group" 2>/dev/null || true
+  done
+}
+trap stop_beside EXIT
+setsid --wait nice -n 19 bash -c 'trap "touch \"$3\"" EXIT
+  tests/sanitize.sh build >"$1" 2>&1 || exit 1
+  touch "$2"
+  FT_ASAN_TIMEOUT=1500 tests/sanitize.sh test >"$4" 2>&1 || exit 1
+  touch "$5"' _ "$asan_log" "$asan_built" "$ended" "$asan_test_log" "$asan_passed" &
+background=$!
+# What the tests would otherwise make on a fresh machine while a ctest slot
+# waits, made now beside the builds, whose compiles leave the network and the
+# disk idle: the Debian trixie root with Blender 4.3 (scripts/blender4-root.sh,
+# about 3 minutes of downloads and dpkg the first time, nothing later) and
+# the Wine prefix (about 10 s). Each keeps its own lock, so a test that comes
+# first waits for it and reuses it; a failure here leaves the test to report.
+prefetch_log=$PWD/build/prefetch.log
+setsid --wait nice -n 10 bash -c 'scripts/blender4-root.sh >/dev/null || true
+  [ "$1" = 0 ] || tests/windows/wine_run.sh --prepare || true' _ "$windows" >"$prefetch_log" 2>&1 &
+prefetch=$!
+# The Windows build beside the Release build: its mingw dependencies
+# (scripts/mingw-deps.sh: source downloads, FFTW's serial configure scripts)
+# leave a core idle much of the time, which the Release build takes. The
+# Linux build's add-on zip and wheels carry its fracterra.dll, and its ctest
+# runs the Windows programs under Wine (tests/windows, docs/windows.md): so
+# once both are done, the Release build runs again, configure finds the DLL,
+# and only the packages are made again. FT_WINDOWS=0 leaves it out (its
+# tests then skip, saying why).
+if [ "$windows" != 0 ]; then
+  stage "Windows build (mingw-w64), beside the Release build; its log: $windows_log"
+  setsid --wait scripts/build-windows.sh >"$windows_log" 2>&1 &
+  windows_build=$!
 fi
 # No benchmarks (native/bench): no test runs them, and they were 30 s of the
 # build's CPU (scripts/build.sh -DFT_BUILD_BENCH=ON brings them back).
 stage "Release build"
 scripts/build.sh -DCMAKE_UNITY_BUILD=ON -DFT_BUILD_BENCH=OFF
-# The sanitizer build, then the libFuzzer harnesses' build (clang, in
-# build-fuzz), run beside the Release ctest at the lowest priority, so they
-# take a core only while the tests leave one idle (Blender waiting on its
-# window, the last long tests finishing alone). The sanitizer tests run once
-# their build is done; beside them, once the fuzz build is done too, every
-# harness fuzzes for 20 s, all at once at nice 19 (a new finding fails the
-# run: its input is in build-fuzz/fuzz-artifacts/, tests/fuzz/run_fuzzers.sh
-# says how to keep it as a regression). Their own process groups, so that a
-# failing ctest stops them too.
-stage "ctest (the sanitizer and fuzz builds beside it, nice 19)"
-asan_log=$PWD/build/sanitizer-build.log
-fuzz_build_log=$PWD/build/fuzz-build.log
-fuzz_log=$PWD/build/fuzz-run.log
-asan_built=$PWD/build/sanitizer-build.done
-fuzz_built=$PWD/build/fuzz-build.done
-ended=$PWD/build/background-builds.ended
-rm -f "$asan_built" "$fuzz_built" "$ended"
-# FT_FUZZ=0 leaves the fuzz stage out (its build is about 520 s of CPU, cold).
-fuzz=${FT_FUZZ:-1}
-setsid --wait nice -n 19 bash -c 'trap "touch \"$5\"" EXIT
-  tests/sanitize.sh build >"$1" 2>&1 || exit 1
-  touch "$2"
-  [ "$6" != 0 ] || exit 0
-  tests/fuzz/run_fuzzers.sh 0 >"$3" 2>&1 || exit 2
-  touch "$4"' _ "$asan_log" "$asan_built" "$fuzz_build_log" "$fuzz_built" "$ended" "$fuzz" &
-background=$!
-trap 'kill -- -"$background" 2>/dev/null || true' EXIT
+if [ -n "$windows_build" ]; then
+  stage "the rest of the Windows build"
+  windows_rc=0
+  wait "$windows_build" || windows_rc=$?
+  windows_build=""
+  cat "$windows_log"
+  ((windows_rc == 0)) || { echo "tests/run.sh: the Windows build failed" >&2; exit 1; }
+  stage "the packages again, with fracterra.dll"
+  scripts/build.sh -DCMAKE_UNITY_BUILD=ON -DFT_BUILD_BENCH=OFF
+fi
+stage "the Blender 4.3 root and the Wine prefix (made beside the builds)"
+wait "$prefetch" || true
+prefetch=""
+cat "$prefetch_log"
+stage "ctest (the sanitizer build and tests beside it, nice 19)"
 (cd build && ctest --output-on-failure -j"$(nproc)" --timeout 600)
-stage "sanitizers (the rest of their build, then their tests; the fuzz build, then 20 s of fuzzing, beside)"
+stage "sanitizers (the rest of their build and tests; every harness fuzzing for ${FT_FUZZ_SECONDS:-20} s beside)"
 while [ ! -e "$asan_built" ] && [ ! -e "$ended" ]; do sleep 1; done
 if [ ! -e "$asan_built" ]; then
   cat "$asan_log"; echo "tests/run.sh: the sanitizer build failed" >&2; exit 1
 fi
+# Every harness fuzzes for 20 s, all at once at nice 19 (a new finding fails
+# the run: its input is in build-asan/fuzz-artifacts/, tests/fuzz/run_fuzzers.sh
+# says how to keep it as a regression).
 (
   [ "$fuzz" != 0 ] || { echo "FT_FUZZ=0: no fuzzing"; exit 0; }
-  while [ ! -e "$fuzz_built" ] && [ ! -e "$ended" ]; do sleep 1; done
-  [ -e "$fuzz_built" ] || { cat "$fuzz_build_log"; echo "tests/run.sh: the fuzz harnesses' build failed" >&2; exit 1; }
   # 120 s per input: at nice 19 beside the sanitizer tests, 13 harnesses share
   # 2 cores, and a slow EXR input (2.7 s of CPU under ASan) took 60 s of wall.
-  FT_FUZZ_PARALLEL=1 FT_FUZZ_TIMEOUT=${FT_FUZZ_TIMEOUT:-120} tests/fuzz/run_fuzzers.sh "${FT_FUZZ_SECONDS:-20}"
+  FT_FUZZ_BUILD_DIR=build-asan FT_FUZZ_PARALLEL=1 FT_FUZZ_TIMEOUT=${FT_FUZZ_TIMEOUT:-120} \
+    tests/fuzz/run_fuzzers.sh "${FT_FUZZ_SECONDS:-20}"
 ) >"$fuzz_log" 2>&1 &
 fuzzing=$!
-asan_rc=0
-tests/sanitize.sh test || asan_rc=$?
+while [ ! -e "$ended" ]; do sleep 1; done
+background=""
 fuzz_rc=0
 wait "$fuzzing" || fuzz_rc=$?
 trap - EXIT
+stage "sanitizer tests"
+cat "$asan_test_log"
 stage "fuzzing (every harness for ${FT_FUZZ_SECONDS:-20} s)"
 cat "$fuzz_log"
-((asan_rc == 0)) || { echo "tests/run.sh: the sanitizer tests failed" >&2; exit 1; }
+[ -e "$asan_passed" ] || { echo "tests/run.sh: the sanitizer tests failed" >&2; exit 1; }
 ((fuzz_rc == 0)) || { echo "tests/run.sh: fuzzing failed (a finding, or the fuzz build)" >&2; exit 1; }
 stage "done"

@@ -18,6 +18,8 @@ if(FT_BLENDER)
   set_tests_properties(blender_addon blender_params blender_dem blender_tiles blender_erosion blender_pov_export
     blender_preview blender_rivers blender_planet blender_splat_material blender_children
     PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
+  # COST: about 30 s in a CI run, so a clean clone's ctest starts it early.
+  set_tests_properties(blender_pov_export PROPERTIES COST 12)
   # The Erode step is checked against the CLI, another front end of the library's pipeline.
   set_tests_properties(blender_erosion PROPERTIES ENVIRONMENT "FRACTERRA_CLI=$<TARGET_FILE:fracterra_cli>")
   # Rivers and Lakes too: the rivers are those `fracterra terrain --rivers` traces.

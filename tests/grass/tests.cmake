@@ -6,5 +6,5 @@ find_program(FT_PYTHON3_SYSTEM NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(FT_PYTHON3_SYSTEM)
   add_test(NAME grass_drainage
     COMMAND ${FT_PYTHON3_SYSTEM} ${CMAKE_CURRENT_LIST_DIR}/grass_drainage.py $<TARGET_FILE:fracterra_cli>)
-  set_tests_properties(grass_drainage PROPERTIES LABELS native TIMEOUT 120 SKIP_RETURN_CODE 77)
+  set_tests_properties(grass_drainage PROPERTIES LABELS native TIMEOUT 120 SKIP_RETURN_CODE 77 COST 20)
 endif()

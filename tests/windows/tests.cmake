@@ -28,3 +28,4 @@ set_tests_properties(windows_capi_suites_under_wine windows_dll_imports_and_expo
 # otherwise ran last, one core idle beside them.
 set_tests_properties(windows_cli_same_bits PROPERTIES COST 30)
 set_tests_properties(windows_dll_imports_and_exports PROPERTIES COST 10)
+set_tests_properties(windows_cli_unicode_path PROPERTIES COST 15)
