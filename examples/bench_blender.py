@@ -69,6 +69,8 @@ def bench_fracterra(args):
         obj.fracterra_terrain.seed = 100 + i
         regen.append(timed(bpy.ops.object.fracterra_terrain_regenerate))
         vertices = len(obj.data.vertices)
+        if i == 0:
+            args.defaults = params.values_of(obj.fracterra_terrain)
         # fracterra's own share: generation and mesh filling, without Blender's depsgraph.
         values = params.values_of(obj.fracterra_terrain)
         t0, c0 = time.perf_counter(), time.process_time()
@@ -80,6 +82,33 @@ def bench_fracterra(args):
         terrain_build.regenerate_object(obj, bpy.context)
         own_regen.append((time.perf_counter() - t0, time.process_time() - c0))
     return vertices, add, regen, own_add, own_regen
+
+
+def bench_blender_share(args):
+    """Blender's own share of an add: the same mesh (UV map, colours, height and
+    slope attributes) from arrays the library made beforehand, timed from the
+    new mesh to the view-layer update after it is linked, the arrays freed
+    before the update as in the operator. No add-on can build this mesh for
+    less in this Blender; the add's time less this is fracterra's."""
+    from fracterra.blender.build import mesh as mesh_build, splat_material
+    from fracterra.blender.build.terrain import terrain_work
+    times = []
+    for i in range(args.repeat):
+        clear()
+        values = dict(args.defaults)  # the first add's settings: the add-on's defaults
+        values["seed"] = 300 + i
+        g = terrain_work(values, bpy.context)(lambda _fraction: False)
+        bpy.context.view_layer.update()
+        t0, c0 = time.perf_counter(), time.process_time()
+        mesh = bpy.data.meshes.new("Blender's share")
+        mesh_build.fill_grid_mesh(mesh, g, smooth=values["smooth"])
+        mesh_build.set_height_slope(mesh, g.height, g.slope)
+        splat_material.set_colors(mesh, g.colors)
+        del g
+        bpy.context.collection.objects.link(bpy.data.objects.new("Blender's share", mesh))
+        bpy.context.view_layer.update()
+        times.append((time.perf_counter() - t0, time.process_time() - c0))
+    return times
 
 
 def bench_ant(args):
@@ -122,7 +151,8 @@ def main():
     threads = prefs.threads if prefs is not None else 0
     v, add, regen, own_add, own_regen = bench_fracterra(args)
     rows = [line("fracterra Add Fractal Terrain", v, add), line("fracterra Regenerate (in place)", v, regen),
-            line("  fracterra work only: add", v, own_add), line("  fracterra work only: regenerate", v, own_regen)]
+            line("  fracterra work only: add", v, own_add), line("  fracterra work only: regenerate", v, own_regen),
+            line("  Blender's share of an add", v, bench_blender_share(args))]
     if not args.skip_ant:
         if addon_utils.enable("ant_landscape", default_set=False, handle_error=None) is None:
             raise RuntimeError("could not enable ant_landscape (it needs Debian's python3-numpy)")

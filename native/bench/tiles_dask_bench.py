@@ -137,6 +137,18 @@ def _uptime():
     return subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
 
 
+def _cpu_seconds():
+    """This process's CPU seconds (user + system, all threads)."""
+    import resource
+    r = resource.getrusage(resource.RUSAGE_SELF)
+    return r.ru_utime + r.ru_stime
+
+
+def _cluster_cpu_seconds(client):
+    """The driver's and every worker's CPU seconds, summed."""
+    return _cpu_seconds() + sum(client.run(_cpu_seconds).values())
+
+
 def eroded(a):
     """The eroded set on Dask against the in-memory erosion of the same terrain, alternated."""
     from fracterra.core import build_terrain
@@ -145,26 +157,38 @@ def eroded(a):
     report = {"levels": a.levels, "tile": a.tile, "workers": a.workers, "memory_limit": a.memory_limit,
               "preset": a.erode, "maps": a.maps, "engine": a.engine, "uptime_before": _uptime()}
     w, h = tiles.terrain_extent(settings, None)
-    memory, dask, summaries, loads = [], [], [], []
+    memory, dask, summaries, loads, memory_cpu, dask_cpu = [], [], [], [], [], []
     client = tiles.connect(workers=a.workers, memory_limit=a.memory_limit)
     try:
-        for _ in range(a.reps):
-            t = time.perf_counter()
+        for rep in range(a.reps):
+            # CPU seconds beside the wall time: on a machine shared with other sessions the wall
+            # time follows their load, the CPU time much less.
+            c, t = _cpu_seconds(), time.perf_counter()
             hf, _maps = build_terrain(settings, preset=a.erode.upper(), maps=a.maps, threads=0)
             hf.close()
             memory.append(time.perf_counter() - t)
+            memory_cpu.append(_cpu_seconds() - c)
             shutil.rmtree(a.out, ignore_errors=True)
-            t = time.perf_counter()
+            c, t = _cluster_cpu_seconds(client), time.perf_counter()
             summaries.append(tiles.build_tileset(settings, a.out, a.tile, client=client, progress=False,
                                                  preset=a.erode.upper(), maps=a.maps, engine=a.engine))
             dask.append(time.perf_counter() - t)
+            dask_cpu.append(_cluster_cpu_seconds(client) - c)
             loads.append(_uptime())
+            # Each rep as it ends (stderr), so a run cut short still says what it measured.
+            print(json.dumps({"rep": rep, "in_memory_seconds": memory[-1], "in_memory_cpu_seconds": memory_cpu[-1],
+                              "dask_seconds": dask[-1], "dask_cpu_seconds": dask_cpu[-1],
+                              "range_seconds": summaries[-1].get("range_seconds"),
+                              "finish_seconds": summaries[-1]["finish_seconds"],
+                              "engine_seconds": summaries[-1].get("engine_seconds"), "load": loads[-1]}),
+                  file=sys.stderr, flush=True)
         report["worker_peak_rss_mib"] = sorted(client.run(tiles._peak_rss_mib).values())
     finally:
         cluster = client.cluster
         client.close()
         cluster.close()
     report.update({"samples": w * h, "in_memory_seconds": memory, "dask_seconds": dask, "loads": loads,
+                   "in_memory_cpu_seconds": memory_cpu, "dask_cpu_seconds": dask_cpu,
                    "in_memory_samples_per_s": w * h / statistics.median(memory),
                    "dask_samples_per_s": w * h / statistics.median(dask),
                    "range_seconds": [sm.get("range_seconds") for sm in summaries],

@@ -38,6 +38,11 @@ namespace {
 // threads, the torus of a terrain that tiles, its landform's sea.
 const std::set<std::string> kTerrainsOwn = {"periodic", "threads", "sea", "sea_level", "sea_fraction"};
 
+// What --engine on an eroded set without --maps says (python/fracterra/tiles.py says the same).
+constexpr const char* kEngineWithoutMaps =
+    "fracterra tiles: the engine tiles carry no splat maps: they come from the erosion maps (add --maps; each "
+    "task then builds the whole terrain, since the drainage area is global)";
+
 struct TilesOptions {
   ft_terrain_params p = terrain::default_terrain_params();
   ft_build_params build = defaults_of<ft_build_params>(pipeline::build_param_table());
@@ -78,7 +83,10 @@ int run(TilesOptions& o) {
   b.threads = p.threads;
   const tiles::TileTerrain t = tiles::TileTerrain::of(b, o.maps);
   if (!o.engine.empty() && t.erodes() && !t.maps)
-    invalid("--engine cuts an eroded set's splat maps from the set's erosion maps: add --maps");
+    // The splat maps come from the erosion maps, whose drainage area is
+    // global (each task builds the whole): without them a set of any size
+    // is cut with its heights alone, in memory of a tile.
+    std::fprintf(stderr, "%s\n", kEngineWithoutMaps);
   const engines::EngineOptions engine{o.engine.empty() ? engines::Engine::unity : engines::parse_engine(o.engine),
                                       o.region_size, o.engine_size};
   if (!o.engine.empty()) {  // a tile size the set cannot take is refused before anything is written

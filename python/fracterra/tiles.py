@@ -191,7 +191,10 @@ def _check_engine(engine, build):
     if build is not None and build["preset"] == "NONE" and build["erosion"] is None:
         return
     if build is not None and not build["maps"]:
-        raise FracterraError("--engine cuts an eroded set's splat maps from the set's erosion maps: add --maps")
+        # The splat maps come from the erosion maps, whose drainage area is global (each task builds the
+        # whole): without them a set of any size is cut with its heights alone, in memory of a tile.
+        print("fracterra-tiles: the engine tiles carry no splat maps: they come from the erosion maps (add --maps; "
+              "each task then builds the whole terrain, since the drainage area is global)", file=sys.stderr)
 
 
 def _cut_for_engine(folder, engine, engine_size, region_size):

@@ -29,3 +29,19 @@ linux=$(cd "$out" && ls fracterra-*-linux_x64.zip)
          blender -b --python-exit-code 1 --python /ft/tests/test_dem.py -- --installed &&
          FRACTERRA_GDAL=/nonexistent/libgdal.so \
            blender -b --python-exit-code 1 --python /ft/tests/test_without_gdal.py -- --installed"
+# The windows-x64 one, where the Windows build made it (docs/windows.md): its
+# wheel's DLL loads under Wine as ctypes would load it (check_wheel_dll.py), and
+# Blender refuses it on Linux. (blender4_windows_install.py, the installer with
+# the platform overridden, is run by hand: its last step does not pass yet.)
+windows=$(cd "$out" && ls fracterra-*-windows_x64.zip 2>/dev/null || true)
+if [ -z "$windows" ]; then
+  echo "blender4_extension: no windows-x64 extension (scripts/build-windows.sh makes the DLL it needs)"
+  exit 0
+fi
+python3 "$src/tests/windows/check_wheel_dll.py" "$out" "$src/tests/windows/dll_probe.c" "$src/blender_addon" \
+  "$src/tests/windows/wine_run.sh" || { rc=$?; [ "$rc" = 77 ] || exit "$rc"; }
+"$src/scripts/blender4-root.sh" --run "$root" \
+  "$src/tests/blender:/ft/tests" "$(realpath "$out"):/ft/out" -- \
+  sh -c "blender --command extension install-file --repo user_default /ft/out/$windows >/tmp/refused.log 2>&1;
+         grep -q \"This platform (linux-x64) isn't one of (windows-x64)\" /tmp/refused.log ||
+           { cat /tmp/refused.log; echo 'FAIL: Blender did not refuse the windows-x64 extension on Linux'; exit 1; }"

@@ -336,8 +336,7 @@ TEST(ErodedTiles, EngineTilesCarryTheWholesSplatMaps) {
 
 // Bad input is refused with a clear message before anything is written: an
 // erosion preset the library does not know, a tile size that does not cut an
-// eroded set, an erosion mask of another shape than the whole, an engine cut
-// of an eroded set without its maps.
+// eroded set, an erosion mask of another shape than the whole.
 TEST(ErodedTiles, BadInputIsRefusedAndWritesNothing) {
   const std::string terrain = "tiles --method midpoint --levels 8 --seed 2 --quiet ";
   auto refused = [&](const std::string& args, const std::string& why) {
@@ -357,7 +356,26 @@ TEST(ErodedTiles, BadInputIsRefusedAndWritesNothing) {
   refused("--erode land --tile 64 --erosion-mask " + mask.string(), "the erosion mask is 65 x 33");
   fs::remove(mask);
   fs::remove(mask.string() + ".json");  // its sidecar (the world size)
-  refused("--erode land --tile 64 --engine unity", "add --maps");
+}
+
+// Without --maps an eroded set is cut for an engine with its heights alone
+// (the splat maps come from the erosion maps, whose drainage area makes each
+// task build the whole): the run says so, and no tile carries a splat map.
+TEST(ErodedTiles, EngineTilesWithoutMapsAreHeightsAlone) {
+  const fs::path dir = fresh_dir("engine_heights");
+  const test::CliRun run = test::run_cli(
+      "tiles --method midpoint --levels 8 --seed 2 --world-size 10 --erode land --tile 64 --quiet --engine unity "
+      "--out " + dir.string());
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("no splat maps"), std::string::npos) << run.err;
+  const nlohmann::json side = nlohmann::json::parse(io::read_file((dir / "unity" / "unity.json").string()));
+  EXPECT_FALSE(side.contains("splat_layers"));
+  ASSERT_EQ(side["files"].size(), 16u);
+  for (const nlohmann::json& f : side["files"]) {
+    EXPECT_FALSE(f.contains("splat_file")) << f;
+    EXPECT_TRUE(fs::exists(dir / "unity" / f["file"].get<std::string>())) << f;
+  }
+  fs::remove_all(dir);
 }
 
 // `fracterra rivers --tiles` on a float tile set traces the same network as

@@ -228,6 +228,32 @@ TEST(Raster, NodataFillKeepsValidSamplesAndStaysInTheirRange) {
   EXPECT_LE(hf.at(0, 0), 100 + 3 * 3 + 2 * 2 + 6.0f);
 }
 
+// The fill looks 256 samples from each hole (its cost grows with that
+// distance, gdal_reader.cpp): a hole wider than twice that keeps samples out
+// of reach, and they are refused with their count instead of left NaN.
+TEST(Raster, NodataFillRefusesHolesBeyondItsReach) {
+  GDALAllRegister();
+  const int w = 3, h = 600;
+  const std::string path = tmp("far_holes.tif");
+  GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), w, h, 1, GDT_Float32, nullptr);
+  std::vector<float> v(size_t(w) * h, -9999.0f);
+  for (int x = 0; x < w; ++x) v[size_t(x)] = 10.0f + x;  // only the first row is valid
+  GDALRasterBandH b = GDALGetRasterBand(ds, 1);
+  GDALSetRasterNoDataValue(b, -9999);
+  EXPECT_EQ(GDALRasterIO(b, GF_Write, 0, 0, w, h, v.data(), w, h, GDT_Float32, 0, 0), CE_None);
+  GDALClose(ds);
+  try {
+    io::read_heightfield(path, io::NodataPolicy::fill);
+    FAIL() << "a hole beyond the fill's reach was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), FT_ERR_FORMAT);
+    // Rows 257..599 are more than 256 samples from row 0.
+    EXPECT_NE(std::string(e.what()).find(std::to_string((h - 257) * w) + " nodata samples farther than 256"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Raster, MalformedAndTruncatedFilesAreRefusedQuietly) {
   io::write_heightfield(random_heights(300, 200, 4), tmp("good.tif"));
   io::write_heightfield(random_heights(300, 200, 4), tmp("good.exr"));

@@ -33,6 +33,7 @@ enum class Stream : uint32_t {
   kNoiseWarpY = 16,         // domain warp, y field: level = octave
   kFluvialRouting = 17,     // Rho8 receivers of the fluvial eroder: level = time step
   kFlatRouting = 18,        // the maps' step costs across flats (erosion/flat_resolution.hpp): level 0
+  kRiverPlains = 19,        // the rivers' step costs across flats (hydrology/plains.cpp): level 0
   kPlanetNoise = 30,        // spherical fbm (planet/): level = octave
   kPlanetMidpoint = 31,     // spherical midpoint (planet/): {x, y, z} = the vertex's cube point at its birth level
   kPolyline = 10,

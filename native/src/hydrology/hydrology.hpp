@@ -4,6 +4,7 @@
 // meanders):
 //   lakes.cpp     depressions filled to their spill level, labelled, measured;
 //   lake_rings.cpp shorelines by marching squares;
+//   plains.cpp    rivers across flat ground: they wander and gather;
 //   rivers.cpp    channel heads, segments, Strahler orders, hydraulic geometry;
 //   river_paths.cpp grid steps smoothed away, meanders, the downhill check;
 //   carve.cpp     the terrain lowered along the rivers.
@@ -18,6 +19,7 @@
 #include "core/polyline_set.hpp"
 #include "core/progress.hpp"
 #include "erosion/d8_grid.hpp"
+#include "erosion/flow_graph.hpp"
 #include "erosion/sea.hpp"
 
 namespace ft::hydrology {
@@ -109,6 +111,18 @@ double resolved_min_depth(const HydrologyConfig& c, const Heightfield& hf);
 // min_depth, as a lake; the others are puddles rivers run through.
 Water fill_lakes(const erosion::D8Grid& g, const float* z, const std::vector<uint8_t>& sea,
                  const std::vector<int32_t>& sinks, double min_lake_area, double min_depth);
+
+// Receivers across flats (land cells with no lower neighbour on the filled
+// surface, not base levels): each river that comes onto a flat with at
+// least min_area of water is laid, the largest first, along the cheapest
+// path over random step costs (stream kRiverPlains) to the nearest laid
+// water, an outlet of the flat or a river laid before, so rivers wander and
+// join there; the flat's other cells drain to the nearest laid water. The
+// receivers off the flats are the graded surface's (graph, routed by
+// route_steepest); the new ones point into the flat or to its outlets, so
+// the graph stays a forest. Serial, in a fixed order. Returns the number of
+// cells re-routed. Leaves graph's stack stale: build it again.
+int64_t route_plains(const erosion::D8Grid& g, const Water& w, double min_area, erosion::FlowGraph& graph);
 
 // Shorelines of every lake as closed rings (outer ring first, then islands),
 // where the ground lies water.min_depth under the lake's level (so the lake's

@@ -100,7 +100,13 @@ RiverNetwork extract_rivers(const Heightfield& hf, const HydrologyConfig& c) {
   erosion::route_steepest(g, w.graded.data(), -1, graph);
   for (size_t i = 0; i < n; ++i)
     if (w.base[i]) graph.receiver[i] = int32_t(i), graph.length[i] = 0.0f;
+  // Across flat ground the graded surface's epsilon steps say nothing
+  // about where water goes (they ran one straight streak per gully to the
+  // nearest edge, and along it): rivers there wander and join (plains.cpp).
+  route_plains(g, w, c.min_area, graph);
   erosion::build_stack(g, graph);
+  if (graph.chunk_start.back() != int32_t(n))  // every cell reaches a base level
+    fail(FT_ERR_INTERNAL, "extract_rivers: the routing across flats left a cycle");
   std::vector<double> area;
   erosion::accumulate_area(g, graph, area);
   c.progress.report(0.5);
