@@ -3,7 +3,8 @@
 """A one-off measurement, not a CI test: fracterra's river network against
 GRASS GIS's `r.stream.extract` on the same eroded terrain (issue 40).
 
-Usage: grass_stream_orders.py FRACTERRA_CLI WORKDIR
+Usage: grass_stream_orders.py FRACTERRA_CLI WORKDIR [LANDFORM:SEED ...]
+(eroded terrains already in WORKDIR, e_LANDFORM SEED.npy, are reused)
 
 For each landform (plain, radial falloff, falloff with 30% sea) and seed, the
 terrain is made and eroded by `fracterra` (fBm 513^2, H 0.7, world size 20,
@@ -135,21 +136,18 @@ def grass_network(z, sea_mask, spacing, work):
     band.SetNoDataValue(-1e30)
     band.WriteArray(np.where(sea_mask, -1e30, z).astype(np.float32))
     ds = None
-    loc = os.path.join(work, "loc")
-    shutil.rmtree(loc, ignore_errors=True)
-    run(["grass", "-c", tif, "-e", loc])
-    mapset = os.path.join(loc, "PERMANENT")
     threshold = int(round(MIN_AREA / spacing ** 2))
     script = (
-        f"r.in.gdal input={tif} output=dem --quiet && "
+        f"r.in.gdal -o input={tif} output=dem --quiet && g.region raster=dem && "
         f"r.stream.extract elevation=dem threshold={threshold} stream_raster=streams direction=dir --quiet && "
-        f"r.out.gdal input=streams output={work}/streams.tif type=Int32 --quiet -f && "
-        f"r.out.gdal input=dir output={work}/dir.tif type=Int32 --quiet -f"
+        f"r.out.gdal -c input=streams output={work}/streams.tif format=GTiff type=Int32 --quiet && "
+        f"r.out.gdal -c input=dir output={work}/dir.tif format=GTiff type=Int32 --quiet"
     )
-    run(["grass", mapset, "--exec", "bash", "-c", script])
-    streams = gdal.Open(f"{work}/streams.tif").ReadAsArray()
+    run(["grass", "--tmp-location", "XY", "--exec", "sh", "-c", script], cwd=work)
+    sds = gdal.Open(f"{work}/streams.tif")  # kept open while its band is read
+    streams = sds.ReadAsArray()
+    nodata = sds.GetRasterBand(1).GetNoDataValue()
     direction = gdal.Open(f"{work}/dir.tif").ReadAsArray()
-    nodata = gdal.Open(f"{work}/streams.tif").GetRasterBand(1).GetNoDataValue()
     mask = (streams != nodata) & (streams > 0) if nodata is not None else streams > 0
     return strahler_streams(mask, direction, spacing)
 
@@ -160,12 +158,16 @@ def main():
     if shutil.which("grass") is None:
         sys.exit("GRASS is not installed (Debian grass-core)")
     spacing = WORLD / (SIZE - 1)
+    only = sys.argv[3:]
     for name, flags in LANDFORMS.items():
         for seed in (1, 2, 3):
+            if only and f"{name}:{seed}" not in only:
+                continue
             t, e = f"{work}/t_{name}{seed}.npy", f"{work}/e_{name}{seed}.npy"
-            run([cli, "terrain", "--method", "fbm", "--size", str(SIZE), "--hurst", "0.7", "--world-size", str(WORLD),
-                 "--seed", str(seed), *flags, "--out", t])
-            run([cli, "erode", "--in", t, "--preset", "rugged_mountains", "--out", e])
+            if not os.path.exists(e):
+                run([cli, "terrain", "--method", "fbm", "--size", str(SIZE), "--hurst", "0.7", "--world-size", str(WORLD),
+                     "--seed", str(seed), *flags, "--out", t])
+                run([cli, "erode", "--in", t, "--preset", "rugged_mountains", "--out", e])
             a = find(json.loads(run([cli, "analyze", e, "--rivers", "--min-area", str(MIN_AREA)]).stdout),
                      "bifurcation_ratio")
             z = np.load(e).astype(np.float64)

@@ -16,7 +16,7 @@ import numpy as np
 from .arrays import to_library
 from .core.binding import FplStudyRow, library
 from .core.errors import InvalidArgumentError
-from .core.polylines import Polylines
+from .core.polylines import Polylines, run_polyline
 from .core.terrain import _ProgressBridge
 from .keywords import Table, document, split
 
@@ -88,25 +88,12 @@ def polyline(method: str = "fpl", *, base=None, plane_normal=None, threads: int 
     p = lib.polyline_params_type()
     lib.check(lib.ft_polyline_params_init(byref(p)))
     table.fill(p, {"method": method, **given["polyline"]})
-    p.threads = threads
-    keep = None
+    b = None
     if base is not None:
-        b = np.ascontiguousarray(base, dtype=np.float64)
+        b = np.array(base, dtype=np.float64)  # a writable copy: the library reads it through a buffer
         if b.ndim != 2 or b.shape[1] != 3 or len(b) < 2 or not np.all(np.isfinite(b)):
             raise InvalidArgumentError(f"base must be an (n, 3) array of n >= 2 finite nodes, got shape {b.shape}")
-        keep = b
-        p.base = b.ctypes.data_as(POINTER(c_double))
-        p.base_count = len(b)
-    if plane_normal is not None:
-        p.plane_normal[:] = [float(c) for c in plane_normal]
-    bridge = _ProgressBridge(progress)
-    p.progress = bridge.c_fn
-    out = c_void_p()
-    status = lib.ft_polyline_generate(byref(p), byref(out))
-    bridge.reraise()
-    lib.check(status)
-    del keep
-    return Lines._from_handle(Polylines(out))
+    return Lines._from_handle(run_polyline(lib, p, b, plane_normal, progress, threads))
 
 
 def measure(lines: Lines) -> dict:

@@ -228,6 +228,28 @@ TEST(Raster, NodataFillKeepsValidSamplesAndStaysInTheirRange) {
   EXPECT_LE(hf.at(0, 0), 100 + 3 * 3 + 2 * 2 + 6.0f);
 }
 
+// GDALFillNodata keeps its work rasters in GTiff files in the current
+// directory unless told otherwise: a fill from Blender (whose directory may
+// not be writable) failed, and a killed process left three files behind. In
+// a directory that no longer exists no file can be made, even by root.
+TEST(Raster, NodataFillWritesNoFileInTheCurrentDirectory) {
+  const std::string src = make_georeferenced("holes3.tif", 20, 10, true);
+  const fs::path here = fs::current_path();
+  const fs::path gone = fs::path(tmp("gone-dir"));
+  fs::create_directories(gone);
+  fs::current_path(gone);
+  fs::remove(gone);
+  float filled = 0;
+  try {
+    filled = io::read_heightfield(src, io::NodataPolicy::fill).at(10, 5);
+  } catch (const Error& e) {
+    fs::current_path(here);
+    FAIL() << "the fill needed the current directory: " << e.what();
+  }
+  fs::current_path(here);
+  EXPECT_GE(filled, 100 + 3 * 9 + 2 * 4);
+}
+
 // The fill looks 256 samples from each hole (its cost grows with that
 // distance, gdal_reader.cpp): a hole wider than twice that keeps samples out
 // of reach, and they are refused with their count instead of left NaN.

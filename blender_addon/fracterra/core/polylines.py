@@ -114,14 +114,23 @@ def generate_polylines(values=None, base=None, plane_normal=None, progress=None,
     merged = dict(values or {})
     merged.update(overrides)
     params_mod.fill_struct(p, merged, params_mod.POLYLINE_PARAMS)
-    p.threads = threads
     base_buf = None
     if base is not None:
         base_buf = array.array("d", [c for pt in base for c in pt[:3]])
         if len(base_buf) < 6 or len(base_buf) % 3:
             raise InvalidArgumentError(f"the base polyline needs at least 2 points of 3 coordinates, got {len(base_buf) / 3:g}")
-        p.base = ctypes.cast((c_double * len(base_buf)).from_buffer(base_buf), POINTER(c_double))
-        p.base_count = len(base_buf) // 3
+    return run_polyline(lib, p, base_buf, plane_normal, progress, threads)
+
+
+def run_polyline(lib, p, base_xyz, plane_normal, progress, threads):
+    """Generates from filled params p: base_xyz is None or a writable buffer of
+    3 * n doubles (array.array('d') or a C-contiguous float64 numpy array) that
+    stays alive for the call; returns a Polylines."""
+    p.threads = threads
+    if base_xyz is not None:
+        n = len(base_xyz) if not hasattr(base_xyz, "size") else base_xyz.size
+        p.base = ctypes.cast((c_double * n).from_buffer(base_xyz), POINTER(c_double))
+        p.base_count = n // 3
     if plane_normal is not None:
         p.plane_normal[:] = [float(c) for c in plane_normal]
     bridge = _ProgressBridge(progress)

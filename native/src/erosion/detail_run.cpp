@@ -8,6 +8,8 @@
 #include <limits>
 #include <vector>
 
+#include "core/buffer.hpp"
+#include "core/kernel_clones.hpp"
 #include "core/rng.hpp"
 #include "erosion/flow_graph.hpp"
 #include "erosion/model_constants.hpp"
@@ -24,6 +26,78 @@ constexpr int32_t kCutHops = 6;
 // Passes that lift the small pits of the surface water routes over.
 constexpr int32_t kPitPasses = 3;
 constexpr uint8_t kSelf = 8;  // a receiver of its own: a base level or a pit
+
+// The grids of a run: not zero-filled on allocation (every pass writes a
+// grid before it is read), and first touched by the team, not by one
+// thread (the zeroing of 13 fresh grids was a sixth of a 2049^2 run).
+using Floats = Buffer<float>;
+using Bytes = Buffer<uint8_t>;
+
+void copy_grid(const float* from, size_t n, float* to) {
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < int64_t(n); ++i) to[i] = from[i];
+}
+
+// What the donors of cell i (bit k: neighbour k at offset o[k] drains to
+// it) send: their fronts added in direction order. The neighbours that do
+// not drain to i add 0, which changes no bit of a sum of non-negative
+// terms, so this sums what the bits select without a branch per donor.
+inline float pulled(const float* __restrict front, unsigned bits, int64_t i, const int32_t* o) {
+  float in = 0.0f;
+#pragma GCC unroll 8
+  for (int k = 0; k < 8; ++k) {
+    const float v = front[i + o[k]];
+    in += ((bits >> k) & 1u) ? v : 0.0f;
+  }
+  return in;
+}
+
+// One hop of a wave (DetailRun::wave) on cells x0 .. x1 - 1 of an interior
+// row (all eight neighbours at the offsets `off`), `row` the index of its
+// first cell; returns how many cells send on. Restrict parameters of
+// functions that are not inlined, so GCC vectorises them; each cell's sums
+// are the general path's, in the same order, so the bits are too (a cell
+// whose donors send nothing, which the general path skips, adds 0 and
+// lays min(share x 0, room) = 0).
+// The discharge: a cell adds what it takes to its discharge and sends it on.
+[[gnu::noinline]] FT_KERNEL_CLONES int64_t discharge_hop(const float* __restrict front, float* __restrict next,
+                                                         float* __restrict q, const uint8_t* __restrict donors,
+                                                         const uint8_t* __restrict dir, const int32_t* off,
+                                                         int64_t row, int32_t x0, int32_t x1) {
+  const int32_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
+  int32_t moving = 0;  // (an int: a 64-bit count kept the AVX2 loop scalar)
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x;
+    const float in = pulled(front, donors[i], i, o);
+    q[i] += in;
+    const float out = dir[i] == kSelf ? 0.0f : in;
+    next[i] = out;
+    moving += out != 0.0f;
+  }
+  return moving;
+}
+
+// The sediment: a cell lays its share of what it takes, up to its room,
+// and sends on the rest.
+[[gnu::noinline]] FT_KERNEL_CLONES int64_t deposit_hop(const float* __restrict front, float* __restrict next,
+                                                       const float* __restrict share, float* __restrict room,
+                                                       float* __restrict laid, const uint8_t* __restrict donors,
+                                                       const uint8_t* __restrict dir, const int32_t* off, int64_t row,
+                                                       int32_t x0, int32_t x1) {
+  const int32_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
+  int32_t moving = 0;  // (an int: a 64-bit count kept the AVX2 loop scalar)
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x;
+    const float in = pulled(front, donors[i], i, o);
+    const float here = std::min(share[i] * in, room[i]);
+    room[i] -= here;
+    laid[i] += here;
+    const float out = dir[i] == kSelf ? 0.0f : in - here;
+    next[i] = out;
+    moving += out != 0.0f;
+  }
+  return moving;
+}
 
 // Creep's kernel along one axis: `count` passes, each either a box of
 // 2 radius + 1 samples or, where the step's variance is small, the
@@ -73,13 +147,14 @@ class DetailRun {
       : r_(r), c_(c), in_(in), z_(z), w_(r.width), h_(r.height), n_(r.size()), steps_(steps),
         cell_(r.whole.spacing * r.whole.spacing), dt_(years / steps), k_dt_(c.fluvial.erodibility * dt_),
         m_(c.fluvial.area_exponent), G_(c.model.deposition), own_rain_(c.model.rainfall * cell_),
-        kernel_(creep_kernel(creep_r(r.whole, c, dt_))), texture_(z, z + n_), start_(n_), random_(n_), dir_(n_),
+        kernel_(creep_kernel(creep_r(r.whole, c, dt_))), texture_(n_), start_(n_), random_(n_), dir_(n_),
         q_(n_), front_(n_), next_(n_), cut_(n_), room_(n_), laid_(n_), donors_(n_) {
     for (int k = 0; k < 8; ++k) off_[k] = kDy[k] * w_ + kDx[k];
+    copy_grid(z, n_, texture_.data());
   }
 
   void step(int32_t s) {
-    std::copy(z_, z_ + n_, start_.begin());
+    copy_grid(z_, n_, start_.data());
     draw(s);
     route();
     find_donors();
@@ -115,10 +190,10 @@ class DetailRun {
   // lifting every cell with no lower neighbour a float step above its
   // lowest (a pit of the rock's texture then passes its water on; what a
   // few passes do not drain keeps it). Into `out`, using `scratch`.
-  void routing_surface(std::vector<float>& out, std::vector<float>& scratch) {
-    std::copy(z_, z_ + n_, out.begin());
+  void routing_surface(Floats& out, Floats& scratch) {
+    copy_grid(z_, n_, out.data());
     for (int32_t pass = 0; pass < kPitPasses; ++pass) {
-      const std::vector<float>& from = out;
+      const Floats& from = out;
 #pragma omp parallel for schedule(static)
       for (int32_t y = 0; y < h_; ++y)
         for (int32_t x = 0; x < w_; ++x) {
@@ -131,14 +206,14 @@ class DetailRun {
           }
           scratch[i] = from[i] <= lowest && !std::isinf(lowest) ? std::nextafter(lowest, INFINITY) : from[i];
         }
-      out.swap(scratch);
+      std::swap(out, scratch);
     }
   }
 
   // Steepest descent on the routing surface (ties: the first direction),
   // diagonals over 2 - r.
   void route() {
-    std::vector<float>& zr = cut_;  // free until incise()
+    Floats& zr = cut_;  // free until incise()
     routing_surface(zr, next_);
 #pragma omp parallel for schedule(static)
     for (int32_t y = 0; y < h_; ++y)
@@ -184,24 +259,36 @@ class DetailRun {
   // the first): each hop every cell takes what its donors send, and
   // absorb(i, in) returns what it sends on (nothing from a cell that is its
   // own receiver). absorb(i, 0) must change nothing and return 0.
-  template <class Absorb>
-  void wave(Absorb absorb) {
+  // hop(row, x0, x1) does the same on cells x0 .. x1 - 1 of an interior row
+  // and returns how many send on (discharge_hop, deposit_hop).
+  template <class Absorb, class Hop>
+  void wave(Absorb absorb, Hop hop) {
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i)
       if (dir_[i] == kSelf) front_[i] = 0.0f;
-    for (int32_t hop = 0; hop < kHops; ++hop) {
+    // A cell at the region's edge: its donors one by one.
+    auto edge = [&](int64_t i) {
+      float out = 0.0f;
+      if (donors_[i]) {
+        const float in = pull(size_t(i));
+        if (in != 0.0f) out = absorb(size_t(i), in);
+      }
+      next_[i] = dir_[i] == kSelf ? 0.0f : out;
+      return int64_t(next_[i] != 0.0f);
+    };
+    for (int32_t h = 0; h < kHops; ++h) {
       int64_t moving = 0;
 #pragma omp parallel for schedule(static) reduction(+ : moving)
-      for (int64_t i = 0; i < int64_t(n_); ++i) {
-        float out = 0.0f;
-        if (donors_[i]) {
-          const float in = pull(size_t(i));
-          if (in != 0.0f) out = absorb(size_t(i), in);
+      for (int32_t y = 0; y < h_; ++y) {
+        const int64_t row = int64_t(y) * w_;
+        if (y == 0 || y == h_ - 1 || w_ < 3) {
+          for (int32_t x = 0; x < w_; ++x) moving += edge(row + x);
+          continue;
         }
-        next_[i] = dir_[i] == kSelf ? 0.0f : out;
-        moving += next_[i] != 0.0f;
+        moving += edge(row) + edge(row + w_ - 1);
+        moving += hop(row, 1, w_ - 1);
       }
-      front_.swap(next_);
+      std::swap(front_, next_);
       if (moving == 0) break;
     }
   }
@@ -210,16 +297,20 @@ class DetailRun {
   void discharge() {
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i) q_[i] = front_[i] = float(rain(size_t(i)));
-    wave([this](size_t i, float in) {
-      q_[i] += in;
-      return in;
-    });
+    wave(
+        [this](size_t i, float in) {
+          q_[i] += in;
+          return in;
+        },
+        [this](int64_t row, int32_t x0, int32_t x1) {
+          return discharge_hop(front_.data(), next_.data(), q_.data(), donors_.data(), dir_.data(), off_, row, x0, x1);
+        });
   }
 
   // Stream power, implicit along the next kCutHops receivers: each sweep
   // solves every cell against its receiver's last height.
   void incise() {
-    std::vector<float>& f = room_;  // the factors, until deposit() needs the room
+    Floats& f = room_;  // the factors, until deposit() needs the room
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i) {
       const uint8_t d = dir_[i];
@@ -244,7 +335,7 @@ class DetailRun {
         out[i] = zi > b ? float((double(zi) + double(f[i]) * b) / (1.0 + double(f[i]))) : zi;
       }
     }
-    if (kCutHops % 2 == 0) std::copy(cut_.begin(), cut_.end(), z_);
+    if (kCutHops % 2 == 0) copy_grid(cut_.data(), n_, z_);
   }
 
   // What was detached flows down at most kHops receivers, each cell laying
@@ -273,7 +364,7 @@ class DetailRun {
                                    : float(std::min(1.0, G_ * rain(i) / std::max(double(q_[i]), 1e-30)));
       }
     // The first hop: each cell's own loss, where it was detached.
-    const std::vector<float>& share = cut_;
+    const Floats& share = cut_;
     auto lay = [this, &share](size_t i, float in) {
       const float laid = std::min(share[i] * in, room_[i]);
       room_[i] -= laid;
@@ -282,7 +373,10 @@ class DetailRun {
     };
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i) front_[i] = lay(size_t(i), front_[i]);
-    wave(lay);
+    wave(lay, [this, &share](int64_t row, int32_t x0, int32_t x1) {
+      return deposit_hop(front_.data(), next_.data(), share.data(), room_.data(), laid_.data(), donors_.data(),
+                         dir_.data(), off_, row, x0, x1);
+    });
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i) z_[i] = float(z_[i] + double(laid_[i]) / cell_);
   }
@@ -291,8 +385,8 @@ class DetailRun {
   // sediment has no rock texture), and a sample beside a deposit never
   // lifted above where plain creep puts it.
   void creep() {
-    std::vector<float>& diffused = front_;
-    std::vector<float>& plain = next_;
+    Floats& diffused = front_;
+    Floats& plain = next_;
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i) {
       diffused[i] = z_[i] - texture_[i];
@@ -305,7 +399,7 @@ class DetailRun {
         if (inside(x + kDx[k], y + kDy[k]) && z_[i + off_[k]] > texture_[i + off_[k]]) return true;
       return false;
     };
-    std::vector<float>& next = cut_;
+    Floats& next = cut_;
 #pragma omp parallel for schedule(static)
     for (int32_t y = 0; y < h_; ++y)
       for (int32_t x = 0; x < w_; ++x) {
@@ -323,9 +417,9 @@ class DetailRun {
 
   // The kernel along rows, then along columns; under a mask the change is
   // scaled by it (where it is 0, creep changes nothing).
-  void blur(std::vector<float>& f) {
-    std::vector<float>& original = laid_;  // free after deposit()
-    if (in_.mask) std::copy(f.begin(), f.end(), original.begin());
+  void blur(Floats& f) {
+    Floats& original = laid_;  // free after deposit()
+    if (in_.mask) copy_grid(f.data(), n_, original.data());
     for (int32_t p = 0; p < kernel_.count; ++p) pass_along_rows(f, kernel_.radius[p]);
     for (int32_t p = 0; p < kernel_.count; ++p) pass_along_columns(f, kernel_.radius[p]);
     if (in_.mask) {
@@ -346,7 +440,7 @@ class DetailRun {
     return int32_t(std::clamp<int64_t>(g - first, 0, len - 1));
   }
 
-  void pass_along_rows(std::vector<float>& f, int32_t radius) {
+  void pass_along_rows(Floats& f, int32_t radius) {
     const bool tap = kernel_.tap > 0;
     const float a = kernel_.tap, inv = 1.0f / float(2 * radius + 1);
 #pragma omp parallel
@@ -370,11 +464,11 @@ class DetailRun {
     }
   }
 
-  void pass_along_columns(std::vector<float>& f, int32_t radius) {
+  void pass_along_columns(Floats& f, int32_t radius) {
     const bool tap = kernel_.tap > 0;
     const float a = kernel_.tap, inv = 1.0f / float(2 * radius + 1);
-    std::vector<float>& out = columns_;
-    out.resize(n_);
+    if (columns_.size() != n_) columns_ = Floats(n_);
+    Floats& out = columns_;
 #pragma omp parallel for schedule(static)
     for (int32_t y = 0; y < h_; ++y) {
       float* dst = out.data() + size_t(y) * w_;
@@ -392,7 +486,7 @@ class DetailRun {
       }
       for (int32_t x = 0; x < w_; ++x) dst[x] *= inv;
     }
-    f.swap(out);
+    std::swap(f, out);
   }
 
   // Where water leaves a bounded map, the edge cell is its base level:
@@ -418,12 +512,12 @@ class DetailRun {
   const double cell_, dt_, k_dt_, m_, G_, own_rain_;
   const CreepKernel kernel_;
   int32_t off_[8];
-  const std::vector<float> texture_;
-  std::vector<float> start_, random_;
-  std::vector<uint8_t> dir_;
-  std::vector<float> q_, front_, next_, cut_, room_, laid_;
-  std::vector<uint8_t> donors_;
-  std::vector<float> columns_;  // creep's scratch
+  Floats texture_;  // z at the start of the run
+  Floats start_, random_;
+  Bytes dir_;
+  Floats q_, front_, next_, cut_, room_, laid_;
+  Bytes donors_;
+  Floats columns_;  // creep's scratch
 };
 
 }  // namespace

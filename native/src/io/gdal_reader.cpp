@@ -51,7 +51,11 @@ void fill_nodata(Heightfield& hf, const std::string& name, GdalSession& session)
   if (gdal().GDALRasterIO(band, GF_Write, 0, 0, hf.width(), hf.height(), hf.data(), hf.width(), hf.height(), GDT_Float32, 0,
                    0) != CE_None)
     session.fail(FT_ERR_INTERNAL, "cannot copy the heightfield to fill its nodata");
-  if (gdal().GDALFillNodata(band, nullptr, kFillSearchDistance, 0, 0, nullptr, nullptr, nullptr) != CE_None ||
+  // Its work rasters in memory: by default GDAL writes them as GTiff files in
+  // the current directory, which Blender's may not allow.
+  char mem_work[] = "TEMP_FILE_DRIVER=MEM";
+  char* options[] = {mem_work, nullptr};
+  if (gdal().GDALFillNodata(band, nullptr, kFillSearchDistance, 0, 0, options, nullptr, nullptr) != CE_None ||
       gdal().GDALRasterIO(band, GF_Read, 0, 0, hf.width(), hf.height(), hf.data(), hf.width(), hf.height(), GDT_Float32, 0,
                    0) != CE_None)
     session.fail(FT_ERR_INTERNAL, "GDAL could not fill the nodata");
