@@ -123,6 +123,10 @@ struct MassBudget {
   double carried_out = 0.0;   // volume (world units^3) that left at the edges
   double detached = 0.0;      // volume the landscape model took from the bed (its model grid)
   double deposited = 0.0;     // volume it laid down again
+  // Volume the one-cell pits were lifted by (one_cell_pits.hpp; on the
+  // model's grid when it is the terrain's own): from no bed, so the change
+  // of the terrain's volume is deposited - detached + filled_pits there.
+  double filled_pits = 0.0;
 };
 
 // Grid of a heightfield: spacing = world_size / (width - 1), or 1 when the

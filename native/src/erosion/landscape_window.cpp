@@ -22,6 +22,7 @@
 #include "erosion/flow_graph.hpp"
 #include "erosion/landscape_parts.hpp"
 #include "erosion/model_constants.hpp"
+#include "erosion/one_cell_pits.hpp"
 
 namespace ft::erosion {
 namespace {
@@ -46,6 +47,32 @@ int32_t subgrid_step(const D8Grid& g, double factor) {
 // share of the terrain's samples, or this many when that is more.
 constexpr double kRegionShare = 0.4;
 constexpr int64_t kRegionSamples = int64_t(1) << 23;
+
+// How far a one-cell pit is lifted: the erosion mask where rain falls, 0
+// where none does (no water ponds there; null: 1 everywhere).
+float pit_lift_weight(double rainfall, float mask, float rain) { return rainfall > 0 && rain > 0 ? mask : 0.0f; }
+
+std::vector<float> pit_lift_weights(const ErosionConfig& c, int32_t w, int32_t h) {
+  const std::vector<float> mask = resample_map(c.erosion_mask, w, h), rain = resample_map(c.rain_map, w, h);
+  if (mask.empty() && rain.empty() && c.model.rainfall > 0) return {};
+  std::vector<float> out(size_t(w) * h);
+  for (size_t i = 0; i < out.size(); ++i)
+    out[i] = pit_lift_weight(c.model.rainfall, mask.empty() ? 1.0f : mask[i], rain.empty() ? 1.0f : rain[i]);
+  return out;
+}
+
+// The own grid's one-cell pits lifted, the volume added to the budget's
+// `filled_pits` (it comes from no bed: the budget balances with it).
+void lift_pits(float* z, int32_t w, int32_t h, bool periodic, const uint8_t* sea, const float* mask, const D8Grid& g,
+               MassBudget* budget) {
+  std::vector<float> was;
+  if (budget) was.assign(z, z + size_t(w) * h);
+  lift_one_cell_pits(z, w, h, periodic, sea, mask);
+  if (!budget) return;
+  double added = 0;
+  for (size_t i = 0; i < was.size(); ++i) added += double(z[i]) - was[i];
+  budget->filled_pits += added * g.spacing * g.spacing;
+}
 
 }  // namespace
 
@@ -118,6 +145,9 @@ LandscapeModel landscape_model(const D8Grid& g, const HeightSource& src, const E
     const std::vector<float> rain = resample_map(c.rain_map, g.width, g.height);
     model_run(own, c, mask.empty() ? nullptr : mask.data(), rain.empty() ? nullptr : rain.data(), budget, nullptr,
               m.change.data(), years, steps_for(own, c, years, kMaxModelSteps), progress);
+    const std::vector<float> lift = pit_lift_weights(c, g.width, g.height);
+    lift_pits(m.change.data(), g.width, g.height, g.periodic, flags.empty() ? nullptr : flags.data(),
+              lift.empty() ? nullptr : lift.data(), g, budget);
     return m;  // `change` holds the eroded terrain itself
   }
   m.coarse_to_fine = true;
@@ -168,7 +198,8 @@ LandscapeModel landscape_model(const D8Grid& g, const HeightSource& src, const E
   for (size_t i = 0; i < after.size(); ++i) m.change[i] = after[i] - m.before[i];
   m.detail_years = years * g.spacing / coarse.spacing;
   m.detail_steps = steps_for(g, c, m.detail_years, kMaxDetailSteps);
-  m.reach = detail_reach(g, c, m.detail_years, m.detail_steps);
+  // One more: a window's one-cell pits are lifted from its neighbours' heights.
+  m.reach = detail_reach(g, c, m.detail_years, m.detail_steps) + 1;
   if (g.periodic) {
     // Rho8's numbers keyed from the model's sink, on the terrain's grid.
     const int32_t s = periodic_sink(coarse, m.before.data());
@@ -315,9 +346,25 @@ void landscape_window(const LandscapeModel& m, const HeightSource& src, const Er
     detail_run(r, c, m.detail_years, m.detail_steps, in, z.data(), part.progress());
   }
   const int64_t ox = x0 - r.x0, oy = y0 - r.y0;
+  // The window's one-cell pits lifted (one_cell_pits.hpp), from the region's
+  // heights around each: every window has the bits of the whole.
 #pragma omp parallel for schedule(static)
   for (int32_t j = 0; j < h; ++j)
-    std::copy_n(z.data() + size_t(oy + j) * r.width + ox, w, out + size_t(j) * w);
+    for (int32_t i = 0; i < w; ++i) {
+      const int32_t x = int32_t(ox) + i, y = int32_t(oy) + j;
+      const size_t k = size_t(y) * r.width + x;
+      float lifted = z[k];
+      if (!r.on_whole_edge(x, y) && (sea.empty() || !sea[k])) {
+        float nb[8];
+        int q = 0;
+        for (int32_t dy = -1; dy <= 1; ++dy)
+          for (int32_t dx = -1; dx <= 1; ++dx)
+            if (dx || dy) nb[q++] = z[size_t(y + dy) * r.width + x + dx];
+        lifted = one_cell_pit_lifted(
+            z[k], nb, pit_lift_weight(c.model.rainfall, mask.empty() ? 1.0f : mask[k], rain.empty() ? 1.0f : rain[k]));
+      }
+      out[size_t(j) * w + i] = lifted;
+    }
 }
 
 void landscape(const D8Grid& g, const float* in, float* out, const ErosionConfig& c, double sea_level, MassBudget* budget,
