@@ -70,7 +70,8 @@ struct Setup {
     for (int k = 0; k < 8; ++k) {
       const float zj = z[i + o[k]];
       const bool lower = giver & (zj < zi);
-      up |= unsigned(zj > zi) << k;
+      // A sea cell gives nothing: a cell waiting for one waited forever.
+      up |= unsigned((zj > zi) & !(s.sea && s.sea[i + o[k]])) << k;
       down |= unsigned(lower) << k;
       const double share = f[k] * (double(zi) - double(zj));
       sum += lower ? share : 0.0;
@@ -125,7 +126,7 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
       // (A torus's sink gives nothing, but it is the lowest cell: never
       // a higher one.)
       if (z[j] > z[i]) {
-        up |= unsigned(g.periodic || inner(x + kDx[k], y + kDy[k])) << k;
+        up |= unsigned((g.periodic || inner(x + kDx[k], y + kDy[k])) && !g.in_sea(size_t(j))) << k;
       } else if (giver && z[j] < z[i]) {
         down |= 1u << k;
         sum += factor[k] * (double(z[i]) - double(z[j]));
@@ -157,8 +158,9 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
       double sum = total[size_t(i)];
       for (unsigned m = level[i]; m; m &= m - 1) {
         const int k = std::countr_zero(m);
-        const int32_t kj = key[nbr(i, x, y, in, k)];
-        const bool gives = kj > ki, takes = ki > 0 && kj < ki;
+        const int64_t j = nbr(i, x, y, in, k);
+        const int32_t kj = key[j];
+        const bool gives = kj > ki && !g.in_sea(size_t(j)), takes = ki > 0 && kj < ki;
         up |= unsigned(gives) << k;
         down |= unsigned(takes) << k;
         sum += takes ? factor[k] * double(ki - kj) : 0.0;
