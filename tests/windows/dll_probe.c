@@ -1,5 +1,4 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* Loads fracterra.dll as CPython's ctypes.CDLL does on Windows (3.8+: a full
  * path, LoadLibraryExW with LOAD_LIBRARY_SEARCH_DEFAULT_DIRS |
  * LOAD_LIBRARY_SEARCH_DLL_LOAD_DIR, so only the DLL's own folder and the
