@@ -20,6 +20,7 @@
 #include "core/error.hpp"
 #include "core/rng.hpp"
 #include "io/atomic_file.hpp"
+#include "io/exr.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/raw16.hpp"
 
@@ -272,6 +273,24 @@ TEST(Raster, NodataFillRefusesHolesBeyondItsReach) {
     // Rows 257..599 are more than 256 samples from row 0.
     EXPECT_NE(std::string(e.what()).find(std::to_string((h - 257) * w) + " nodata samples farther than 256"),
               std::string::npos)
+        << e.what();
+  }
+}
+
+// OpenEXR allocates an attribute's declared size before reading it: a tiny
+// file whose attribute claims 2 GB is refused before OpenEXR sees it (the
+// fuzz finding tests/fuzz/regressions/exr/attribute_50mb_in_609_bytes.exr).
+TEST(Raster, AnExrAttributeLargerThanTheFileIsRefusedBeforeReading) {
+  std::string bytes("v/1\x01\x02\0\0\0channels\0chlist\0", 24);
+  const int32_t huge = 0x7fffffff;
+  bytes.append(reinterpret_cast<const char*>(&huge), 4);
+  bytes.append("Y\0\0\0\0\0", 6);
+  try {
+    io::decode_exr(bytes);
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), FT_ERR_FORMAT);
+    EXPECT_NE(std::string(e.what()).find("an attribute says it holds 2147483647 bytes, and 6 follow"), std::string::npos)
         << e.what();
   }
 }
