@@ -153,11 +153,14 @@ BoxCountResult box_counting_dimension(const PolylineSet& set, const BoxCountOpti
   const Bounds b = bounds_of(set);
   const double extent = std::max(b.x1 - b.x0, b.y1 - b.y0);
   if (!(extent > 0)) invalid("box counting needs a set that is not a single point (its x, y extent is 0)");
+  // Vertices near +-1e308 are finite, but their extent is not: every box
+  // size would be infinite and the cells' indices out of range (a fuzz finding).
+  if (!std::isfinite(extent)) invalid("box counting needs a set whose x, y extent is finite (its vertices span more than 1.8e308)");
 
   BoxCountResult r;
   r.max_size = o.max_size > 0 ? o.max_size : extent / 4;
   r.min_size = o.min_size > 0 ? o.min_size : std::max(2 * median_segment_length(set), extent / 65536.0);
-  if (extent / r.min_size > double(1 << 30))
+  if (!(extent / r.min_size <= double(1 << 30)))
     invalid("min_size " + format_number(r.min_size) + " is too small for the extent " + format_number(extent) +
             " (at most 2^30 boxes across)");
 
