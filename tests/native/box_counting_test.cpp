@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/box_counting.hpp"
@@ -95,6 +96,20 @@ TEST(BoxCounting, RejectsDegenerateInput) {
   } catch (const Error& e) {
     EXPECT_EQ(e.status(), FT_ERR_INVALID_ARGUMENT);
     EXPECT_NE(std::string(e.what()).find("extent is finite"), std::string::npos) << e.what();
+  }
+  // A subnormal extent (1 / box size infinite) and a coarsest size whose
+  // grid origin overflows: refused before any cell index is made.
+  analysis::BoxCountOptions huge;
+  huge.max_size = 1e308;
+  for (const auto& [set, options] : {std::pair{from_points({{0, 0, 0}, {1e-310, 2e-311, 0}, {3e-310, 0, 0}}), analysis::BoxCountOptions{}},
+                                     std::pair{koch(3), huge}}) {
+    try {
+      analysis::box_counting_dimension(set, options);
+      FAIL() << "counted on a grid whose cell indices do not fit";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.status(), FT_ERR_INVALID_ARGUMENT);
+      EXPECT_NE(std::string(e.what()).find("grid origin"), std::string::npos) << e.what();
+    }
   }
 }
 

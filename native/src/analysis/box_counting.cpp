@@ -104,6 +104,16 @@ int64_t count_unchecked(const PolylineSet& set, double eps, double ox, double oy
   return int64_t(std::unique(keys.begin(), keys.end()) - keys.begin());
 }
 
+// The cells' indices are floor((coordinate - origin) / eps) as int64: they
+// must be finite and within 2^30 of the origin, or the conversion is
+// undefined (a fuzz finding: a subnormal box size made 1 / eps infinite).
+void check_grid(const Bounds& b, double eps, double ox, double oy) {
+  const double reach = std::max({std::fabs(b.x0 - ox), std::fabs(b.x1 - ox), std::fabs(b.y0 - oy), std::fabs(b.y1 - oy)});
+  if (!(reach / eps <= double(1 << 30)) || !std::isfinite(1.0 / eps))
+    invalid("box size " + format_number(eps) + " does not fit the set's distance " + format_number(reach) +
+            " from the grid origin (at most 2^30 boxes, and 1 / size finite)");
+}
+
 }  // namespace
 
 int64_t count_boxes(const PolylineSet& set, double eps, double ox, double oy) {
@@ -111,11 +121,7 @@ int64_t count_boxes(const PolylineSet& set, double eps, double ox, double oy) {
   check_finite("grid origin x", ox);
   check_finite("grid origin y", oy);
   if (set.points.empty()) return 0;
-  const Bounds b = bounds_of(set);
-  const double reach = std::max({std::fabs(b.x0 - ox), std::fabs(b.x1 - ox), std::fabs(b.y0 - oy), std::fabs(b.y1 - oy)});
-  if (reach / eps > double(1 << 30))
-    invalid("box size " + format_number(eps) + " is too small for the set's distance " + format_number(reach) +
-            " from the grid origin (at most 2^30 boxes)");
+  check_grid(bounds_of(set), eps, ox, oy);
   const double visits = visit_bound(set, eps);
   check_allocation(uint64_t(visits) * sizeof(uint64_t), "box counting at this box size");
   return count_unchecked(set, eps, ox, oy, visits);
@@ -163,6 +169,9 @@ BoxCountResult box_counting_dimension(const PolylineSet& set, const BoxCountOpti
   if (!(extent / r.min_size <= double(1 << 30)))
     invalid("min_size " + format_number(r.min_size) + " is too small for the extent " + format_number(extent) +
             " (at most 2^30 boxes across)");
+  // The origin sits one to two boxes below/left of the set (below): the
+  // finest and the coarsest grids both fit.
+  for (const double eps : {r.min_size, r.max_size}) check_grid(b, eps, b.x0 - 2 * eps, b.y0 - 2 * eps);
 
   // One memory check for the finest size; the key buffer is largest there.
   const double finest = visit_bound(set, r.min_size);
