@@ -85,7 +85,7 @@ for s in "${sections[@]}"; do
       # docs/measurements/scale.md: an eroded set on Dask (2 workers) against the in-memory erosion
       # of the same terrain, alternated, 3 of each (not in the default list: minutes at 2049^2,
       # an hour at 8193^2; add 8193 with --levels 13 --memory-limit 10GB on a quiet machine).
-      run eroded_tiles env PYTHONPATH="$build/python/stage" FRACTERRA_LIBRARY="$build/native/libfracterra.so" \
+      run eroded_tiles env PYTHONPATH="$build/python/stage_linux_x86_64" FRACTERRA_LIBRARY="$build/native/libfracterra.so" \
         /usr/bin/python3 native/bench/tiles_dask_bench.py --erode land --levels 11 --tile 1024 --workers 2 \
         --memory-limit 4GB --reps 3 --out "$out/eroded2049" ;;
     *) echo "unknown section: $s" >&2; exit 2 ;;

@@ -4,7 +4,7 @@
 workers' memory written as 16-bit tiles through Dask on this machine, against the
 in-memory generator in the same run.
 
-    PYTHONPATH=build/python/stage FRACTERRA_LIBRARY=build/native/libfracterra.so \\
+    PYTHONPATH=build/python/stage_linux_x86_64 FRACTERRA_LIBRARY=build/native/libfracterra.so \\
         /usr/bin/python3 native/bench/tiles_dask_bench.py --levels 16 --tile 4096 \\
         --workers 2 --memory-limit 3GB --out /work/scratch/tiles65537
 

@@ -40,7 +40,17 @@ from .planets import planet  # noqa: E402
 from .polylines import Lines, coastline, fpl_study, polyline  # noqa: E402
 from .rivers import Rivers  # noqa: E402
 from .scenes import clouds, pov_scene, render  # noqa: E402
-from . import tiles  # noqa: E402  (the module is callable: ft.tiles(out_dir, ...) writes a tile set here)
+
+
+def __getattr__(name):
+    """ft.tiles, imported on first use (PEP 562): imported here eagerly, `python3 -m fracterra.tiles`
+    (the Dask driver) would find its own module already loaded and warn, in the driver and in every
+    worker. The module is callable: ft.tiles(out_dir, ...) writes a tile set on this machine."""
+    if name == "tiles":
+        import importlib
+        return importlib.import_module(__name__ + ".tiles")  # `from . import` would ask __getattr__ again
+    raise AttributeError(f"module 'fracterra' has no attribute {name!r}")
+
 
 __all__ = ["Terrain", "Build", "Rivers", "Lines", "terrain", "window", "erode", "rivers", "analyze", "polyline",
            "fpl_study", "coastline", "clouds", "planet", "pov_scene", "render", "fractalize", "tiles", "splat", "save",

@@ -337,15 +337,19 @@ Heightfield fbm(const FbmConfig& c) {
 }
 
 Heightfield fbm_window(const FbmConfig& c, int64_t x0, int64_t y0, int32_t w, int32_t h) {
-  const Plan plan = make_plan(c);
   Heightfield hf(w, h);
+  fbm_window_into(c, x0, y0, w, h, hf.data());
+  return hf;
+}
+
+void fbm_window_into(const FbmConfig& c, int64_t x0, int64_t y0, int32_t w, int32_t h, float* out) {
+  const Plan plan = make_plan(c);
   const RowFn row_fn = pick_row_fn();
   // Rows handed out dynamically in one parallel region (barriers per band
   // cost dearly when the cores are shared); the calling thread reports.
   for_rows(h, c.threads, c.progress, [&](int64_t y) {
-    row_fn(plan, c.width, c.height, y0 + y, x0, w, hf.data() + size_t(y) * size_t(w));
+    row_fn(plan, c.width, c.height, y0 + y, x0, w, out + size_t(y) * size_t(w));
   });
-  return hf;
 }
 
 namespace detail {

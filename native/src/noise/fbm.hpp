@@ -85,6 +85,10 @@ Heightfield fbm(const FbmConfig& c);
 // The w x h samples from (x0, y0) of the terrain fbm(c) would make, bit for
 // bit (every sample is a function of its global index). Callers validate.
 Heightfield fbm_window(const FbmConfig& c, int64_t x0, int64_t y0, int32_t w, int32_t h);
+// The same samples into the caller's w x h row-major buffer (every sample is
+// written): for a caller that fills one buffer again and again, as a noise
+// library's grid call does, without the kernel zeroing fresh pages each time.
+void fbm_window_into(const FbmConfig& c, int64_t x0, int64_t y0, int32_t w, int32_t h, float* out);
 
 namespace detail {
 // Which compiled path runs the octave loop: kAuto picks the widest the CPU
