@@ -99,6 +99,72 @@ inline float pulled(const float* __restrict front, unsigned bits, int64_t i, con
   return moving;
 }
 
+// Interior kernels of the grid passes (the rows' cells x0 .. x1 - 1 whose
+// eight neighbours all lie in the region and which are not on the whole's
+// edge: no bounds test per neighbour). Each does the general path's
+// operations in its order, so the bits are the same; `sea` is the row's
+// sea flags (all 0 without a sea).
+
+// nextafter(v, +inf) of a finite v, without the call (which kept the loop
+// scalar): the next float up, the smallest subnormal from either zero.
+inline float next_up(float v) {
+  const uint32_t u = std::bit_cast<uint32_t>(v);
+  const uint32_t up = v == 0.0f ? 1u : (v > 0.0f ? u + 1u : u - 1u);
+  return std::bit_cast<float>(up);
+}
+
+// One pit pass of the routing surface (DetailRun::routing_surface).
+[[gnu::noinline]] FT_KERNEL_CLONES void lift_pits_row(const float* __restrict from, float* __restrict to,
+                                                      const uint8_t* __restrict sea, const int32_t* off, int64_t row,
+                                                      int32_t x0, int32_t x1) {
+  const int32_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
+  const float inf = std::numeric_limits<float>::infinity();
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x;
+    float lowest = inf;
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) lowest = std::min(lowest, from[i + o[k]]);
+    if (sea[x]) lowest = inf;
+    const float v = from[i];
+    to[i] = v <= lowest && lowest != inf && lowest != -inf ? next_up(lowest) : v;
+  }
+}
+
+// Steepest descent (DetailRun::route): the first direction of the largest
+// positive drop, kSelf without one or on the sea.
+[[gnu::noinline]] FT_KERNEL_CLONES void descend_row(const float* __restrict zr, const float* __restrict random,
+                                                    uint8_t* __restrict dir, const uint8_t* __restrict sea,
+                                                    const int32_t* off, int64_t row, int32_t x0, int32_t x1) {
+  const int32_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x;
+    const float wd = rho8_diagonal_weight(random[i]);
+    float best = 0.0f;
+    int32_t best_k = kSelf;
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) {
+      const float drop = (zr[i] - zr[i + o[k]]) * ((k & 1) ? wd : 1.0f);
+      const bool better = drop > best;
+      best = better ? drop : best;
+      best_k = better ? k : best_k;
+    }
+    dir[i] = sea[x] ? kSelf : uint8_t(best_k);
+  }
+}
+
+// The donors (DetailRun::find_donors): bit k for the neighbour k that drains here.
+[[gnu::noinline]] FT_KERNEL_CLONES void donors_row(const uint8_t* __restrict dir, uint8_t* __restrict donors,
+                                                   const int32_t* off, int64_t row, int32_t x0, int32_t x1) {
+  const int32_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x;
+    uint32_t bits = 0;
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) bits |= uint32_t(dir[i + o[k]] == ((k + 4) & 7)) << k;
+    donors[i] = uint8_t(bits);
+  }
+}
+
 // Creep's kernel along one axis: `count` passes, each either a box of
 // 2 radius + 1 samples or, where the step's variance is small, the
 // three-tap [a, 1 - 2a, a].
@@ -150,6 +216,8 @@ class DetailRun {
         kernel_(creep_kernel(creep_r(r.whole, c, dt_))), texture_(n_), start_(n_), random_(n_), dir_(n_),
         q_(n_), front_(n_), next_(n_), cut_(n_), room_(n_), laid_(n_), donors_(n_) {
     for (int k = 0; k < 8; ++k) off_[k] = kDy[k] * w_ + kDx[k];
+    no_sea_ = Bytes(size_t(w_));
+    std::fill(no_sea_.begin(), no_sea_.end(), uint8_t(0));
     copy_grid(z, n_, texture_.data());
   }
 
@@ -177,6 +245,29 @@ class DetailRun {
   float run_of(uint8_t d) const { return float((d & 1) ? r_.whole.spacing * M_SQRT2 : r_.whole.spacing); }
   double rain(size_t i) const { return own_rain_ * (in_.rain ? double(in_.rain[i]) : 1.0); }
 
+  // A pass over every cell: cell(x, y) on the region's edge and the whole's,
+  // kernel(row, x0, x1) on the rest of a row (an interior kernel above).
+  template <class Cell, class Kernel>
+  void rows(Cell cell, Kernel kernel) {
+    // The whole's edge columns inside the region (none unless it is bounded
+    // and the region reaches it) go to cell() too.
+    const int64_t first = r_.whole.periodic ? 1 : std::max<int64_t>(1, 1 - int64_t(r_.x0));
+    const int64_t last = r_.whole.periodic ? w_ - 1 : std::min<int64_t>(w_ - 1, r_.whole.width - 1 - int64_t(r_.x0));
+    const int32_t x0 = int32_t(std::min<int64_t>(first, w_)), x1 = int32_t(std::max<int64_t>(last, x0));
+#pragma omp parallel for schedule(static)
+    for (int32_t y = 0; y < h_; ++y) {
+      if (y == 0 || y == h_ - 1 || w_ < 3 || r_.on_whole_edge(x0, y) || x1 <= x0) {
+        for (int32_t x = 0; x < w_; ++x) cell(x, y);
+        continue;
+      }
+      for (int32_t x = 0; x < x0; ++x) cell(x, y);
+      kernel(int64_t(y) * w_, x0, x1);
+      for (int32_t x = x1; x < w_; ++x) cell(x, y);
+    }
+  }
+  // The sea flags of the row starting at `row` (0s without a sea).
+  const uint8_t* sea_row(int64_t row) const { return in_.sea ? in_.sea + row : no_sea_.data(); }
+
   // Rho8's numbers of this step, keyed by the samples' positions in the whole.
   void draw(int32_t s) {
     const uint32_t level = 1 * uint32_t(kMaxModelSteps) + uint32_t(s);
@@ -194,18 +285,20 @@ class DetailRun {
     copy_grid(z_, n_, out.data());
     for (int32_t pass = 0; pass < kPitPasses; ++pass) {
       const Floats& from = out;
-#pragma omp parallel for schedule(static)
-      for (int32_t y = 0; y < h_; ++y)
-        for (int32_t x = 0; x < w_; ++x) {
-          const size_t i = size_t(y) * w_ + x;
-          float lowest = std::numeric_limits<float>::infinity();
-          if (!base(x, y, i)) {
-            const bool all = interior(x, y);
-            for (int k = 0; k < 8; ++k)
-              if (all || inside(x + kDx[k], y + kDy[k])) lowest = std::min(lowest, from[i + off_[k]]);
-          }
-          scratch[i] = from[i] <= lowest && !std::isinf(lowest) ? std::nextafter(lowest, INFINITY) : from[i];
-        }
+      rows(
+          [&](int32_t x, int32_t y) {
+            const size_t i = size_t(y) * w_ + x;
+            float lowest = std::numeric_limits<float>::infinity();
+            if (!base(x, y, i)) {
+              const bool all = interior(x, y);
+              for (int k = 0; k < 8; ++k)
+                if (all || inside(x + kDx[k], y + kDy[k])) lowest = std::min(lowest, from[i + off_[k]]);
+            }
+            scratch[i] = from[i] <= lowest && !std::isinf(lowest) ? std::nextafter(lowest, INFINITY) : from[i];
+          },
+          [&](int64_t row, int32_t x0, int32_t x1) {
+            lift_pits_row(from.data(), scratch.data(), sea_row(row), off_, row, x0, x1);
+          });
       std::swap(out, scratch);
     }
   }
@@ -215,37 +308,40 @@ class DetailRun {
   void route() {
     Floats& zr = cut_;  // free until incise()
     routing_surface(zr, next_);
-#pragma omp parallel for schedule(static)
-    for (int32_t y = 0; y < h_; ++y)
-      for (int32_t x = 0; x < w_; ++x) {
-        const size_t i = size_t(y) * w_ + x;
-        uint8_t best_k = kSelf;
-        if (!base(x, y, i)) {
-          const float wd = rho8_diagonal_weight(random_[i]);
-          const bool all = interior(x, y);
-          float best = 0.0f;
-          for (int k = 0; k < 8; ++k) {
-            if (!all && !inside(x + kDx[k], y + kDy[k])) continue;
-            const float drop = (zr[i] - zr[i + off_[k]]) * ((k & 1) ? wd : 1.0f);
-            if (drop > best) best = drop, best_k = uint8_t(k);
+    rows(
+        [&](int32_t x, int32_t y) {
+          const size_t i = size_t(y) * w_ + x;
+          uint8_t best_k = kSelf;
+          if (!base(x, y, i)) {
+            const float wd = rho8_diagonal_weight(random_[i]);
+            const bool all = interior(x, y);
+            float best = 0.0f;
+            for (int k = 0; k < 8; ++k) {
+              if (!all && !inside(x + kDx[k], y + kDy[k])) continue;
+              const float drop = (zr[i] - zr[i + off_[k]]) * ((k & 1) ? wd : 1.0f);
+              if (drop > best) best = drop, best_k = uint8_t(k);
+            }
           }
-        }
-        dir_[i] = best_k;
-      }
+          dir_[i] = best_k;
+        },
+        [&](int64_t row, int32_t x0, int32_t x1) {
+          descend_row(zr.data(), random_.data(), dir_.data(), sea_row(row), off_, row, x0, x1);
+        });
   }
 
   // Each cell's donors, one bit per direction: the neighbours that drain to it.
   void find_donors() {
-#pragma omp parallel for schedule(static)
-    for (int32_t y = 0; y < h_; ++y)
-      for (int32_t x = 0; x < w_; ++x) {
-        const size_t i = size_t(y) * w_ + x;
-        const bool all = interior(x, y);
-        uint8_t bits = 0;
-        for (int k = 0; k < 8; ++k)
-          if ((all || inside(x + kDx[k], y + kDy[k])) && dir_[i + off_[k]] == ((k + 4) & 7)) bits |= uint8_t(1u << k);
-        donors_[i] = bits;
-      }
+    rows(
+        [&](int32_t x, int32_t y) {
+          const size_t i = size_t(y) * w_ + x;
+          const bool all = interior(x, y);
+          uint8_t bits = 0;
+          for (int k = 0; k < 8; ++k)
+            if ((all || inside(x + kDx[k], y + kDy[k])) && dir_[i + off_[k]] == ((k + 4) & 7))
+              bits |= uint8_t(1u << k);
+          donors_[i] = bits;
+        },
+        [&](int64_t row, int32_t x0, int32_t x1) { donors_row(dir_.data(), donors_.data(), off_, row, x0, x1); });
   }
 
   // What the donors of cell i send (front_), in direction order.
@@ -467,8 +563,7 @@ class DetailRun {
   void pass_along_columns(Floats& f, int32_t radius) {
     const bool tap = kernel_.tap > 0;
     const float a = kernel_.tap, inv = 1.0f / float(2 * radius + 1);
-    if (columns_.size() != n_) columns_ = Floats(n_);
-    Floats& out = columns_;
+    Floats& out = room_;  // free after deposit(); incise() writes it before reading
 #pragma omp parallel for schedule(static)
     for (int32_t y = 0; y < h_; ++y) {
       float* dst = out.data() + size_t(y) * w_;
@@ -517,7 +612,7 @@ class DetailRun {
   Bytes dir_;
   Floats q_, front_, next_, cut_, room_, laid_;
   Bytes donors_;
-  Floats columns_;  // creep's scratch
+  Bytes no_sea_;    // a row of 0s: the sea flags without a sea
 };
 
 }  // namespace
