@@ -31,7 +31,9 @@ case "${1:-test}" in
 esac
 
 # One dpkg-query for the whole list (one per package took ~15 s at load).
-installed=" $(dpkg-query -W -f='${Package} ${Status}\n' "${want[@]}" 2>/dev/null |
+# It exits 1 when a package is unknown to dpkg (never installed, as on a
+# fresh machine): that is an answer here, not a failure.
+installed=" $( (dpkg-query -W -f='${Package} ${Status}\n' "${want[@]}" 2>/dev/null || true) |
               awk '/ install ok installed$/ {printf "%s ", $1}') "
 missing=()
 for p in "${want[@]}"; do
