@@ -249,7 +249,7 @@ int32_t height_of(const Case& c) { return c.terrain.method == FT_TERRAIN_FBM ? c
 
 // Each eroded window runs the landscape model on its coarse grid (about a
 // third of a second at this size) before its own samples, and its maps
-// still cost the whole: sixteen windows on two cases, four (the first of
+// still cost an erosion of the whole: sixteen windows on two cases, four (the first of
 // the sixteen: corners and edge lines) on the others, to keep the test to
 // seconds. One test per case (the same windows and checks as one loop over
 // the cases), so that ctest runs them side by side: under ASan the loop was
@@ -262,7 +262,7 @@ TEST_P(ErodedWindowOfCase, SixteenOddWindowsAreTheWholesSamples) {
   if (kFull) {
     // And the tile set's tiles of a quarter of the side (1024 at 4097^2),
     // against the same whole; the maps on the first window (a window's
-    // maps are cut from the whole built again: one costs a whole).
+    // drainage area erodes the whole again: one costs a whole).
     const std::vector<Rect> t = set_tiles(width_of(c), height_of(c), (ft_terrain_side(kLevels) - 1) / 4);
     rects.insert(rects.end(), t.begin(), t.end());
     expect_windows_equal_the_whole(c, rects, 1);
