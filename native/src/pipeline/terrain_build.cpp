@@ -372,8 +372,8 @@ Heightfield build_terrain_window(const ft_build_params& given, int64_t x0, int64
   const erosion::ThreadScope threads(p.threads);
   const Progress progress(p.progress, p.progress_user);
   // With maps, the drainage area's whole takes most of the bar.
-  const double model_share = maps ? 0.2 : 0.4, window_share = maps ? 0.1 : 0.6;
-  const ProgressPart model_part(progress, 0.0, model_share), window_part(progress, model_share, window_share);
+  const double model_share = maps ? 0.1 : 0.4;
+  const ProgressPart model_part(progress, 0.0, model_share), window_part(progress, model_share, 1.0 - model_share);
   const double sea_level = c.sea == erosion::Sea::kHeight ? c.sea_level : NAN;
   const erosion::LandscapeModel m = erosion::landscape_model(g, src, c, sea_level, nullptr, model_part.progress());
   erosion::ErosionConfig wc = c;
@@ -388,9 +388,6 @@ Heightfield build_terrain_window(const ft_build_params& given, int64_t x0, int64
     const double spacing =
         overlap > 0 ? t.world_size * double(g.width - 1) / double(ew - 1) / (g.width - 1) : t.world_size / (ew - 1);
     erosion::erode_window_maps(m, src, wc, spacing, x0, y0, w, h, out.data(), *maps);
-    const ProgressPart area_part(progress, model_share + window_share, 1.0 - model_share - window_share);
-    wc.progress = area_part.progress();
-    erosion::window_drainage_area(m, src, wc, spacing, x0, y0, w, h, maps->drainage_area);
     for (Heightfield* f : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth, &maps->eroded,
                            &maps->deposited})
       f->set_world_size(t.world_size * double(w - 1) / double(ew - 1));
