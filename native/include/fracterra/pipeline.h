@@ -82,7 +82,7 @@ FT_API ft_status ft_terrain_build_rivers(const ft_build_params* p, ft_heightfiel
 /// corner to corner, as for ft_terrain_build. An eroded window's heights take the memory of the
 /// window grown by the erosion's reach (a hundred-odd samples) and of the landscape model's coarse
 /// grid; its maps (maps not NULL) those of the window grown by one sample, but the drainage area,
-/// which is global: it reads the whole eroded terrain (computed in bands, about 50 bytes a sample
+/// which is global: it reads the whole eroded terrain (computed in bands, about 45 bytes a sample
 /// of the whole). The expert passes (fluvial_steps,
 /// hydraulic_iterations, thermal_iterations) read the whole grid: their windows are the whole,
 /// cropped. On failure every output is NULL.

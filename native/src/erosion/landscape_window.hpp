@@ -97,7 +97,7 @@ void erode_window(const LandscapeModel& m, const HeightSource& src, const Erosio
 // ring; the drainage area, which is global, from the whole eroded terrain,
 // computed here in bands of rows (the whole's heights, a byte a sample of
 // its sea, then the drainage's own buffers: the memory of the whole, about
-// 40 bytes a sample, unlike the heights'). Progress: c.progress.
+// 45 bytes a sample, unlike the heights'). Progress: c.progress.
 void erode_window_maps(const LandscapeModel& m, const HeightSource& src, const ErosionConfig& c, double spacing,
                        int64_t x0, int64_t y0, int32_t w, int32_t h, float* after, ErosionMaps& maps);
 
