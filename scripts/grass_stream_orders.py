@@ -41,7 +41,14 @@ LANDFORMS = {
     "plain": [],
     "falloff": ["--falloff", "radial"],
     "sea": ["--falloff", "radial", "--sea", "fraction", "--sea-fraction", "0.3"],
+    # An island that rises out of its edge level: -0.6 lies under every raw
+    # height of seeds 1-3 (-0.57..-0.52), so no low inside the rim is below it.
+    "island": ["--falloff", "radial", "--edge-level", "-0.6"],
+    "island_sea": ["--falloff", "radial", "--edge-level", "-0.6", "--sea", "fraction", "--sea-fraction", "0.3"],
 }
+# Landforms whose sea is erosion's base level and the rivers' sea too (as the
+# pipeline passes it); the older "sea" rows erode and trace it as land.
+SEA_BOTH = {"island_sea": ["--sea", "fraction", "--sea-fraction", "0.3"]}
 # GRASS direction codes (r.stream.extract, as r.watershed): 1 NE, 2 N, 3 NW,
 # 4 W, 5 SW, 6 S, 7 SE, 8 E; rows grow southwards.
 STEP = {1: (-1, 1), 2: (-1, 0), 3: (-1, -1), 4: (0, -1), 5: (1, -1), 6: (1, 0), 7: (1, 1), 8: (0, 1)}
@@ -153,7 +160,7 @@ def grass_network(z, sea_mask, spacing, work):
 
 
 def main():
-    cli, work = sys.argv[1], sys.argv[2]
+    cli, work = sys.argv[1], os.path.abspath(sys.argv[2])  # GRASS runs in work: absolute paths
     os.makedirs(work, exist_ok=True)
     if shutil.which("grass") is None:
         sys.exit("GRASS is not installed (Debian grass-core)")
@@ -167,11 +174,15 @@ def main():
             if not os.path.exists(e):
                 run([cli, "terrain", "--method", "fbm", "--size", str(SIZE), "--hurst", "0.7", "--world-size", str(WORLD),
                      "--seed", str(seed), *flags, "--out", t])
-                run([cli, "erode", "--in", t, "--preset", "rugged_mountains", "--out", e])
-            a = find(json.loads(run([cli, "analyze", e, "--rivers", "--min-area", str(MIN_AREA)]).stdout),
-                     "bifurcation_ratio")
+                run([cli, "erode", "--in", t, "--preset", "rugged_mountains", *SEA_BOTH.get(name, []), "--out", e])
+            if name in SEA_BOTH:
+                a = json.loads(run([cli, "rivers", "--in", e, "--out", f"{work}/r.json", "--stats", "--min-area",
+                                    str(MIN_AREA), *SEA_BOTH[name]]).stdout)
+            else:
+                a = find(json.loads(run([cli, "analyze", e, "--rivers", "--min-area", str(MIN_AREA)]).stdout),
+                         "bifurcation_ratio")
             z = np.load(e).astype(np.float64)
-            sea = z <= z.min() + 1e-9 if name == "sea" else np.zeros(z.shape, bool)
+            sea = z <= z.min() + 1e-9 if name in ("sea", "island_sea") else np.zeros(z.shape, bool)
             with tempfile.TemporaryDirectory(dir=work) as g:
                 counts, lengths = grass_network(z, sea, spacing, g)
             rb, rl = horton(counts, lengths)

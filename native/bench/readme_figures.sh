@@ -9,7 +9,7 @@
 #   native/bench/readme_figures.sh [BUILD_DIR] [OUT_DIR] [SECTION ...]
 #
 # SECTIONS: terrain window noise polyline povray subdiv blender erosion
-# fluvial land memory (default: all; memory is not in the README's table), and eroded_tiles
+# fluvial fastscapelib land memory (default: all; memory is not in the README's table), and eroded_tiles
 # (only when named). Each writes OUT_DIR/SECTION.txt.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -17,7 +17,7 @@ build=$(realpath "${1:-build}")
 out=$(realpath -m "${2:-/tmp/fracterra-figures}")
 shift $(( $# > 2 ? 2 : $# ))
 sections=("$@")
-[ ${#sections[@]} -gt 0 ] || sections=(terrain window noise polyline povray subdiv blender erosion fluvial land)
+[ ${#sections[@]} -gt 0 ] || sections=(terrain window noise polyline povray subdiv blender erosion fluvial fastscapelib land)
 mkdir -p "$out" "$out/ant"
 gb=(--benchmark_repetitions=3 --benchmark_report_aggregates_only=true)
 
@@ -61,6 +61,15 @@ for s in "${sections[@]}"; do
           --benchmark_filter=AntPasses
       done ;;
     fluvial) FT_STEPS=100 run fluvial "$build/native/erosion_bench" "${gb[@]}" --benchmark_filter=Fluvial/2049 ;;
+    fastscapelib)
+      # The fluvial step against fastscapelib v0.2.2's (issue 40; needs
+      # -DFT_FASTSCAPELIB_DIR, else only fracterra's rows run): 10 steps on
+      # 1025^2 and 2049^2, interleaved, ours on 2 threads and on 1 (fastscapelib
+      # has one).
+      for t in 2 1; do
+        FT_STEPS=10 FT_BENCH_THREADS=$t run fastscapelib "$build/native/erosion_bench" "${gb[@]}" \
+          --benchmark_enable_random_interleaving=true --benchmark_filter='^(Fluvial|Fastscapelib)/(1025|2049)/'
+      done ;;
     land)
       # Issue 24's targets: `erode --preset land` (the landscape model, all
       # maps off) on 2 threads at 513^2, 1025^2 and 2049^2, three runs each

@@ -65,5 +65,21 @@ TEST_P(EveryPreset, LeavesNoOneCellPits) {
   }
 }
 
+TEST_P(EveryPreset, LeavesNoOneCellPitsOnOtherSeeds) {
+  // The same bound over more seeds (issue 40's property over seeds, sizes
+  // and presets) at the two small sizes, where a run costs milliseconds: a
+  // rule that held on seed 3 by chance would fail here. The bound is the
+  // issue's, not a measured share (all seeds measured leave none).
+  for (const int32_t levels : {6, 8})
+    for (const uint64_t seed : {1, 2, 4}) {
+      const int32_t size = (1 << levels) + 1;
+      const Heightfield inputs[] = {default_mountain(levels, seed), fbm_terrain(size, seed)};
+      for (int k = 0; k < 2; ++k) {
+        const double share = pit_share(erode(inputs[k], preset_for(GetParam()), nullptr));
+        EXPECT_LE(share, 0.002) << GetParam() << (k ? " fbm " : " midpoint ") << size << " seed " << seed;
+      }
+    }
+}
+
 }  // namespace
 }  // namespace ft::erosion
