@@ -8,3 +8,9 @@ if(FT_PYTHON3_SYSTEM)
     COMMAND ${FT_PYTHON3_SYSTEM} ${CMAKE_CURRENT_LIST_DIR}/grass_drainage.py $<TARGET_FILE:fracterra_cli>)
   set_tests_properties(grass_drainage PROPERTIES LABELS native TIMEOUT 120 SKIP_RETURN_CODE 77 COST 20)
 endif()
+# Horton's ratios of the river network against r.stream.extract's (issue 40).
+if(FT_PYTHON3_SYSTEM)
+  add_test(NAME grass_stream_orders
+    COMMAND ${FT_PYTHON3_SYSTEM} ${CMAKE_CURRENT_LIST_DIR}/grass_stream_orders_test.py $<TARGET_FILE:fracterra_cli>)
+  set_tests_properties(grass_stream_orders PROPERTIES LABELS native TIMEOUT 120 SKIP_RETURN_CODE 77 COST 10)
+endif()

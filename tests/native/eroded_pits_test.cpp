@@ -46,8 +46,8 @@ double pit_share(const Heightfield& hf) {
 
 TEST_P(EveryPreset, LeavesNoOneCellPits) {
   // Issue 40: at most 0.2 % of the interior below all 8 neighbours, on
-  // midpoint and fBm inputs at every size (65^2 and 257^2 on their own
-  // grids, 1025^2 coarse to fine). The inputs hold 1.8-3.7 %, and the
+  // midpoint and fBm inputs at every size (257^2 on its own grid, 65^2
+  // resampled onto it, 1025^2 coarse to fine). The inputs hold 1.8-3.7 %, and the
   // detail run keeps the rock's texture with its pits (midpoint levels 9,
   // seed 3, Gentle Valleys: 1.4 %); lifted to their lowest neighbour, none
   // is left, so the bound (the issue's) has room for a rule that leaves a

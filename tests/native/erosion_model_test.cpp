@@ -292,8 +292,9 @@ TEST_P(EveryPreset, LeavesTheSeaFloorAsItWas) {
 
 TEST(ErosionModel, WhatReachesTheSeaIsCarriedAway) {
   // No creep: the volume is exactly bookkept, and the sea takes what the
-  // bed lost and no deposit kept.
-  const Heightfield in = make_fbm(129, 3, 0.3);
+  // bed lost and no deposit kept. (At 257^2: the budget is of the model's
+  // grid, which is this terrain's own only at that size.)
+  const Heightfield in = make_fbm(257, 3, 0.3);
   ErosionConfig c = preset_for("alluvial_fans");
   c.fluvial.diffusion = 0;
   c.model.strength = 1;
@@ -471,6 +472,55 @@ TEST_P(EveryPreset, ErodesTheSameTerrainAlikeAt257And2049) {
                   excess);
       EXPECT_NEAR(excess, 0.0, 0.10) << what << ": the final's texture at the preview's grid against the preview's";
     }
+  }
+}
+
+// The eroded terrain at `levels` against the eroded final (levels 10) at
+// the preview's vertices: their mean heights' ratio, and the largest
+// difference as a share of the final's relief.
+struct AtSharedVertices {
+  double mean_ratio, largest;
+};
+AtSharedVertices against_final(const Heightfield& preview, const Heightfield& final_hf) {
+  const int32_t w = preview.width(), stride = (final_hf.width() - 1) / (w - 1);
+  double sum_p = 0, sum_f = 0, largest = 0;
+  for (int32_t y = 0; y < w; ++y)
+    for (int32_t x = 0; x < w; ++x) {
+      const float p = preview.at(x, y), f = final_hf.at(x * stride, y * stride);
+      sum_p += p, sum_f += f;
+      largest = std::max(largest, double(std::fabs(p - f)));
+    }
+  const HeightStats s = final_hf.stats();
+  return {sum_p / sum_f, largest / (s.max - s.min)};
+}
+
+TEST_P(EveryPreset, ErodesAPreviewAt65AsItsFinalAt1025) {
+#ifdef FT_UNDER_ASAN
+  GTEST_SKIP() << "statistical ensemble: Release only";
+#endif
+  // Issue 36: Preview Levels 6 (65^2) against Detail Levels 10, Rugged
+  // Mountains, seed 13: the preview's mean was 14 % below the final's at
+  // their shared vertices (0.323 against 0.375 m). The model ran on the
+  // 65^2 grid itself, whose one-cell channels cover 4x the land they do on
+  // the model's grid. Now a terrain narrower than the model's grid is
+  // resampled onto it: every preset and seed here is within 0.7 % (bound:
+  // the issue's 3 %). The largest difference at shared vertices is where a
+  // channel of one lies a model cell from the other's (the preview cannot
+  // see the detail that places it): 3-17 % of the relief, as a 257^2
+  // preview has against the same final (3-14 %; the preview at 65^2 is up
+  // to 1.25x that). Held to 1.5x the 257^2 preview's. (Broken on purpose,
+  // the 65^2 run on its own grid again: Rugged Mountains mean x0.84-0.86 on
+  // these seeds, largest 0.23 of the relief against 0.14 at 257^2 on seed
+  // 13, 45 cm; Scree Slopes x0.96.)
+  for (uint64_t seed : {1, 2, 13}) {
+    const ErosionConfig c = preset_for(GetParam());
+    const Heightfield final_hf = erode(default_mountain(10, seed), c, nullptr);
+    const AtSharedVertices at65 = against_final(erode(default_mountain(6, seed), c, nullptr), final_hf);
+    const AtSharedVertices at257 = against_final(erode(default_mountain(8, seed), c, nullptr), final_hf);
+    std::printf("%-16s seed %2d: 65^2 against 1025^2: mean x%.4f, largest %.3f of the relief (257^2: x%.4f, %.3f)\n",
+                GetParam().c_str(), int(seed), at65.mean_ratio, at65.largest, at257.mean_ratio, at257.largest);
+    EXPECT_NEAR(at65.mean_ratio, 1.0, 0.03) << GetParam() << " seed " << seed;
+    EXPECT_LE(at65.largest, 1.5 * at257.largest) << GetParam() << " seed " << seed;
   }
 }
 
@@ -798,9 +848,10 @@ TEST(ErosionModel, NothingOutsideTheMaskErodesAndMassBalances) {
   // Mask: the left third erodes, the right third not (a 4 x 2 map: its
   // bilinear resampling ramps across the middle third). Diffusion is
   // off so that the volume is exactly bookkept: what the bed lost is what
-  // was laid down plus what left at the edges. On 129^2 the model runs on
-  // the terrain's own grid, so the budget is of this grid.
-  const Heightfield in = default_mountain(7, 2);
+  // was laid down plus what left at the edges. On 257^2 the model runs on
+  // the terrain's own grid, so the budget is of this grid (a smaller
+  // terrain is resampled onto the model's grid, whose budget it is).
+  const Heightfield in = default_mountain(8, 2);
   const float mask[] = {1, 1, 0, 0, 1, 1, 0, 0};
   for (const char* id : {"rugged_mountains", "alluvial_fans"}) {
     ErosionConfig c = preset_for(id);
@@ -851,8 +902,9 @@ TEST(ErosionModel, CreepUnderTheMaskKeepsTheVolume) {
   // each edge by D x the smaller of its cells' weights, so it makes and
   // loses none, and the budget balances as without creep. (While the mask
   // scaled creep's lowering only, the land kept 0.8 world units^3 more than
-  // the budget, of 18 to 26 detached.)
-  const Heightfield in = default_mountain(7, 2);
+  // the budget, of 18 to 26 detached.) At 257^2, where the model's grid,
+  // whose budget it is, is the terrain's own.
+  const Heightfield in = default_mountain(8, 2);
   const float mask[] = {0, 0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0, 0, 0, 0};
   for (const char* id : {"rugged_mountains", "gentle_valleys"}) {
     ErosionConfig c = preset_for(id);
@@ -874,8 +926,8 @@ TEST(ErosionModel, WhereNoSedimentComesTheMaskedOffLandStaysAsItWas) {
   // fBm whose right half, masked off, is a plateau 3 world units above the
   // left: the sediment of the left half cannot climb to it, and nothing on
   // it erodes. With creep acting only where the mask lets it, every height
-  // there stays as it was, bit for bit, on the model's own grid (129^2) and
-  // coarse to fine (513^2: the model's change resampled onto it carries
+  // there stays as it was, bit for bit, resampled onto the model's grid
+  // (129^2) and coarse to fine (513^2: the model's change resampled onto it carries
   // only deposits outside the mask, and there are none here). (While the
   // mask scaled creep's lowering only, creep filled the plateau's hollows:
   // 70 % of its cells changed at 129^2, 90 % at 513^2.)

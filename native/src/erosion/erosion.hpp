@@ -87,8 +87,8 @@ struct ModelConfig {
   double rainfall = 1.0;     // world units / yr on every cell (x the rain map)
 };
 
-// The model's working grid: terrains wider than this many cells are eroded
-// at this cell size first, then refined.
+// The model's working grid: every terrain is eroded at this cell size first
+// (a wider one then refined, a narrower one resampled back to its samples).
 inline constexpr int32_t kModelCells = 256;
 // Largest side of an erosion mask or rain map.
 inline constexpr int32_t kMaxMapSide = 65536;

@@ -35,7 +35,10 @@
 // the detail, its creep rounding what that run cuts but not the detail
 // itself (the rock's texture, below the model's cell). A preview and a
 // final then share their landform and erosion, and the cost of the long run
-// does not grow with the terrain.
+// does not grow with the terrain. A coarser terrain (a 65^2 preview) takes
+// the run's change at its own samples, the model's grid resampled from it:
+// run on its own grid, its one-cell channels covered more of the land and
+// it eroded 14 % more than its final.
 #include <algorithm>
 #include <cmath>
 #include <limits>

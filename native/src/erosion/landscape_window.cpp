@@ -128,9 +128,12 @@ LandscapeModel landscape_model(const D8Grid& g, const HeightSource& src, const E
   const int32_t edge = g.periodic ? 0 : 1;
   const int32_t side = std::max(g.width, g.height) - edge;
   const bool sea = !std::isnan(sea_level);
-  if (side <= kModelCells) {
-    // One run on the terrain's own grid (at most kModelCells across): the
-    // whole is its only window.
+  if (side == kModelCells) {
+    // One run on the terrain's own grid (the model's): the whole is its
+    // only window. A smaller terrain (a preview) runs on the model's grid
+    // too, resampled onto it (below): D8 channels are a cell wide, so on
+    // its own coarser grid a larger share of it was channel, and a 65^2
+    // Rugged Mountains came out 14 % lower than its 1025^2 final.
     m.before.resize(g.size());
     src.read(0, 0, g.width, g.height, m.before.data());
     std::vector<uint8_t> flags;
@@ -196,7 +199,9 @@ LandscapeModel landscape_model(const D8Grid& g, const HeightSource& src, const E
   }
   m.change.resize(after.size());
   for (size_t i = 0; i < after.size(); ++i) m.change[i] = after[i] - m.before[i];
-  m.detail_years = years * g.spacing / coarse.spacing;
+  // A terrain coarser than the model's grid has no detail below its cell:
+  // it takes the model's change at its samples and no detail run.
+  m.detail_years = factor > 1 ? years * g.spacing / coarse.spacing : 0.0;
   m.detail_steps = steps_for(g, c, m.detail_years, kMaxDetailSteps);
   // One more: a window's one-cell pits are lifted from its neighbours' heights.
   m.reach = detail_reach(g, c, m.detail_years, m.detail_steps) + 1;

@@ -44,7 +44,7 @@ class ArraySource : public HeightSource {
 struct LandscapeModel {
   D8Grid g;              // the terrain's grid (its sea is not read)
   bool erodes = false;   // a run of positive length
-  bool coarse_to_fine = false;  // wider than the model's grid (else one run on g itself)
+  bool coarse_to_fine = false;  // not the model's grid (else one run on g itself): through the model's
   double sea_level = NAN;       // the sea's level (NaN: none): samples at or below it stay
   D8Grid coarse, sub;    // the model's grid, and the subgrid of g it averages
   int32_t step = 1, radius = 0;  // the subgrid's step, the box mean's radius on it
