@@ -81,7 +81,9 @@ FT_API ft_status ft_terrain_build_rivers(const ft_build_params* p, ft_heightfiel
 /// (its level is a quantile of the whole). An erosion mask or rain map spans the whole terrain,
 /// corner to corner, as for ft_terrain_build. An eroded window's heights take the memory of the
 /// window grown by the erosion's reach (a hundred-odd samples) and of the landscape model's coarse
-/// grid; its maps (maps not NULL), the whole's. The expert passes (fluvial_steps,
+/// grid; its maps (maps not NULL) those of the window grown by one sample, but the drainage area,
+/// which is global: it reads the whole eroded terrain (computed in bands, about 45 bytes a sample
+/// of the whole). The expert passes (fluvial_steps,
 /// hydraulic_iterations, thermal_iterations) read the whole grid: their windows are the whole,
 /// cropped. On failure every output is NULL.
 FT_API ft_status ft_terrain_build_window(const ft_build_params* p, int64_t x0, int64_t y0, int32_t width,

@@ -180,6 +180,18 @@ struct DrainageSurface {
 };
 DrainageSurface drainage_surface(const D8Grid& g, const float* out, const Progress& progress = Progress());
 
+// The maps' drainage area of `out` (world units^2, as float) into
+// `area_out` (g's size; it may be `out`): multiple flow over
+// drainage_surface. It reads the whole grid (water crosses any window), the
+// one map that does.
+void drainage_area_map(const D8Grid& g, const float* out, float* area_out, const Progress& progress = Progress());
+
+// The eroded and deposited depths of `cells` samples, `out` against `in`
+// plus `lifted` (empty: none): each sample's own, so a window's are the
+// whole's.
+void depth_maps(const float* in, const float* out, const std::vector<float>& lifted, int64_t cells, float* eroded,
+                float* deposited);
+
 // The maps of `out`, eroded from `in` (terrain_maps.cpp): drainage area,
 // slope, curvature, and the eroded and deposited depths against `in` plus
 // `lifted` (the uplift the run added to each cell; empty: none), into

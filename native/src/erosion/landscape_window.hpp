@@ -90,4 +90,15 @@ bool erodes_by_windows(const ErosionConfig& c);
 void erode_window(const LandscapeModel& m, const HeightSource& src, const ErosionConfig& c, int64_t x0, int64_t y0,
                   int32_t w, int32_t h, float* before, float* after);
 
+// erode_window's `after` and erode()'s maps at those samples, each w x h,
+// the same bits: slope and curvature of the eroded heights (on the whole's
+// grid spacing `spacing`, as erode's maps), eroded and deposited, water
+// depth (0: no hydraulic pass by windows) from the window grown by one
+// ring; the drainage area, which is global, from the whole eroded terrain,
+// computed here in bands of rows (the whole's heights, a byte a sample of
+// its sea, then the drainage's own buffers: the memory of the whole, about
+// 45 bytes a sample, unlike the heights'). Progress: c.progress.
+void erode_window_maps(const LandscapeModel& m, const HeightSource& src, const ErosionConfig& c, double spacing,
+                       int64_t x0, int64_t y0, int32_t w, int32_t h, float* after, ErosionMaps& maps);
+
 }  // namespace ft::erosion

@@ -81,31 +81,44 @@ DrainageSurface drainage_surface(const D8Grid& g, const float* out, const Progre
   return s;
 }
 
-void erosion_maps(const D8Grid& g, const float* in, const float* out, const std::vector<float>& lifted,
-                  ErosionMaps& maps, const Progress& progress) {
-  const int64_t cells = int64_t(g.size());
+void drainage_area_map(const D8Grid& g, const float* out, float* area_out, const Progress& progress) {
   // The area on the surface as it would drain with its pits filled (a
   // lake's cells all carry what flows through it), by multiple flow
   // directions so the map has no grid-aligned streaks, across flats too.
   DrainageSurface surface;
   {
-    const ProgressPart part(progress, 0.0, kSurfaceShare);
+    const ProgressPart part(progress, 0.0, kSurfaceShare / kAreaShare);
     surface = drainage_surface(g, out, part.progress());
   }
   std::vector<double> area;
   {
-    const ProgressPart part(progress, kSurfaceShare, kAreaShare - kSurfaceShare);
+    const ProgressPart part(progress, kSurfaceShare / kAreaShare, 1.0 - kSurfaceShare / kAreaShare);
     multiple_flow_area(g, surface.z.data(), surface.sink, area, part.progress(), &surface.flats);
   }
-  // The eroded and deposited depths are against the input plus what the
-  // fluvial run lifted it, so uplift never shows as deposit.
+  const int64_t cells = int64_t(g.size());
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < cells; ++i) area_out[i] = float(area[i]);
+}
+
+void depth_maps(const float* in, const float* out, const std::vector<float>& lifted, int64_t cells, float* eroded,
+                float* deposited) {
+  // Against the input plus what the fluvial run lifted it, so uplift never
+  // shows as deposit.
 #pragma omp parallel for schedule(static)
   for (int64_t i = 0; i < cells; ++i) {
-    maps.drainage_area.data()[i] = float(area[i]);
     const float change = out[i] - (in[i] + (lifted.empty() ? 0.0f : lifted[i]));
-    maps.eroded.data()[i] = std::max(0.0f, -change);
-    maps.deposited.data()[i] = std::max(0.0f, change);
+    eroded[i] = std::max(0.0f, -change);
+    deposited[i] = std::max(0.0f, change);
   }
+}
+
+void erosion_maps(const D8Grid& g, const float* in, const float* out, const std::vector<float>& lifted,
+                  ErosionMaps& maps, const Progress& progress) {
+  {
+    const ProgressPart part(progress, 0.0, kAreaShare);
+    drainage_area_map(g, out, maps.drainage_area.data(), part.progress());
+  }
+  depth_maps(in, out, lifted, int64_t(g.size()), maps.eroded.data(), maps.deposited.data());
   progress.report(kDepthsShare);
   const ProgressPart part(progress, kDepthsShare, 1.0 - kDepthsShare);
   slope_curvature(g, out, maps.slope.data(), maps.curvature.data(), part.progress());

@@ -332,7 +332,8 @@ Heightfield build_terrain_window(const ft_build_params& given, int64_t x0, int64
     invalid("the window [" + std::to_string(x0) + ", " + std::to_string(x0 + w) + ") x [" + std::to_string(y0) +
             ", " + std::to_string(y0 + h) + ") lies outside the terrain's " + std::to_string(ew) + " x " +
             std::to_string(eh) + " samples");
-  const bool erode = erodes(p);
+  // Maps are of an eroded terrain: without erosion settings, the defaults' (build_terrain's rule).
+  const bool erode = erodes(p) || maps;
   ft_erosion_params e;
   if (erode) {
     // The presets are in world units and years: nothing of the terrain to fit.
@@ -342,9 +343,8 @@ Heightfield build_terrain_window(const ft_build_params& given, int64_t x0, int64
     if (t.sea == FT_SEA_HEIGHT) e.sea = FT_WATER_SEA_HEIGHT, e.sea_level = t.sea_level;
   }
   const erosion::ErosionConfig c = erode ? erosion::from_c(e) : erosion::ErosionConfig();
-  if (maps || (erode && !erosion::erodes_by_windows(c))) {
-    // The maps' drainage area and the expert passes read the whole grid:
-    // the whole, cropped (exact by construction).
+  if (erode && !erosion::erodes_by_windows(c)) {
+    // The expert passes read the whole grid: the whole, cropped (exact by construction).
     erosion::ErosionMaps whole_maps;
     const Heightfield whole = build_terrain(p, maps ? &whole_maps : nullptr);
     if (maps)
@@ -371,14 +371,27 @@ Heightfield build_terrain_window(const ft_build_params& given, int64_t x0, int64
   const GeneratedSource src(t, g);
   const erosion::ThreadScope threads(p.threads);
   const Progress progress(p.progress, p.progress_user);
-  const ProgressPart model_part(progress, 0.0, 0.4), window_part(progress, 0.4, 0.6);
+  // With maps, the drainage area's whole takes most of the bar.
+  const double model_share = maps ? 0.1 : 0.4;
+  const ProgressPart model_part(progress, 0.0, model_share), window_part(progress, model_share, 1.0 - model_share);
   const double sea_level = c.sea == erosion::Sea::kHeight ? c.sea_level : NAN;
   const erosion::LandscapeModel m = erosion::landscape_model(g, src, c, sea_level, nullptr, model_part.progress());
   erosion::ErosionConfig wc = c;
   wc.progress = window_part.progress();
   Heightfield out(w, h);
-  std::vector<float> before(size_t(w) * h);
-  erosion::erode_window(m, src, wc, x0, y0, w, h, before.data(), out.data());
+  if (!maps) {
+    std::vector<float> before(size_t(w) * h);
+    erosion::erode_window(m, src, wc, x0, y0, w, h, before.data(), out.data());
+  } else {
+    // The maps on erode()'s grid: its spacing as grid_of gives it on the
+    // torus erode_terrain cuts (the same bits, so the same areas and slopes).
+    const double spacing =
+        overlap > 0 ? t.world_size * double(g.width - 1) / double(ew - 1) / (g.width - 1) : t.world_size / (ew - 1);
+    erosion::erode_window_maps(m, src, wc, spacing, x0, y0, w, h, out.data(), *maps);
+    for (Heightfield* f : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth, &maps->eroded,
+                           &maps->deposited})
+      f->set_world_size(t.world_size * double(w - 1) / double(ew - 1));
+  }
   out.set_world_size(t.world_size * double(w - 1) / double(ew - 1));
   progress.report(1.0);
   return out;
