@@ -126,11 +126,13 @@ class RiversTest(unittest.TestCase):
         # Just over the minimum depth (1% of the relief) above the highest sea
         # cell, cut to where it is deeper: the sea is the terrain's own (the
         # landform flattened 20% of the samples), and its water covers the
-        # samples more than the minimum depth under it: measured 24%.
+        # samples more than the minimum depth under it: measured 24% while a
+        # 65^2 terrain eroded on its own grid, 30.2% since it erodes on the
+        # model grid as its Final does (0.6.0).
         heights = np.array([v.co.z for v in terrain.data.vertices])
         below = np.mean(heights < z[0] - 0.01 * np.ptp(heights))
         self.assertGreater(below, 0.18)
-        self.assertLessEqual(below, 0.3)
+        self.assertLessEqual(below, 0.34)
         for kind in ("RIVERS", "SEA") + (("LAKES",) if "LAKES" in made else ()):
             obj = made[kind]
             self.assertIs(obj.parent, terrain)
