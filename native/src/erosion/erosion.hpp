@@ -16,6 +16,7 @@
 // are eroded as a torus and stay seamless.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -116,6 +117,10 @@ struct ErosionMaps {
   Heightfield water_depth;    // water left by the hydraulic pass (0 when it did not run)
   Heightfield eroded;         // max(0, before - after)
   Heightfield deposited;      // max(0, after - before)
+  // Every map, in the order above: for what is done to each alike.
+  std::array<Heightfield*, 6> all() {
+    return {&drainage_area, &slope, &curvature, &water_depth, &eroded, &deposited};
+  }
 };
 
 // Bookkeeping of the material-moving passes, for the conservation checks.

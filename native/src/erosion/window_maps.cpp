@@ -74,9 +74,7 @@ void erode_window_maps(const LandscapeModel& m, const HeightSource& src, const E
   depth_maps(before.data(), eroded.data(), {}, int64_t(eroded.size()), lost.data(), laid.data());
   // The window's place in the ring: one sample in, but at a bounded grid's edge.
   const int32_t ox = g.periodic ? 1 : int32_t(x0 - rx), oy = g.periodic ? 1 : int32_t(y0 - ry);
-  for (Heightfield* f : {&maps.drainage_area, &maps.slope, &maps.curvature, &maps.water_depth, &maps.eroded,
-                         &maps.deposited})
-    *f = Heightfield(w, h);
+  for (Heightfield* f : maps.all()) *f = Heightfield(w, h);
   for (int32_t j = 0; j < h; ++j) {
     const size_t from = size_t(oy + j) * rw + ox, to = size_t(j) * w;
     std::memcpy(after + to, eroded.data() + from, sizeof(float) * w);

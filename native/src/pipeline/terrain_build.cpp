@@ -139,9 +139,7 @@ Heightfield erode_terrain(const Heightfield& hf, const ft_erosion_params& e, int
   const double world_size = hf.world_size();
   const Heightfield eroded = erosion::erode(torus_of(hf, overlap), c, maps, budget);
   if (maps)
-    for (Heightfield* m : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth, &maps->eroded,
-                           &maps->deposited})
-      *m = untorus(*m, overlap, world_size);
+    for (Heightfield* m : maps->all()) *m = untorus(*m, overlap, world_size);
   return untorus(eroded, overlap, world_size);
 }
 
@@ -347,12 +345,10 @@ Heightfield build_terrain_window(const ft_build_params& given, int64_t x0, int64
     // The expert passes read the whole grid: the whole, cropped (exact by construction).
     erosion::ErosionMaps whole_maps;
     const Heightfield whole = build_terrain(p, maps ? &whole_maps : nullptr);
-    if (maps)
-      for (auto [from, to] : {std::pair{&whole_maps.drainage_area, &maps->drainage_area},
-                              std::pair{&whole_maps.slope, &maps->slope}, std::pair{&whole_maps.curvature, &maps->curvature},
-                              std::pair{&whole_maps.water_depth, &maps->water_depth},
-                              std::pair{&whole_maps.eroded, &maps->eroded}, std::pair{&whole_maps.deposited, &maps->deposited}})
-        *to = crop(*from, x0, y0, w, h);
+    if (maps) {
+      const auto from = whole_maps.all(), to = maps->all();
+      for (size_t k = 0; k < to.size(); ++k) *to[k] = crop(*from[k], x0, y0, w, h);
+    }
     return crop(whole, x0, y0, w, h);
   }
   if (!erode) {
@@ -388,9 +384,7 @@ Heightfield build_terrain_window(const ft_build_params& given, int64_t x0, int64
     const double spacing =
         overlap > 0 ? t.world_size * double(g.width - 1) / double(ew - 1) / (g.width - 1) : t.world_size / (ew - 1);
     erosion::erode_window_maps(m, src, wc, spacing, x0, y0, w, h, out.data(), *maps);
-    for (Heightfield* f : {&maps->drainage_area, &maps->slope, &maps->curvature, &maps->water_depth, &maps->eroded,
-                           &maps->deposited})
-      f->set_world_size(t.world_size * double(w - 1) / double(ew - 1));
+    for (Heightfield* f : maps->all()) f->set_world_size(t.world_size * double(w - 1) / double(ew - 1));
   }
   out.set_world_size(t.world_size * double(w - 1) / double(ew - 1));
   progress.report(1.0);
