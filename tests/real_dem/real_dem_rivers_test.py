@@ -36,11 +36,15 @@ import numpy as np
 DATA = "/usr/share/matplotlib/mpl-data/sample_data"
 
 
-def stats(cli, heights, work, name, world_size, min_area, sea):
+def save(heights, work, name):
     path = os.path.join(work, name + ".npy")
     np.save(path, np.ascontiguousarray(heights, dtype=np.float32))
+    return path
+
+
+def stats(cli, path, world_size, min_area, sea):
     cmd = [cli, "rivers", "--in", path, "--world-size", str(world_size), "--min-area", str(min_area),
-           "--out", os.path.join(work, name + ".json"), "--stats"]
+           "--out", path[:-len(".npy")] + ".json", "--stats"]
     if sea:
         cmd += ["--sea", "height", "--sea-level", "0"]
     out = subprocess.run(cmd, capture_output=True, text=True)
@@ -61,10 +65,11 @@ def main():
     folded = np.load(os.path.join(DATA, "jacksboro_fault_dem.npz"))["elevation"] / 1000.0
     failed = False
     with tempfile.TemporaryDirectory() as work:
+        island_path, folded_path = save(topo, work, "island"), save(folded, work, "folded")
         # Cells: 292 km / 120 = 2.43 km (5.9 km^2); 30 km / 403 = 74 m (0.0055 km^2).
         for island_area, folded_area in ((12, 0.25), (24, 0.5), (48, 1.0)):
-            a = stats(cli, topo, work, "island", 292, island_area, True)
-            b = stats(cli, folded, work, "folded", 30, folded_area, False)
+            a = stats(cli, island_path, 292, island_area, True)
+            b = stats(cli, folded_path, 30, folded_area, False)
             rb, h, rb_folded = a["bifurcation_ratio"], a["hack_h"], b["bifurcation_ratio"]
             print(f"min area {island_area} / {folded_area} km^2: island R_b {rb:.2f} h {h:.3f} "
                   f"streams {a['streams_per_order']}; folded R_b {rb_folded:.2f}")
