@@ -32,6 +32,8 @@ def parse_args():
     p.add_argument("--repeat", type=int, default=3, help="runs of each measurement (default 3)")
     p.add_argument("--levels", type=int, default=10, help="fracterra levels: 2^levels + 1 per side (default 10)")
     p.add_argument("--ant-subdivisions", type=int, default=1024, help="A.N.T. vertices per side (default 1024)")
+    p.add_argument("--warmup", type=int, default=1,
+                   help="untimed adds of each before the timed runs (default 1: imports, the material, first-touch memory)")
     p.add_argument("--skip-ant", action="store_true", help="time fracterra only")
     p.add_argument("--threads", type=int, default=None,
                    help="fracterra's Threads preference (0: all cores; default: the preference, 1)")
@@ -129,7 +131,8 @@ def bench_ant(args, rounds):
 def line(name, vertices, times):
     wall, cpu = [t[0] for t in times], [t[1] for t in times]
     return (f"{name:<34} {vertices:>9,d} verts  wall best {min(wall):7.3f} s median {statistics.median(wall):7.3f} s"
-            f"  cpu best {min(cpu):7.3f} s median {statistics.median(cpu):7.3f} s")
+            f"  cpu best {min(cpu):7.3f} s median {statistics.median(cpu):7.3f} s"
+            f"  (wall: {' '.join(f'{t:.3f}' for t in wall)})")
 
 
 def median(times, i):
@@ -154,6 +157,13 @@ def main():
         raise RuntimeError("could not enable ant_landscape (it needs Debian's python3-numpy)")
     # One round at a time, ours then A.N.T.'s: on a machine shared with other
     # work a change of load then falls on both sides alike.
+    for i in range(args.warmup):
+        clear()
+        bpy.ops.mesh.fracterra_terrain_add(levels=args.levels, seed=1000 + i)
+        if not args.skip_ant:
+            clear()
+            n = args.ant_subdivisions
+            bpy.ops.mesh.landscape_add(subdivision_x=n, subdivision_y=n, random_seed=1000 + i, refresh=True)
     add, regen, own_add, own_regen, share, aadd, arefresh = [], [], [], [], [], [], []
     for i in range(args.repeat):
         v, *ours = bench_fracterra(args, [i])

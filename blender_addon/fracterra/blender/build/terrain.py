@@ -18,7 +18,6 @@ from ...core.resample import dyadic_levels, resample_bilinear
 from . import erosion as erosion_ui
 from . import erosion_masks
 from . import falloff_mask
-from . import huge_pages
 from . import mesh as mesh_build
 from . import planet as planet_build
 from . import splat_material
@@ -240,7 +239,6 @@ def _build_in_place(obj, g, values, settings, groups, plan):
             elif plan.final:
                 kept_final.drop(obj)
             mesh_build.swap_mesh(obj, new)
-            huge_pages.advise_copy_of(obj.data)  # the grid's arrays are freed by now: see the add's job_done
             splat_material.give_material(obj.data)  # the old eroded material, carried over, gives way
             erosion_masks.carry_groups(obj, groups or {}, g.nx, g.ny)
             summary = f"{g.nx} x {g.ny} terrain mesh rebuilt"

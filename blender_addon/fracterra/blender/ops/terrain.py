@@ -12,7 +12,7 @@ from ..common.jobs import JobOperator
 from ..ui.settings_layout import draw_settings
 from .regenerate import RegenerateOperator
 from ..build.terrain import build_water, new_terrain_job, regenerate_job
-from ..build import children, huge_pages, kept_final
+from ..build import children, kept_final
 from ..build.objects import active_object, mesh_level, restore_settings
 from ..build.water import take as take_water, terrain_of
 from ..common.jobs import run_job
@@ -57,8 +57,6 @@ class FRACTERRA_OT_terrain_add(JobOperator, bpy.types.Operator, object_utils.Add
         water = build_water(obj, take_water(mesh))
         if water:
             summary = f"{summary}; {water}"
-        # Last, with the grid's arrays freed: what Blender allocates next is its copy of the mesh.
-        huge_pages.advise_copy_of(mesh)
         if getattr(self, "_preview", False):
             self.report({"INFO"}, f"Fractal terrain: Preview, {summary} in {self.job_seconds:.2f} s; "
                                   "Build Final in the sidebar builds Levels")
