@@ -6,6 +6,7 @@
 // only, as it did): the periodic case differs in its segment count.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -53,21 +54,12 @@ TEST(PipelineRivers, TheCliWritesTheLibrarysRivers) {
   fs::remove_all(dir);
 }
 
-// Issue 24: the landform's sea is erosion's base level in the pipeline (so
-// in the CLI and Blender alike). An eroded island keeps its sea floor to the
-// bit, no land sinks below it, and its rivers end in it. Before, the
-// sediment built the sea floor up into sand flats and specks.
-TEST(PipelineRivers, AnErodedIslandKeepsItsSeaAndItsRiversEndInIt) {
-  ft_terrain_params t = terrain::default_terrain_params();
-  t.method = FT_TERRAIN_FBM;
-  t.width = t.height = 257;
-  t.seed = 7;
-  t.hurst = 0.8;
-  t.world_size = 10;
-  t.sea = FT_SEA_FRACTION;
-  t.sea_fraction = 0.3;
+// The landform's sea is erosion's base level in the pipeline (so in the CLI
+// and Blender alike). An eroded island keeps its sea floor to the bit, no
+// land sinks below it, and its rivers end in it. Before, the sediment built
+// the sea floor up into sand flats and specks.
+void expect_the_island_keeps_its_sea(const ft_terrain_params& t, float level) {
   const Heightfield before = terrain::generate_terrain(t);
-  const float level = before.stats().min;
   ft_build_params b = defaults_of<ft_build_params>(build_param_table());
   b.terrain = &t;
   b.erosion_preset = FT_EROSION_PRESET_LAND;
@@ -85,6 +77,40 @@ TEST(PipelineRivers, AnErodedIslandKeepsItsSeaAndItsRiversEndInIt) {
   size_t to_sea = 0;
   for (const auto& s : net.segments) to_sea += s.end == hydrology::RiverEnd::kSea;
   EXPECT_GT(to_sea, 10u) << "of " << net.segments.size() << " segments";
+}
+
+ft_terrain_params island() {
+  ft_terrain_params t = terrain::default_terrain_params();
+  t.method = FT_TERRAIN_FBM;
+  t.width = t.height = 257;
+  t.seed = 7;
+  t.hurst = 0.8;
+  t.world_size = 10;
+  return t;
+}
+
+TEST(PipelineRivers, AnErodedIslandKeepsItsSeaAndItsRiversEndInIt) {
+  ft_terrain_params t = island();
+  t.sea = FT_SEA_FRACTION;
+  t.sea_fraction = 0.3;
+  expect_the_island_keeps_its_sea(t, terrain::generate_terrain(t).stats().min);
+}
+
+// A sea given as a height whose float lies above it (0.1 does: float(0.1) is
+// 0.10000000149): the landform flattens the sea to the float, and erosion,
+// comparing in double, found no sea at all; the sea floor eroded, and no
+// river ended in it.
+TEST(PipelineRivers, ASeaAtAHeightThatRoundsUpAsAFloatIsKept) {
+  ft_terrain_params t = island();
+  t.sea = FT_SEA_FRACTION;
+  t.sea_fraction = 0.3;
+  const float at_fraction = terrain::generate_terrain(t).stats().min;
+  // The double a quarter of a float step under that sample: it rounds to it.
+  const double level = double(at_fraction) - 0.25 * (double(std::nextafter(at_fraction, INFINITY)) - at_fraction);
+  ASSERT_GT(double(float(level)), level);
+  t.sea = FT_SEA_HEIGHT;
+  t.sea_level = level;
+  expect_the_island_keeps_its_sea(t, float(level));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "erosion/erosion.hpp"
 #include "erosion/erosion_params.hpp"
 #include "erosion/landscape_window.hpp"
+#include "erosion/sea.hpp"
 
 namespace ft::erosion {
 namespace {
@@ -106,7 +107,7 @@ void erode_window(const LandscapeModel& m, const HeightSource& src, const Erosio
   // erode()'s last rule: the sea stays, and no land is cut below it.
   const float floor = float(m.sea_level);
   for (size_t i = 0; i < size_t(w) * size_t(h); ++i)
-    after[i] = double(before[i]) <= m.sea_level ? before[i] : std::max(after[i], floor);
+    after[i] = in_sea(before[i], m.sea_level) ? before[i] : std::max(after[i], floor);
 }
 
 Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* maps, MassBudget* budget) {
@@ -122,7 +123,7 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
   if (c.sea != Sea::kNone) {
     sea.resize(in.size());
 #pragma omp parallel for schedule(static)
-    for (int64_t i = 0; i < int64_t(in.size()); ++i) sea[i] = double(in.data()[i]) <= level;
+    for (int64_t i = 0; i < int64_t(in.size()); ++i) sea[i] = in_sea(in.data()[i], level);
     g.sea = sea.data();
   }
   // Fresh grids are set by the team (their pages are zeroed by the kernel

@@ -23,6 +23,7 @@
 #include "erosion/landscape_parts.hpp"
 #include "erosion/model_constants.hpp"
 #include "erosion/one_cell_pits.hpp"
+#include "erosion/sea.hpp"
 
 namespace ft::erosion {
 namespace {
@@ -140,7 +141,7 @@ LandscapeModel landscape_model(const D8Grid& g, const HeightSource& src, const E
     D8Grid own = m.g;
     if (sea) {
       flags.resize(g.size());
-      for (size_t i = 0; i < g.size(); ++i) flags[i] = double(m.before[i]) <= sea_level;
+      for (size_t i = 0; i < g.size(); ++i) flags[i] = in_sea(m.before[i], sea_level);
       own.sea = flags.data();
     }
     m.change = m.before;
@@ -182,7 +183,7 @@ LandscapeModel landscape_model(const D8Grid& g, const HeightSource& src, const E
       for (int32_t x = 0; x < coarse.width; ++x) {
         const int32_t fx = std::min(int32_t(std::lround(x * sx)), sub.width - 1);
         const int32_t fy = std::min(int32_t(std::lround(y * sy)), sub.height - 1);
-        coarse_sea[size_t(y) * coarse.width + x] = double(z[size_t(fy) * sub.width + fx]) <= sea_level;
+        coarse_sea[size_t(y) * coarse.width + x] = in_sea(z[size_t(fy) * sub.width + fx], sea_level);
       }
   }
   D8Grid run_grid = coarse;
@@ -319,7 +320,7 @@ void landscape_window(const LandscapeModel& m, const HeightSource& src, const Er
       if (!mask.empty()) mask[i] = map_at(c.erosion_mask, gx, gy);
       if (!rain.empty()) rain[i] = map_at(c.rain_map, gx, gy);
       if (!sea.empty()) {
-        sea[i] = double(z[i]) <= m.sea_level;
+        sea[i] = in_sea(z[i], m.sea_level);
         if (sea[i]) continue;
       }
       const double cx = gx * to_coarse_x, cy = gy * to_coarse_y;

@@ -22,7 +22,7 @@ std::vector<uint8_t> sea_cells(const D8Grid& g, const float* z, double level) {
   const size_t n = g.size();
   std::vector<uint8_t> sea(n, 0);
   if (!std::isfinite(level)) return sea;
-  auto wet = [&](size_t i) { return double(z[i]) <= level; };
+  auto wet = [&](size_t i) { return in_sea(z[i], level); };
   std::vector<int32_t> todo;
   auto seed = [&](size_t i) {
     if (!sea[i] && wet(i)) {

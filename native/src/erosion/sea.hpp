@@ -27,6 +27,12 @@ enum class Sea : int32_t { kNone = 0, kHeight = 1, kFraction = 2 };
 // with sea fraction F agree), or NaN (kNone, or an empty terrain).
 double sea_height(Sea sea, double level, double fraction, const Heightfield& hf);
 
+// A sample at or below the sea's level, compared as floats: the landform
+// flattens its sea to float(level), which lies above a level such as 0.1
+// that rounds up, and a double comparison then finds no sea at all. False
+// for a NaN level.
+inline bool in_sea(float z, double level) { return z <= float(level); }
+
 // 1 for the sea's cells: at or below `level` (a landform's sea is flat at
 // exactly its level) and connected, 8-neighbour, to the map's edge (periodic:
 // to the lowest sample) through such cells. An enclosed depression below

@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "erosion/landscape_window.hpp"
+#include "erosion/sea.hpp"
 
 namespace ft::erosion {
 namespace {
@@ -43,7 +44,7 @@ void erode_window_maps(const LandscapeModel& m, const HeightSource& src, const E
       const ProgressPart part(c.progress, kBandsShare * b / bands, kBandsShare / bands);
       bc.progress = part.progress();
       erode_window(m, src, bc, 0, y, g.width, y1 - y, before.data(), whole.data() + first);
-      for (size_t i = 0; !sea.empty() && i < n; ++i) sea[first + i] = double(before[i]) <= m.sea_level;
+      for (size_t i = 0; !sea.empty() && i < n; ++i) sea[first + i] = in_sea(before[i], m.sea_level);
     }
   }
   // The ring: inside a bounded grid (its edge is the whole's edge too, where

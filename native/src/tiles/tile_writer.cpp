@@ -140,10 +140,12 @@ TileFormat parse_tile_format(const std::string& name) {
 
 std::string tile_file_name(const TileSpec& spec, int32_t col, int32_t row) {
   const int d = std::max(3, digits(std::max(spec.grid.columns(), spec.grid.rows()) - 1));
-  char name[64];
-  std::snprintf(name, sizeof name, "tile_r%0*d_c%0*d.%s", d, row, d, col,
-                spec.format == TileFormat::tiff ? "tif" : "png");
-  return name;
+  // Zero-padded to one width, so the names sort as the grid does.
+  auto padded = [d](int32_t v) {
+    const std::string s = std::to_string(v);
+    return std::string(size_t(std::max(0, d - int(s.size()))), '0') + s;
+  };
+  return "tile_r" + padded(row) + "_c" + padded(col) + (spec.format == TileFormat::tiff ? ".tif" : ".png");
 }
 
 std::string map_file_name(const TileSpec& spec, int k, int32_t col, int32_t row) {
