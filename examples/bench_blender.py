@@ -32,6 +32,8 @@ def parse_args():
     p.add_argument("--repeat", type=int, default=3, help="runs of each measurement (default 3)")
     p.add_argument("--levels", type=int, default=10, help="fracterra levels: 2^levels + 1 per side (default 10)")
     p.add_argument("--ant-subdivisions", type=int, default=1024, help="A.N.T. vertices per side (default 1024)")
+    p.add_argument("--warmup", type=int, default=1,
+                   help="untimed adds of each before the timed runs (default 1: imports, the material, first-touch memory)")
     p.add_argument("--skip-ant", action="store_true", help="time fracterra only")
     p.add_argument("--threads", type=int, default=None,
                    help="fracterra's Threads preference (0: all cores; default: the preference, 1)")
@@ -58,11 +60,11 @@ def timed(fn):
     return dt, dc
 
 
-def bench_fracterra(args):
+def bench_fracterra(args, rounds):
     from fracterra.blender.build import terrain as terrain_build
     from fracterra.core import params
     add, regen, own_add, own_regen = [], [], [], []
-    for i in range(args.repeat):
+    for i in rounds:
         clear()
         add.append(timed(lambda: bpy.ops.mesh.fracterra_terrain_add(levels=args.levels, seed=1 + i)))
         obj = bpy.context.active_object
@@ -84,7 +86,7 @@ def bench_fracterra(args):
     return vertices, add, regen, own_add, own_regen
 
 
-def bench_blender_share(args):
+def bench_blender_share(args, rounds):
     """Blender's own share of an add: the same mesh (UV map, colours, height and
     slope attributes) from arrays the library made beforehand, timed from the
     new mesh to the view-layer update after it is linked, the arrays freed
@@ -93,7 +95,7 @@ def bench_blender_share(args):
     from fracterra.blender.build import mesh as mesh_build, splat_material
     from fracterra.blender.build.terrain import terrain_work
     times = []
-    for i in range(args.repeat):
+    for i in rounds:
         clear()
         values = dict(args.defaults)  # the first add's settings: the add-on's defaults
         values["seed"] = 300 + i
@@ -111,10 +113,11 @@ def bench_blender_share(args):
     return times
 
 
-def bench_ant(args):
+def bench_ant(args, rounds):
     add, refresh = [], []
     n = args.ant_subdivisions
-    for i in range(args.repeat):
+    vertices = 0
+    for i in rounds:
         clear()
         add.append(timed(lambda: bpy.ops.mesh.landscape_add(
             subdivision_x=n, subdivision_y=n, random_seed=i, refresh=True)))
@@ -128,7 +131,8 @@ def bench_ant(args):
 def line(name, vertices, times):
     wall, cpu = [t[0] for t in times], [t[1] for t in times]
     return (f"{name:<34} {vertices:>9,d} verts  wall best {min(wall):7.3f} s median {statistics.median(wall):7.3f} s"
-            f"  cpu best {min(cpu):7.3f} s median {statistics.median(cpu):7.3f} s")
+            f"  cpu best {min(cpu):7.3f} s median {statistics.median(cpu):7.3f} s"
+            f"  (wall: {' '.join(f'{t:.3f}' for t in wall)})")
 
 
 def median(times, i):
@@ -149,14 +153,31 @@ def main():
     if prefs is not None and args.threads is not None:
         prefs.threads = args.threads
     threads = prefs.threads if prefs is not None else 0
-    v, add, regen, own_add, own_regen = bench_fracterra(args)
+    if not args.skip_ant and addon_utils.enable("ant_landscape", default_set=False, handle_error=None) is None:
+        raise RuntimeError("could not enable ant_landscape (it needs Debian's python3-numpy)")
+    # One round at a time, ours then A.N.T.'s: on a machine shared with other
+    # work a change of load then falls on both sides alike.
+    for i in range(args.warmup):
+        clear()
+        bpy.ops.mesh.fracterra_terrain_add(levels=args.levels, seed=1000 + i)
+        if not args.skip_ant:
+            clear()
+            n = args.ant_subdivisions
+            bpy.ops.mesh.landscape_add(subdivision_x=n, subdivision_y=n, random_seed=1000 + i, refresh=True)
+    add, regen, own_add, own_regen, share, aadd, arefresh = [], [], [], [], [], [], []
+    for i in range(args.repeat):
+        v, *ours = bench_fracterra(args, [i])
+        for into, got in zip((add, regen, own_add, own_regen), ours):
+            into += got
+        share += bench_blender_share(args, [i])
+        if not args.skip_ant:
+            av, a, r = bench_ant(args, [i])
+            aadd += a
+            arefresh += r
     rows = [line("fracterra Add Fractal Terrain", v, add), line("fracterra Regenerate (in place)", v, regen),
             line("  fracterra work only: add", v, own_add), line("  fracterra work only: regenerate", v, own_regen),
-            line("  Blender's share of an add", v, bench_blender_share(args))]
+            line("  Blender's share of an add", v, share)]
     if not args.skip_ant:
-        if addon_utils.enable("ant_landscape", default_set=False, handle_error=None) is None:
-            raise RuntimeError("could not enable ant_landscape (it needs Debian's python3-numpy)")
-        av, aadd, arefresh = bench_ant(args)
         rows += [line("A.N.T. Landscape add", av, aadd), line("A.N.T. Landscape Refresh", av, arefresh)]
         for what, ours, theirs in (("add", add, aadd), ("refresh", regen, arefresh)):
             rows.append(f"ratio {what:<8} A.N.T. / fracterra = {median(theirs, 0) / median(ours, 0):6.1f}x wall, "

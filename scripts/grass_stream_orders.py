@@ -46,9 +46,17 @@ LANDFORMS = {
     "island": ["--falloff", "radial", "--edge-level", "-0.6"],
     "island_sea": ["--falloff", "radial", "--edge-level", "-0.6", "--sea", "fraction", "--sea-fraction", "0.3"],
 }
+# The island with its foot plain (within 0.01 of the edge level -0.6, the
+# sediment laid on it included) cut away as a sea for both tools, and our
+# lakes off (GRASS routes through depressions): the networks on the island
+# alone, to tell the plain's part in R_b from the rest.
+LANDFORMS["island_foot"] = LANDFORMS["island"]
+FOOT = -0.59
 # Landforms whose sea is erosion's base level and the rivers' sea too (as the
 # pipeline passes it); the older "sea" rows erode and trace it as land.
 SEA_BOTH = {"island_sea": ["--sea", "fraction", "--sea-fraction", "0.3"]}
+# Rivers' flags only: the terrain is eroded as its landform says.
+RIVERS_ONLY = {"island_foot": ["--sea", "height", "--sea-level", str(FOOT), "--min-lake-area", "1e6"]}
 # GRASS direction codes (r.stream.extract, as r.watershed): 1 NE, 2 N, 3 NW,
 # 4 W, 5 SW, 6 S, 7 SE, 8 E; rows grow southwards.
 STEP = {1: (-1, 1), 2: (-1, 0), 3: (-1, -1), 4: (0, -1), 5: (1, -1), 6: (1, 0), 7: (1, 1), 8: (0, 1)}
@@ -170,19 +178,22 @@ def main():
         for seed in (1, 2, 3):
             if only and f"{name}:{seed}" not in only:
                 continue
-            t, e = f"{work}/t_{name}{seed}.npy", f"{work}/e_{name}{seed}.npy"
+            made = "island" if name == "island_foot" else name  # the same terrain
+            t, e = f"{work}/t_{made}{seed}.npy", f"{work}/e_{made}{seed}.npy"
             if not os.path.exists(e):
                 run([cli, "terrain", "--method", "fbm", "--size", str(SIZE), "--hurst", "0.7", "--world-size", str(WORLD),
                      "--seed", str(seed), *flags, "--out", t])
                 run([cli, "erode", "--in", t, "--preset", "rugged_mountains", *SEA_BOTH.get(name, []), "--out", e])
-            if name in SEA_BOTH:
+            if name in SEA_BOTH or name in RIVERS_ONLY:
                 a = json.loads(run([cli, "rivers", "--in", e, "--out", f"{work}/r.json", "--stats", "--min-area",
-                                    str(MIN_AREA), *SEA_BOTH[name]]).stdout)
+                                    str(MIN_AREA), *SEA_BOTH.get(name, RIVERS_ONLY.get(name))]).stdout)
             else:
                 a = find(json.loads(run([cli, "analyze", e, "--rivers", "--min-area", str(MIN_AREA)]).stdout),
                          "bifurcation_ratio")
             z = np.load(e).astype(np.float64)
             sea = z <= z.min() + 1e-9 if name in ("sea", "island_sea") else np.zeros(z.shape, bool)
+            if name == "island_foot":
+                sea = z <= FOOT
             with tempfile.TemporaryDirectory(dir=work) as g:
                 counts, lengths = grass_network(z, sea, spacing, g)
             rb, rl = horton(counts, lengths)

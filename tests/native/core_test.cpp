@@ -2,6 +2,8 @@
 // The core layer: counter-based randomness, memory cap, atomic files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +20,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "core/parallel.hpp"
+#include "core/parallel_rows.hpp"
 #include "core/platform.hpp"
 #include "core/rng.hpp"
 #include "io/atomic_file.hpp"
@@ -201,6 +204,36 @@ namespace {
 // a busy process per core running, other processes leave no core free, so
 // a call takes one thread whatever it asked (other load only adds to it);
 // the override gives every core back.
+TEST(ForRows, ReportsAtMostAbout128TimesInOrderAndEndsAtOne) {
+  // Each report may be a call into a script (Blender's progress bar): a
+  // report per row cost a 1025-row colour map 40 ms. 128 reports, one per
+  // ceil(count / 128) rows, and the final 1.
+  for (const int threads : {1, 2}) {
+    for (const int64_t count : {int64_t(1), int64_t(100), int64_t(1025), int64_t(100000)}) {
+      std::vector<double> seen;
+      std::vector<int> rows(size_t(count), 0);
+      for_rows(count, threads, Progress([](void* u, double f) {
+        static_cast<std::vector<double>*>(u)->push_back(f);
+        return 0;
+      }, &seen), [&](int64_t k) { rows[size_t(k)] += 1; });
+      for (int r : rows) ASSERT_EQ(r, 1);
+      ASSERT_FALSE(seen.empty());
+      EXPECT_EQ(seen.back(), 1.0);
+      EXPECT_LE(seen.size(), size_t(std::min<int64_t>(count, 128) + 1)) << count << " rows, " << threads;
+      for (size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]);
+      if (threads == 1 && count >= 128) EXPECT_GE(seen.size(), size_t(100)) << "the bar still moves";
+    }
+  }
+}
+
+TEST(ForRows, ACancelStopsTheRestOfTheRows) {
+  std::atomic<int64_t> ran{0};
+  EXPECT_THROW(for_rows(100000, 1, Progress([](void*, double) { return 1; }, nullptr),
+                        [&](int64_t) { ran.fetch_add(1); }),
+               Error);
+  EXPECT_LE(ran.load(), 100000 / 128 + 1);  // stopped at the first report
+}
+
 TEST(Threads, ABusyMachineGetsOneThreadAndTheOverrideAllCores) {
   const int cores = omp_get_num_procs();
   std::vector<pid_t> busy;

@@ -14,7 +14,7 @@ namespace ft {
 // (0: all cores; see resolve_threads); each must depend on k alone and
 // write only its own outputs, so the result is the same on any thread
 // count. Progress (k rows done of count) is reported by the calling thread
-// after each of its rows, then 1; a cancellation (or an exception from a
+// after its rows, at most about 128 times, then 1; a cancellation (or an exception from a
 // row) stops the rest and is rethrown.
 void for_rows(int64_t count, int threads, const Progress& progress, const std::function<void(int64_t)>& row);
 
