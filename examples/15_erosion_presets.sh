@@ -22,4 +22,4 @@ for seed in 1 2 3; do
     "$ft" relief --in "$out/$preset-seed$seed.npy" --out "$out/$preset-seed$seed.png" --sea-fraction 0
   done
 done
-rm -f "$out"/*.npy
+rm -f "$out"/*.npy "$out"/*.npy.json  # the heights and their sidecars: the PNGs are the pictures

@@ -30,6 +30,8 @@ def args():
     group.add_argument("--zip", help="the add-on zip built by CMake, installed here")
     group.add_argument("--installed", action="store_true",
                        help="the add-on is already installed and enabled as an extension")
+    parser.add_argument("-k", dest="patterns", action="append",
+                        help="run only the tests whose names match this pattern (as unittest's -k)")
     return parser.parse_args(argv)
 
 
@@ -71,6 +73,7 @@ def run(test_module_globals):
     PACKAGE = module.__name__
     print(f"testing the add-on {PACKAGE} in Blender {bpy.app.version_string}", flush=True)
     loader = unittest.TestLoader()
+    loader.testNamePatterns = [p if "*" in p else f"*{p}*" for p in options.patterns or []] or None
     suite = unittest.TestSuite()
     for obj in list(test_module_globals.values()):
         if isinstance(obj, type) and issubclass(obj, unittest.TestCase):

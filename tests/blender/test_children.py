@@ -317,8 +317,8 @@ class WidthLayout:
     def split(self, factor=0.5, **_kw):
         return WidthLayout(self.log, self.share * factor, self.use_property_split)
 
-    def label(self, text="", **_kw):
-        self.log.append(("label", text, self.share, None))
+    def label(self, text="", icon="NONE", **_kw):
+        self.log.append(("label", text, self.share, icon))
 
     def prop(self, data, name, text=None, **_kw):
         self.log.append(("prop", text, self.share, (data, name, self.use_property_split)))
@@ -349,7 +349,8 @@ def value_text(data, name):
 class LabelWidthTest(unittest.TestCase):
     """Every label the sidebar panels draw fits the default sidebar width at
     Blender's default UI scale (widgets.SIDEBAR_CHARACTERS: 30 characters a
-    row, measured on screenshots): a label row whole, a field's label with its
+    row, measured on screenshots; an icon takes widgets.ICON_CHARACTERS of
+    them): a label row whole, a field's label with its
     value, a split row's label in its share. Drawn for every terrain method,
     every landform and source choice, eroded, with rivers, and for a planet
     and a polyline."""
@@ -369,7 +370,9 @@ class LabelWidthTest(unittest.TestCase):
                 shown = text if text is not None else getattr(getattr(bpy.ops, category), name).get_rna_type().name
                 room = limit * share
             elif kind == "label":
-                shown, room = text, limit * share
+                # An icon (BLANK1 too: the wrapped lines under an icon) takes its characters.
+                icon_room = 0 if extra == "NONE" else mod("blender.common.widgets").ICON_CHARACTERS
+                shown, room = text, limit * share - icon_room
             else:
                 data, name, split = extra
                 prop = data.bl_rna.properties[name]

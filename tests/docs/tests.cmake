@@ -14,3 +14,6 @@ add_test(NAME doc_commands
           --library $<TARGET_FILE:fracterra> --timeout 120)
 set_tests_properties(doc_commands PROPERTIES LABELS docs TIMEOUT 600 COST 30
   ENVIRONMENT "PYTHONDONTWRITEBYTECODE=1;OMP_WAIT_POLICY=passive")
+# Every relative link and image of the README and the guides names a file.
+add_test(NAME doc_links COMMAND ${FT_DOCS_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/check_doc_links.py)
+set_tests_properties(doc_links PROPERTIES LABELS docs TIMEOUT 60)

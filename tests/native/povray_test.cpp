@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "io/atomic_file.hpp"
 #include "povray/camera.hpp"
 #include "povray/pov_params.hpp"
+#include "povray/river_ribbons.hpp"
 #include "povray/scene.hpp"
 #include "povray/sdl_writer.hpp"
 #include "povray/sphere_sweep_export.hpp"
@@ -285,6 +287,116 @@ TEST(PovScene, RadiusOverridesScaleAndTaperOrTheFileRadii) {
   write_polyline_scene(l, f, polyline_camera());
   EXPECT_EQ(sweep_radii(io::read_file(f)), (std::vector<double>{0.02, 0.02, 0.01, 0.01}));
   std::filesystem::remove_all(dir);
+}
+
+
+// --- Rivers as ribbons in their beds -------------------------------------
+
+// A river down a slope s = 1 (45 degrees), half a unit wide, then level
+// and turning: the ribbon Blender's river curve is (flat ellipse, Z-up).
+PolylineSet steep_then_level_river() {
+  PolylineSet rivers;
+  rivers.add({0, 0, 2}, 0.25);
+  rivers.add({1, 0, 1}, 0.25);
+  rivers.add({1, 0, 1}, 0.25);  // a repeated point: skipped
+  rivers.add({2, 0, 0}, 0.25);
+  rivers.add({3, 0, 0}, 0.0);   // no radius: the default
+  rivers.add({3, 1, 0}, 0.25);
+  rivers.end_line();
+  rivers.add({5, 5, 5}, 0.25);  // one point: no ribbon
+  rivers.end_line();
+  return rivers;
+}
+
+TEST(RiverRibbons, EachRingIsTheFlatEllipseSquareToTheFlow) {
+  // Every ring vertex lies in the plane square to the flow's direction at
+  // its point (the mean of the two segments'), the radius across and flat
+  // x the radius along that plane's upward axis (its top vertex flat r
+  // cos(dip) above the point): on the 45-degree stretch the ribbon's
+  // surface then stands flat r / cos(dip) = 0.106 over its centreline. A
+  // sphere_sweep squashed vertically by 0.3 stood r sqrt(0.09 + 1) = 0.26
+  // over it there, most of the river's width.
+  const double flat = 0.3, r = 0.25, fallback = 0.1;
+  const int sides = 8;
+  const Mesh m = river_ribbons(steep_then_level_river(), flat, sides, fallback);
+  const Vec3 centre[] = {{0, 0, 2}, {1, 0, 1}, {2, 0, 0}, {3, 0, 0}, {3, 1, 0}};
+  const double radius[] = {r, r, r, fallback, r};
+  const double s = std::sqrt(0.5);
+  const Vec3 flow[] = {{s, 0, -s}, {s, 0, -s}, {0, 0, 0}, {s, s, 0}, {0, 1, 0}};
+  ASSERT_EQ(m.vertex_count(), size_t(5 * sides));
+  for (int i = 0; i < 5; ++i) {
+    Vec3 t = flow[i];
+    if (i == 2) {  // between the 45-degree stretch and the level one
+      const double a = std::sqrt(0.5), len = std::sqrt((a + 1) * (a + 1) + a * a);
+      t = {(a + 1) / len, 0, -a / len};
+    }
+    double widest = 0, highest = 0;
+    for (int k = 0; k < sides; ++k) {
+      const auto v = m.vertex(size_t(i * sides + k));
+      const Vec3 d{v[0] - centre[i][0], v[1] - centre[i][1], v[2] - centre[i][2]};
+      EXPECT_NEAR(d[0] * t[0] + d[1] * t[1] + d[2] * t[2], 0.0, 1e-6) << "ring " << i << " vertex " << k;
+      // The level axis across the flow, and the upward one in the ring's plane.
+      const double hx = -t[1], hy = t[0], hn = std::hypot(hx, hy);
+      const double across = (d[0] * hx + d[1] * hy) / hn;
+      const double up = std::sqrt(std::max(0.0, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - across * across));
+      widest = std::max(widest, std::fabs(across));
+      highest = std::max(highest, d[2]);
+      EXPECT_LE(up, flat * radius[i] + 1e-6) << "ring " << i << " vertex " << k;
+    }
+    EXPECT_NEAR(widest, radius[i], 1e-6) << "ring " << i;
+    const double cos_dip = std::hypot(t[0], t[1]);
+    EXPECT_NEAR(highest, flat * radius[i] * cos_dip, 1e-6) << "ring " << i;
+  }
+}
+
+TEST(RiverRibbons, AreClosedAndFaceOutwards) {
+  // Every edge is shared by exactly two faces in opposite directions (a
+  // closed, consistently oriented surface: its smooth normals do not
+  // cancel), and every face's Newell normal points away from the river.
+  const Mesh m = river_ribbons(steep_then_level_river(), 0.3, 8, 0.1);
+  std::map<std::pair<int32_t, int32_t>, int> directed;
+  size_t first = 0;
+  for (int32_t n : m.face_sizes) {
+    for (int32_t k = 0; k < n; ++k) ++directed[{m.face_indices[first + k], m.face_indices[first + (k + 1) % n]}];
+    first += size_t(n);
+  }
+  for (const auto& [edge, count] : directed) {
+    EXPECT_EQ(count, 1) << edge.first << "-" << edge.second;
+    EXPECT_EQ(directed.count({edge.second, edge.first}), 1u) << edge.first << "-" << edge.second;
+  }
+  // Outwards: the normal's direction from the ribbon's centroid of the face's ring points.
+  first = 0;
+  for (int32_t n : m.face_sizes) {
+    const auto area = face_vector_area(m, m.face_indices.data() + first, n);
+    std::array<double, 3> c{}, axis{};
+    for (int32_t k = 0; k < n; ++k)
+      for (int d = 0; d < 3; ++d) c[size_t(d)] += m.vertex(size_t(m.face_indices[first + k]))[size_t(d)] / n;
+    // The nearest point of the river's centreline: the ring centre of the face's first vertex.
+    const size_t ring = size_t(m.face_indices[first]) / 8;
+    for (int k = 0; k < 8; ++k)
+      for (int d = 0; d < 3; ++d) axis[size_t(d)] += m.vertex(ring * 8 + size_t(k))[size_t(d)] / 8;
+    double out = 0;
+    for (int d = 0; d < 3; ++d) out += area[size_t(d)] * (c[size_t(d)] - axis[size_t(d)]);
+    if (n == 8) {  // an end cap: its centroid is the ring centre; it faces along the flow
+      EXPECT_GT(std::fabs(area[0]) + std::fabs(area[1]) + std::fabs(area[2]), 0.0);
+    } else {
+      EXPECT_GT(out, 0.0) << "face at " << first;
+    }
+    first += size_t(n);
+  }
+}
+
+TEST(RiverRibbons, EndCapsFaceUpstreamAndDownstream) {
+  PolylineSet one;
+  one.add({0, 0, 0}, 1.0);
+  one.add({1, 0, 0}, 1.0);
+  one.end_line();
+  const Mesh m = river_ribbons(one, 0.3, 8, 0.1);
+  ASSERT_EQ(m.face_count(), size_t(8 + 2));
+  const auto start = face_vector_area(m, m.face_indices.data() + 32, 8);
+  const auto end = face_vector_area(m, m.face_indices.data() + 40, 8);
+  EXPECT_LT(start[0], 0.0);
+  EXPECT_GT(end[0], 0.0);
 }
 
 }  // namespace

@@ -520,7 +520,9 @@ TEST_F(PovTest, SceneWithRiversAndLakesShowsThem) {
   EXPECT_GT(changed, 100) << "the rivers do not show";
   std::ifstream scene(path("s1.pov"));
   const std::string text((std::istreambuf_iterator<char>(scene)), std::istreambuf_iterator<char>());
-  EXPECT_NE(text.find("sphere_sweep"), std::string::npos);
+  const size_t rivers = text.find("// rivers:");
+  ASSERT_NE(rivers, std::string::npos);
+  EXPECT_EQ(text.find("mesh2 {", rivers), text.find('\n', rivers) + 1) << "the rivers are not one ribbon mesh";
   EXPECT_NE(text.find("FT_Water_Tex"), std::string::npos);
 }
 
@@ -539,6 +541,39 @@ FT_River(P, R)
 FT_Lake(L, 0.01, 0.005)
 )";
   expect_not_blank(render(path("w.pov")), "ft_water.inc");
+}
+
+// FT_River's ribbon lies in its bed on a steep stretch too: a river falling
+// at 45 degrees, radius 0.1, probed from straight above its centreline with
+// trace(). Its surface there stands FT_River_Flat r / cos(45) = 0.042 over
+// the centreline (the ellipse square to the flow; 8 sides: its top vertex
+// is exact, so 0.0425 holds it with rounding); the old vertically squashed
+// sweep stood r sqrt(0.09 + 1) = 0.104 over it. A level stretch: 0.03.
+TEST_F(PovTest, WaterMacroRiverLiesInItsBedOnASteepSlope) {
+  std::ofstream(path("steep.pov")) << R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+#include "ft_water.inc"
+#declare P = array[4] { <0, 2, 0>, <1, 1, 0>, <2, 0, 0>, <3, 0, 0> };
+#declare R = array[4] { 0.1, 0.1, 0.1, 0.1 };
+#declare River = object { FT_River(P, R) }
+#macro Over(X, Centre, Most)
+  #local N = <0, 0, 0>;
+  #local Hit = trace(River, <X, 10, 0>, -y, N);
+  #if (vlength(N) = 0) #error concat("nothing under x = ", str(X, 0, 3), "
+") #end
+  #local Rise = Hit.y - Centre;
+  #debug concat("river surface over its centreline at x = ", str(X, 0, 3), ": ", str(Rise, 0, 4), "
+")
+  #if (Rise > Most | Rise < 0.9 * Most) #error concat("the ribbon stands ", str(Rise, 0, 4), " over its centreline
+") #end
+#end
+Over(0.5, 1.5, 0.0425)
+Over(2.5, 0, 0.0301)
+camera { location <1.5, 3, -3> look_at <1.5, 0.5, 0> }
+light_source { <2, 5, -3> color rgb 1 }
+object { River }
+)";
+  expect_not_blank(render(path("steep.pov")), "FT_River on a slope");
 }
 
 }  // namespace

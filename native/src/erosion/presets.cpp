@@ -19,7 +19,12 @@ namespace {
 // how readily rivers drop their load and the scree angle. Tuned on the
 // add-on's default mountain and on fBm terrains (10 world units across,
 // relief 1-4) so that Strength 0.5 keeps the landform (tests/native/
-// erosion_model_test.cpp).
+// erosion_model_test.cpp), and so that each looks like its name
+// (tests/native/erosion_presets_test.cpp): Gentle Valleys cuts least and
+// creeps most (the gentlest slopes), Alluvial Fans lays everything down
+// (G 1) with the creep that feeds its fans, Badlands keeps the least.
+// Badlands' denser gullies need less creep, which roughened the hillslopes
+// and stood the edge rows out of the map (docs/erosion.md).
 struct Recipe {
   ErosionPreset preset;
   double erodibility, area_exponent, diffusion, deposition, talus_degrees;
@@ -29,17 +34,17 @@ constexpr double kYears = 100000;
 
 const Recipe kRecipes[] = {
     {{"gentle_valleys", "Gentle Valleys", "valleys",
-      "Rounded hills and soft valleys that widen downstream, with sediment on their floors"},
-     2e-5, 0.5, 2e-7, 0.5, 33},
+      "Rounded hills and soft valleys that widen downstream; gentler slopes than the others"},
+     1.5e-5, 0.5, 2.5e-7, 0.1, 33},
     {{"rugged_mountains", "Rugged Mountains", "land",
       "Sharp ridges, deep branching gullies and scree below the cliffs"},
      2.8e-5, 0.5, 1e-7, 0.3, 40},
     {{"badlands", "Badlands", "",
       "Dense fine gullies on bare soft rock; little creep, little sediment kept"},
-     2.2e-5, 0.45, 1e-7, 0.1, 45},
+     2.2e-5, 0.45, 1e-7, 0.05, 45},
     {{"alluvial_fans", "Alluvial Fans", "rain",
       "Valleys that empty into wide fans and filled plains at the foot of the slopes"},
-     2.5e-5, 0.5, 1e-7, 0.9, 35},
+     2.5e-5, 0.5, 3e-7, 1.0, 35},
     {{"scree_slopes", "Scree Slopes", "scree",
       "Slopes worn back to the scree angle with shallow gullies"},
      8e-6, 0.5, 1.5e-7, 0.5, 30},

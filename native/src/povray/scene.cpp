@@ -106,7 +106,7 @@ std::string header_sdl(const SceneContext& c) {
     if (p.water_material)  // the scene's water instead of ft_water.inc's
       s += "#declare FT_Water_Tex = " + material_texture_sdl(*p.water_material, p.scene_light) +
            "\n#declare FT_Water_Interior = " + material_interior_sdl(*p.water_material) + "\n";
-    s += "#declare FT_Water_Embedded = 1;\n// ---- povray_macros/ft_water.inc, embedded ----\n";
+    s += "// ---- povray_macros/ft_water.inc, embedded ----\n";
     s += kFtWaterInc;
     s += "// ---- end of ft_water.inc ----\n";
   }

@@ -23,15 +23,14 @@ void vectors(std::string& out, const char* block, const std::vector<float>& xyz)
   out += "\n  }\n";
 }
 
-std::string mesh_sdl(const SceneMesh& sm, size_t k, bool ambient) {
-  const Mesh& m = *sm.mesh;
-  if (m.face_count() == 0) return "";
+}  // namespace
+
+std::string mesh2_sdl(const Mesh& m, bool smooth, const std::string& modifiers) {
   size_t triangles = 0;
   for (int32_t n : m.face_sizes) triangles += size_t(n - 2);
-  std::string s = "// mesh " + std::to_string(k) + ": " + std::to_string(m.vertex_count()) + " vertices, " +
-                  std::to_string(triangles) + " triangles\nmesh2 {\n";
+  std::string s = "mesh2 {\n";
   vectors(s, "vertex_vectors", m.positions);
-  if (sm.smooth) vectors(s, "normal_vectors", mesh_vertex_normals(m));  // one per vertex, as the faces index
+  if (smooth) vectors(s, "normal_vectors", mesh_vertex_normals(m));  // one per vertex, as the faces index
   char buf[96];
   std::snprintf(buf, sizeof buf, "  face_indices { %zu", triangles);
   s += buf;
@@ -44,7 +43,19 @@ std::string mesh_sdl(const SceneMesh& sm, size_t k, bool ambient) {
     }
     first += size_t(n);
   }
-  return s + "\n  }\n  " + material_sdl(sm.material, ambient) + "\n}\n\n";
+  return s + "\n  }\n" + modifiers + "}\n";
+}
+
+namespace {
+
+std::string mesh_sdl(const SceneMesh& sm, size_t k, bool ambient) {
+  const Mesh& m = *sm.mesh;
+  if (m.face_count() == 0) return "";
+  size_t triangles = 0;
+  for (int32_t n : m.face_sizes) triangles += size_t(n - 2);
+  return "// mesh " + std::to_string(k) + ": " + std::to_string(m.vertex_count()) + " vertices, " +
+         std::to_string(triangles) + " triangles\n" +
+         mesh2_sdl(m, sm.smooth, "  " + material_sdl(sm.material, ambient) + "\n") + "\n";
 }
 
 }  // namespace

@@ -40,8 +40,12 @@ std::string sea_sdl(const SceneContext& c);
 std::string terrain_sdl(const SceneContext& c, SceneSummary& sum);
 // Every polyline set as sweeps in its kind's material.
 std::string line_sets_sdl(const SceneContext& c);
-// Rivers as flattened water ribbons and lakes as water prisms.
+// Rivers as water ribbons in their beds (river_ribbons.hpp) and lakes as
+// water prisms.
 std::string water_sdl(const SceneContext& c);
+// A mesh as a mesh2 in POV axes (polygons as triangle fans), with vertex
+// normals when smooth; `modifiers` (SDL lines) go before its closing brace.
+std::string mesh2_sdl(const Mesh& m, bool smooth, const std::string& modifiers);
 // The meshes, each a mesh2 in its material.
 std::string meshes_sdl(const SceneContext& c);
 // Whether the scene holds water (and so embeds ft_water.inc).

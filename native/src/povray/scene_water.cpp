@@ -1,33 +1,36 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Water in a scene: rivers as flattened ribbons in their beds and lakes as
-// thin prisms cut to their shorelines, in ft_water.inc's material.
+// Water in a scene: rivers as ribbons in their beds (river_ribbons.hpp) and
+// lakes as thin prisms cut to their shorelines, in ft_water.inc's material.
 #include <algorithm>
 
 #include "povray/scene_stages.hpp"
 #include "povray/sdl_writer.hpp"
+#include "povray/river_ribbons.hpp"
 #include "povray/sphere_sweep_export.hpp"
 
 namespace ft::pov::detail {
 namespace {
 
-// Flattened ribbons: the sweep is written FT_River_Flat times as high and
-// squashed back, so its cross-section is a flat ellipse in the bed.
+// The river's cross-section: as high as this fraction of its width
+// (Blender's RIVER_FLAT, ft_water.inc's FT_River_Flat), and the ring's
+// vertices (the ellipse's widest and highest points among them).
+constexpr double kRiverFlat = 0.3;
+constexpr int kRibbonSides = 8;
+
 std::string rivers_sdl(const SceneContext& c) {
   const SceneParams& p = c.p;
   if (!p.rivers || p.rivers->vertex_count() == 0) return "";
   SceneLines l{p.rivers, LineKind::kGeneric};
   const double floor = automatic_line_radius(l, c.camera, c.extent, p.image_width);
-  const double flat = 0.3;
-  PolylineSet ribbon = *p.rivers;
-  for (Vec3& q : ribbon.points) q[2] /= flat;
+  PolylineSet rivers = *p.rivers;
   // Another program's rivers keep the widths it shows; fracterra's are never
   // thinner than the floor, so they do not break into dots.
-  for (double& r : ribbon.radii) r = p.scene_light ? (r > 0 ? r : floor) : std::max(r, floor);
-  SweepOptions o = p.sweep;
-  o.default_radius = floor;
-  return "// rivers: " + std::to_string(p.rivers->line_count()) + " segments, radius half the width" +
-         (p.scene_light ? std::string() : ", at least " + number(floor)) + "\n" + sweeps_sdl(ribbon, o, "  scale <1, " + number(flat) + ", 1>\n  material { FT_Water_Material }\n") +
-         "\n";
+  for (double& r : rivers.radii) r = p.scene_light ? (r > 0 ? r : floor) : std::max(r, floor);
+  const Mesh ribbons = river_ribbons(rivers, kRiverFlat, kRibbonSides, floor);
+  if (ribbons.face_count() == 0) return "";
+  return "// rivers: " + std::to_string(p.rivers->line_count()) + " segments, ribbons as wide as the rivers" +
+         (p.scene_light ? std::string() : ", at least " + number(2 * floor)) + "\n" +
+         mesh2_sdl(ribbons, true, "  material { FT_Water_Material }\n") + "\n";
 }
 
 std::string lake_sdl(const SceneLake& l, size_t k, double extent) {

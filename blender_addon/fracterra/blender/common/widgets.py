@@ -11,13 +11,17 @@ from ...core import mesh_limits, params
 # Characters of a label that the sidebar shows whole at its default width and
 # Blender's default UI scale (tests/blender/test_addon.py checks every label).
 SIDEBAR_CHARACTERS = 30
+# What a label's icon takes of them: "Out of date: Seed, Strength" (27) beside
+# the alert icon showed as "Out of date: Seed, Stren...".
+ICON_CHARACTERS = 5
 
 
 def draw_wrapped(layout, text, icon="NONE", width=SIDEBAR_CHARACTERS, alert=False):
-    """`text` as wrapped labels (Blender labels do not wrap themselves)."""
+    """`text` as wrapped labels (Blender labels do not wrap themselves); with an
+    icon, every line is indented by it (BLANK1 under the first)."""
     col = layout.column(align=True)
     col.alert = alert
-    for i, line in enumerate(textwrap.wrap(text, width)):
+    for i, line in enumerate(textwrap.wrap(text, width - (ICON_CHARACTERS if icon != "NONE" else 0))):
         col.label(text=line, icon=icon if i == 0 else "BLANK1")
 
 

@@ -70,7 +70,7 @@ def draw_settings(layout, data, show_reference_pickers=True, compact=False):
     if method in params.DYADIC_METHODS:
         _prop(sub, data, "levels")
         side = 2 ** data.levels + 1
-        sub.label(text=f"Final: {side} x {side} vertices", icon="MESH_GRID")
+        sub.label(text=f"Final grid: {side} x {side}", icon="MESH_GRID")
         _prop(sub, data, "preview_levels")
     else:
         _prop(sub, data, "width")
