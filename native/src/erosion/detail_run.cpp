@@ -8,6 +8,8 @@
 #include <limits>
 #include <vector>
 
+#include <omp.h>
+
 #include "core/buffer.hpp"
 #include "core/kernel_clones.hpp"
 #include "core/rng.hpp"
@@ -23,6 +25,9 @@ namespace {
 // it, the model what lies above.)
 constexpr int32_t kHops = 12;
 constexpr int32_t kCutHops = 6;
+// The waves' bands (DetailRun::wave): each band's hops also compute the
+// kHops rows on either side that its hops read.
+constexpr int32_t kBandRows = 64;
 // Passes that lift the small pits of the surface water routes over.
 constexpr int32_t kPitPasses = 3;
 constexpr uint8_t kSelf = 8;  // a receiver of its own: a base level or a pit
@@ -131,14 +136,15 @@ inline float next_up(float v) {
 }
 
 // Steepest descent (DetailRun::route): the first direction of the largest
-// positive drop, kSelf without one or on the sea.
+// positive drop, kSelf without one or on the sea; `random` is the row's
+// Rho8 numbers, indexed like `sea`.
 [[gnu::noinline]] FT_KERNEL_CLONES void descend_row(const float* __restrict zr, const float* __restrict random,
                                                     uint8_t* __restrict dir, const uint8_t* __restrict sea,
                                                     const int32_t* off, int64_t row, int32_t x0, int32_t x1) {
   const int32_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
   for (int32_t x = x0; x < x1; ++x) {
     const int64_t i = row + x;
-    const float wd = rho8_diagonal_weight(random[i]);
+    const float wd = rho8_diagonal_weight(random[x]);
     float best = 0.0f;
     int32_t best_k = kSelf;
 #pragma GCC unroll 8
@@ -162,6 +168,107 @@ inline float next_up(float v) {
 #pragma GCC unroll 8
     for (int k = 0; k < 8; ++k) bits |= uint32_t(dir[i + o[k]] == ((k + 4) & 7)) << k;
     donors[i] = uint8_t(bits);
+  }
+}
+
+// Deposit's setup (DetailRun::deposit) on an interior row: each cell's room
+// below its donors' fan caps (a pit's up to its spill), its own loss, and
+// the share it lays. `fan` is kFanSlope x the run of a straight and of a
+// diagonal step, `rain` the row's rain map (1s without one), `pit_share`
+// min(1, G): the general path's operations in its order.
+struct DepositSetup {
+  double fan[2];
+  double cell, G, own_rain;
+  float pit_share;
+};
+
+[[gnu::noinline]] FT_KERNEL_CLONES void deposit_setup_row(const float* __restrict z, const float* __restrict start,
+                                                          const float* __restrict q, const uint8_t* __restrict dir,
+                                                          const uint8_t* __restrict donors,
+                                                          const uint8_t* __restrict sea, const float* __restrict rain,
+                                                          float* __restrict room, float* __restrict laid,
+                                                          float* __restrict front, float* __restrict share,
+                                                          const int32_t* off, const DepositSetup& k, int64_t row,
+                                                          int32_t x0, int32_t x1) {
+  const int32_t o[8] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7]};
+  const double fan0 = k.fan[0], fan1 = k.fan[1], cell = k.cell, G = k.G, own_rain = k.own_rain;
+  const float pit_share = k.pit_share, inf = std::numeric_limits<float>::infinity();
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x;
+    float cap = inf, lowest = inf;
+    const unsigned bits = donors[i];
+#pragma GCC unroll 8
+    for (int d = 0; d < 8; ++d) {
+      const float zj = z[i + o[d]];
+      lowest = std::min(lowest, zj);
+      const float c = float(double(zj) - ((dir[i + o[d]] & 1) ? fan1 : fan0));
+      cap = ((bits >> d) & 1u) ? std::min(cap, c) : cap;
+    }
+    const float own = start[i];  // (loaded unconditionally: a conditional load kept the loop scalar)
+    float top = std::isinf(cap) ? own : cap;
+    const bool self = dir[i] == kSelf;
+    const bool pit = self & !sea[x];
+    top = pit ? std::min(top, lowest) : top;
+    room[i] = float(std::max(0.0, double(top) - z[i]) * cell);
+    laid[i] = 0.0f;
+    front[i] = float(std::max(0.0, double(own) - z[i]) * cell);
+    const double r = own_rain * double(rain[x]);
+    const float lays = float(std::min(1.0, G * r / std::max(double(q[i]), 1e-30)));
+    share[i] = self ? (pit ? pit_share : 0.0f) : lays;
+  }
+}
+
+// Incision's factors K dt sqrt(Q) / run (DetailRun::incise, m = 1/2) of
+// cells x0 .. x1 - 1 (no neighbours read), the mask's (or 1s) indexed alike.
+[[gnu::noinline]] FT_KERNEL_CLONES void incision_factors(const float* __restrict q, const uint8_t* __restrict dir,
+                                                         const float* __restrict mask, float* __restrict f,
+                                                         double k_dt, double straight, double diagonal, int64_t x0,
+                                                         int64_t x1) {
+  for (int64_t i = x0; i < x1; ++i) {
+    const uint8_t d = dir[i];
+    const float v = float(double(mask[i]) * k_dt * std::sqrt(double(q[i])) / ((d & 1) ? diagonal : straight));
+    f[i] = d == kSelf ? 0.0f : v;
+  }
+}
+
+// One sweep of the incision on an interior row: each cell solved against
+// its receiver's height in `last` (a gather by its direction's offset).
+[[gnu::noinline]] FT_KERNEL_CLONES void incise_row(const float* __restrict last, float* __restrict out,
+                                                   const float* __restrict start, const float* __restrict f,
+                                                   const uint8_t* __restrict dir, const int32_t* off, int64_t row,
+                                                   int32_t x0, int32_t x1) {
+  // Index kSelf: the cell itself (its result is its own start anyway).
+  const int32_t o[9] = {off[0], off[1], off[2], off[3], off[4], off[5], off[6], off[7], 0};
+  // Indexed within the row (32-bit gathers), the arrays from its start.
+  const float *lr = last + row, *sr = start + row, *fr = f + row;
+  const uint8_t* dr = dir + row;
+  float* orow = out + row;
+  for (int32_t x = x0; x < x1; ++x) {
+    const int32_t d = dr[x];
+    const float b = lr[x + o[d]];
+    const float zi = sr[x];
+    const double fi = fr[x];
+    const float v = zi > b ? float((double(zi) + fi * b) / (1.0 + fi)) : zi;
+    orow[x] = d == kSelf ? zi : v;
+  }
+}
+
+// Creep's new heights (DetailRun::creep) on an interior row: a deposit
+// creeps as it lies; elsewhere what the run did creeps beside the texture,
+// never lifted above plain creep beside a deposit.
+[[gnu::noinline]] FT_KERNEL_CLONES void creep_row(const float* __restrict z, const float* __restrict texture,
+                                                  const float* __restrict diffused, const float* __restrict plain,
+                                                  float* __restrict next, const int32_t* off, int64_t row, int32_t x0,
+                                                  int32_t x1) {
+  const int32_t o0 = off[0], o2 = off[2], o4 = off[4], o6 = off[6];
+  for (int32_t x = x0; x < x1; ++x) {
+    const int64_t i = row + x;
+    const bool beside = (z[i + o0] > texture[i + o0]) | (z[i + o2] > texture[i + o2]) |
+                        (z[i + o4] > texture[i + o4]) | (z[i + o6] > texture[i + o6]);
+    const float p = plain[i], zi = z[i];
+    const float rock = diffused[i] + texture[i];
+    const float kept = beside ? std::min(rock, std::max(zi, p)) : rock;
+    next[i] = zi > texture[i] ? p : kept;
   }
 }
 
@@ -213,18 +320,20 @@ class DetailRun {
       : r_(r), c_(c), in_(in), z_(z), w_(r.width), h_(r.height), n_(r.size()), steps_(steps),
         cell_(r.whole.spacing * r.whole.spacing), dt_(years / steps), k_dt_(c.fluvial.erodibility * dt_),
         m_(c.fluvial.area_exponent), G_(c.model.deposition), own_rain_(c.model.rainfall * cell_),
-        kernel_(creep_kernel(creep_r(r.whole, c, dt_))), texture_(n_), start_(n_), random_(n_), dir_(n_),
+        kernel_(creep_kernel(creep_r(r.whole, c, dt_))), texture_(n_), start_(n_),
+        random_(size_t(omp_get_max_threads()) * size_t(r.width)), dir_(n_),
         q_(n_), front_(n_), next_(n_), cut_(n_), room_(n_), laid_(n_), donors_(n_) {
     for (int k = 0; k < 8; ++k) off_[k] = kDy[k] * w_ + kDx[k];
     no_sea_ = Bytes(size_t(w_));
     std::fill(no_sea_.begin(), no_sea_.end(), uint8_t(0));
+    ones_ = Floats(size_t(w_));
+    std::fill(ones_.begin(), ones_.end(), 1.0f);
     copy_grid(z, n_, texture_.data());
   }
 
   void step(int32_t s) {
     copy_grid(z_, n_, start_.data());
-    draw(s);
-    route();
+    route(s);
     find_donors();
     discharge();
     incise();
@@ -247,8 +356,9 @@ class DetailRun {
 
   // A pass over every cell: cell(x, y) on the region's edge and the whole's,
   // kernel(row, x0, x1) on the rest of a row (an interior kernel above).
-  template <class Cell, class Kernel>
-  void rows(Cell cell, Kernel kernel) {
+  // begin(y) runs first, on the thread that does row y.
+  template <class Cell, class Kernel, class Begin = void (*)(int32_t)>
+  void rows(Cell cell, Kernel kernel, Begin begin = [](int32_t) {}) {
     // The whole's edge columns inside the region (none unless it is bounded
     // and the region reaches it) go to cell() too.
     const int64_t first = r_.whole.periodic ? 1 : std::max<int64_t>(1, 1 - int64_t(r_.x0));
@@ -256,6 +366,7 @@ class DetailRun {
     const int32_t x0 = int32_t(std::min<int64_t>(first, w_)), x1 = int32_t(std::max<int64_t>(last, x0));
 #pragma omp parallel for schedule(static)
     for (int32_t y = 0; y < h_; ++y) {
+      begin(y);
       if (y == 0 || y == h_ - 1 || w_ < 3 || r_.on_whole_edge(x0, y) || x1 <= x0) {
         for (int32_t x = 0; x < w_; ++x) cell(x, y);
         continue;
@@ -267,14 +378,17 @@ class DetailRun {
   }
   // The sea flags of the row starting at `row` (0s without a sea).
   const uint8_t* sea_row(int64_t row) const { return in_.sea ? in_.sea + row : no_sea_.data(); }
+  // The rain map's row starting at `row` (1s without a map).
+  const float* rain_row(int64_t row) const { return in_.rain ? in_.rain + row : ones_.data(); }
 
-  // Rho8's numbers of this step, keyed by the samples' positions in the whole.
-  void draw(int32_t s) {
+  // Rho8's numbers of step s for row y, keyed by the samples' positions in
+  // the whole, into the calling thread's row of random_ (drawn as each row
+  // is routed: a grid of them was written and read once per step).
+  float* draw_row(int32_t s, int32_t y) {
+    float* out = random_.data() + size_t(omp_get_thread_num()) * w_;
     const uint32_t level = 1 * uint32_t(kMaxModelSteps) + uint32_t(s);
-#pragma omp parallel for schedule(static)
-    for (int32_t y = 0; y < h_; ++y)
-      draw_uniforms_at(r_.whole, in_.origin_x, in_.origin_y, level, Stream::kFluvialRouting, r_.y0 + y, r_.x0, w_,
-                       random_.data() + size_t(y) * w_);
+    draw_uniforms_at(r_.whole, in_.origin_x, in_.origin_y, level, Stream::kFluvialRouting, r_.y0 + y, r_.x0, w_, out);
+    return out;
   }
 
   // The surface water routes over: z with its small pits raised, each pass
@@ -282,9 +396,11 @@ class DetailRun {
   // lowest (a pit of the rock's texture then passes its water on; what a
   // few passes do not drain keeps it). Into `out`, using `scratch`.
   void routing_surface(Floats& out, Floats& scratch) {
-    copy_grid(z_, n_, out.data());
+    // The passes alternate between scratch and out, the first from z_.
+    static_assert(kPitPasses % 2 == 1);
+    const float* from = z_;
     for (int32_t pass = 0; pass < kPitPasses; ++pass) {
-      const Floats& from = out;
+      float* to = pass % 2 == 0 ? scratch.data() : out.data();
       rows(
           [&](int32_t x, int32_t y) {
             const size_t i = size_t(y) * w_ + x;
@@ -294,18 +410,17 @@ class DetailRun {
               for (int k = 0; k < 8; ++k)
                 if (all || inside(x + kDx[k], y + kDy[k])) lowest = std::min(lowest, from[i + off_[k]]);
             }
-            scratch[i] = from[i] <= lowest && !std::isinf(lowest) ? std::nextafter(lowest, INFINITY) : from[i];
+            to[i] = from[i] <= lowest && !std::isinf(lowest) ? std::nextafter(lowest, INFINITY) : from[i];
           },
-          [&](int64_t row, int32_t x0, int32_t x1) {
-            lift_pits_row(from.data(), scratch.data(), sea_row(row), off_, row, x0, x1);
-          });
-      std::swap(out, scratch);
+          [&](int64_t row, int32_t x0, int32_t x1) { lift_pits_row(from, to, sea_row(row), off_, row, x0, x1); });
+      from = to;
     }
+    std::swap(out, scratch);  // the last pass wrote scratch
   }
 
   // Steepest descent on the routing surface (ties: the first direction),
   // diagonals over 2 - r.
-  void route() {
+  void route(int32_t s) {
     Floats& zr = cut_;  // free until incise()
     routing_surface(zr, next_);
     rows(
@@ -313,7 +428,7 @@ class DetailRun {
           const size_t i = size_t(y) * w_ + x;
           uint8_t best_k = kSelf;
           if (!base(x, y, i)) {
-            const float wd = rho8_diagonal_weight(random_[i]);
+            const float wd = rho8_diagonal_weight(random_[size_t(omp_get_thread_num()) * w_ + x]);
             const bool all = interior(x, y);
             float best = 0.0f;
             for (int k = 0; k < 8; ++k) {
@@ -325,8 +440,10 @@ class DetailRun {
           dir_[i] = best_k;
         },
         [&](int64_t row, int32_t x0, int32_t x1) {
-          descend_row(zr.data(), random_.data(), dir_.data(), sea_row(row), off_, row, x0, x1);
-        });
+          descend_row(zr.data(), random_.data() + size_t(omp_get_thread_num()) * w_, dir_.data(), sea_row(row), off_,
+                      row, x0, x1);
+        },
+        [&](int32_t y) { draw_row(s, y); });
   }
 
   // Each cell's donors, one bit per direction: the neighbours that drain to it.
@@ -344,121 +461,180 @@ class DetailRun {
         [&](int64_t row, int32_t x0, int32_t x1) { donors_row(dir_.data(), donors_.data(), off_, row, x0, x1); });
   }
 
-  // What the donors of cell i send (front_), in direction order.
-  float pull(size_t i) const {
-    float in = 0.0f;
-    for (unsigned bits = donors_[i]; bits; bits &= bits - 1) in += front_[i + off_[std::countr_zero(bits)]];
-    return in;
-  }
-
   // kHops waves down the receivers from front_ (what each cell sends at
-  // the first): each hop every cell takes what its donors send, and
-  // absorb(i, in) returns what it sends on (nothing from a cell that is its
-  // own receiver). absorb(i, 0) must change nothing and return 0.
-  // hop(row, x0, x1) does the same on cells x0 .. x1 - 1 of an interior row
-  // and returns how many send on (discharge_hop, deposit_hop).
-  template <class Absorb, class Hop>
-  void wave(Absorb absorb, Hop hop) {
+  // the first): each hop every cell takes what its donors send, adds it to
+  // its discharge (kSediment: lays its share of it, up to its room) and
+  // sends on the rest (nothing from a cell that is its own receiver).
+  // In bands of kBandRows rows: a band's hop h is computed on the band
+  // grown by the kHops - h hops still to come (the rows they read), its
+  // fronts in the thread's own rows, so they stay in cache instead of
+  // crossing memory twice a hop; the grown rows' discharge goes nowhere,
+  // their room is a copy taken before any band starts. Each cell's sums
+  // are those of a hop over the whole grid at a time, in the same order.
+  template <bool kSediment>
+  void wave() {
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i)
       if (dir_[i] == kSelf) front_[i] = 0.0f;
-    // A cell at the region's edge: its donors one by one.
-    auto edge = [&](int64_t i) {
-      float out = 0.0f;
-      if (donors_[i]) {
-        const float in = pull(size_t(i));
-        if (in != 0.0f) out = absorb(size_t(i), in);
+    const int32_t bands = (h_ + kBandRows - 1) / kBandRows;
+    const size_t w = size_t(w_);
+    // The room of each band's grown rows: kHops above it, kHops below.
+    if (kSediment) {
+      if (halo_.size() < size_t(bands) * 2 * kHops * w) halo_ = Floats(size_t(bands) * 2 * kHops * w);
+#pragma omp parallel for schedule(static)
+      for (int32_t band = 0; band < bands; ++band) {
+        const int32_t a = band * kBandRows, b = std::min(h_, a + kBandRows);
+        for (int32_t y = std::max(0, a - kHops); y < std::min(h_, b + kHops); ++y)
+          if (y < a || y >= b) std::copy_n(room_.data() + y * w, w, halo_row(band, a, b, y));
       }
-      next_[i] = dir_[i] == kSelf ? 0.0f : out;
-      return int64_t(next_[i] != 0.0f);
-    };
-    for (int32_t h = 0; h < kHops; ++h) {
-      int64_t moving = 0;
-#pragma omp parallel for schedule(static) reduction(+ : moving)
-      for (int32_t y = 0; y < h_; ++y) {
-        const int64_t row = int64_t(y) * w_;
-        if (y == 0 || y == h_ - 1 || w_ < 3) {
-          for (int32_t x = 0; x < w_; ++x) moving += edge(row + x);
-          continue;
-        }
-        moving += edge(row) + edge(row + w_ - 1);
-        moving += hop(row, 1, w_ - 1);
-      }
-      std::swap(front_, next_);
-      if (moving == 0) break;
     }
+    const size_t rows_per_thread = size_t(kBandRows + 2 * kHops + 1);
+    if (local_.size() < size_t(omp_get_max_threads()) * 2 * rows_per_thread * w)
+      local_ = Floats(size_t(omp_get_max_threads()) * 2 * rows_per_thread * w);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int32_t band = 0; band < bands; ++band) {
+      const int32_t a = band * kBandRows, b = std::min(h_, a + kBandRows);
+      const int32_t lo = std::max(0, a - kHops);
+      float* mine = local_.data() + size_t(omp_get_thread_num()) * 2 * rows_per_thread * w;
+      float* fronts[2] = {mine, mine + rows_per_thread * w};  // row y at (y - lo) * w
+      float* junk = mine + (rows_per_thread - 1) * w;         // the grown rows' discharge and deposit
+      float* junk2 = fronts[1] + (rows_per_thread - 1) * w;
+      std::fill_n(junk, w, 0.0f);
+      std::fill_n(junk2, w, 0.0f);
+      for (int32_t h = 1; h <= kHops; ++h) {
+        const int32_t y0 = std::max(0, a - (kHops - h)), y1 = std::min(h_, b + (kHops - h));
+        float* in_rows = fronts[h % 2];
+        float* out_rows = fronts[(h + 1) % 2];
+        int64_t moving = 0;
+        for (int32_t y = y0; y < y1; ++y) {
+          const float* in = h == 1 ? front_.data() + y * w : in_rows + size_t(y - lo) * w;
+          float* out = out_rows + size_t(y - lo) * w;
+          const bool own = y >= a && y < b;
+          const size_t row = size_t(y) * w;
+          float* state = kSediment ? (own ? room_.data() + row : halo_row(band, a, b, y)) : (own ? q_.data() + row : junk);
+          float* laid = own ? laid_.data() + row : junk2;
+          const uint8_t* donors = donors_.data() + row;
+          const uint8_t* dir = dir_.data() + row;
+          // A cell at the region's edge: its donors one by one.
+          auto edge = [&](int32_t x) {
+            float sum = 0.0f;
+            for (unsigned bits = donors[x]; bits; bits &= bits - 1) sum += in[x + off_[std::countr_zero(bits)]];
+            float send = 0.0f;
+            if (sum != 0.0f) {
+              if (kSediment) {
+                const float here = std::min(cut_[row + x] * sum, state[x]);
+                state[x] -= here;
+                laid[x] += here;
+                send = sum - here;
+              } else {
+                state[x] += sum;
+                send = sum;
+              }
+            }
+            out[x] = dir[x] == kSelf ? 0.0f : send;
+            return int64_t(out[x] != 0.0f);
+          };
+          if (y == 0 || y == h_ - 1 || w_ < 3) {
+            for (int32_t x = 0; x < w_; ++x) moving += edge(x);
+            continue;
+          }
+          moving += edge(0) + edge(w_ - 1);
+          moving += kSediment ? deposit_hop(in, out, cut_.data() + row, state, laid, donors, dir, off_, 0, 1, w_ - 1)
+                              : discharge_hop(in, out, state, donors, dir, off_, 0, 1, w_ - 1);
+        }
+        // Nothing moves in the band's rows or those it reads: nothing reaches it later.
+        if (moving == 0) break;
+      }
+    }
+  }
+
+  // The room of grown row y of band [a, b) (wave), kept per band.
+  float* halo_row(int32_t band, int32_t a, int32_t b, int32_t y) {
+    const int32_t slot = y < a ? y - (a - kHops) : kHops + (y - b);
+    return halo_.data() + (size_t(band) * 2 * kHops + size_t(slot)) * size_t(w_);
   }
 
   // Discharge: the rain of every cell whose way down reaches this one within kHops.
   void discharge() {
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i) q_[i] = front_[i] = float(rain(size_t(i)));
-    wave(
-        [this](size_t i, float in) {
-          q_[i] += in;
-          return in;
-        },
-        [this](int64_t row, int32_t x0, int32_t x1) {
-          return discharge_hop(front_.data(), next_.data(), q_.data(), donors_.data(), dir_.data(), off_, row, x0, x1);
-        });
+    wave<false>();
   }
 
   // Stream power, implicit along the next kCutHops receivers: each sweep
-  // solves every cell against its receiver's last height.
+  // solves every cell against its receiver's last height (the first
+  // against the step's start).
   void incise() {
     Floats& f = room_;  // the factors, until deposit() needs the room
+    if (m_ == 0.5) {
 #pragma omp parallel for schedule(static)
-    for (int64_t i = 0; i < int64_t(n_); ++i) {
-      const uint8_t d = dir_[i];
-      const double w = in_.mask ? double(in_.mask[i]) : 1.0;
-      f[i] = d == kSelf ? 0.0f
-                        : float(w * k_dt_ * (m_ == 0.5 ? std::sqrt(double(q_[i])) : std::pow(double(q_[i]), m_)) /
-                                run_of(d));
-      cut_[i] = start_[i];
-    }
-    for (int32_t sweep = 0; sweep < kCutHops; ++sweep) {
-      const float* last = sweep % 2 == 0 ? cut_.data() : z_;
-      float* out = sweep % 2 == 0 ? z_ : cut_.data();
+      for (int32_t y = 0; y < h_; ++y) {
+        const int64_t row = int64_t(y) * w_;
+        incision_factors(q_.data() + row, dir_.data() + row, in_.mask ? in_.mask + row : ones_.data(), f.data() + row,
+                         k_dt_, run_of(0), run_of(1), 0, w_);
+      }
+    } else {
 #pragma omp parallel for schedule(static)
       for (int64_t i = 0; i < int64_t(n_); ++i) {
         const uint8_t d = dir_[i];
-        const float zi = start_[i];
-        if (d == kSelf) {
-          out[i] = zi;
-          continue;
-        }
-        const float b = last[i + off_[d]];
-        out[i] = zi > b ? float((double(zi) + double(f[i]) * b) / (1.0 + double(f[i]))) : zi;
+        const double w = in_.mask ? double(in_.mask[i]) : 1.0;
+        f[i] = d == kSelf ? 0.0f : float(w * k_dt_ * std::pow(double(q_[i]), m_) / run_of(d));
       }
     }
-    if (kCutHops % 2 == 0) copy_grid(cut_.data(), n_, z_);
+    // Sweeps alternate between cut_ and z_, the last into z_.
+    static_assert(kCutHops % 2 == 0);
+    for (int32_t sweep = 0; sweep < kCutHops; ++sweep) {
+      const float* last = sweep == 0 ? start_.data() : sweep % 2 == 1 ? cut_.data() : z_;
+      float* out = sweep % 2 == 0 ? cut_.data() : z_;
+      rows(
+          [&](int32_t x, int32_t y) {
+            const size_t i = size_t(y) * w_ + x;
+            const uint8_t d = dir_[i];
+            const float zi = start_[i];
+            if (d == kSelf) {
+              out[i] = zi;
+              return;
+            }
+            const float b = last[i + off_[d]];
+            out[i] = zi > b ? float((double(zi) + double(f[i]) * b) / (1.0 + double(f[i]))) : zi;
+          },
+          [&](int64_t row, int32_t x0, int32_t x1) {
+            incise_row(last, out, start_.data(), f.data(), dir_.data(), off_, row, x0, x1);
+          });
+    }
   }
 
   // What was detached flows down at most kHops receivers, each cell laying
   // its share up to the room below the cells it came from.
   void deposit() {
     const float inf = std::numeric_limits<float>::infinity();
-#pragma omp parallel for schedule(static)
-    for (int32_t y = 0; y < h_; ++y)
-      for (int32_t x = 0; x < w_; ++x) {
-        const size_t i = size_t(y) * w_ + x;
-        const bool all = interior(x, y);
-        float cap = inf, lowest = inf;
-        for (int k = 0; k < 8; ++k) {
-          if (!all && !inside(x + kDx[k], y + kDy[k])) continue;
-          const size_t j = i + off_[k];
-          lowest = std::min(lowest, z_[j]);
-          if (donors_[i] >> k & 1) cap = std::min(cap, float(z_[j] - kFanSlope * run_of(dir_[j])));
-        }
-        float top = std::isinf(cap) ? start_[i] : cap;
-        const bool pit = dir_[i] == kSelf && !base(x, y, i);
-        if (pit) top = std::min(top, lowest);  // a pit fills to its spill
-        room_[i] = float(std::max(0.0, double(top) - z_[i]) * cell_);
-        laid_[i] = 0.0f;
-        front_[i] = float(std::max(0.0, double(start_[i]) - z_[i]) * cell_);
-        cut_[i] = dir_[i] == kSelf ? (pit ? float(std::min(1.0, G_)) : 0.0f)
-                                   : float(std::min(1.0, G_ * rain(i) / std::max(double(q_[i]), 1e-30)));
-      }
+    rows(
+        [&](int32_t x, int32_t y) {
+          const size_t i = size_t(y) * w_ + x;
+          const bool all = interior(x, y);
+          float cap = inf, lowest = inf;
+          for (int k = 0; k < 8; ++k) {
+            if (!all && !inside(x + kDx[k], y + kDy[k])) continue;
+            const size_t j = i + off_[k];
+            lowest = std::min(lowest, z_[j]);
+            if (donors_[i] >> k & 1) cap = std::min(cap, float(z_[j] - kFanSlope * run_of(dir_[j])));
+          }
+          float top = std::isinf(cap) ? start_[i] : cap;
+          const bool pit = dir_[i] == kSelf && !base(x, y, i);
+          if (pit) top = std::min(top, lowest);  // a pit fills to its spill
+          room_[i] = float(std::max(0.0, double(top) - z_[i]) * cell_);
+          laid_[i] = 0.0f;
+          front_[i] = float(std::max(0.0, double(start_[i]) - z_[i]) * cell_);
+          cut_[i] = dir_[i] == kSelf ? (pit ? float(std::min(1.0, G_)) : 0.0f)
+                                     : float(std::min(1.0, G_ * rain(i) / std::max(double(q_[i]), 1e-30)));
+        },
+        [&](int64_t row, int32_t x0, int32_t x1) {
+          const DepositSetup k{{kFanSlope * run_of(0), kFanSlope * run_of(1)}, cell_, G_, own_rain_,
+                               float(std::min(1.0, G_))};
+          deposit_setup_row(z_, start_.data(), q_.data(), dir_.data(), donors_.data(), sea_row(row),
+                            rain_row(row), room_.data(), laid_.data(), front_.data(), cut_.data(), off_, k, row, x0,
+                            x1);
+        });
     // The first hop: each cell's own loss, where it was detached.
     const Floats& share = cut_;
     auto lay = [this, &share](size_t i, float in) {
@@ -469,10 +645,7 @@ class DetailRun {
     };
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i) front_[i] = lay(size_t(i), front_[i]);
-    wave(lay, [this, &share](int64_t row, int32_t x0, int32_t x1) {
-      return deposit_hop(front_.data(), next_.data(), share.data(), room_.data(), laid_.data(), donors_.data(),
-                         dir_.data(), off_, row, x0, x1);
-    });
+    wave<true>();  // share: cut_
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i) z_[i] = float(z_[i] + double(laid_[i]) / cell_);
   }
@@ -496,17 +669,19 @@ class DetailRun {
       return false;
     };
     Floats& next = cut_;
-#pragma omp parallel for schedule(static)
-    for (int32_t y = 0; y < h_; ++y)
-      for (int32_t x = 0; x < w_; ++x) {
-        const size_t i = size_t(y) * w_ + x;
-        float v = plain[i];
-        if (!(z_[i] > texture_[i])) {
-          v = diffused[i] + texture_[i];
-          if (beside_deposit(x, y, i)) v = std::min(v, std::max(z_[i], plain[i]));
-        }
-        next[i] = v;
-      }
+    rows(
+        [&](int32_t x, int32_t y) {
+          const size_t i = size_t(y) * w_ + x;
+          float v = plain[i];
+          if (!(z_[i] > texture_[i])) {
+            v = diffused[i] + texture_[i];
+            if (beside_deposit(x, y, i)) v = std::min(v, std::max(z_[i], plain[i]));
+          }
+          next[i] = v;
+        },
+        [&](int64_t row, int32_t x0, int32_t x1) {
+          creep_row(z_, texture_.data(), diffused.data(), plain.data(), next.data(), off_, row, x0, x1);
+        });
 #pragma omp parallel for schedule(static)
     for (int64_t i = 0; i < int64_t(n_); ++i) z_[i] += next[i] - z_[i];
   }
@@ -516,7 +691,7 @@ class DetailRun {
   void blur(Floats& f) {
     Floats& original = laid_;  // free after deposit()
     if (in_.mask) copy_grid(f.data(), n_, original.data());
-    for (int32_t p = 0; p < kernel_.count; ++p) pass_along_rows(f, kernel_.radius[p]);
+    passes_along_rows(f);
     for (int32_t p = 0; p < kernel_.count; ++p) pass_along_columns(f, kernel_.radius[p]);
     if (in_.mask) {
 #pragma omp parallel for schedule(static)
@@ -536,26 +711,35 @@ class DetailRun {
     return int32_t(std::clamp<int64_t>(g - first, 0, len - 1));
   }
 
-  void pass_along_rows(Floats& f, int32_t radius) {
+  // Every pass along a row, one row after another (a row's passes read
+  // only that row: it stays in cache).
+  void passes_along_rows(Floats& f) {
     const bool tap = kernel_.tap > 0;
-    const float a = kernel_.tap, inv = 1.0f / float(2 * radius + 1);
+    const float a = kernel_.tap;
+    int32_t widest = 0;
+    for (int32_t p = 0; p < kernel_.count; ++p) widest = std::max(widest, kernel_.radius[p]);
 #pragma omp parallel
     {
-      std::vector<float> ext(size_t(w_) + 2 * size_t(radius));
+      std::vector<float> ext(size_t(w_) + 2 * size_t(widest));
 #pragma omp for schedule(static)
       for (int32_t y = 0; y < h_; ++y) {
         float* row = f.data() + size_t(y) * w_;
-        std::copy(row, row + w_, ext.begin() + radius);
-        for (int32_t x = -radius; x < 0; ++x) ext[size_t(x + radius)] = row[along(x, 0, w_, r_.x0, r_.whole.width)];
-        for (int32_t x = w_; x < w_ + radius; ++x) ext[size_t(x + radius)] = row[along(x, 0, w_, r_.x0, r_.whole.width)];
-        if (tap) {
-          for (int32_t x = 0; x < w_; ++x) row[x] = a * ext[x] + (1 - 2 * a) * ext[x + 1] + a * ext[x + 2];
-          continue;
+        for (int32_t p = 0; p < kernel_.count; ++p) {
+          const int32_t radius = kernel_.radius[p];
+          const float inv = 1.0f / float(2 * radius + 1);
+          std::copy(row, row + w_, ext.begin() + radius);
+          for (int32_t x = -radius; x < 0; ++x) ext[size_t(x + radius)] = row[along(x, 0, w_, r_.x0, r_.whole.width)];
+          for (int32_t x = w_; x < w_ + radius; ++x)
+            ext[size_t(x + radius)] = row[along(x, 0, w_, r_.x0, r_.whole.width)];
+          if (tap) {
+            for (int32_t x = 0; x < w_; ++x) row[x] = a * ext[x] + (1 - 2 * a) * ext[x + 1] + a * ext[x + 2];
+            continue;
+          }
+          for (int32_t x = 0; x < w_; ++x) row[x] = 0.0f;
+          for (int32_t d = 0; d <= 2 * radius; ++d)
+            for (int32_t x = 0; x < w_; ++x) row[x] += ext[size_t(x + d)];
+          for (int32_t x = 0; x < w_; ++x) row[x] *= inv;
         }
-        for (int32_t x = 0; x < w_; ++x) row[x] = 0.0f;
-        for (int32_t d = 0; d <= 2 * radius; ++d)
-          for (int32_t x = 0; x < w_; ++x) row[x] += ext[size_t(x + d)];
-        for (int32_t x = 0; x < w_; ++x) row[x] *= inv;
       }
     }
   }
@@ -589,12 +773,21 @@ class DetailRun {
   void keep_outlets() {
     if (r_.whole.periodic) return;
     const double outlet = kOutletCells * own_rain_;
-#pragma omp parallel for schedule(static)
-    for (int32_t y = 0; y < h_; ++y)
-      for (int32_t x = 0; x < w_; ++x) {
-        const size_t i = size_t(y) * w_ + x;
-        if (r_.on_whole_edge(x, y) && q_[i] >= outlet) z_[i] = std::min(z_[i], start_[i]);
+    auto keep = [&](int32_t x, int32_t y) {
+      const size_t i = size_t(y) * w_ + x;
+      if (r_.on_whole_edge(x, y) && q_[i] >= outlet) z_[i] = std::min(z_[i], start_[i]);
+    };
+    // Only the whole's edge: its rows in the region, and its columns.
+    const int64_t left = -r_.x0, right = r_.whole.width - 1 - r_.x0;
+    for (int32_t y = 0; y < h_; ++y) {
+      const int64_t gy = r_.y0 + y;
+      if (gy == 0 || gy == r_.whole.height - 1) {
+        for (int32_t x = 0; x < w_; ++x) keep(x, y);
+        continue;
       }
+      if (left >= 0 && left < w_) keep(int32_t(left), y);
+      if (right >= 0 && right < w_ && right != left) keep(int32_t(right), y);
+    }
   }
 
   const Region& r_;
@@ -608,11 +801,15 @@ class DetailRun {
   const CreepKernel kernel_;
   int32_t off_[8];
   Floats texture_;  // z at the start of the run
-  Floats start_, random_;
+  Floats start_;
+  Floats random_;  // a row of Rho8's numbers per thread
   Bytes dir_;
   Floats q_, front_, next_, cut_, room_, laid_;
   Bytes donors_;
   Bytes no_sea_;    // a row of 0s: the sea flags without a sea
+  Floats halo_;     // the waves' copies of the room beside each band
+  Floats local_;    // the waves' fronts, two sets of a band's rows per thread
+  Floats ones_;     // a row of 1s: the rain map (or mask) without one
 };
 
 }  // namespace
