@@ -40,7 +40,7 @@ const Recipe kRecipes[] = {
       "Sharp ridges, deep branching gullies and scree below the cliffs"},
      2.8e-5, 0.5, 1e-7, 0.3, 40},
     {{"badlands", "Badlands", "",
-      "Dense fine gullies on bare soft rock; little creep, little sediment kept"},
+      "Gullies on bare soft rock with steep sides (45 degree scree); little sediment kept"},
      2.2e-5, 0.45, 1e-7, 0.05, 45},
     {{"alluvial_fans", "Alluvial Fans", "rain",
       "Valleys that empty into wide fans and filled plains at the foot of the slopes"},
