@@ -19,12 +19,14 @@
 #include "erosion/presets.hpp"
 #include "terrain/terrain.hpp"
 #include "sanitizer.hpp"
+#include "test_grids.hpp"
 #include "test_terrains.hpp"
 
 namespace ft::erosion {
 namespace {
 
 using test::default_mountain;
+using test::downsample;
 
 // fBm: the same terrain at every size (issue 24 measured 0.996 at shared
 // points), so it is the input of the resolution test. With `sea_fraction`
@@ -114,27 +116,6 @@ double laplacian_p999(const std::vector<float>& z, int32_t w, int32_t h) {
   const size_t k = size_t(0.999 * double(l.size() - 1));
   std::nth_element(l.begin(), l.begin() + k, l.end());
   return l[k];
-}
-
-// The fine grid averaged over each coarse cell (factor f, centred on the
-// coarse node, clamped at the edges).
-std::vector<float> downsample(const std::vector<float>& v, int32_t w, int32_t f) {
-  const int32_t wc = (w - 1) / f + 1;
-  std::vector<float> out(size_t(wc) * wc);
-  for (int32_t y = 0; y < wc; ++y)
-    for (int32_t x = 0; x < wc; ++x) {
-      double s = 0;
-      int n = 0;
-      for (int32_t dy = -f / 2; dy <= f / 2; ++dy)
-        for (int32_t dx = -f / 2; dx <= f / 2; ++dx) {
-          const int32_t fx = x * f + dx, fy = y * f + dy;
-          if (fx < 0 || fy < 0 || fx >= w || fy >= w) continue;
-          s += v[size_t(fy) * w + fx];
-          ++n;
-        }
-      out[size_t(y) * wc + x] = float(s / n);
-    }
-  return out;
 }
 
 // Straight walls: cells standing more than 1 cm (the default mountain is 10

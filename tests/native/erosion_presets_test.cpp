@@ -15,6 +15,7 @@
 #include "erosion/erosion.hpp"
 #include "erosion/presets.hpp"
 #include "sanitizer.hpp"
+#include "test_grids.hpp"
 #include "test_terrains.hpp"
 
 namespace ft::erosion {
@@ -42,21 +43,7 @@ double quantile(std::vector<float> v, double p) {
 // `hf` averaged over each model cell (f x f samples centred on its node,
 // clamped at the edges): 257^2 and 1025^2 then measure the same landform.
 std::vector<float> on_model_grid(const Heightfield& hf, int32_t f) {
-  const int32_t w = hf.width(), wc = (w - 1) / f + 1;
-  std::vector<float> out(size_t(wc) * wc);
-  for (int32_t y = 0; y < wc; ++y)
-    for (int32_t x = 0; x < wc; ++x) {
-      double sum = 0;
-      int n = 0;
-      for (int32_t dy = -f / 2; dy <= f / 2; ++dy)
-        for (int32_t dx = -f / 2; dx <= f / 2; ++dx) {
-          const int32_t fx = x * f + dx, fy = y * f + dy;
-          if (fx < 0 || fy < 0 || fx >= w || fy >= w) continue;
-          sum += hf.at(fx, fy), ++n;
-        }
-      out[size_t(y) * wc + x] = float(sum / n);
-    }
-  return out;
+  return test::downsample(std::vector<float>(hf.data(), hf.data() + hf.size()), hf.width(), f);
 }
 
 // A 3 x 3 box, twice, clamped at the edges.
