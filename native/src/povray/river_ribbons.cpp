@@ -8,22 +8,19 @@
 #include "core/error.hpp"
 
 namespace ft::pov {
-namespace {
-
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-Vec3 unit(const Vec3& a) {
-  const double n = norm(a);
-  return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
-}
-
-}  // namespace
 
 Mesh river_ribbons(const PolylineSet& rivers, double flat, int sides, double default_radius) {
+  // Local: a unity build puts other files' vector helpers beside these.
+  const auto sub = [](const Vec3& a, const Vec3& b) { return Vec3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+  const auto add = [](const Vec3& a, const Vec3& b) { return Vec3{a[0] + b[0], a[1] + b[1], a[2] + b[2]}; };
+  const auto cross = [](const Vec3& a, const Vec3& b) {
+    return Vec3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  const auto unit = [](const Vec3& a) {
+    const double n = ft::norm(a);
+    return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
+  };
+  const auto norm = [](const Vec3& a) { return ft::norm(a); };
   Mesh m;
   std::vector<double> cs(static_cast<size_t>(sides)), sn(static_cast<size_t>(sides));
   for (int k = 0; k < sides; ++k) {
