@@ -20,7 +20,6 @@ Mesh river_ribbons(const PolylineSet& rivers, double flat, int sides, double def
     const double n = ft::norm(a);
     return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
   };
-  const auto norm = [](const Vec3& a) { return ft::norm(a); };
   Mesh m;
   std::vector<double> cs(static_cast<size_t>(sides)), sn(static_cast<size_t>(sides));
   for (int k = 0; k < sides; ++k) {
@@ -33,7 +32,7 @@ Mesh river_ribbons(const PolylineSet& rivers, double flat, int sides, double def
     pts.clear(), radii.clear();
     for (int64_t i = rivers.line_begin(line); i < rivers.line_end(line); ++i) {
       const Vec3& p = rivers.points[size_t(i)];
-      if (!pts.empty() && norm(sub(p, pts.back())) == 0) continue;
+      if (!pts.empty() && p == pts.back()) continue;
       pts.push_back(p);
       const double r = rivers.radii[size_t(i)];
       radii.push_back(r > 0 ? r : default_radius);
@@ -48,9 +47,9 @@ Mesh river_ribbons(const PolylineSet& rivers, double flat, int sides, double def
       const Vec3 in = i > 0 ? unit(sub(pts[i], pts[i - 1])) : Vec3{0, 0, 0};
       const Vec3 out = i + 1 < n ? unit(sub(pts[i + 1], pts[i])) : Vec3{0, 0, 0};
       Vec3 t = unit(add(in, out));
-      if (norm(t) == 0) t = out[0] || out[1] || out[2] ? out : in;  // a river that turns back
+      if (ft::norm(t) == 0) t = out[0] || out[1] || out[2] ? out : in;  // a river that turns back
       Vec3 side = unit(cross(t, Vec3{0, 0, 1}));
-      if (norm(side) == 0) side = {1, 0, 0};  // a vertical fall: any level axis
+      if (ft::norm(side) == 0) side = {1, 0, 0};  // a vertical fall: any level axis
       const Vec3 up = cross(side, t);
       const double r = radii[i], h = flat * r;
       for (int k = 0; k < sides; ++k)

@@ -23,11 +23,16 @@ void vectors(std::string& out, const char* block, const std::vector<float>& xyz)
   out += "\n  }\n";
 }
 
+size_t triangle_count(const Mesh& m) {
+  size_t triangles = 0;
+  for (int32_t n : m.face_sizes) triangles += size_t(n - 2);
+  return triangles;
+}
+
 }  // namespace
 
 std::string mesh2_sdl(const Mesh& m, bool smooth, const std::string& modifiers) {
-  size_t triangles = 0;
-  for (int32_t n : m.face_sizes) triangles += size_t(n - 2);
+  const size_t triangles = triangle_count(m);
   std::string s = "mesh2 {\n";
   vectors(s, "vertex_vectors", m.positions);
   if (smooth) vectors(s, "normal_vectors", mesh_vertex_normals(m));  // one per vertex, as the faces index
@@ -51,10 +56,8 @@ namespace {
 std::string mesh_sdl(const SceneMesh& sm, size_t k, bool ambient) {
   const Mesh& m = *sm.mesh;
   if (m.face_count() == 0) return "";
-  size_t triangles = 0;
-  for (int32_t n : m.face_sizes) triangles += size_t(n - 2);
   return "// mesh " + std::to_string(k) + ": " + std::to_string(m.vertex_count()) + " vertices, " +
-         std::to_string(triangles) + " triangles\n" +
+         std::to_string(triangle_count(m)) + " triangles\n" +
          mesh2_sdl(m, sm.smooth, "  " + material_sdl(sm.material, ambient) + "\n") + "\n";
 }
 

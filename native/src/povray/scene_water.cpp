@@ -4,9 +4,8 @@
 #include <algorithm>
 
 #include "povray/scene_stages.hpp"
-#include "povray/sdl_writer.hpp"
 #include "povray/river_ribbons.hpp"
-#include "povray/sphere_sweep_export.hpp"
+#include "povray/sdl_writer.hpp"
 
 namespace ft::pov::detail {
 namespace {
@@ -22,10 +21,12 @@ std::string rivers_sdl(const SceneContext& c) {
   if (!p.rivers || p.rivers->vertex_count() == 0) return "";
   SceneLines l{p.rivers, LineKind::kGeneric};
   const double floor = automatic_line_radius(l, c.camera, c.extent, p.image_width);
+  // Another program's rivers keep the widths it shows (the floor only where
+  // a point has none); fracterra's are never thinner than the floor, so they
+  // do not break into dots.
   PolylineSet rivers = *p.rivers;
-  // Another program's rivers keep the widths it shows; fracterra's are never
-  // thinner than the floor, so they do not break into dots.
-  for (double& r : rivers.radii) r = p.scene_light ? (r > 0 ? r : floor) : std::max(r, floor);
+  if (!p.scene_light)
+    for (double& r : rivers.radii) r = std::max(r, floor);
   const Mesh ribbons = river_ribbons(rivers, kRiverFlat, kRibbonSides, floor);
   if (ribbons.face_count() == 0) return "";
   return "// rivers: " + std::to_string(p.rivers->line_count()) + " segments, ribbons as wide as the rivers" +
