@@ -222,7 +222,9 @@ TEST(ForRows, ReportsAtMostAbout128TimesInOrderAndEndsAtOne) {
       EXPECT_EQ(seen.back(), 1.0);
       EXPECT_LE(seen.size(), size_t(std::min<int64_t>(count, 128) + 1)) << count << " rows, " << threads;
       for (size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]);
-      if (threads == 1 && count >= 128) EXPECT_GE(seen.size(), size_t(100)) << "the bar still moves";
+      if (threads == 1 && count >= 128) {
+        EXPECT_GE(seen.size(), size_t(100)) << "the bar still moves";
+      }
     }
   }
 }
