@@ -56,10 +56,6 @@
 namespace ft::erosion {
 namespace {
 
-// Scree: the excess of a slope over the talus angle sheds with this e-folding
-// time (years), so a run wears cliffs back in proportion to its length
-// instead of cutting every steep slope at once.
-constexpr double kScreeYears = 1e5;
 // Steps: the knickpoint of a channel draining a sixteenth of the map moves
 // at most this many cells per step; between kMinSteps and kMaxSteps. The
 // implicit scheme is stable at any step. A 513^2 Rugged Mountains run at 8
@@ -260,7 +256,7 @@ struct Evolution {
         tan_talus(r.talus ? std::tan(c.thermal.talus_degrees * M_PI / 180.0)
                           : std::numeric_limits<double>::infinity()),
         own_rain(c.model.rainfall * cell),
-        shed(-std::expm1(-dt / kScreeYears)),
+        shed(-std::expm1(-dt / c.model.scree_years)),
         creeps(c.fluvial.diffusion > 0),
         filled(n),
         start(n),
