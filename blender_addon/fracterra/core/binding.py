@@ -26,7 +26,7 @@ from . import rows  # noqa: F401  (binding.rows: the one reader)
 from .rows import FT_PARAM, enum_item, row_from_info  # noqa: F401
 
 ABI_MAJOR = 2
-ABI_MINOR_MIN = 27  # what each minor added: CHANGES.md, "ABI history"
+ABI_MINOR_MIN = 28  # what each minor added: CHANGES.md, "ABI history"
 ENV_VAR = "FRACTERRA_LIBRARY"
 # The library of each platform the add-on zip can carry one for (docs/windows.md).
 LIBRARY_NAMES = {("linux", "x86_64"): "libfracterra.so", ("win32", "amd64"): "fracterra.dll"}
