@@ -26,7 +26,7 @@ extern "C" {
 /// added. Bindings refuse a library whose major number differs from theirs.
 #define FT_ABI_VERSION_MAJOR 2
 /// The minor number: what each one added is in CHANGES.md (ABI history).
-#define FT_ABI_VERSION_MINOR 27
+#define FT_ABI_VERSION_MINOR 28
 #define FT_ABI_VERSION ((FT_ABI_VERSION_MAJOR << 16) | FT_ABI_VERSION_MINOR)
 
 /// Every exported function that can fail returns one of these.
