@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "core/error.hpp"
+#include "core/heightfield.hpp"
 #include "core/memory.hpp"
 #include "core/parallel.hpp"
 #include "core/parallel_rows.hpp"
@@ -221,7 +222,9 @@ TEST(ForRows, ReportsAtMostAbout128TimesInOrderAndEndsAtOne) {
       EXPECT_EQ(seen.back(), 1.0);
       EXPECT_LE(seen.size(), size_t(std::min<int64_t>(count, 128) + 1)) << count << " rows, " << threads;
       for (size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]);
-      if (threads == 1 && count >= 128) EXPECT_GE(seen.size(), size_t(100)) << "the bar still moves";
+      if (threads == 1 && count >= 128) {
+        EXPECT_GE(seen.size(), size_t(100)) << "the bar still moves";
+      }
     }
   }
 }
@@ -232,6 +235,28 @@ TEST(ForRows, ACancelStopsTheRestOfTheRows) {
                         [&](int64_t) { ran.fetch_add(1); }),
                Error);
   EXPECT_LE(ran.load(), 100000 / 128 + 1);  // stopped at the first report
+}
+
+TEST(OrderedSum, TheSameBitsOnOneAndTwoThreadsAsAStatsMean) {
+  // Values of mixed magnitude, whose float sum depends on the order; the
+  // heightfield's stats take the team the load leaves, so both team sizes
+  // are forced.
+  Heightfield hf(1000, 700);
+  for (size_t i = 0; i < hf.size(); ++i) hf.data()[i] = float(std::sin(double(i)) * std::pow(10.0, double(i % 7)));
+  const auto sum = [&](int team) {
+    return ordered_sum(int64_t(hf.size()), team, [&](int64_t i) { return double(hf.data()[i]); });
+  };
+  EXPECT_EQ(sum(1), sum(2));
+  EXPECT_EQ(sum(1), sum(3));
+  ::setenv("FT_THREADS_IGNORE_LOAD", "1", 1);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const HeightStats one = hf.stats();
+  omp_set_num_threads(2);
+  const HeightStats two = hf.stats();
+  omp_set_num_threads(saved);
+  EXPECT_EQ(one.mean, two.mean);
+  EXPECT_EQ(one.std, two.std);
 }
 
 TEST(Threads, ABusyMachineGetsOneThreadAndTheOverrideAllCores) {

@@ -4,7 +4,9 @@
 // general code gave. The window tests cannot see a change there (they
 // compare windows deep inside the margin, where every region runs the same
 // loops), so these hashes are the guard. The bounded ones are those the
-// general code gave (0.6.0 before the detail run's interior kernels); the
+// general code gave (0.6.0 before the detail run's interior kernels; Scree
+// Slopes' is the kernels' since its faster shedding, a change of the model
+// grid's run, not of the detail run); the
 // torus's is the kernels' own: on it they differ from the general code at
 // 30 of its 1048576 samples by at most 1.5e-8 (an ulp; the cause is not
 // found, the thread counts and windows agree). A change of the model or of
@@ -57,7 +59,7 @@ TEST(ErosionBits, TheDetailRunGivesTheGeneralCodesBits) {
 #endif
   const Case cases[] = {
       {"rugged mountain 1025", mountain_1025, "rugged_mountains", Sea::kNone, false, 0x38fd09e7070e7689ull},
-      {"scree mountain 1025", mountain_1025, "scree_slopes", Sea::kNone, false, 0x89a6632025f61e4aull},
+      {"scree mountain 1025", mountain_1025, "scree_slopes", Sea::kNone, false, 0x2b55d0b4fc72451eull},
       {"rugged fbm 1025, sea", fbm_1025, "rugged_mountains", Sea::kFraction, false, 0x7fa6cffafb9477d5ull},
       {"rugged torus 1024", torus_1024, "rugged_mountains", Sea::kNone, true, 0xac18a56368db0a28ull},
       {"rugged fbm 701 x 523", fbm_odd, "rugged_mountains", Sea::kNone, false, 0x889ed65d03bbd1d1ull},

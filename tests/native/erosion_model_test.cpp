@@ -825,6 +825,27 @@ TEST(ErosionModel, StrengthZeroChangesNothingAndMoreStrengthErodesMore) {
   }
 }
 
+TEST(ErosionModel, TheMassBudgetIsTheSameBitsOnAnyThreadCount) {
+  // The heights never depended on the threads; the volumes did, in their
+  // last digits (a reduction over a dynamic schedule adds in the order the
+  // chunks happen to run). Several runs on two threads, to give an order
+  // that depends on the run a chance to show.
+  const Heightfield in = default_mountain(8, 13);
+  ErosionConfig c = preset_for("rugged_mountains");
+  c.threads = 1;
+  MassBudget one;
+  erode(in, c, nullptr, &one);
+  ASSERT_GT(one.detached, 0.0);
+  c.threads = 2;
+  for (int run = 0; run < 6; ++run) {
+    MassBudget two;
+    erode(in, c, nullptr, &two);
+    EXPECT_EQ(one.detached, two.detached) << run;
+    EXPECT_EQ(one.deposited, two.deposited) << run;
+    EXPECT_EQ(one.carried_out, two.carried_out) << run;
+  }
+}
+
 TEST(ErosionModel, NothingOutsideTheMaskErodesAndMassBalances) {
   // Mask: the left third erodes, the right third not (a 4 x 2 map: its
   // bilinear resampling ramps across the middle third). Diffusion is

@@ -243,24 +243,25 @@ TEST(ErosionPresets, BadlandsAreAtLeastAsGulliedAsRuggedMountains) {
 
 TEST(ErosionPresets, ScreeSlopesWearTheSteepestSlopesBack) {
   FT_ENSEMBLE_ONLY;
-  // The steepest land (slope p99): Scree Slopes' is 0.55-0.76 of Rugged
-  // Mountains' and 0.55-0.80 of the input's; Badlands', the next steepest,
-  // is 0.85-0.94 of Rugged Mountains'. Bound 0.8 of Rugged Mountains' (between
-  // the two) and 0.85 of the input's. Not capped at the scree angle: p99 is
-  // 1.16-1.82, tan 30 deg = 0.58 (the talus stage sheds the excess with a
-  // 10^5-year e-folding time, landscape.cpp). With Rugged Mountains' recipe
-  // both bounds failed.
+  // The steepest land (slope p99): Scree Slopes' is 0.51-0.62 of Rugged
+  // Mountains', 0.44-0.74 of the input's and 0.83-0.94 of Gentle Valleys'
+  // (it sheds with an 8000-year e-folding time, the others with 10^5). Bounds
+  // 0.65 of Rugged Mountains' and 0.78 of the input's; with the others'
+  // shedding time Scree Slopes was 0.55-0.76 and 0.55-0.80, and failed both.
+  // Still not capped at the scree angle: p99 is 0.94-1.69 against tan 30 deg
+  // = 0.58 (a faster shedding lowered seed 2's mountain past the landform
+  // bounds of erosion_model_test, docs/erosion.md).
   each_terrain([](auto at, const std::string& what) {
     const Measures scree = at("scree_slopes");
-    EXPECT_LE(scree.slope_p99, 0.8 * at("rugged_mountains").slope_p99) << what;
-    EXPECT_LE(scree.slope_p99, 0.85 * scree.slope_p99_in) << what;
+    EXPECT_LE(scree.slope_p99, 0.65 * at("rugged_mountains").slope_p99) << what;
+    EXPECT_LE(scree.slope_p99, 0.78 * scree.slope_p99_in) << what;
   });
 }
 
 TEST(ErosionPresets, AFinalKeepsItsHillslopesRockTexture) {
   FT_ENSEMBLE_ONLY;
   // At 1025^2 the texture below the model's cell is the rock's, and the
-  // detail run creeps only its own change: 0.67-0.95 of the input's fine
+  // detail run creeps only its own change: 0.60-0.95 of the input's fine
   // energy is kept on hillslopes away from channels and deposits (bound:
   // the 0.5). At 257^2, the model's own grid, the model's creep acts
   // on the texture itself (its reach, sqrt(2 D t), is 2.6-4.4 cells): 0.02-0.43

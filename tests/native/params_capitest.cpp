@@ -56,7 +56,7 @@ const std::vector<Field> kErosionFields = {
         uplift, hydraulic_iterations, hydraulic_dt, rain, evaporation, capacity, dissolve, deposit,
         thermal_iterations, talus_degrees, thermal_rate, periodic, threads, progress, progress_user,
         uplift_follows_terrain, strength, duration, deposition, rainfall, erosion_mask, erosion_mask_width,
-        erosion_mask_height, rain_map, rain_map_width, rain_map_height, sea, sea_level, sea_fraction),
+        erosion_mask_height, rain_map, rain_map_width, rain_map_height, sea, sea_level, sea_fraction, scree_years),
 };
 const std::vector<Field> kBuildFields = {
     FT_FIELDS(ft_build_params, struct_size, threads, terrain, erosion, erosion_preset, progress, progress_user,

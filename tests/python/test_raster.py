@@ -44,6 +44,22 @@ def test_every_written_format_reads_back(core, tmp_path):
             assert max(abs(a - b) for a, b in zip(want, got)) <= tol, ext
 
 
+def test_a_generated_terrain_is_written_north_up_in_its_tile_sets_frame(core, tmp_path):
+    # The frame tile sets use (pixel-is-area, sample (0, 0) centred on the
+    # origin, rows going south): the whole and its tiles overlay in a GIS,
+    # and rivers traced from either have the same sign of y.
+    with core.generate_terrain(levels=5, seed=3) as hf:
+        world = hf.world_size
+        raster.write_heightfield(hf, tmp_path / "t.tif")
+    s = world / 32
+    gt = gdal.Open(str(tmp_path / "t.tif")).GetGeoTransform()
+    assert gt == pytest.approx((-0.5 * s, s, 0.0, 0.5 * s, 0.0, -s), rel=1e-12, abs=1e-15)
+    with raster.read_heightfield(tmp_path / "t.tif") as back:
+        assert back.world_size == world  # exactly, not (width - 1) x a rounded pixel width
+        raster.write_heightfield(back, tmp_path / "again.tif")
+    assert gdal.Open(str(tmp_path / "again.tif")).GetGeoTransform() == gt
+
+
 def test_georeference_survives_a_round_trip(tmp_path):
     _utm_dem(tmp_path / "dem.tif")
     with raster.read_heightfield(tmp_path / "dem.tif") as hf:

@@ -19,9 +19,10 @@ MAPS = ("drainage_area", "slope", "curvature", "water_depth", "eroded", "deposit
 # "rain" and "scree" are aliases the library still takes.
 PRESETS = ("gentle_valleys", "rugged_mountains", "badlands", "alluvial_fans", "scree_slopes")
 COUNTS = ("fluvial_steps", "hydraulic_iterations", "thermal_iterations")
-# What a preset sets (ABI 2.14): the run (its duration; None: 0), the landscape
+# What a preset sets (ABI 2.14; scree_years 2.28): the run (its duration; None: 0), the landscape
 # model's rates, and the expert pass counts (0 in every preset).
-PRESET_FIELDS = ("duration", "erodibility", "area_exponent", "diffusion", "deposition", "talus_degrees") + COUNTS
+PRESET_FIELDS = ("duration", "erodibility", "area_exponent", "diffusion", "deposition", "talus_degrees",
+                 "scree_years") + COUNTS
 
 
 def _fill(p, values):

@@ -69,6 +69,9 @@ typedef struct ft_erosion_params {
                                  ///< floor stays
   double sea_level;              ///< FT_WATER_SEA_HEIGHT: the sea's height, world units
   double sea_fraction;           ///< FT_WATER_SEA_FRACTION: share of the samples below the sea, [0, 1)
+  /* ABI 2.28 */
+  double scree_years;            ///< years (> 0): the excess of a slope over the scree angle sheds with this
+                                 ///< e-folding time (1e5; Scree Slopes 8e3)
 } ft_erosion_params;
 
 FT_API ft_status ft_erosion_params_init(ft_erosion_params* p);

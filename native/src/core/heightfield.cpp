@@ -22,25 +22,25 @@ HeightStats Heightfield::stats() const {
   HeightStats s;
   const size_t n = size();
   if (n == 0) return s;
-  double lo = samples_[0], hi = samples_[0], sum = 0;
+  double lo = samples_[0], hi = samples_[0];
   // At most the cores other processes leave free (core/parallel.hpp): the
   // CLI and Blender call this outside any stage that sets its threads, and
   // on a busy machine a full team spin-waits at each of its barriers.
   const int team = resolve_threads(0);
-#pragma omp parallel for num_threads(team) reduction(min : lo) reduction(max : hi) reduction(+ : sum)
+#pragma omp parallel for num_threads(team) reduction(min : lo) reduction(max : hi)
   for (size_t i = 0; i < n; ++i) {
     const double v = samples_[i];
     lo = std::min(lo, v);
     hi = std::max(hi, v);
-    sum += v;
   }
-  const double mean = sum / double(n);
-  double ss = 0;
-#pragma omp parallel for num_threads(team) reduction(+ : ss)
-  for (size_t i = 0; i < n; ++i) {
-    const double d = samples_[i] - mean;
-    ss += d * d;
-  }
+  // The sums in an order of their own: the same bits however many threads
+  // the load leaves.
+  const float* z = samples_.data();
+  const double mean = ordered_sum(int64_t(n), team, [z](int64_t i) { return double(z[i]); }) / double(n);
+  const double ss = ordered_sum(int64_t(n), team, [z, mean](int64_t i) {
+    const double d = z[i] - mean;
+    return d * d;
+  });
   s.min = lo;
   s.max = hi;
   s.mean = mean;

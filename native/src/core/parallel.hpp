@@ -6,6 +6,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -29,6 +31,25 @@ int cores_free_of_other_load();
 inline int resolve_threads(int requested) {
   check_int_range("threads", requested, 0, 1024);
   return std::min(requested == 0 ? omp_get_max_threads() : requested, cores_free_of_other_load());
+}
+
+// The sum of f(i) for 0 <= i < n in the same bits on any thread count: each
+// fixed block of indices is summed in order, then the blocks in order (an
+// OpenMP reduction adds in an order that depends on the team).
+template <typename F>
+double ordered_sum(int64_t n, int team, F f) {
+  constexpr int64_t kBlock = 1 << 16;
+  const int64_t blocks = (n + kBlock - 1) / kBlock;
+  std::vector<double> part(size_t(std::max<int64_t>(blocks, 0)), 0.0);
+#pragma omp parallel for num_threads(team) schedule(static)
+  for (int64_t b = 0; b < blocks; ++b) {
+    double s = 0;
+    for (int64_t i = b * kBlock, end = std::min(n, i + kBlock); i < end; ++i) s += f(i);
+    part[size_t(b)] = s;
+  }
+  double sum = 0;
+  for (const double s : part) sum += s;
+  return sum;
 }
 
 }  // namespace ft

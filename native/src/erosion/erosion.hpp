@@ -86,6 +86,10 @@ struct ModelConfig {
   double duration = 0.0;     // years; 0: off
   double deposition = 0.5;   // G: share of the carried sediment laid down per upstream area
   double rainfall = 1.0;     // world units / yr on every cell (x the rain map)
+  // The excess of a slope over the scree angle sheds with this e-folding
+  // time (years): a run wears cliffs back in proportion to its length
+  // instead of cutting every steep slope at once.
+  double scree_years = 1e5;
 };
 
 // The model's working grid: every terrain is eroded at this cell size first

@@ -12,6 +12,7 @@ constexpr uint32_t kData = FT_PARAM_FLAG_DATA;
 constexpr uint32_t kAbi212 = 0x2000C;  // uplift_follows_terrain
 constexpr uint32_t kAbi214 = 0x2000E;  // the landscape model and its maps
 constexpr uint32_t kAbi221 = 0x20015;  // the sea
+constexpr uint32_t kAbi228 = 0x2001C;  // scree_years
 constexpr double kMaxRainPassValue = 1e6;
 // The defaults are written once, in ErosionConfig's parts (erosion.hpp), and
 // read here; the test ErosionParams.TableDefaultsAreTheConfigDefaults holds
@@ -160,6 +161,13 @@ constexpr ft_param_info kRows[] = {
     {ROW(sea_fraction, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MAX_EXCLUSIVE, .since = kAbi221, .element_kind = -1,
      .default_value = 0.3, .hard_min = 0, .hard_max = 1, .soft_min = 0, .soft_max = 0.95, .unit = "",
      .label = "Sea Fraction", .doc = "Share of the samples under the sea (sea 'fraction')", .methods = kAll},
+    {ROW(scree_years, FT_PARAM_DOUBLE), .flags = FT_PARAM_FLAG_MIN_EXCLUSIVE, .since = kAbi228, .element_kind = -1,
+     .default_value = kModel.scree_years, .hard_min = 0, .hard_max = 1e12, .soft_min = 1e3, .soft_max = 1e6,
+     .unit = "years", .label = "Scree Time",
+     .doc = "How long steep slopes take to shed down to the scree angle: the excess of a slope over it sheds "
+            "with this e-folding time; shorter than the run (Strength x Duration) wears every steep slope back "
+            "to the angle, longer only the cliffs' edges",
+     .methods = kAll},
 };
 FT_PARAM_TABLE_END
 #undef ROW
@@ -181,6 +189,7 @@ void for_each_field_pair(Params& p, Config& c, F f) {
   f(p.duration, c.model.duration);
   f(p.deposition, c.model.deposition);
   f(p.rainfall, c.model.rainfall);
+  f(p.scree_years, c.model.scree_years);
   f(p.erosion_mask, c.erosion_mask.values);
   f(p.erosion_mask_width, c.erosion_mask.width);
   f(p.erosion_mask_height, c.erosion_mask.height);

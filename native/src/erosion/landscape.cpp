@@ -40,6 +40,7 @@
 // run on its own grid, its one-cell channels covered more of the land and
 // it eroded 14 % more than its final.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -55,10 +56,6 @@
 namespace ft::erosion {
 namespace {
 
-// Scree: the excess of a slope over the talus angle sheds with this e-folding
-// time (years), so a run wears cliffs back in proportion to its length
-// instead of cutting every steep slope at once.
-constexpr double kScreeYears = 1e5;
 // Steps: the knickpoint of a channel draining a sixteenth of the map moves
 // at most this many cells per step; between kMinSteps and kMaxSteps. The
 // implicit scheme is stable at any step. A 513^2 Rugged Mountains run at 8
@@ -259,7 +256,7 @@ struct Evolution {
         tan_talus(r.talus ? std::tan(c.thermal.talus_degrees * M_PI / 180.0)
                           : std::numeric_limits<double>::infinity()),
         own_rain(c.model.rainfall * cell),
-        shed(-std::expm1(-dt / kScreeYears)),
+        shed(-std::expm1(-dt / c.model.scree_years)),
         creeps(c.fluvial.diffusion > 0),
         filled(n),
         start(n),
@@ -297,24 +294,27 @@ struct Evolution {
   // not depend on the thread count.
   void erode_and_deposit(int32_t step, const Progress& progress) {
     const int32_t chunks = int32_t(graph.chunk_start.size()) - 1;
-    double carried_step = 0, detached_step = 0, deposited_step = 0;
+    // Each chunk's volumes, added in chunk order after (a reduction's order
+    // depends on the team: the mass budget would vary in its last digits).
+    std::vector<std::array<double, 3>> volumes(size_t(std::max(chunks, 0)), {0.0, 0.0, 0.0});
     // In batches of chunks, with a report after each (a 4097^2 step's
     // incision takes seconds); chunks are independent, so the heights do
     // not depend on the batches.
     constexpr int32_t kBatches = 4;
     for (int32_t b = 0; b < kBatches; ++b) {
       const int32_t from = int32_t(int64_t(chunks) * b / kBatches), to = int32_t(int64_t(chunks) * (b + 1) / kBatches);
-#pragma omp parallel for schedule(dynamic, 1) reduction(+ : carried_step, detached_step, deposited_step)
+#pragma omp parallel for schedule(dynamic, 1)
       for (int32_t ch = from; ch < to; ++ch) {
         const int32_t first = graph.chunk_start[ch], last = graph.chunk_start[ch + 1];
         LakeFill lake(graph, filled.data(), start.data(), z, cell);
         accumulate_discharge(first, last);
         detach_and_shed(first, last);
-        deposit(first, last, lake, carried_step, detached_step, deposited_step);
+        std::array<double, 3>& v = volumes[size_t(ch)];
+        deposit(first, last, lake, v[0], v[1], v[2]);
       }
       progress.report((step + 0.5 + 0.35 * (b + 1) / kBatches) / steps);
     }
-    carried += carried_step, detached += detached_step, deposited += deposited_step;
+    for (const std::array<double, 3>& v : volumes) carried += v[0], detached += v[1], deposited += v[2];
   }
 
   // Discharge, donors first.

@@ -104,12 +104,15 @@ Heightfield read_dataset(GDALDatasetH ds, const std::string& name, NodataPolicy 
   GeoReference g;
   if (const char* wkt = gdal().GDALGetProjectionRef(ds)) g.crs_wkt = wkt;
   g.has_transform = gdal().GDALGetGeoTransform(ds, g.transform.data()) == CE_None;
-  if (g.has_transform) {
+  // Our own files without a CRS say their world size exactly (their pixel
+  // width is that size / (width - 1), rounded).
+  const char* ws = g.crs_wkt.empty() ? gdal().GDALGetMetadataItem(ds, "FRACTERRA_WORLD_SIZE", nullptr) : nullptr;
+  const double written = ws ? std::strtod(ws, nullptr) : NAN;
+  if (std::isfinite(written) && written > 0) {
+    hf.set_world_size(written);
+  } else if (g.has_transform) {
     const double dx = pixel_width_in_metres(g, h);
     if (std::isfinite(dx) && dx > 0) hf.set_world_size(dx * (w - 1));
-  } else if (const char* ws = gdal().GDALGetMetadataItem(ds, "FRACTERRA_WORLD_SIZE", nullptr)) {
-    const double v = std::strtod(ws, nullptr);
-    if (std::isfinite(v) && v > 0) hf.set_world_size(v);
   }
   hf.set_georef(std::move(g));
   return hf;

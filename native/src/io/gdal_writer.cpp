@@ -3,6 +3,7 @@
 // driver writes into /vsimem/ and the finished bytes go to disk through
 // write_file_atomically, so a failure never leaves a partial file.
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string_view>
@@ -40,9 +41,17 @@ void write_cog(const Heightfield& hf, const std::string& path) {
                    const_cast<float*>(hf.data()), hf.width(), hf.height(), GDT_Float32, 0, 0) != CE_None)
     session.fail(FT_ERR_INTERNAL, "cannot copy the heightfield for GDAL");
   const GeoReference& g = hf.georef();
-  if (g.has_transform) gdal().GDALSetGeoTransform(src.get(), const_cast<double*>(g.transform.data()));
+  if (g.has_transform) {
+    gdal().GDALSetGeoTransform(src.get(), const_cast<double*>(g.transform.data()));
+  } else if (hf.world_size() > 0 && hf.width() > 1) {
+    // North up, sample (0, 0) centred on the origin: a tile set's frame
+    // (tile_geotransform), so the whole and its tiles overlay in a GIS.
+    const double s = hf.world_size() / (hf.width() - 1);
+    std::array<double, 6> t = {-0.5 * s, s, 0.0, 0.5 * s, 0.0, -s};
+    gdal().GDALSetGeoTransform(src.get(), t.data());
+  }
   if (!g.crs_wkt.empty()) gdal().GDALSetProjection(src.get(), g.crs_wkt.c_str());
-  if (g.empty() && hf.world_size() > 0)
+  if (g.crs_wkt.empty() && hf.world_size() > 0)
     gdal().GDALSetMetadataItem(src.get(), "FRACTERRA_WORLD_SIZE", format_number(hf.world_size()).c_str(), nullptr);
   gdal().GDALSetMetadataItem(src.get(), "TIFFTAG_SOFTWARE", "fracterra", nullptr);
 

@@ -85,7 +85,7 @@ Rules rules_of(const SplatInputs& in, const ft_splat_params* given, int32_t n) {
   const Heightfield& hf = *in.terrain;
   check_map("deposited", in.deposited, hf);
   check_map("drainage_area", in.drainage_area, hf);
-  Rules r{in, std::vector<ft_splat_params>(static_cast<size_t>(n))};
+  Rules r{in, std::vector<ft_splat_params>(static_cast<size_t>(n)), {}};
   for (int32_t k = 0; k < n; ++k) {
     r.layers[size_t(k)] = upgraded(splat_param_table(), given[k]);
     r.log_flow_min.push_back(std::log10(r.layers[size_t(k)].flow_min));

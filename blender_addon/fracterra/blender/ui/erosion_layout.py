@@ -18,7 +18,7 @@ from ..common.widgets import draw_setting
 # What a preset sets (core.erosion.PRESET_FIELDS without the extra pass counts):
 # Duration in the box, the model's rates under Advanced, in the order drawn.
 MAIN = ("strength", "duration")
-ADVANCED = ("erodibility", "area_exponent", "diffusion", "deposition", "talus_degrees", "rainfall")
+ADVANCED = ("erodibility", "area_exponent", "diffusion", "deposition", "talus_degrees", "scree_years", "rainfall")
 SET_BY_PRESET = tuple(name for name in erosion.PRESET_FIELDS if name not in erosion.COUNTS)
 # Where the Advanced fold's state lives: on the window manager, so opening it
 # is no setting of the terrain (no undo step, no rebuild from the sidebar).
