@@ -4,7 +4,7 @@
 find_program(FT_BLENDER blender)
 if(FT_BLENDER)
   set(FT_BLENDER_ZIP ${PROJECT_BINARY_DIR}/blender_addon/fracterra.zip)
-  foreach(name addon missing_library params dem tiles erosion pov_export preview rivers planet splat_material
+  foreach(name addon missing_library params dem tiles erosion pov_export preview rivers river_render planet splat_material
                children without_gdal)
     set(scratch ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_${name})
     add_test(NAME blender_${name}
@@ -16,7 +16,7 @@ if(FT_BLENDER)
   endforeach()
   # The installed add-on must use its bundled library, except in the test of a missing one.
   set_tests_properties(blender_addon blender_params blender_dem blender_tiles blender_erosion blender_pov_export
-    blender_preview blender_rivers blender_planet blender_splat_material blender_children
+    blender_preview blender_rivers blender_river_render blender_planet blender_splat_material blender_children
     PROPERTIES ENVIRONMENT_MODIFICATION "FRACTERRA_LIBRARY=unset:")
   # COST: about 30 s in a CI run, so a clean clone's ctest starts it early.
   set_tests_properties(blender_pov_export PROPERTIES COST 12)
@@ -42,6 +42,7 @@ if(FT_BLENDER)
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_pov_export
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_preview
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_rivers
+            ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_river_render
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_planet
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_splat_material
             ${CMAKE_CURRENT_BINARY_DIR}/blender_user_scripts_children

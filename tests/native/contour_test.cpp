@@ -18,6 +18,7 @@
 #include "analysis/box_counting.hpp"
 #include "analysis/quantile.hpp"
 #include "contour/marching_squares.hpp"
+#include "contour/ribbon_clip.hpp"
 #include "core/error.hpp"
 #include "io/heightfield_io.hpp"
 #include "io/polyline_io.hpp"
@@ -200,6 +201,74 @@ analysis::BoxCountOptions coastline_boxes() {
   analysis::BoxCountOptions o;
   o.min_size = 4;
   return o;
+}
+
+PolylineSet one_line(const std::vector<Vec3>& pts, double r) {
+  PolylineSet s;
+  for (const Vec3& p : pts) s.add(p, r);
+  s.end_line();
+  return s;
+}
+
+void add_ring(PolylineSet& rings, const std::vector<std::array<double, 2>>& xy) {
+  for (const auto& [x, y] : xy) rings.add({x, y, 0.0});
+  rings.end_line();
+}
+
+TEST(RibbonClip, ALineAcrossALakeEndsWhereItsRibbonReachesTheShore) {
+  // A river 1 wide (radius 0.5) along y = 0.5 through a square lake [4, 6] x [2, 3]
+  // whose near corner lies 1.5 off the line: its ribbon (|y - 0.5| <= 0.5) misses it;
+  // through [4, 6] x [0.8, 3] it is cut from x = 4 to 6 (the ribbon's flat end
+  // square to the flow reaches the shore there, its centre 0.3 off the water).
+  PolylineSet lake;
+  add_ring(lake, {{4, 2}, {6, 2}, {6, 3}, {4, 3}});
+  const PolylineSet line = one_line({{0, 0.5, 1.0}, {10, 0.5, 0.0}}, 0.5);
+  const PolylineSet missed = contour::clip_ribbons(line, lake, 0.3);
+  ASSERT_EQ(missed.line_count(), 1);
+  EXPECT_EQ(missed.points, line.points);
+  PolylineSet near;
+  add_ring(near, {{4, 0.8}, {6, 0.8}, {6, 3}, {4, 3}});
+  const PolylineSet cut = contour::clip_ribbons(line, near, 0.3);
+  // The line falls 1 over 10: its cross-section leans along it, its top 0.3 r
+  // sin(slope) ahead, so the cut comes that much sooner (and later past the lake).
+  const double lean = 0.3 * 0.5 / std::sqrt(101.0);
+  ASSERT_EQ(cut.line_count(), 2);
+  ASSERT_EQ(cut.vertex_count(), 4);
+  EXPECT_NEAR(cut.points[1][0], 4.0 - lean, 1e-12);
+  EXPECT_NEAR(cut.points[1][2], 1.0 - (4.0 - lean) / 10, 1e-12);  // z interpolated
+  EXPECT_NEAR(cut.points[2][0], 6.0 + lean, 1e-12);
+  EXPECT_EQ(cut.points[3], line.points[1]);
+  EXPECT_EQ(cut.radii, std::vector<double>(4, 0.5));
+}
+
+TEST(RibbonClip, AnObliqueShoreCutsWhereTheRibbonsCornerTouchesAndIslandsAreDry) {
+  // The shore x + y = 6 (the lake beyond it): the ribbon's cross-section at x reaches
+  // y = 1 at its upper corner, so it ends at x = 5 (its centre 0.5 from the shore
+  // along the flow, 0.35 across it).
+  PolylineSet lake;
+  add_ring(lake, {{6, 0}, {20, 0}, {20, 20}, {-14, 20}});
+  const PolylineSet cut = contour::clip_ribbons(one_line({{0, 0.5, 0}, {10, 0.5, 0}}, 0.5), lake, 0.3);
+  ASSERT_EQ(cut.line_count(), 1);
+  EXPECT_NEAR(cut.points.back()[0], 5.0, 1e-12);
+  // An island [2, 8] x [-3, 3] in a lake [-10, 20] x [-10, 10]: the ribbon runs on
+  // the island from shore to shore, x in [2, 8], and nowhere else.
+  PolylineSet rings;
+  add_ring(rings, {{-10, -10}, {20, -10}, {20, 10}, {-10, 10}});
+  add_ring(rings, {{2, -3}, {8, -3}, {8, 3}, {2, 3}});
+  const PolylineSet island = contour::clip_ribbons(one_line({{0, 0, 0}, {10, 0, 0}}, 0.5), rings, 0.3);
+  ASSERT_EQ(island.line_count(), 1);
+  EXPECT_NEAR(island.points.front()[0], 2.0, 1e-12);
+  EXPECT_NEAR(island.points.back()[0], 8.0, 1e-12);
+  // Where a line turns, its ribbon sweeps a disc of its radius about the point: the
+  // turn at (5, 2) under a shore at y = 2.48 ends a part there (the disc reaches
+  // y = 2.5), though each edge's own band stays dry (up to y = 2.464).
+  PolylineSet shore;
+  add_ring(shore, {{-10, 2.48}, {20, 2.48}, {20, 10}, {-10, 10}});
+  const PolylineSet turn = contour::clip_ribbons(one_line({{0, 0, 0}, {5, 2, 0}, {10, 0, 0}}, 0.5), shore, 0.3);
+  ASSERT_EQ(turn.line_count(), 2);
+  EXPECT_EQ(turn.vertex_count(), 4);
+  EXPECT_EQ(turn.points[1], (Vec3{5, 2, 0}));
+  EXPECT_EQ(turn.points[2], (Vec3{5, 2, 0}));
 }
 
 TEST(CoastlineDimension, MedianLevelSetOfMidpointTerrainsHasDimensionTwoMinusH) {

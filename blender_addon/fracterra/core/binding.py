@@ -347,6 +347,8 @@ SIGNATURES = {
     # (ABI 2.27) the minimum water depth it was traced with (0 given: 1% of the relief).
     "ft_river_network_min_depth": (c_int32, [c_void_p, _F64P]),
     "ft_river_network_water_mask": (c_int32, [c_void_p, POINTER(c_int32), c_int64]),
+    # (ABI 2.28) the rivers as drawn: cut where a ribbon would reach into a lake.
+    "ft_river_network_ribbon_lines": (c_int32, [c_void_p, POINTER(c_void_p)]),
     "ft_rivers_carve": (c_int32, [_HF, c_void_p, POINTER(_HF)]),
     # planet.h (ABI 2.18): fractal planets; heightfields, or meshes into caller-allocated arrays.
     "ft_planet_params_init": (c_int32, [_Described("planet")]),

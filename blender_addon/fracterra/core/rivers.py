@@ -51,6 +51,14 @@ class RiverNetwork(LibraryHandle):
         self._lib.check(self._lib.ft_river_network_polylines(self.handle, byref(out)))
         return Polylines(out)
 
+    def ribbon_lines(self):
+        """The rivers as drawn (ABI 2.28): each segment's line cut where its ribbon (half
+        width to each side, flat ends) would reach into a lake's shoreline, each part a
+        polyline of its own; a new Polylines. polylines() keeps the whole lines."""
+        out = c_void_p()
+        self._lib.check(self._lib.ft_river_network_ribbon_lines(self.handle, byref(out)))
+        return Polylines(out)
+
     def segments(self):
         n = self.segment_count
         out = (RiverSegment * n)()
@@ -93,7 +101,9 @@ class WaterArrays:
 
     xyz (n, 3) float64 world units (x = column x spacing, y = row x spacing,
     z = water surface), radii (n,) half widths, offsets (segments + 1,),
-    orders (segments,) Strahler orders; mask (ny, nx) int32: a lake's index,
+    orders (segments,) Strahler orders; ribbon_xyz, ribbon_radii, ribbon_offsets:
+    the same lines as drawn, cut where a ribbon would reach into a lake (one
+    line or more per segment, or none); mask (ny, nx) int32: a lake's index,
     LAND or SEA; levels (lakes,) each lake's water level; spacing; min_depth:
     water shallower than this is not drawn (world units)."""
 
@@ -103,6 +113,10 @@ class WaterArrays:
             self.xyz = np.asarray(pl.xyz(), dtype=np.float64).reshape(-1, 3)
             self.radii = np.asarray(pl.radii(), dtype=np.float64)
             self.offsets = np.asarray(pl.offsets(), dtype=np.int64)
+        with net.ribbon_lines() as pl:
+            self.ribbon_xyz = np.asarray(pl.xyz(), dtype=np.float64).reshape(-1, 3)
+            self.ribbon_radii = np.asarray(pl.radii(), dtype=np.float64)
+            self.ribbon_offsets = np.asarray(pl.offsets(), dtype=np.int64)
         self.orders = np.array([s.order for s in net.segments()], dtype=np.int32)
         self.levels = np.array([lake.level for lake in net.lakes()], dtype=np.float64)
         self.spacing = spacing

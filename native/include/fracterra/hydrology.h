@@ -124,12 +124,20 @@ FT_API ft_status ft_river_network_min_depth(const ft_river_network* net, double*
 /// Lake shorelines (closed rings, world units, z = the level, where the ground lies
 /// min_depth under it); free with ft_polylines_free.
 FT_API ft_status ft_river_network_lake_rings(const ft_river_network* net, ft_polylines** out);
+/// The rivers as drawn (ABI 2.28): the network's lines cut where a river's ribbon (its
+/// half width to each side, square to the flow, flat at its ends) would reach into a
+/// lake's shoreline rings, each part a line of its own; radius = half width. Render
+/// geometry: ft_river_network_polylines keeps the whole lines, through the lakes.
+/// Free with ft_polylines_free.
+FT_API ft_status ft_river_network_ribbon_lines(const ft_river_network* net, ft_polylines** out);
 /// Per cell: the lake index, -1 land, -2 sea (count = width x height). A lake's cells are
 /// all its level floods; its rings enclose those deeper than min_depth.
 FT_API ft_status ft_river_network_water_mask(const ft_river_network* net, int32_t* out, int64_t count);
 /// The terrain lowered along each river to its depth over its width (a smooth
-/// cos^2 profile under the water surface), never below the sea's level (2.27);
-/// lakes and sea are left as they are.
+/// cos^2 profile under the water surface), and under the river's ribbon (0.3 x its
+/// width high, centred on the water) to 0.3 x its half width under the water, so
+/// the ribbon stands clear of the ground's triangles (2.28); never below the sea's
+/// level (2.27); lakes and sea are left as they are.
 FT_API ft_status ft_rivers_carve(const ft_heightfield* terrain, const ft_river_network* net, ft_heightfield** out);
 /// Measures of a network (ABI 2.27), as `fracterra rivers --stats` and `analyze --rivers` report
 /// them: Horton's ratios over its Strahler streams, drainage density, Hack's h.

@@ -6,6 +6,7 @@
 
 #include "capi/guard.hpp"
 #include "capi/handles.hpp"
+#include "contour/ribbon_clip.hpp"
 #include "fracterra/fracterra.h"
 #include "hydrology/hydrology.hpp"
 #include "hydrology/hydrology_params.hpp"
@@ -133,6 +134,16 @@ FT_API ft_status ft_river_network_lake_rings(const ft_river_network* net, ft_pol
     ft::check_not_null("net", net);
     auto h = std::make_unique<ft_polylines>();
     h->set = net->net.lake_rings;
+    *out = h.release();
+  });
+}
+
+FT_API ft_status ft_river_network_ribbon_lines(const ft_river_network* net, ft_polylines** out) {
+  return guarded([&] {
+    ft::capi::reset_out(out);
+    ft::check_not_null("net", net);
+    auto h = std::make_unique<ft_polylines>();
+    h->set = ft::contour::clip_ribbons(net->net.lines, net->net.lake_rings, ft::hydrology::kRibbonFlat);
     *out = h.release();
   });
 }

@@ -51,6 +51,12 @@ struct HydrologyConfig {
 // The minimum water depth with min_depth = 0: this share of the relief.
 inline constexpr double kAutoDepth = 0.01;
 
+// A river drawn as a ribbon (Blender's river curve, the POV-Ray scenes'
+// ribbons): a flat ellipse as wide as the river and this fraction of that
+// high, centred on the water surface. carve() keeps the ground under it
+// this fraction of the half width under the water, so its top stands clear.
+inline constexpr double kRibbonFlat = 0.3;
+
 // Per cell: kLand, kSea, or the index of a lake (>= 0).
 inline constexpr int32_t kLand = -1, kSea = -2;
 
@@ -153,9 +159,12 @@ double surface_at(const erosion::D8Grid& g, const std::vector<float>& level, dou
 
 // The terrain lowered along the rivers: under each river vertex's surface by
 // its depth x cos^2(pi r / 2) at r = distance / half width (half width at
-// least 0.75 spacing, so a narrow river still has a bed), never below the
-// sea's level (net.water.sea_level; a bed that reached it would be sea);
-// lake and sea cells keep their heights.
+// least 0.75 spacing, so a narrow river still has a bed), and every corner of
+// a grid cell the river's ribbon covers (its half width around the line) to
+// kRibbonFlat x the half width under the segment's water surface extended
+// along it, so the ground's triangles lie that far under the whole ribbon; never
+// below the sea's level (net.water.sea_level; a bed that reached it would be
+// sea); lake and sea cells keep their heights.
 Heightfield carve(const Heightfield& terrain, const RiverNetwork& net);
 
 }  // namespace ft::hydrology

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Water in a scene: rivers as ribbons in their beds (river_ribbons.hpp) and
-// lakes as thin prisms cut to their shorelines, in ft_water.inc's material.
+// Water in a scene: rivers as ribbons in their beds (river_ribbons.hpp), cut
+// at the lakes' shorelines (contour/ribbon_clip.hpp), and lakes as thin
+// prisms cut to their shorelines, in ft_water.inc's material.
 #include <algorithm>
 
+#include "contour/ribbon_clip.hpp"
 #include "povray/scene_stages.hpp"
 #include "povray/river_ribbons.hpp"
 #include "povray/sdl_writer.hpp"
@@ -11,7 +13,7 @@ namespace ft::pov::detail {
 namespace {
 
 // The river's cross-section: as high as this fraction of its width
-// (Blender's RIVER_FLAT, ft_water.inc's FT_River_Flat), and the ring's
+// (Blender's RIVER_FLAT, ft_water.inc's FT_River_Flat, hydrology::kRibbonFlat), and the ring's
 // vertices (the ellipse's widest and highest points among them).
 constexpr double kRiverFlat = 0.3;
 constexpr int kRibbonSides = 8;
@@ -27,7 +29,21 @@ std::string rivers_sdl(const SceneContext& c) {
   PolylineSet rivers = *p.rivers;
   if (!p.scene_light)
     for (double& r : rivers.radii) r = std::max(r, floor);
-  const Mesh ribbons = river_ribbons(rivers, kRiverFlat, kRibbonSides, floor);
+  // A ribbon over a lake would stand its height over the lake's surface (a
+  // dark patch where a wide river joins two lakes): the rivers end where
+  // their ribbons reach a shoreline and start again past it.
+  PolylineSet shores;
+  for (const SceneLake& lake : p.lakes)
+    for (const auto& ring : lake.rings) {
+      for (const Vec3& q : ring) shores.add(q);
+      shores.end_line();
+    }
+  // The ribbon's height is a height: scaled with the terrain's (at the demo's
+  // vertical scale 0.12 a ribbon 0.3 x its width high stood 8 times as high
+  // over its bed as in the terrain's own frame, a wall over the lakes).
+  const double flat = kRiverFlat * p.vertical_scale;
+  if (shores.line_count() > 0) rivers = contour::clip_ribbons(rivers, shores, flat);
+  const Mesh ribbons = river_ribbons(rivers, flat, kRibbonSides, floor);
   if (ribbons.face_count() == 0) return "";
   return "// rivers: " + std::to_string(p.rivers->line_count()) + " segments, ribbons as wide as the rivers" +
          (p.scene_light ? std::string() : ", at least " + number(2 * floor)) + "\n" +

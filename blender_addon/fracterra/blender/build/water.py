@@ -2,9 +2,10 @@
 """Rivers and Lakes of a terrain object: the library's network (core.rivers.
 WaterArrays, traced by the pipeline's last stage) as Blender objects parented
 to the terrain, in its local frame:
-    Rivers  one curve, a POLY spline per river segment, each point's radius half
-            the river's width; its bevel is a flat ellipse (a ribbon in the bed,
-            not a pipe on the land), so the width follows the discharge;
+    Rivers  one curve, a POLY spline per river segment (cut where its ribbon
+            would reach into a lake: one spline per part), each point's radius
+            half the river's width; its bevel is a flat ellipse (a ribbon in the
+            bed, not a pipe on the land), so the width follows the discharge;
     Lakes   one flat mesh: the grid cells of each lake at its level, cut to
             where the water is deeper than the network's minimum depth (1% of
             the relief by default), so no water lies flush with the ground;
@@ -143,10 +144,12 @@ def _rivers(terrain, water, frame, collection):
     curve = bpy.data.curves.new(f"{terrain.name} Rivers", "CURVE")
     curve.dimensions = "3D"
     curve.twist_mode = "Z_UP"  # the ribbon stays level across the valley
-    x, y = frame.xy(water.xyz[:, 0], water.xyz[:, 1])
-    co = np.stack([x, y, water.xyz[:, 2], np.ones(len(x))], axis=1).astype(np.float32)
-    radii = (water.radii * frame.kx).astype(np.float32)
-    for a, b in zip(water.offsets[:-1], water.offsets[1:]):
+    # The lines as drawn: a ribbon over a lake would stand its height over the lake's surface.
+    xyz = water.ribbon_xyz
+    x, y = frame.xy(xyz[:, 0], xyz[:, 1])
+    co = np.stack([x, y, xyz[:, 2], np.ones(len(x))], axis=1).astype(np.float32)
+    radii = (water.ribbon_radii * frame.kx).astype(np.float32)
+    for a, b in zip(water.ribbon_offsets[:-1], water.ribbon_offsets[1:]):
         if b - a < 2:
             continue
         spline = curve.splines.new("POLY")
