@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "erosion/block_drainage.hpp"
 #include "erosion/erosion.hpp"
 #include "erosion/erosion_params.hpp"
 #include "erosion/landscape_window.hpp"
@@ -173,7 +174,9 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
     lifted = uplift_per_step(g, in.data(), c.fluvial);
     for (float& v : lifted) v *= float(c.fluvial.steps);
   }
-  if (model > 0) run(model, [&](const Progress& p) { landscape(g, in.data(), out.data(), c, level, budget, p); });
+  LandscapeModel lm;
+  lm.g = g, lm.g.sea = nullptr, lm.sea_level = level;  // (the model's, when it runs)
+  if (model > 0) run(model, [&](const Progress& p) { landscape(g, in.data(), out.data(), c, level, budget, p, &lm); });
   if (c.fluvial.steps > 0)
     run(c.fluvial.steps * 20.0, [&](const Progress& p) { fluvial(g, out.data(), c.fluvial, p); });
   if (c.hydraulic.iterations > 0)
@@ -183,7 +186,13 @@ Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* ma
   if (c.thermal.iterations > 0)
     run(c.thermal.iterations, [&](const Progress& p) { thermal(g, out.data(), c.thermal, p); });
   keep_sea();
-  if (maps) run(maps_cost, [&](const Progress& p) { erosion_maps(g, in.data(), out.data(), lifted, *maps, p); });
+  if (maps)
+    run(maps_cost, [&](const Progress& p) {
+      // A large terrain drains by pieces, as its windows do (block_drainage.hpp).
+      if (!drains_by_blocks(g)) return erosion_maps(g, in.data(), out.data(), lifted, *maps, p);
+      const CoarseFlow coarse = coarse_flow(lm, ArraySource(g, out.data()), g.spacing);
+      erosion_maps(g, in.data(), out.data(), lifted, *maps, p, &coarse);
+    });
   c.progress.report(1.0);
   return out;
 }

@@ -157,8 +157,10 @@ std::vector<float> resample_map(const MapInput& m, int32_t width, int32_t height
 // g.size(); they may not overlap), coarse to fine (landscape.cpp,
 // landscape_window.hpp), the samples at or below `sea_level` (NaN: none)
 // kept as the sea. `budget` may be null.
+// `model` (may be null) receives the model's run (landscape_window.hpp).
+struct LandscapeModel;
 void landscape(const D8Grid& g, const float* in, float* out, const ErosionConfig& c, double sea_level,
-               MassBudget* budget, const Progress& progress);
+               MassBudget* budget, const Progress& progress, LandscapeModel* model = nullptr);
 
 // The processes one by one, in place. `budget` may be null.
 void fluvial(const D8Grid& g, float* z, const FluvialConfig& c, const Progress& progress);
@@ -187,7 +189,9 @@ struct DrainageSurface {
   int32_t sink = -1;  // a torus's outlet (periodic_sink), else -1
   FlatGrading flats;
 };
-DrainageSurface drainage_surface(const D8Grid& g, const float* out, const Progress& progress = Progress());
+// `frame` (may be null): g is a rectangle of frame->whole (resolve_flats).
+DrainageSurface drainage_surface(const D8Grid& g, const float* out, const Progress& progress = Progress(),
+                                 const FlatFrame* frame = nullptr);
 
 // The maps' drainage area of `out` (world units^2, as float) into
 // `area_out` (g's size; it may be `out`): multiple flow over
@@ -206,9 +210,11 @@ void depth_maps(const float* in, const float* out, const std::vector<float>& lif
 // `lifted` (the uplift the run added to each cell; empty: none), into
 // `maps` (allocated, of the grid's size; water_depth is left as it is). The
 // same bits on any thread count. `progress` rises in steps of at most about
-// a 30th of it; a cancel stops it (FT_ERR_CANCELLED).
+// a 30th of it; a cancel stops it (FT_ERR_CANCELLED). With `coarse` (may be
+// null) the drainage area is by pieces (block_drainage.hpp), else of the whole.
+struct CoarseFlow;
 void erosion_maps(const D8Grid& g, const float* in, const float* out, const std::vector<float>& lifted,
-                  ErosionMaps& maps, const Progress& progress);
+                  ErosionMaps& maps, const Progress& progress, const CoarseFlow* coarse = nullptr);
 
 // The whole pipeline: returns the eroded terrain; fills `maps` if not null.
 Heightfield erode(const Heightfield& in, const ErosionConfig& c, ErosionMaps* maps, MassBudget* budget = nullptr);

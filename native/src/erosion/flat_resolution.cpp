@@ -96,7 +96,8 @@ void passage_times(const D8Grid& g, const FlatGrading& flats, const std::vector<
 
 }  // namespace
 
-void resolve_flats(const D8Grid& g, const float* z, int32_t sink, FlatGrading& flats, const Progress& progress) {
+void resolve_flats(const D8Grid& g, const float* z, int32_t sink, FlatGrading& flats, const Progress& progress,
+                   const FlatFrame* frame) {
   const size_t n = g.size();
   const Neighbours nbr(g);
   Buffer<uint8_t> flat(n);  // 1 on a flat
@@ -166,7 +167,10 @@ void resolve_flats(const D8Grid& g, const float* z, int32_t sink, FlatGrading& f
     std::vector<float> u(size_t(g.width));
 #pragma omp for schedule(static)
     for (int32_t y = 0; y < g.height; ++y) {
-      draw_row_uniforms(g, g.periodic ? sink : -1, 0, Stream::kFlatRouting, y, u.data());
+      if (frame)
+        draw_uniforms_at(frame->whole, 0, 0, 0, Stream::kFlatRouting, frame->y0 + y, frame->x0, g.width, u.data());
+      else
+        draw_row_uniforms(g, g.periodic ? sink : -1, 0, Stream::kFlatRouting, y, u.data());
       int32_t* word = flats.key.data() + int64_t(y) * g.width;
       for (int32_t x = 0; x < g.width; ++x)
         word[x] = (kFar << kFactorBits) | int32_t(u[size_t(x)] * float(1 << kFactorBits));

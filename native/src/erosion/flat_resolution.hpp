@@ -52,7 +52,14 @@ struct FlatGrading {
 // `sink` on a torus, so a shifted torus grades alike). One serial search in
 // a fixed order: the same bits on any thread count. `progress` hears the
 // share done, every 64th of the grid at most; a cancel stops it.
+// With `frame` (may be null) g is a rectangle of a larger grid and draws
+// the numbers of its cells' positions there (frame->x0 + x, frame->y0 + y
+// in frame->whole), so that overlapping rectangles grade a shared flat alike.
+struct FlatFrame {
+  D8Grid whole;
+  int64_t x0 = 0, y0 = 0;
+};
 void resolve_flats(const D8Grid& g, const float* z, int32_t sink, FlatGrading& flats,
-                   const Progress& progress = Progress());
+                   const Progress& progress = Progress(), const FlatFrame* frame = nullptr);
 
 }  // namespace ft::erosion

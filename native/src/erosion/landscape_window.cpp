@@ -117,6 +117,43 @@ void ArraySource::read_subgrid(int32_t step, int32_t w, int32_t h, float* out) c
     for (int32_t i = 0; i < w; ++i) out[size_t(j) * w + i] = z_[size_t(j) * step * g_.width + size_t(i) * step];
 }
 
+void coarse_input(const D8Grid& g, const HeightSource& src, double sea_level, LandscapeModel& m) {
+  const int32_t edge = g.periodic ? 0 : 1;
+  const int32_t side = std::max(g.width, g.height) - edge;
+  const double factor = double(side) / kModelCells;
+  D8Grid& coarse = m.coarse;
+  coarse = g;
+  coarse.sea = nullptr;
+  coarse.width = std::max(3, int32_t(std::lround((g.width - edge) / factor)) + edge);
+  coarse.height = std::max(3, int32_t(std::lround((g.height - edge) / factor)) + edge);
+  coarse.spacing = g.spacing * double(g.width - edge) / (coarse.width - edge);
+  m.step = subgrid_step(g, factor);
+  m.radius = int32_t(factor / 2) / m.step;
+  D8Grid& sub = m.sub;
+  sub = g;
+  sub.sea = nullptr;
+  sub.width = (g.width - edge) / m.step + edge;
+  sub.height = (g.height - edge) / m.step + edge;
+  sub.spacing = g.spacing * m.step;
+  std::vector<float> z(sub.size());
+  src.read_subgrid(m.step, sub.width, sub.height, z.data());
+  m.top = *std::max_element(z.begin(), z.end());
+  m.before = resample(box_mean(z.data(), sub, m.radius).data(), sub, coarse);
+  // The model's sea: its cells whose nearest subgrid sample is sea (their
+  // averaged heights mix in the coast, so the level would miss them).
+  m.coarse_sea.clear();
+  if (!std::isnan(sea_level)) {
+    m.coarse_sea.resize(coarse.size());
+    const double sx = double(sub.width - edge) / (coarse.width - edge), sy = double(sub.height - edge) / (coarse.height - edge);
+    for (int32_t y = 0; y < coarse.height; ++y)
+      for (int32_t x = 0; x < coarse.width; ++x) {
+        const int32_t fx = std::min(int32_t(std::lround(x * sx)), sub.width - 1);
+        const int32_t fy = std::min(int32_t(std::lround(y * sy)), sub.height - 1);
+        m.coarse_sea[size_t(y) * coarse.width + x] = in_sea(z[size_t(fy) * sub.width + fx], sea_level);
+      }
+  }
+}
+
 LandscapeModel landscape_model(const D8Grid& g, const HeightSource& src, const ErosionConfig& c, double sea_level,
                                MassBudget* budget, const Progress& progress) {
   LandscapeModel m;
@@ -156,36 +193,10 @@ LandscapeModel landscape_model(const D8Grid& g, const HeightSource& src, const E
   }
   m.coarse_to_fine = true;
   const double factor = double(side) / kModelCells;
-  D8Grid& coarse = m.coarse;
-  coarse = m.g;
-  coarse.width = std::max(3, int32_t(std::lround((g.width - edge) / factor)) + edge);
-  coarse.height = std::max(3, int32_t(std::lround((g.height - edge) / factor)) + edge);
-  coarse.spacing = g.spacing * double(g.width - edge) / (coarse.width - edge);
-  m.step = subgrid_step(g, factor);
-  m.radius = int32_t(factor / 2) / m.step;
-  D8Grid& sub = m.sub;
-  sub = m.g;
-  sub.width = (g.width - edge) / m.step + edge;
-  sub.height = (g.height - edge) / m.step + edge;
-  sub.spacing = g.spacing * m.step;
-  std::vector<float> z(sub.size());
-  src.read_subgrid(m.step, sub.width, sub.height, z.data());
-  m.top = *std::max_element(z.begin(), z.end());
+  coarse_input(g, src, sea_level, m);
   progress.report(0.05);
-  m.before = resample(box_mean(z.data(), sub, m.radius).data(), sub, coarse);
-  // The model's sea: its cells whose nearest subgrid sample is sea (their
-  // averaged heights mix in the coast, so the level would miss them).
-  std::vector<uint8_t> coarse_sea;
-  if (sea) {
-    coarse_sea.resize(coarse.size());
-    const double sx = double(sub.width - edge) / (coarse.width - edge), sy = double(sub.height - edge) / (coarse.height - edge);
-    for (int32_t y = 0; y < coarse.height; ++y)
-      for (int32_t x = 0; x < coarse.width; ++x) {
-        const int32_t fx = std::min(int32_t(std::lround(x * sx)), sub.width - 1);
-        const int32_t fy = std::min(int32_t(std::lround(y * sy)), sub.height - 1);
-        coarse_sea[size_t(y) * coarse.width + x] = in_sea(z[size_t(fy) * sub.width + fx], sea_level);
-      }
-  }
+  const D8Grid& coarse = m.coarse;
+  const std::vector<uint8_t>& coarse_sea = m.coarse_sea;
   D8Grid run_grid = coarse;
   run_grid.sea = sea ? coarse_sea.data() : nullptr;
   const std::vector<float> coarse_mask = resample_map(c.erosion_mask, coarse.width, coarse.height);
@@ -374,10 +385,10 @@ void landscape_window(const LandscapeModel& m, const HeightSource& src, const Er
 }
 
 void landscape(const D8Grid& g, const float* in, float* out, const ErosionConfig& c, double sea_level, MassBudget* budget,
-               const Progress& progress) {
+               const Progress& progress, LandscapeModel* model) {
   const ArraySource src(g, in);
   const ProgressPart model_part(progress, 0.0, 0.3);
-  const LandscapeModel m = landscape_model(g, src, c, sea_level, budget, model_part.progress());
+  LandscapeModel m = landscape_model(g, src, c, sea_level, budget, model_part.progress());
   // Bands of whole rows, each computed on itself grown by the reach, small
   // enough that a band's buffers take at most 72 bytes x
   // kRegionShare of the terrain's samples: the bits are the same for any cut.
@@ -389,6 +400,7 @@ void landscape(const D8Grid& g, const float* in, float* out, const ErosionConfig
     const ProgressPart part(progress, 0.3 + 0.7 * b / bands, 0.7 / bands);
     landscape_window(m, src, c, 0, y0, g.width, y1 - y0, out + size_t(y0) * g.width, part.progress());
   }
+  if (model) *model = std::move(m);
 }
 
 }  // namespace ft::erosion

@@ -49,11 +49,17 @@ struct LandscapeModel {
   D8Grid coarse, sub;    // the model's grid, and the subgrid of g it averages
   int32_t step = 1, radius = 0;  // the subgrid's step, the box mean's radius on it
   std::vector<float> before, change, crept;  // on the model's grid (crept: with a mask only)
+  std::vector<uint8_t> coarse_sea;           // on the model's grid: 1 per sea cell (empty: no sea)
   float top = 0;         // the subgrid's highest sample: no deposit rises above it
   double detail_years = 0;
   int32_t detail_steps = 0, reach = 0;  // the detail run's, and how far it reads
   int64_t origin_x = 0, origin_y = 0;   // Rho8's origin for the detail run
 };
+
+// The model's grids for terrain `src` on grid g (m's coarse, sub, step,
+// radius, top), its input `before` (the subgrid's box means on the model's
+// grid) and its sea `coarse_sea` at `sea_level` (NaN: none).
+void coarse_input(const D8Grid& g, const HeightSource& src, double sea_level, LandscapeModel& m);
 
 // The model for terrain `src` on grid g, eroded with c (its model settings,
 // mask and rain map) and a sea at `sea_level` (NaN: none). `budget` (may be
@@ -94,10 +100,12 @@ void erode_window(const LandscapeModel& m, const HeightSource& src, const Erosio
 // the same bits: slope and curvature of the eroded heights (on the whole's
 // grid spacing `spacing`, as erode's maps), eroded and deposited, water
 // depth (0: no hydraulic pass by windows) from the window grown by one
-// ring; the drainage area, which is global, from the whole eroded terrain,
-// computed here in bands of rows (the whole's heights, a byte a sample of
-// its sea, then the drainage's own buffers: the memory of the whole, about
-// 45 bytes a sample, unlike the heights'). Progress: c.progress.
+// ring; the drainage area, which is global: up to a side of
+// DrainageBlocks::whole_side from the whole eroded terrain, computed here
+// in bands of rows (the memory of the whole, about 45 bytes a sample);
+// beyond, by the pieces the window touches (block_drainage.hpp), from the
+// eroded terrain over their regions (the memory of the window grown by the
+// halo). Progress: c.progress.
 void erode_window_maps(const LandscapeModel& m, const HeightSource& src, const ErosionConfig& c, double spacing,
                        int64_t x0, int64_t y0, int32_t w, int32_t h, float* after, ErosionMaps& maps);
 

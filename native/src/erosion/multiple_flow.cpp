@@ -87,7 +87,7 @@ struct Setup {
 }  // namespace
 
 void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vector<double>& area,
-                        const Progress& progress, const FlatGrading* flats) {
+                        const Progress& progress, const FlatGrading* flats, const Inflow* inflow) {
   if (flats && flats->flat_cells == 0) flats = nullptr;  // (its arrays are empty then)
   const size_t n = g.size();
   const int32_t w = g.width, h = g.height;
@@ -200,6 +200,8 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
     }
     progress.report(kSetupShare * (band + 1) / kSetupBands);
   }
+  if (inflow)
+    for (const auto& [i, a] : *inflow) area[size_t(i)] += a;
 
   // Kahn's order, pulled: a cell is ready when its last higher giver is
   // done; it then takes from each higher giver, in neighbour order, the
@@ -318,6 +320,34 @@ void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vect
   }
   if (error) std::rethrow_exception(error);
   progress.report(1.0);
+}
+
+std::vector<std::array<double, 8>> multiple_flow_given(const D8Grid& g, const float* z, int32_t sink,
+                                                       const FlatGrading* flats, const std::vector<double>& area) {
+  if (flats && flats->flat_cells == 0) flats = nullptr;
+  std::vector<std::array<double, 8>> given(g.size());
+  double factor[8];
+  for (int k = 0; k < 8; ++k) factor[k] = kContour[k & 1] / g.distance(k);
+  for (int32_t y = 0; y < g.height; ++y)
+    for (int32_t x = 0; x < g.width; ++x) {
+      const size_t i = size_t(y) * g.width + x;
+      given[i].fill(0.0);
+      if (g.is_base(int32_t(i), x, y, sink)) continue;
+      // The shares as multiple_flow_area's setup and grading make them.
+      double share[8] = {}, total = 0.0;
+      for (int k = 0; k < 8; ++k) {
+        const int64_t j = g.neighbour(x, y, k);
+        if (j < 0) continue;
+        if (z[j] < z[i]) share[k] = factor[k] * (double(z[i]) - double(z[j]));
+        else if (flats && z[j] == z[i] && (flats->level[i] >> k & 1u) && flats->key[i] > 0 &&
+                 flats->key[j] < flats->key[i])
+          share[k] = factor[k] * double(flats->key[i] - flats->key[j]);
+        total += share[k];
+      }
+      if (total > 0)
+        for (int k = 0; k < 8; ++k) given[i][k] = area[i] / total * share[k];
+    }
+  return given;
 }
 
 }  // namespace ft::erosion

@@ -13,6 +13,9 @@
 // fans, and still gathers in valleys, whose sides all slope toward them.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/progress.hpp"
@@ -32,8 +35,19 @@ namespace ft::erosion {
 // cells, from the calling thread; a cancel stops it (FT_ERR_CANCELLED).
 // With `flats` (resolve_flats on `z`), `z` may hold flats: their cells give
 // to the neighbours of the same height whose key is lower, by the key's fall;
-// the other cells' shares are the heights' as without it.
+// the other cells' shares are the heights' as without it. `inflow` (may be
+// null) adds water from outside the grid: each (cell, area) adds the area
+// to that cell's own before it is passed on, in the list's order.
+using Inflow = std::vector<std::pair<int32_t, double>>;
 void multiple_flow_area(const D8Grid& g, const float* z, int32_t sink, std::vector<double>& area,
-                        const Progress& progress = Progress(), const FlatGrading* flats = nullptr);
+                        const Progress& progress = Progress(), const FlatGrading* flats = nullptr,
+                        const Inflow* inflow = nullptr);
+
+// What each cell gives each neighbour k (world units^2) by the rules of
+// multiple_flow_area, given its `area` on the same z, sink and flats: a
+// giver's area split by contour length times fall; 0 from base levels.
+// One serial pass, for small grids (the model's).
+std::vector<std::array<double, 8>> multiple_flow_given(const D8Grid& g, const float* z, int32_t sink,
+                                                       const FlatGrading* flats, const std::vector<double>& area);
 
 }  // namespace ft::erosion

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/buffer.hpp"
+#include "erosion/block_drainage.hpp"
 #include "erosion/erosion.hpp"
 #include "erosion/flat_resolution.hpp"
 #include "erosion/flow_graph.hpp"
@@ -49,7 +50,7 @@ void slope_curvature(const D8Grid& g, const float* z, float* slope, float* curva
   }
 }
 
-DrainageSurface drainage_surface(const D8Grid& g, const float* out, const Progress& progress) {
+DrainageSurface drainage_surface(const D8Grid& g, const float* out, const Progress& progress, const FlatFrame* frame) {
   const int64_t cells = int64_t(g.size());
   DrainageSurface s;
   s.z = Buffer<float>(g.size());
@@ -77,7 +78,7 @@ DrainageSurface drainage_surface(const D8Grid& g, const float* out, const Progre
     fill_closed_basins(g, z, s.sink, part.progress(), true);
   }
   const ProgressPart part(progress, kFillOfSurface, 1.0 - kFillOfSurface);
-  resolve_flats(g, z, s.sink, s.flats, part.progress());
+  resolve_flats(g, z, s.sink, s.flats, part.progress(), frame);
   return s;
 }
 
@@ -113,10 +114,11 @@ void depth_maps(const float* in, const float* out, const std::vector<float>& lif
 }
 
 void erosion_maps(const D8Grid& g, const float* in, const float* out, const std::vector<float>& lifted,
-                  ErosionMaps& maps, const Progress& progress) {
+                  ErosionMaps& maps, const Progress& progress, const CoarseFlow* coarse) {
   {
     const ProgressPart part(progress, 0.0, kAreaShare);
-    drainage_area_map(g, out, maps.drainage_area.data(), part.progress());
+    if (coarse) block_drainage_area(g, *coarse, out, maps.drainage_area.data(), part.progress());
+    else drainage_area_map(g, out, maps.drainage_area.data(), part.progress());
   }
   depth_maps(in, out, lifted, int64_t(g.size()), maps.eroded.data(), maps.deposited.data());
   progress.report(kDepthsShare);
