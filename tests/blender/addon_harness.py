@@ -12,8 +12,10 @@ or, in Blender 4.2+ after `blender --command extension install-file --repo user_
 import argparse
 import importlib
 import os
+import shutil
 import sys
 import unittest
+from pathlib import Path
 
 import addon_utils
 import bpy
@@ -41,6 +43,16 @@ def clear_scene():
         bpy.data.objects.remove(obj)
     for mesh in list(bpy.data.meshes):
         bpy.data.meshes.remove(mesh)
+
+
+def keep_renders(folder, keep, prefix=""):
+    """Copies a test's renders (folder's PNGs) into `keep` (a folder an environment variable
+    names; empty or None: none), each name after `prefix`, then removes folder."""
+    if keep:
+        os.makedirs(keep, exist_ok=True)
+        for f in Path(folder).glob("*.png"):
+            shutil.copy(f, Path(keep, prefix + f.name))
+    shutil.rmtree(folder)
 
 
 def submodule(name):

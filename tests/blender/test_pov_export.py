@@ -122,11 +122,7 @@ class PovExportMatchesBlender(unittest.TestCase):
         self.dir = Path(tempfile.mkdtemp())
 
     def tearDown(self):
-        if self.keep:
-            os.makedirs(self.keep, exist_ok=True)
-            for f in self.dir.glob("*.png"):
-                shutil.copy(f, Path(self.keep, f"{self._testMethodName}-{f.name}"))
-        shutil.rmtree(self.dir)
+        addon_harness.keep_renders(self.dir, self.keep, f"{self._testMethodName}-")
 
     def scene(self, resolution, camera_location, camera_rotation, lens=35.0, sensor_fit="AUTO", shift=(0.0, 0.0),
               terrain_matrix=None, **terrain):
@@ -373,11 +369,7 @@ class OneSceneTwoRenderers(unittest.TestCase):
         world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
 
     def tearDown(self):
-        if self.keep:
-            os.makedirs(self.keep, exist_ok=True)
-            for f in self.dir.glob("*.png"):
-                shutil.copy(f, Path(self.keep, f"{self._testMethodName}-{f.name}"))
-        shutil.rmtree(self.dir)
+        addon_harness.keep_renders(self.dir, self.keep, f"{self._testMethodName}-")
 
     def factory(self, kind):
         """The factory scene's light or camera object, back in the scene."""

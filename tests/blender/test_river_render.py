@@ -21,7 +21,6 @@ bend a chosen pixel may lie just off it, a few pixels a river.
 Set FT_RIVER_RENDER_OUT to a folder to keep the renders."""
 
 import os
-import shutil
 import sys
 import tempfile
 import unittest
@@ -124,11 +123,7 @@ class RiversShowInSolidView(unittest.TestCase):
         self.keep = os.environ.get("FT_RIVER_RENDER_OUT")
 
     def tearDown(self):
-        if self.keep:
-            os.makedirs(self.keep, exist_ok=True)
-            for f in self.dir.glob("*.png"):
-                shutil.copy(f, Path(self.keep, f.name))
-        shutil.rmtree(self.dir)
+        addon_harness.keep_renders(self.dir, self.keep)
 
     def coverage(self, seed, levels):
         args = {"seed": seed, "rivers": True} | ({"levels": levels} if levels else {})

@@ -224,11 +224,7 @@ class BlenderAndPovRayLookAlike(unittest.TestCase):
         self.dir = Path(tempfile.mkdtemp())
 
     def tearDown(self):
-        if self.keep:
-            os.makedirs(self.keep, exist_ok=True)
-            for f in self.dir.glob("*.png"):
-                shutil.copy(f, Path(self.keep, f.name))
-        shutil.rmtree(self.dir)
+        addon_harness.keep_renders(self.dir, self.keep)
 
     def test_block_colours_agree(self):
         """An eroded terrain seen obliquely at 128 x 96 in Workbench (flat: the
