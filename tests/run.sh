@@ -77,8 +77,9 @@ prefetch=$!
 # leave a core idle much of the time, which the Release build takes. The
 # Linux build's add-on zip and wheels carry its fracterra.dll, and its ctest
 # runs the Windows programs under Wine (tests/windows, docs/windows.md): so
-# once both are done, the Release build runs again, configure finds the DLL,
-# and only the packages are made again. FT_WINDOWS=0 leaves it out (its
+# the Release build leaves the packages out (-DFT_PACKAGES=OFF), and once
+# both are done it runs again, configure finds the DLL, and only the packages
+# are made. FT_WINDOWS=0 leaves it out (its
 # tests then skip, saying why).
 if [ "$windows" != 0 ]; then
   stage "Windows build (mingw-w64), beside the Release build; its log: $windows_log"
@@ -88,7 +89,10 @@ fi
 # No benchmarks (native/bench): no test runs them, and they were 30 s of the
 # build's CPU (scripts/build.sh -DFT_BUILD_BENCH=ON brings them back).
 stage "Release build"
-scripts/build.sh -DCMAKE_UNITY_BUILD=ON -DFT_BUILD_BENCH=OFF
+# With the Windows build beside it, its packages wait for the DLL (below).
+packages=ON
+[ "$windows" = 0 ] || packages=OFF
+scripts/build.sh -DCMAKE_UNITY_BUILD=ON -DFT_BUILD_BENCH=OFF -DFT_PACKAGES=$packages
 if [ -n "$windows_build" ]; then
   stage "the rest of the Windows build"
   windows_rc=0
@@ -96,8 +100,8 @@ if [ -n "$windows_build" ]; then
   windows_build=""
   cat "$windows_log"
   ((windows_rc == 0)) || { echo "tests/run.sh: the Windows build failed" >&2; exit 1; }
-  stage "the packages again, with fracterra.dll"
-  scripts/build.sh -DCMAKE_UNITY_BUILD=ON -DFT_BUILD_BENCH=OFF
+  stage "the packages, with fracterra.dll"
+  scripts/build.sh -DCMAKE_UNITY_BUILD=ON -DFT_BUILD_BENCH=OFF -DFT_PACKAGES=ON
 fi
 stage "the Blender 4.3 root and the Wine prefix (made beside the builds)"
 wait "$prefetch" || true

@@ -44,4 +44,13 @@ fi
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:abort_on_error=1:print_stacktrace=1:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 cd "$build"
-ctest -L native --output-on-failure -j"$(nproc)" --timeout "${FT_ASAN_TIMEOUT:-600}"
+# Of the eroded-window cases (tests/native/eroded_window_capitest.cpp), the
+# ones whose memory paths another case here takes too: "periodic land" is
+# "periodic land with a sea and a mask" without the sea and the mask, "land"
+# cuts the same sixteen windows of a bounded square as "fbm badlands" does of
+# a bounded oblong, and the five presets' own code runs here in every
+# preset's erosion watchdog test. They were 316 s of these tests' 710 s
+# (2026-12-04, idle machine); the Release ctest runs every case. (ctest's
+# names end in "  # GetParam() = N".)
+asan_skip=${FT_ASAN_SKIP-'^ErodedWindow/ErodedWindowOfCase\.SixteenOddWindowsAreTheWholesSamples/(land|periodic_land|valleys|rain|scree|badlands)( |$)'}
+ctest -L native ${asan_skip:+-E "$asan_skip"} --output-on-failure -j"$(nproc)" --timeout "${FT_ASAN_TIMEOUT:-600}"

@@ -10,7 +10,9 @@ in-memory generator in the same run.
 
 With --erode PRESET: an eroded set of a levels-L terrain (Dask, end to end: range pass, tiles,
 manifest, mosaics, and with --engine the engine cut) against the in-memory erosion of the same
-terrain (ft_terrain_build, all cores), alternated in the same run, --reps of each:
+terrain (ft_terrain_build, all cores), alternated in the same run, --reps of each; with --maps
+the in-memory rep also writes its heights and maps whole, as the set writes its tiles' (float32
+COG), and the report has both ratios (compute alone, and with those files):
 
     ... tiles_dask_bench.py --erode land --levels 13 --tile 4096 --workers 2 --memory-limit 10GB \
         --reps 3 --out /work/scratch/eroded8193 [--maps --engine unreal]
@@ -149,6 +151,18 @@ def _cluster_cpu_seconds(client):
     return _cpu_seconds() + sum(client.run(_cpu_seconds).values())
 
 
+def _write_whole(hf, maps, w, h, folder):
+    """The whole's heights and maps as the set writes its tiles' (float32 GeoTIFF, COG)."""
+    from fracterra.core.raster import write_heightfield
+    from fracterra.core.terrain import Heightfield
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(os.path.join(folder, "maps"))
+    write_heightfield(hf, os.path.join(folder, "heights.tif"))
+    for name, values in maps.items():
+        with Heightfield.from_values(w, h, values) as m:
+            write_heightfield(m, os.path.join(folder, "maps", name + ".tif"))
+
+
 def eroded(a):
     """The eroded set on Dask against the in-memory erosion of the same terrain, alternated."""
     from fracterra.core import build_terrain
@@ -158,16 +172,22 @@ def eroded(a):
               "preset": a.erode, "maps": a.maps, "engine": a.engine, "uptime_before": _uptime()}
     w, h = tiles.terrain_extent(settings, None)
     memory, dask, summaries, loads, memory_cpu, dask_cpu = [], [], [], [], [], []
+    memory_write, memory_write_cpu = [], []
     client = tiles.connect(workers=a.workers, memory_limit=a.memory_limit)
     try:
         for rep in range(a.reps):
             # CPU seconds beside the wall time: on a machine shared with other sessions the wall
             # time follows their load, the CPU time much less.
             c, t = _cpu_seconds(), time.perf_counter()
-            hf, _maps = build_terrain(settings, preset=a.erode.upper(), maps=a.maps, threads=0)
-            hf.close()
+            hf, maps = build_terrain(settings, preset=a.erode.upper(), maps=a.maps, threads=0)
             memory.append(time.perf_counter() - t)
             memory_cpu.append(_cpu_seconds() - c)
+            if a.maps:  # and the same files as the set's, written whole: what a user of --maps keeps
+                c, t = _cpu_seconds(), time.perf_counter()
+                _write_whole(hf, maps, w, h, a.out + "-in-memory")
+                memory_write.append(time.perf_counter() - t)
+                memory_write_cpu.append(_cpu_seconds() - c)
+            hf.close()
             shutil.rmtree(a.out, ignore_errors=True)
             c, t = _cluster_cpu_seconds(client), time.perf_counter()
             summaries.append(tiles.build_tileset(settings, a.out, a.tile, client=client, progress=False,
@@ -177,6 +197,7 @@ def eroded(a):
             loads.append(_uptime())
             # Each rep as it ends (stderr), so a run cut short still says what it measured.
             print(json.dumps({"rep": rep, "in_memory_seconds": memory[-1], "in_memory_cpu_seconds": memory_cpu[-1],
+                              "in_memory_write_seconds": memory_write[-1] if memory_write else None,
                               "dask_seconds": dask[-1], "dask_cpu_seconds": dask_cpu[-1],
                               "range_seconds": summaries[-1].get("range_seconds"),
                               "finish_seconds": summaries[-1]["finish_seconds"],
@@ -195,6 +216,12 @@ def eroded(a):
                    "finish_seconds": [sm["finish_seconds"] for sm in summaries],
                    "engine_seconds": [sm.get("engine_seconds") for sm in summaries]})
     report["dask_vs_in_memory"] = report["dask_samples_per_s"] / report["in_memory_samples_per_s"]
+    if memory_write:
+        with_files = [m + f for m, f in zip(memory, memory_write)]
+        report.update({"in_memory_write_seconds": memory_write, "in_memory_write_cpu_seconds": memory_write_cpu,
+                       "in_memory_with_files_seconds": with_files,
+                       "dask_vs_in_memory_with_files": statistics.median(with_files) / statistics.median(dask)})
+    shutil.rmtree(a.out + "-in-memory", ignore_errors=True)
     if not a.keep:
         shutil.rmtree(a.out, ignore_errors=True)
     report["uptime_after"] = _uptime()
