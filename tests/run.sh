@@ -56,7 +56,14 @@ stop_beside() {
   done
 }
 trap stop_beside EXIT
-setsid --wait nice -n 19 bash -c 'trap "touch \"$3\"" EXIT
+# setsid gives a stage a session of its own, and with the kernel's autogroup
+# scheduling (on in this machine's kernel: /proc/sys/kernel/sched_autogroup_enabled)
+# each session is one group with an equal share of the CPU whatever its
+# processes' nice values: so the session's own group gets the nice value too
+# (/proc/self/autogroup), or "the lowest priority" would take a third of the
+# cores from the Release build and ctest.
+setsid --wait nice -n 19 bash -c 'echo 19 >/proc/self/autogroup 2>/dev/null || true
+  trap "touch \"$3\"" EXIT
   tests/sanitize.sh build >"$1" 2>&1 || exit 1
   touch "$2"
   FT_ASAN_TIMEOUT=1500 tests/sanitize.sh test >"$4" 2>&1 || exit 1
@@ -69,7 +76,8 @@ background=$!
 # the Wine prefix (about 10 s). Each keeps its own lock, so a test that comes
 # first waits for it and reuses it; a failure here leaves the test to report.
 prefetch_log=$PWD/build/prefetch.log
-setsid --wait nice -n 10 bash -c 'scripts/blender4-root.sh >/dev/null || true
+setsid --wait nice -n 10 bash -c 'echo 10 >/proc/self/autogroup 2>/dev/null || true
+  scripts/blender4-root.sh >/dev/null || true
   [ "$1" = 0 ] || tests/windows/wine_run.sh --prepare || true' _ "$windows" >"$prefetch_log" 2>&1 &
 prefetch=$!
 # The Windows build beside the Release build: its mingw dependencies
