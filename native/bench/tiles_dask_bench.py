@@ -151,7 +151,7 @@ def _cluster_cpu_seconds(client):
     return _cpu_seconds() + sum(client.run(_cpu_seconds).values())
 
 
-def _write_whole(hf, maps, w, h, folder):
+def _write_whole(hf, maps, folder):
     """The whole's heights and maps as the set writes its tiles' (float32 GeoTIFF, COG)."""
     from fracterra.core.raster import write_heightfield
     from fracterra.core.terrain import Heightfield
@@ -159,7 +159,7 @@ def _write_whole(hf, maps, w, h, folder):
     os.makedirs(os.path.join(folder, "maps"))
     write_heightfield(hf, os.path.join(folder, "heights.tif"))
     for name, values in maps.items():
-        with Heightfield.from_values(w, h, values) as m:
+        with Heightfield.from_values(hf.width, hf.height, values) as m:
             write_heightfield(m, os.path.join(folder, "maps", name + ".tif"))
 
 
@@ -184,7 +184,7 @@ def eroded(a):
             memory_cpu.append(_cpu_seconds() - c)
             if a.maps:  # and the same files as the set's, written whole: what a user of --maps keeps
                 c, t = _cpu_seconds(), time.perf_counter()
-                _write_whole(hf, maps, w, h, a.out + "-in-memory")
+                _write_whole(hf, maps, a.out + "-in-memory")
                 memory_write.append(time.perf_counter() - t)
                 memory_write_cpu.append(_cpu_seconds() - c)
             hf.close()
